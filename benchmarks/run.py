@@ -1,0 +1,185 @@
+"""scoopc benchmark suite (DESIGN section 9): SCOOP/Qs programs on the runtime vs hand-written threading.
+
+Run `python benchmarks/run.py --help`. Every measurement runs in a fresh subprocess; best of R runs.
+"""
+import argparse
+import importlib
+import json
+import math
+import os
+import platform
+import subprocess
+import sys
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
+BENCHMARKS = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
+VARIANTS = ("baseline", "scoop")
+REPEATS = {"full": 3, "quick": 3, "smoke": 1}
+TIMEOUTS = {"full": 600, "quick": 60, "smoke": 30}
+
+
+class RunFailed(Exception):
+    """A child run crashed, timed out or failed its result check."""
+
+
+def parse_args(argv):
+    parser = argparse.ArgumentParser(
+        description="Run the SCOOP/Qs concurrency benchmarks and micro costs: each benchmark "
+        "against the scoopc runtime (as generated code calls it) and as hand-written threading, "
+        "with the time ratio scoop/baseline. Each run is a fresh subprocess; the best of "
+        "several runs is reported.")
+    size = parser.add_mutually_exclusive_group()
+    size.add_argument("--quick", action="store_true", help="small sizes (well under 1 s each)")
+    size.add_argument("--smoke", action="store_true", help="tiny sizes, one run: for tests")
+    parser.add_argument("--unpinned", action="store_true",
+                        help="do not pin to one CPU (shows the multi-core picture)")
+    parser.add_argument("--only", nargs="+", metavar="NAME", choices=BENCHMARKS + ["micro"],
+                        help="run only these benchmarks (names: %(choices)s)")
+    parser.add_argument("--repeat", type=int, metavar="R", help="runs per measurement (best is kept)")
+    parser.add_argument("--child", nargs=3, metavar=("NAME", "VARIANT", "SIZE"),
+                        help=argparse.SUPPRESS)
+    return parser.parse_args(argv)
+
+
+def size_of(args):
+    return "smoke" if args.smoke else "quick" if args.quick else "full"
+
+
+# --- child side: one measurement in this process ------------------------------
+
+def load(name):
+    for path in (HERE, ROOT):
+        if path not in sys.path:
+            sys.path.insert(0, path)
+    return importlib.import_module("micro" if name == "micro" else "bench_" + name)
+
+
+def child_main(name, variant, size):
+    """Run one variant once; print its result as one JSON line on stdout."""
+    module = load(name)
+    params = module.SIZES[size]
+    if name == "micro":
+        result = getattr(module, variant)(**params)
+    else:
+        start = time.perf_counter()
+        getattr(module, variant)(**params)
+        result = {"seconds": time.perf_counter() - start}
+    print(json.dumps(result))
+
+
+# --- parent side: orchestration and report ------------------------------------
+
+def pin(unpinned):
+    if unpinned:
+        return "unpinned"
+    if not hasattr(os, "sched_setaffinity"):
+        return "unpinned (no sched_setaffinity on this platform)"
+    cpu = min(os.sched_getaffinity(0))
+    os.sched_setaffinity(0, {cpu})
+    return f"pinned to cpu {cpu}"
+
+
+def run_child(name, variant, size):
+    command = [sys.executable, os.path.abspath(__file__), "--child", name, variant, size]
+    try:
+        done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUTS[size])
+    except subprocess.TimeoutExpired:
+        raise RunFailed(f"{name} {variant}: timed out after {TIMEOUTS[size]} s") from None
+    if done.returncode != 0:
+        lines = done.stderr.strip().splitlines() or ["(no output)"]
+        raise RunFailed(f"{name} {variant}: exit {done.returncode}: {lines[-1]}")
+    return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+def best_of(name, size, repeats):
+    """Best seconds per variant over `repeats` rounds, alternating variants against drift."""
+    best = {variant: math.inf for variant in VARIANTS}
+    for _ in range(repeats):
+        for variant in VARIANTS:
+            best[variant] = min(best[variant], run_child(name, variant, size)["seconds"])
+    return best
+
+
+def describe(params):
+    return " ".join(f"{key}={value}" for key, value in params.items())
+
+
+def report_benchmark(name, size, repeats):
+    """Print one benchmark line; return its ratio, or None when it failed."""
+    module = load(name)
+    params = module.SIZES[size]
+    try:
+        best = best_of(name, size, repeats)
+    except RunFailed as failure:
+        print(f"{name} {describe(params)} FAILED {failure}", flush=True)
+        return None
+    ratio = best["scoop"] / best["baseline"]
+    per_op = [1e6 * best[v] / module.ops(**params) for v in ("scoop", "baseline")]
+    print(f"{name} {describe(params)} scoop_s={best['scoop']:.3f} baseline_s={best['baseline']:.3f}"
+          f" ratio={ratio:.2f} us_per_op={per_op[0]:.2f}/{per_op[1]:.2f}", flush=True)
+    return ratio
+
+
+def report_geomean(ratios, failed):
+    if failed or not ratios:
+        print(f"geomean_ratio=nan failed={','.join(failed) or 'none run'}")
+        return
+    geomean = math.exp(sum(math.log(r) for r in ratios) / len(ratios))
+    print(f"geomean_ratio={geomean:.2f}")
+
+
+def best_micro(size, repeats):
+    best = {variant: {} for variant in VARIANTS}
+    for _ in range(repeats):
+        for variant in VARIANTS:
+            for key, value in run_child("micro", variant, size).items():
+                best[variant][key] = min(best[variant].get(key, math.inf), value)
+    return best
+
+
+def report_micro(size, repeats):
+    """Print the micro costs; return False when they could not be measured."""
+    micro = load("micro")
+    try:
+        best = best_micro(size, repeats)
+    except RunFailed as failure:
+        print(f"micro FAILED {failure}", flush=True)
+        return False
+    for key, baseline_key, note in micro.PAIRS:
+        scoop_us, baseline_us = best["scoop"][key], best["baseline"][baseline_key]
+        print(f"micro {key} scoop_us={scoop_us:.2f} baseline_us={baseline_us:.2f}"
+              f" ratio={scoop_us / baseline_us:.2f}  ({note})", flush=True)
+    return True
+
+
+def print_header(args, size, repeats, pinning):
+    gil = getattr(sys, "_is_gil_enabled", lambda: True)()
+    print(f"# scoopc benchmarks: python {platform.python_version()} "
+          f"({'GIL' if gil else 'free-threaded'}), {os.cpu_count()} cpus, {pinning}, "
+          f"size={size}, best of {repeats} runs, each run a fresh subprocess", flush=True)
+
+
+def main(argv=None):
+    args = parse_args(argv)
+    if args.child:
+        child_main(*args.child)
+        return 0
+    size = size_of(args)
+    repeats = args.repeat or REPEATS[size]
+    print_header(args, size, repeats, pin(args.unpinned))
+    selected = args.only or BENCHMARKS + ["micro"]
+    ratios, failed = [], []
+    for name in (n for n in BENCHMARKS if n in selected):
+        ratio = report_benchmark(name, size, repeats)
+        ratios.append(ratio) if ratio is not None else failed.append(name)
+    if any(n in selected for n in BENCHMARKS):
+        report_geomean(ratios, failed)
+    if "micro" in selected and not report_micro(size, repeats):
+        failed.append("micro")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

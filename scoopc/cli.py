@@ -1,0 +1,142 @@
+"""The `scoopc` command: argument parsing, running the pipeline, rendering diagnostics, exit codes.
+
+Exit codes (DESIGN section 8): 0 success, 1 source errors, 2 bad usage, 3 run-time failure,
+4 internal error of scoopc (a bug: reported with its Python traceback).
+"""
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+import traceback
+from typing import Optional, Sequence
+
+from . import __version__, diagnostics, messages
+from .project import UsageError, collect
+
+EXIT_OK, EXIT_SOURCE, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 4
+
+PATHS_HELP = "a .e file, a directory (a cluster: every .e file below it) or an .ecf project file"
+
+
+class _Parser(argparse.ArgumentParser):
+    """argparse that exits with code 2 and a one-line hint, as the CLI contract says."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        self.print_usage(sys.stderr)
+        self.exit(EXIT_USAGE, f"scoopc: error: {message}\n(run `{self.prog} --help` for help)\n")
+
+
+def _add_source_options(command: argparse.ArgumentParser) -> None:
+    command.add_argument("paths", nargs="*", metavar="PATH", help=PATHS_HELP)
+    command.add_argument("--target", help="the .ecf target to use (default: the last concrete one)")
+    command.add_argument("--format", choices=("auto", "short", "pretty"), default="auto",
+                         help="diagnostics: one line each (short), with source excerpts and hints "
+                              "(pretty); auto: pretty on a terminal")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    top = _Parser(prog="scoopc", description="Compile Eiffel programs with SCOOP concurrency to Python.",
+                  epilog="Run `scoopc COMMAND --help` for the options of a command.")
+    top.add_argument("--version", action="version", version=f"scoopc {__version__}")
+    commands = top.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    commands.required = True
+
+    parse = commands.add_parser("parse", help="check the syntax only",
+                                description="Parse the given Eiffel sources and report syntax errors.")
+    _add_source_options(parse)
+    parse.add_argument("--dump", action="store_true", help="print the syntax tree of each class")
+    parse.set_defaults(handler=_command_parse)
+
+    check = commands.add_parser("check", help="report all errors of a program, compile nothing",
+                                description="Check Eiffel sources and report every error found.")
+    check.add_argument("--explain", metavar="CODE", help="explain a diagnostic code and exit")
+    _add_source_options(check)
+    check.set_defaults(handler=_command_check)
+    return top
+
+
+def _render(found: list[diagnostics.Diagnostic], line_text, style: str) -> None:
+    pretty = style == "pretty" or (style == "auto" and sys.stderr.isatty())
+    color = pretty and sys.stderr.isatty()
+    for d in found:
+        text = diagnostics.pretty(d, line_text, color) if pretty else diagnostics.short(d)
+        print(text, file=sys.stderr)
+    errors = sum(1 for d in found if d.is_error)
+    if errors and pretty:
+        print(f"{errors} error{'s' if errors != 1 else ''}", file=sys.stderr)
+
+
+def _front_end(args: argparse.Namespace, stage: str = "parse"):
+    from . import pipeline
+
+    if not args.paths:
+        raise UsageError(f"`scoopc {args.command}` needs at least one PATH ({PATHS_HELP})")
+    project = collect(args.paths, args.target)
+    parsed = pipeline.parse_project(project) if stage == "parse" else pipeline.check_project(project)
+    _render(parsed.diagnostics, parsed.line_text, args.format)
+    return parsed
+
+
+def _command_parse(args: argparse.Namespace) -> int:
+    parsed = _front_end(args)
+    if args.dump:
+        from . import syntax
+
+        for unit in parsed.units:
+            if unit.tree is not None:
+                sys.stdout.write(syntax.dump(unit.tree).rstrip("\n") + "\n")
+    return EXIT_SOURCE if parsed.has_errors else EXIT_OK
+
+
+def _command_check(args: argparse.Namespace) -> int:
+    if args.explain is not None:
+        text = explain(args.explain)
+        if text is None:
+            raise UsageError(f"unknown diagnostic code `{args.explain}`")
+        print(text)
+        return EXIT_OK
+    parsed = _front_end(args, "check")
+    return EXIT_SOURCE if parsed.has_errors else EXIT_OK
+
+
+def _canonical(code: str) -> str:
+    """`vuta-3` -> `VUTA(3)`: test folders and shells write parentheses as a dash."""
+    upper = code.strip().upper()
+    match = re.fullmatch(r"(V[A-Z0-9]+)-(\d+)", upper)
+    return f"{match.group(1)}({match.group(2)})" if match else upper
+
+
+def explain(code: str) -> Optional[str]:
+    """The explanation of a diagnostic code, or None when the code is unknown."""
+    canonical = _canonical(code)
+    entry = messages.MESSAGES.get(canonical)
+    if entry is None:
+        return None
+    lines = [f"{canonical}: {entry.text}"]
+    if entry.hint:
+        lines.append(f"hint: {entry.hint}")
+    return "\n".join(lines)
+
+
+def main(argv: Optional[Sequence[str]] = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    args = build_parser().parse_args(argv)
+    try:
+        return args.handler(args)
+    except UsageError as problem:
+        print(f"scoopc: error: {problem}", file=sys.stderr)
+        return EXIT_USAGE
+    except KeyboardInterrupt:
+        print("scoopc: interrupted", file=sys.stderr)
+        return 130
+    except BrokenPipeError:
+        return EXIT_OK
+    except Exception:  # a bug in scoopc, never the user's fault
+        print("scoopc: internal error (a bug in scoopc; please report it with the input):", file=sys.stderr)
+        traceback.print_exc()
+        return EXIT_INTERNAL
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,79 @@
+"""Smoke test of benchmarks/run.py: tiny sizes, output format and result checks (never timings)."""
+import os
+import re
+import subprocess
+import sys
+
+import pytest
+
+RUN = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "run.py")
+NAMES = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
+NUMBER = r"\d+\.\d+"
+BENCH_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) baseline_s=({NUMBER}) "
+                        rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER}$")
+MICRO_LINE = re.compile(rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
+MICRO_KEYS = ["async_command", "sync_query", "reserve_1", "reserve_2", "reserve_4", "reserve_8"]
+
+
+def run(*options):
+    return subprocess.run([sys.executable, RUN, *options], capture_output=True, text=True, timeout=60)
+
+
+@pytest.fixture(scope="module")
+def smoke():
+    done = run("--smoke")
+    assert done.returncode == 0, done.stdout + done.stderr
+    return done.stdout.splitlines()
+
+
+def test_header_states_parameters(smoke):
+    assert smoke[0].startswith("# scoopc benchmarks:")
+    assert "pinned to cpu" in smoke[0] and "size=smoke" in smoke[0]
+
+
+def test_one_line_per_benchmark_in_order(smoke):
+    matches = [BENCH_LINE.match(line) for line in smoke[1:6]]
+    assert all(matches), smoke
+    assert [m.group(1) for m in matches] == NAMES
+
+
+def test_geomean_line(smoke):
+    assert re.fullmatch(rf"geomean_ratio={NUMBER}", smoke[6])
+
+
+def test_micro_lines(smoke):
+    micro = [MICRO_LINE.match(line) for line in smoke[7:]]
+    assert all(micro), smoke
+    assert [m.group(1) for m in micro] == MICRO_KEYS
+
+
+def test_only_and_unpinned_select():
+    done = run("--smoke", "--unpinned", "--only", "mutex")
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert "unpinned" in lines[0]
+    assert BENCH_LINE.match(lines[1]).group(1) == "mutex"
+    assert lines[2].startswith("geomean_ratio=") and len(lines) == 3
+
+
+def test_unknown_benchmark_is_a_usage_error():
+    assert run("--only", "nosuch").returncode == 2
+
+
+@pytest.mark.parametrize("name", NAMES)
+@pytest.mark.parametrize("variant", ["baseline", "scoop"])
+def test_each_variant_checks_its_result(name, variant, monkeypatch):
+    """A wrong count must raise, so a broken run can never print a fast time."""
+    monkeypatch.syspath_prepend(os.path.dirname(RUN))
+    monkeypatch.syspath_prepend(os.path.join(os.path.dirname(RUN), ".."))
+    module = __import__("bench_" + name)
+    from common import CheckFailed
+
+    def wrong(label, got, expected):
+        raise CheckFailed(label)
+
+    monkeypatch.setattr(module, "check", wrong)
+    if hasattr(module, "check_counts"):
+        monkeypatch.setattr(module, "check_counts", lambda *a: wrong("counts", 0, 1))
+    with pytest.raises(CheckFailed):
+        getattr(module, variant)(**module.SIZES["smoke"])
