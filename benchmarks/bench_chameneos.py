@@ -5,11 +5,13 @@ Baseline: a lock around the mall; the waiting creature parks on its own threadin
 """
 import threading
 
-from common import check, join_all, start_all
+from scoopc.runtime import leaf
+
+from common import check, join_all, run_program, start_all, where
 
 SIZES = {
     "full": {"creatures": 10, "meetings": 200_000},
-    "quick": {"creatures": 10, "meetings": 15_000},
+    "quick": {"creatures": 10, "meetings": 10_000},
     "smoke": {"creatures": 4, "meetings": 200},
 }
 
@@ -83,3 +85,106 @@ def baseline(creatures, meetings):
     team = [ThreadCreature(c) for c in colours(creatures)]
     join_all(start_all([(c.run, (mall,)) for c in team]))
     check_counts("chameneos baseline", [c.count for c in team], meetings)
+
+
+# --- SCOOP, as generated code calls the runtime ----------------------------------
+# class MALL:     arrive (id, colour): the first waits, the second meets it (outcome_of (id));
+#                 partner_of (id) / has_partner (id) / forget_partner (id) for the first
+# class CREATURE: live: loop: visit (mall); if FIRST then collect (mall) end; change colour
+#                 visit (m: separate MALL) do m.arrive (id, colour); r := m.outcome_of (id) end
+#                 collect (m: separate MALL) require m.has_partner (id)
+#                 do partner := m.partner_of (id); m.forget_partner (id) end
+
+FIRST, CLOSED = "first", "closed"
+W_VISIT = where("CREATURE", "visit", 20)
+W_OUTCOME = where("CREATURE", "visit", 21)
+W_COLLECT = where("CREATURE", "collect", 25)
+W_HAS_PARTNER = where("CREATURE", "collect", 26)
+W_PARTNER = where("CREATURE", "collect", 27)
+W_LAUNCH = where("ROOT", "launch", 40)
+
+
+class Mall:
+    @leaf
+    def make(self, meetings):
+        self.left, self.waiting = meetings, None
+        self.outcome, self.partner = {}, {}
+
+    @leaf
+    def arrive(self, ident, colour):
+        if self.left == 0:
+            self.outcome[ident] = CLOSED
+        elif self.waiting is None:
+            self.waiting, self.outcome[ident] = (ident, colour), FIRST
+        else:
+            first, first_colour = self.waiting
+            self.waiting, self.left = None, self.left - 1
+            self.partner[first], self.outcome[ident] = colour, first_colour
+
+    @leaf
+    def outcome_of(self, ident):
+        return self.outcome[ident]
+
+    @leaf
+    def has_partner(self, ident):
+        return ident in self.partner
+
+    @leaf
+    def partner_of(self, ident):
+        return self.partner[ident]
+
+    @leaf
+    def forget_partner(self, ident):
+        del self.partner[ident]
+
+
+class Creature:
+    @leaf
+    def make(self, ident, colour, mall):
+        self.ident, self.colour, self.mall, self.count = ident, colour, mall, 0
+
+    def live(self):
+        while True:
+            partner = self.visit(self.mall)
+            if partner == CLOSED:
+                return
+            if partner == FIRST:
+                partner = self.collect(self.mall)
+            self.colour = complement(self.colour, partner)
+            self.count += 1
+
+    def visit(self, m):
+        here = self._region_
+        with here.reserve((m,), where=W_VISIT):
+            here.call(m, Mall.arrive, (self.ident, self.colour))
+            return here.query(m, Mall.outcome_of, (self.ident,), W_OUTCOME)
+
+    def collect(self, m):
+        here = self._region_
+        pre = ((lambda: here.query(m, Mall.has_partner, (self.ident,), W_HAS_PARTNER),
+                (0,), "has_partner", W_HAS_PARTNER),)
+        with here.reserve((m,), pre=pre, where=W_COLLECT):
+            partner = here.query(m, Mall.partner_of, (self.ident,), W_PARTNER)
+            here.call(m, Mall.forget_partner, (self.ident,))
+            return partner
+
+
+class Root:
+    def make(self, creatures, meetings, out):
+        here = self._region_
+        mall = here.new_separate(Mall, Mall.make, (meetings,))
+        out["team"] = [here.new_separate(Creature, Creature.make, (i, c, mall))
+                       for i, c in enumerate(colours(creatures))]
+        for creature in out["team"]:
+            self.launch(creature)
+
+    def launch(self, c):
+        here = self._region_
+        with here.reserve((c,), where=W_LAUNCH):
+            here.call(c, Creature.live)
+
+
+def scoop(creatures, meetings):
+    out = {}
+    run_program(Root, (creatures, meetings, out))
+    check_counts("chameneos scoop", [c.count for c in out["team"]], meetings)

@@ -5,11 +5,13 @@ Baseline: one threading.Condition, wait_for on the parity, notify_all after each
 """
 import threading
 
-from common import check, join_all, start_all
+from scoopc.runtime import leaf
+
+from common import check, join_all, run_program, start_all, where
 
 SIZES = {
     "full": {"workers": 4, "iters": 100_000},
-    "quick": {"workers": 4, "iters": 10_000},
+    "quick": {"workers": 4, "iters": 5_000},
     "smoke": {"workers": 4, "iters": 100},
 }
 
@@ -39,3 +41,63 @@ def baseline(workers, iters):
     targets = [(_thread_worker, (shared, i % 2, iters)) for i in range(workers)]
     join_all(start_all(targets))
     check("condition baseline value", shared.value, workers * iters)
+
+
+# --- SCOOP, as generated code calls the runtime ----------------------------------
+# class SHARED:  value: INTEGER; increment do value := value + 1 end
+# class WORKER:  live do across 1 |..| iters loop change (shared) end end
+#                change (s: separate SHARED) require s.value \\ 2 = parity do s.increment end
+
+W_CHANGE = where("WORKER", "change", 14)
+W_PARITY = where("WORKER", "change", 15)
+W_LAUNCH = where("ROOT", "launch", 22)
+
+
+class Shared:
+    @leaf
+    def make(self):
+        self.value = 0
+
+    @leaf
+    def get_value(self):
+        return self.value
+
+    @leaf
+    def increment(self):
+        self.value += 1
+
+
+class Worker:
+    @leaf
+    def make(self, shared, parity, iters):
+        self.shared, self.parity, self.iters = shared, parity, iters
+
+    def live(self):
+        for _ in range(self.iters):
+            self.change(self.shared)
+
+    def change(self, s):
+        here = self._region_
+        pre = ((lambda: here.query(s, Shared.get_value, (), W_PARITY) % 2 == self.parity,
+                (0,), "parity", W_PARITY),)
+        with here.reserve((s,), pre=pre, where=W_CHANGE):
+            here.call(s, Shared.increment)
+
+
+class Root:
+    def make(self, workers, iters, out):
+        here = self._region_
+        out["shared"] = shared = here.new_separate(Shared, Shared.make)
+        for i in range(workers):
+            self.launch(here.new_separate(Worker, Worker.make, (shared, i % 2, iters)))
+
+    def launch(self, w):
+        here = self._region_
+        with here.reserve((w,), where=W_LAUNCH):
+            here.call(w, Worker.live)
+
+
+def scoop(workers, iters):
+    out = {}
+    run_program(Root, (workers, iters, out))
+    check("condition scoop value", out["shared"].value, workers * iters)

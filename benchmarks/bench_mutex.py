@@ -4,11 +4,13 @@ Baseline: threads incrementing a counter under a threading.Lock.
 """
 import threading
 
-from common import check, join_all, start_all
+from scoopc.runtime import leaf
+
+from common import check, join_all, run_program, start_all, where
 
 SIZES = {
     "full": {"workers": 32, "iters": 50_000},
-    "quick": {"workers": 32, "iters": 5_000},
+    "quick": {"workers": 32, "iters": 2_500},
     "smoke": {"workers": 4, "iters": 200},
 }
 
@@ -35,3 +37,57 @@ def baseline(workers, iters):
     counter = LockedCounter()
     join_all(start_all([(_thread_worker, (counter, iters))] * workers))
     check("mutex baseline count", counter.value, workers * iters)
+
+
+# --- SCOOP, as generated code calls the runtime ----------------------------------
+# class COUNTER:  value: INTEGER; increment do value := value + 1 end
+# class WORKER:   live do across 1 |..| iters loop increment (counter) end end
+#                 increment (c: separate COUNTER) do c.increment end
+# class ROOT:     make: create counter; create N workers; launch (w) for each
+
+W_INCREMENT = where("WORKER", "increment", 12)
+W_LAUNCH = where("ROOT", "launch", 20)
+
+
+class Counter:
+    @leaf
+    def make(self):
+        self.value = 0
+
+    @leaf
+    def increment(self):
+        self.value += 1
+
+
+class Worker:
+    @leaf
+    def make(self, counter, iters):
+        self.counter, self.iters = counter, iters
+
+    def live(self):
+        for _ in range(self.iters):
+            self.increment(self.counter)
+
+    def increment(self, c):
+        here = self._region_
+        with here.reserve((c,), where=W_INCREMENT):
+            here.call(c, Counter.increment)
+
+
+class Root:
+    def make(self, workers, iters, out):
+        here = self._region_
+        out["counter"] = counter = here.new_separate(Counter, Counter.make)
+        for _ in range(workers):
+            self.launch(here.new_separate(Worker, Worker.make, (counter, iters)))
+
+    def launch(self, w):
+        here = self._region_
+        with here.reserve((w,), where=W_LAUNCH):
+            here.call(w, Worker.live)
+
+
+def scoop(workers, iters):
+    out = {}
+    run_program(Root, (workers, iters, out))
+    check("mutex scoop count", out["counter"].value, workers * iters)

@@ -3,12 +3,15 @@
 Baseline: threads sharing one queue.Queue (unbounded, as the SCOOP queue is).
 """
 import queue
+from collections import deque
 
-from common import check, join_all, start_all
+from scoopc.runtime import leaf
+
+from common import check, join_all, run_program, start_all, where
 
 SIZES = {
     "full": {"producers": 4, "consumers": 4, "items": 100_000},
-    "quick": {"producers": 4, "consumers": 4, "items": 10_000},
+    "quick": {"producers": 4, "consumers": 4, "items": 5_000},
     "smoke": {"producers": 2, "consumers": 2, "items": 100},
 }
 
@@ -49,3 +52,98 @@ def baseline(producers, consumers, items):
     targets += [(_thread_consumer, (q, per_consumer, totals))] * consumers
     join_all(start_all(targets))
     check("prodcons baseline sum", sum(totals), _expected_sum(producers, items))
+
+
+# --- SCOOP, as generated code calls the runtime ----------------------------------
+# class SHARED_QUEUE: is_empty, item, extend (v), remove (a LINKED_QUEUE)
+# class PRODUCER: live do across 0 |..| (items - 1) as i loop put (queue, i) end end
+#                 put (q: separate SHARED_QUEUE; v) do q.extend (v) end
+# class CONSUMER: live do across 1 |..| count loop take (queue) end end
+#                 take (q: separate SHARED_QUEUE) require not q.is_empty
+#                 do total := total + q.item; q.remove end
+
+W_PUT = where("PRODUCER", "put", 10)
+W_TAKE = where("CONSUMER", "take", 20)
+W_NOT_EMPTY = where("CONSUMER", "take", 21)
+W_ITEM = where("CONSUMER", "take", 22)
+W_LAUNCH = where("ROOT", "launch", 30)
+
+
+class SharedQueue:
+    @leaf
+    def make(self):
+        self.items = deque()
+
+    @leaf
+    def is_empty(self):
+        return not self.items
+
+    @leaf
+    def item(self):
+        return self.items[0]
+
+    @leaf
+    def extend(self, value):
+        self.items.append(value)
+
+    @leaf
+    def remove(self):
+        self.items.popleft()
+
+
+class Producer:
+    @leaf
+    def make(self, q, items):
+        self.queue, self.items = q, items
+
+    def live(self):
+        for i in range(self.items):
+            self.put(self.queue, i)
+
+    def put(self, q, value):
+        here = self._region_
+        with here.reserve((q,), where=W_PUT):
+            here.call(q, SharedQueue.extend, (value,))
+
+
+class Consumer:
+    @leaf
+    def make(self, q, count):
+        self.queue, self.count, self.total = q, count, 0
+
+    def live(self):
+        for _ in range(self.count):
+            self.take(self.queue)
+
+    def take(self, q):
+        here = self._region_
+        pre = ((lambda: not here.query(q, SharedQueue.is_empty, (), W_NOT_EMPTY),
+                (0,), "not_empty", W_NOT_EMPTY),)
+        with here.reserve((q,), pre=pre, where=W_TAKE):
+            self.total += here.query(q, SharedQueue.item, (), W_ITEM)
+            here.call(q, SharedQueue.remove)
+
+
+class Root:
+    def make(self, producers, consumers, items, out):
+        here = self._region_
+        q = here.new_separate(SharedQueue, SharedQueue.make)
+        count = _check_split(producers, consumers, items)
+        out["consumers"] = [here.new_separate(Consumer, Consumer.make, (q, count))
+                            for _ in range(consumers)]
+        for c in out["consumers"]:
+            self.launch(c, Consumer.live)
+        for _ in range(producers):
+            self.launch(here.new_separate(Producer, Producer.make, (q, items)), Producer.live)
+
+    def launch(self, w, live):
+        here = self._region_
+        with here.reserve((w,), where=W_LAUNCH):
+            here.call(w, live)
+
+
+def scoop(producers, consumers, items):
+    out = {}
+    run_program(Root, (producers, consumers, items, out))
+    total = sum(c.total for c in out["consumers"])
+    check("prodcons scoop sum", total, _expected_sum(producers, items))

@@ -5,7 +5,9 @@ Baseline: 503 threads, each blocking on its own queue.Queue mailbox.
 """
 import queue
 
-from common import check, join_all, start_all
+from scoopc.runtime import leaf
+
+from common import check, join_all, run_program, start_all, where
 
 SIZES = {
     "full": {"nodes": 503, "hops": 300_000},
@@ -50,3 +52,79 @@ def baseline(nodes, hops):
     boxes[0].put(hops)
     join_all(threads)
     check("threadring baseline winner", winner, [expected_winner(nodes, hops)])
+
+
+# --- SCOOP, as generated code calls the runtime ----------------------------------
+# class NODE:   receive (t) do if t = 0 then finish (result) else pass (next, t - 1) end end
+#               pass (n: separate NODE; t) do n.receive (t) end
+#               finish (r: separate RESULT) do r.set_winner (id) end
+# class ROOT:   make: create the nodes (each knowing the next), close the ring, pass (first, N)
+
+W_PASS = where("NODE", "pass", 12)
+W_FINISH = where("NODE", "finish", 16)
+W_CLOSE = where("ROOT", "close_ring", 30)
+W_START = where("ROOT", "start", 34)
+
+
+class Result:
+    @leaf
+    def make(self):
+        self.winner = None
+
+    @leaf
+    def set_winner(self, ident):
+        self.winner = ident
+
+
+class Node:
+    @leaf
+    def make(self, ident, result, next_node):
+        self.ident, self.result, self.next = ident, result, next_node
+
+    @leaf
+    def set_next(self, next_node):
+        self.next = next_node
+
+    def receive(self, token):
+        if token == 0:
+            self.finish(self.result)
+        else:
+            self.pass_token(self.next, token - 1)
+
+    def pass_token(self, n, token):
+        here = self._region_
+        with here.reserve((n,), where=W_PASS):
+            here.call(n, Node.receive, (token,))
+
+    def finish(self, r):
+        here = self._region_
+        with here.reserve((r,), where=W_FINISH):
+            here.call(r, Result.set_winner, (self.ident,))
+
+
+class Root:
+    def make(self, nodes, hops, out):
+        here = self._region_
+        out["result"] = result = here.new_separate(Result, Result.make)
+        last = next_node = here.new_separate(Node, Node.make, (nodes, result, None))
+        for ident in range(nodes - 1, 0, -1):
+            next_node = here.new_separate(Node, Node.make, (ident, result, next_node))
+        self.first = next_node
+        self.close_ring(last)
+        self.start(self.first, hops)
+
+    def close_ring(self, last):
+        here = self._region_
+        with here.reserve((last,), where=W_CLOSE):
+            here.call(last, Node.set_next, (self.first,))
+
+    def start(self, first, hops):
+        here = self._region_
+        with here.reserve((first,), where=W_START):
+            here.call(first, Node.receive, (hops,))
+
+
+def scoop(nodes, hops):
+    out = {}
+    run_program(Root, (nodes, hops, out))
+    check("threadring scoop winner", out["result"].winner, expected_winner(nodes, hops))

@@ -26,3 +26,16 @@ def start_all(targets):
 def join_all(threads):
     for thread in threads:
         thread.join()
+
+
+def where(cls, routine, line):
+    """A codegen-style source position constant for the runtime's reports."""
+    return (cls, routine, "benchmarks/" + cls.lower() + ".e", line)
+
+
+def run_program(root_cls, args):
+    """Run a SCOOP program as generated code would (rt.run_main); fail unless it exits 0."""
+    import scoopc.runtime as rt
+    status = rt.run_main(root_cls, root_cls.make, args=args)
+    if status != 0:
+        raise CheckFailed(f"run_main returned status {status}")

@@ -6,6 +6,8 @@ import queue
 import threading
 import time
 
+from scoopc.runtime import leaf
+
 SIZES = {
     "full": {"calls": 200_000, "reservations": 20_000},
     "quick": {"calls": 20_000, "reservations": 2_000},
@@ -16,9 +18,13 @@ RESERVE_COUNTS = (1, 2, 4, 8)
 # (scoop key, baseline key, what the baseline is)
 PAIRS = [
     ("async_command", "handoff",
-     "baseline: queue.Queue put to a consumer thread that runs it, amortised"),
+     "leaf command; baseline: queue.Queue put to a consumer thread that runs it, amortised"),
+    ("async_command_queued", "handoff",
+     "non-leaf command, run by the supplier's thread; same baseline"),
     ("sync_query", "roundtrip",
      "baseline: queue.Queue request/reply round trip to a server thread"),
+    ("reserve_1_wait_condition", "handoff_x1",
+     "reserve+release 1 idle processor with a true wait condition (one query); same baseline"),
 ] + [
     (f"reserve_{n}", f"handoff_x{n}",
      f"reserve+release {n} idle processors; baseline: one put to each of {n} consumer threads")
@@ -91,3 +97,96 @@ def baseline(calls, reservations):
     for n in RESERVE_COUNTS:
         result[f"handoff_x{n}"] = per_call_us(_time_fanout(n, reservations), reservations)
     return result
+
+
+# --- SCOOP: the same through the runtime, from a root processor --------------------
+
+W_MICRO = ("ROOT", "measure", "benchmarks/micro.e", 1)
+
+
+class Sink:
+    @leaf
+    def make(self):
+        self.count = 0
+
+    @leaf
+    def bump(self):
+        self.count += 1
+
+    def bump_queued(self):
+        """Not marked leaf (as if it looped): always queued for the supplier's thread."""
+        self.count += 1
+
+    @leaf
+    def get_count(self):
+        return self.count
+
+
+class Root:
+    def make(self, calls, reservations, out):
+        here = self._region_
+        sinks = [here.new_separate(Sink, Sink.make) for _ in range(max(RESERVE_COUNTS))]
+        self.sync_with(sinks)
+        for key, routine in (("async_command", Sink.bump), ("async_command_queued", Sink.bump_queued)):
+            out[key] = per_call_us(self.time_commands(sinks[0], routine, calls), calls)
+        out["sync_query"] = per_call_us(self.time_queries(sinks[0], calls), calls)
+        seconds = self.time_guarded(sinks[0], reservations)
+        out["reserve_1_wait_condition"] = per_call_us(seconds, reservations)
+        for n in RESERVE_COUNTS:
+            seconds = self.time_reservations(tuple(sinks[:n]), reservations)
+            out[f"reserve_{n}"] = per_call_us(seconds, reservations)
+
+    def sync_with(self, sinks):
+        """Wait until every sink has run its creation (so no timing includes it)."""
+        here = self._region_
+        with here.reserve(tuple(sinks), where=W_MICRO):
+            for sink in sinks:
+                here.query(sink, Sink.get_count, (), W_MICRO)
+
+    def time_commands(self, sink, routine, calls):
+        """Log `calls` commands, then one query: it returns when all have run."""
+        here = self._region_
+        start = time.perf_counter()
+        with here.reserve((sink,), where=W_MICRO):
+            before = here.query(sink, Sink.get_count, (), W_MICRO)
+            for _ in range(calls):
+                here.call(sink, routine)
+            done = here.query(sink, Sink.get_count, (), W_MICRO) - before
+        elapsed = time.perf_counter() - start
+        if done != calls:
+            raise AssertionError(f"async commands: {done} of {calls} ran")
+        return elapsed
+
+    def time_queries(self, sink, calls):
+        here = self._region_
+        with here.reserve((sink,), where=W_MICRO):
+            start = time.perf_counter()
+            for _ in range(calls):
+                here.query(sink, Sink.get_count, (), W_MICRO)
+            return time.perf_counter() - start
+
+    def time_guarded(self, sink, count):
+        """A routine `guarded (s: separate SINK) require s.count >= 0 do end`, called `count` times."""
+        here = self._region_
+        start = time.perf_counter()
+        for _ in range(count):
+            pre = ((lambda: here.query(sink, Sink.get_count, (), W_MICRO) >= 0,
+                    (0,), "non_negative", W_MICRO),)
+            with here.reserve((sink,), pre=pre, where=W_MICRO):
+                pass
+        return time.perf_counter() - start
+
+    def time_reservations(self, sinks, count):
+        here = self._region_
+        start = time.perf_counter()
+        for _ in range(count):
+            with here.reserve(sinks, where=W_MICRO):
+                pass
+        return time.perf_counter() - start
+
+
+def scoop(calls, reservations):
+    from common import run_program
+    out = {}
+    run_program(Root, (calls, reservations, out))
+    return out

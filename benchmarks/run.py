@@ -1,6 +1,6 @@
 """scoopc benchmark suite (DESIGN section 9): SCOOP/Qs programs on the runtime vs hand-written threading.
 
-Run `python benchmarks/run.py --help`. Every measurement runs in a fresh subprocess; best of R runs.
+Run `python benchmarks/run.py --help`. Every measurement runs in a fresh subprocess; the best (or median) of R runs is reported.
 """
 import argparse
 import importlib
@@ -8,6 +8,7 @@ import json
 import math
 import os
 import platform
+import statistics
 import subprocess
 import sys
 import time
@@ -18,6 +19,7 @@ BENCHMARKS = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
 VARIANTS = ("baseline", "scoop")
 REPEATS = {"full": 3, "quick": 3, "smoke": 1}
 TIMEOUTS = {"full": 600, "quick": 60, "smoke": 30}
+STATS = {"best": min, "median": statistics.median}
 
 
 class RunFailed(Exception):
@@ -37,7 +39,9 @@ def parse_args(argv):
                         help="do not pin to one CPU (shows the multi-core picture)")
     parser.add_argument("--only", nargs="+", metavar="NAME", choices=BENCHMARKS + ["micro"],
                         help="run only these benchmarks (names: %(choices)s)")
-    parser.add_argument("--repeat", type=int, metavar="R", help="runs per measurement (best is kept)")
+    parser.add_argument("--repeat", type=int, metavar="R", help="runs per measurement")
+    parser.add_argument("--stat", choices=sorted(STATS), default="best",
+                        help="how runs are summarised (default: best, the least disturbed)")
     parser.add_argument("--child", nargs=3, metavar=("NAME", "VARIANT", "SIZE"),
                         help=argparse.SUPPRESS)
     return parser.parse_args(argv)
@@ -93,28 +97,35 @@ def run_child(name, variant, size):
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
-def best_of(name, size, repeats):
-    """Best seconds per variant over `repeats` rounds, alternating variants against drift."""
-    best = {variant: math.inf for variant in VARIANTS}
+def summarise(runs, stat):
+    """{variant: {key: [values]}} -> {variant: {key: stat(values)}}."""
+    return {v: {key: STATS[stat](values) for key, values in keys.items()} for v, keys in runs.items()}
+
+
+def measure(name, size, repeats, stat):
+    """Run both variants `repeats` times, alternating them against drift; summarise."""
+    runs = {variant: {} for variant in VARIANTS}
     for _ in range(repeats):
         for variant in VARIANTS:
-            best[variant] = min(best[variant], run_child(name, variant, size)["seconds"])
-    return best
+            for key, value in run_child(name, variant, size).items():
+                runs[variant].setdefault(key, []).append(value)
+    return summarise(runs, stat)
 
 
 def describe(params):
     return " ".join(f"{key}={value}" for key, value in params.items())
 
 
-def report_benchmark(name, size, repeats):
+def report_benchmark(name, size, repeats, stat):
     """Print one benchmark line; return its ratio, or None when it failed."""
     module = load(name)
     params = module.SIZES[size]
     try:
-        best = best_of(name, size, repeats)
+        summary = measure(name, size, repeats, stat)
     except RunFailed as failure:
         print(f"{name} {describe(params)} FAILED {failure}", flush=True)
         return None
+    best = {variant: summary[variant]["seconds"] for variant in VARIANTS}
     ratio = best["scoop"] / best["baseline"]
     per_op = [1e6 * best[v] / module.ops(**params) for v in ("scoop", "baseline")]
     print(f"{name} {describe(params)} scoop_s={best['scoop']:.3f} baseline_s={best['baseline']:.3f}"
@@ -130,20 +141,11 @@ def report_geomean(ratios, failed):
     print(f"geomean_ratio={geomean:.2f}")
 
 
-def best_micro(size, repeats):
-    best = {variant: {} for variant in VARIANTS}
-    for _ in range(repeats):
-        for variant in VARIANTS:
-            for key, value in run_child("micro", variant, size).items():
-                best[variant][key] = min(best[variant].get(key, math.inf), value)
-    return best
-
-
-def report_micro(size, repeats):
+def report_micro(size, repeats, stat):
     """Print the micro costs; return False when they could not be measured."""
     micro = load("micro")
     try:
-        best = best_micro(size, repeats)
+        best = measure("micro", size, repeats, stat)
     except RunFailed as failure:
         print(f"micro FAILED {failure}", flush=True)
         return False
@@ -154,11 +156,11 @@ def report_micro(size, repeats):
     return True
 
 
-def print_header(args, size, repeats, pinning):
+def print_header(size, repeats, stat, pinning):
     gil = getattr(sys, "_is_gil_enabled", lambda: True)()
     print(f"# scoopc benchmarks: python {platform.python_version()} "
           f"({'GIL' if gil else 'free-threaded'}), {os.cpu_count()} cpus, {pinning}, "
-          f"size={size}, best of {repeats} runs, each run a fresh subprocess", flush=True)
+          f"size={size}, {stat} of {repeats} runs, each run a fresh subprocess", flush=True)
 
 
 def main(argv=None):
@@ -168,15 +170,15 @@ def main(argv=None):
         return 0
     size = size_of(args)
     repeats = args.repeat or REPEATS[size]
-    print_header(args, size, repeats, pin(args.unpinned))
+    print_header(size, repeats, args.stat, pin(args.unpinned))
     selected = args.only or BENCHMARKS + ["micro"]
     ratios, failed = [], []
     for name in (n for n in BENCHMARKS if n in selected):
-        ratio = report_benchmark(name, size, repeats)
+        ratio = report_benchmark(name, size, repeats, args.stat)
         ratios.append(ratio) if ratio is not None else failed.append(name)
     if any(n in selected for n in BENCHMARKS):
         report_geomean(ratios, failed)
-    if "micro" in selected and not report_micro(size, repeats):
+    if "micro" in selected and not report_micro(size, repeats, args.stat):
         failed.append("micro")
     return 1 if failed else 0
 

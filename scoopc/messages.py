@@ -8,6 +8,8 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - SYNTAX-RESERVED: a reserved word used where a name is expected.
 - SYNTAX-LEXICAL: a character or literal that is not part of any Eiffel token.
 - SYNTAX-CLASS: the file does not hold exactly one class.
+- SYNTAX-FEATURE: an `attribute` body on a feature without a type, or an attribute or
+  constant declared with arguments.
 - SOURCE: a file that cannot be read (missing, not UTF-8).
 - ECF: a problem in an .ecf project file; ECF-NOTE: an .ecf setting we ignore.
 
@@ -40,4 +42,8 @@ MESSAGES: dict[str, Message] = {
     ),
     "SYNTAX-LEXICAL": Message("{reason}"),
     "SYNTAX-CLASS": Message("{reason}", "Eiffel puts one class in each .e file"),
+    "SYNTAX-FEATURE": Message(
+        "the feature `{name}` mixes an attribute and a routine: an attribute has a type and no arguments",
+        "write `{name}: TYPE` (with `attribute ... end` if needed) for an attribute, or `do ... end` for a routine",
+    ),
 }

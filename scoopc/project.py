@@ -79,11 +79,18 @@ def _add_cluster(project: Project, directory: Path, recursive: bool,
                  excludes: tuple[re.Pattern, ...] = (), includes: tuple[re.Pattern, ...] = ()) -> None:
     pattern = "**/*.e" if recursive else "*.e"
     for file in sorted(directory.glob(pattern)):
-        relative = "/" + file.relative_to(directory).as_posix()
-        hidden = any(part.startswith(".") or part == "EIFGENs" for part in file.relative_to(directory).parts)
-        excluded = any(p.search(relative) for p in excludes) and not any(p.search(relative) for p in includes)
-        if file.is_file() and not hidden and not excluded:
+        parts = file.relative_to(directory).parts
+        hidden = any(part.startswith(".") or part == "EIFGENs" for part in parts)
+        if file.is_file() and not hidden and not _excluded(parts, excludes, includes):
             project.add_file(file)
+
+
+def _excluded(parts: tuple[str, ...], excludes: tuple[re.Pattern, ...], includes: tuple[re.Pattern, ...]) -> bool:
+    """An .ecf file rule excludes a file when a pattern matches its path or a folder above it
+    (`/skipped$` excludes everything in `skipped/`), unless an include pattern matches."""
+    prefixes = ["/" + "/".join(parts[:i]) for i in range(1, len(parts) + 1)]
+    excluded = any(p.search(prefix) for p in excludes for prefix in prefixes)
+    return excluded and not any(p.search(prefix) for p in includes for prefix in prefixes)
 
 
 # --- .ecf ----------------------------------------------------------------------------------

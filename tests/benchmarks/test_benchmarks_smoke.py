@@ -12,7 +12,7 @@ NUMBER = r"\d+\.\d+"
 BENCH_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) baseline_s=({NUMBER}) "
                         rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER}$")
 MICRO_LINE = re.compile(rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
-MICRO_KEYS = ["async_command", "sync_query", "reserve_1", "reserve_2", "reserve_4", "reserve_8"]
+MICRO_KEYS = ["async_command", "async_command_queued", "sync_query", "reserve_1_wait_condition", "reserve_1", "reserve_2", "reserve_4", "reserve_8"]
 
 
 def run(*options):

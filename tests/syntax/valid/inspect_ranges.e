@@ -23,7 +23,7 @@ feature {NONE} -- Initialization
 				print (i.out + ": " + size_of (i) + "%N")
 				i := i + 1
 			end
-			across ("Hello, World 42!").to_array as ch loop
+			across "Hello, World 42!" as ch loop
 				print (kind_of (ch.item))
 			end
 			print ("%N")

@@ -34,7 +34,8 @@ FEATURE {none} -- Initialization
 			flag := flag AND THEN not FALSE OR ELSE Void = Current
 			print (flag.OUT + "%N")
 			print (Twice (count).out + "%N")
-			print (CURRENT.generating_type.name + "%N")
+			PRINT (CURRENT.generating_type.name)
+			print ("%N")
 		end
 
 feature -- Computation

@@ -34,7 +34,7 @@ feature {NONE} -- Initialization
 			print (s + "%N")
 			s := "line one%Nline two%N"
 			print (s)
-			print ("abc".count.out + "%N")
+			print (("abc").count.out + "%N")
 			print (("x" + "y").twin + "%N")
 			print ({STRING_32} "typed" + "%N")
 			print ({STRING_8} "typed 8")

@@ -83,7 +83,7 @@ feature -- Access
 	attached_twice (a, b: detachable ANY): BOOLEAN
 			-- Are both `a' and `b' attached to strings of one length?
 		do
-			Result := attached {STRING} a as sa and attached {STRING} b as sb and then sa.count = sb.count
+			Result := attached {STRING} a as sa and then attached {STRING} b as sb and then sa.count = sb.count
 		end
 
 	forced (a: detachable STRING): attached STRING

@@ -22,8 +22,8 @@ feature {NONE} -- Initialization
 			x := {MATH_CONST}.pi
 			print (x.truncated_to_integer.out + "%N")
 			print ({STATIC_CALLS}.double (21).out + "%N")
-			print ({PLATFORM}.is_windows.out + "%N")
-			print (({CHARACTER_8}.max_value).out + "%N")
+			print ({INTEGER_16}.max_value.out + "%N")
+			print (({NATURAL_16}.max_value).out + "%N")
 		end
 
 feature -- Class features

@@ -1,0 +1,113 @@
+"""Parser stage: Eiffel source text to an AST, with syntax diagnostics.
+
+Input: a SourceFile. Output: ParseResult (the ClassDeclaration or None, and diagnostics).
+lark's LALR(1) parser with the basic lexer (so keywords are reserved) builds AST nodes in its
+reduction callbacks (scoopc/parse_tree); there is no intermediate parse tree.
+"""
+from __future__ import annotations
+
+import os
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Optional
+
+from lark import Lark
+from lark.exceptions import UnexpectedInput
+
+from . import diagnostics, syntax, syntax_errors
+from .diagnostics import Diagnostic, InternalError
+from .parse_tree import AstBuilder
+from .source import SourceFile, Span
+
+GRAMMAR_PATH = Path(__file__).with_name("grammar.lark")
+
+_lock = threading.Lock()
+_instance: Optional[tuple[Lark, AstBuilder]] = None
+_pure: Optional[Lark] = None
+
+
+@dataclass
+class ParseResult:
+    tree: Optional[syntax.ClassDeclaration]
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+
+def _accelerator() -> dict:
+    """lark-cython's plugins when installed and not disabled (SCOOPC_PURE_PARSER=1)."""
+    if os.environ.get("SCOOPC_PURE_PARSER"):
+        return {}
+    try:
+        import lark_cython  # type: ignore[import-not-found]
+    except ImportError:
+        return {}
+    return {"_plugins": lark_cython.plugins}
+
+
+def make_parser(builder: object, accelerate: bool = True) -> Lark:
+    """A lark LALR parser for the grammar that calls `builder`'s methods on each reduction."""
+    options = _accelerator() if accelerate else {}
+    return Lark(GRAMMAR_PATH.read_text(encoding="utf-8"), parser="lalr", lexer="basic",
+                transformer=builder, maybe_placeholders=True, propagate_positions=False,
+                cache=True, **options)
+
+
+def _parser() -> tuple[Lark, AstBuilder]:
+    global _instance
+    if _instance is None:
+        builder = AstBuilder()
+        _instance = (make_parser(builder), builder)
+    return _instance
+
+
+def _diagnosis_parser(fast: Lark, builder: AstBuilder) -> Lark:
+    """The pure-Python parser, which syntax_errors replays to explain an error (lark-cython's
+    interactive parser lacks what it needs); the same as `fast` when there is no accelerator."""
+    global _pure
+    if not _accelerator():
+        return fast
+    if _pure is None:
+        _pure = make_parser(builder, accelerate=False)
+    return _pure
+
+
+def parse(source: SourceFile) -> ParseResult:
+    """Parse one file, which must hold exactly one class. Never raises for bad input."""
+    with _lock:
+        lark_parser, builder = _parser()
+        builder.reset(source.path)
+        try:
+            classes = lark_parser.parse(source.text)
+        except UnexpectedInput as error:
+            problems = list(builder.problems)
+            found = syntax_errors.describe(error, source, _diagnosis_parser(lark_parser, builder))
+            return ParseResult(None, _sorted(problems + [found]))
+        except Exception as error:  # a bug in scoopc, not the user's mistake
+            raise InternalError(f"the parser failed on {source.path}: {error!r}") from error
+        problems = builder.problems + _stray_open_operands(builder)
+    return _one_class(classes, source, problems)
+
+
+def _stray_open_operands(builder: AstBuilder) -> list[Diagnostic]:
+    return [diagnostics.make("SYNTAX", operand.span, found="`?`",
+                             expected="an expression (`?` is an open operand, only allowed "
+                                      "among the arguments of an agent)")
+            for operand in builder.unopened_operands()]
+
+
+def _one_class(classes: list, source: SourceFile, problems: list[Diagnostic]) -> ParseResult:
+    if not classes:
+        end = source.position(len(source.text))
+        problems.append(diagnostics.make("SYNTAX-CLASS", Span.point(source.path, *end),
+                                         reason="the file holds no class"))
+        return ParseResult(None, _sorted(problems))
+    for extra in classes[1:]:
+        problems.append(diagnostics.make(
+            "SYNTAX-CLASS", Span.point(source.path, extra.span.line, extra.span.column),
+            reason=f"class `{extra.name.text}` is a second class in this file "
+                   f"(after `{classes[0].name.text}`)"))
+    return ParseResult(classes[0], _sorted(problems))
+
+
+def _sorted(problems: list[Diagnostic]) -> list[Diagnostic]:
+    return sorted(problems, key=diagnostics.sort_key)

@@ -1,0 +1,159 @@
+"""The runtime clock behind `sleep` and timers: real (monotonic) by default, or virtual,
+jumping to the next deadline when every thread running processor code waits.
+
+Timers fire on the clock thread (owned and joined by the runtime), which logs the timer's
+command on its target processor like an outside client would.
+"""
+import heapq
+import itertools
+import threading
+import time
+
+from .sched import Block
+
+
+class Timer:
+    __slots__ = ("deadline", "target", "routine", "args", "period", "cancelled", "source")
+
+    def __init__(self, deadline, target, routine, args, period, source):
+        self.deadline = deadline
+        self.target, self.routine, self.args = target, routine, args
+        self.period = period
+        self.cancelled = False   # [rt.glock]
+        self.source = source
+
+    def cancel(self):
+        rt = self.source.rt
+        with rt.glock:
+            self.cancelled = True
+            rt.clock.cv.notify_all()
+
+
+class Clock:
+    """Fields marked [g] are protected by the runtime's glock."""
+
+    def __init__(self, rt, virtual):
+        self.rt = rt
+        self.virtual = virtual
+        self.vnow = 0                 # [g] virtual time, ns
+        self.heap = []                # [g] (deadline, seq, Timer or Block)
+        self.seq = itertools.count()  # [g]
+        self.due = []                 # [g] timers handed to the clock thread
+        self.cv = threading.Condition(rt.glock)
+        self.thread = None            # [g] the clock thread, started with the first timer
+        self.stopped = False          # [g]
+
+    def now_ns(self):
+        if self.virtual:
+            return self.vnow          # a plain read of an int: never torn
+        return time.monotonic_ns()
+
+    # -- sleeping ----------------------------------------------------------------------
+    def sleep(self, proc, ns, where=None):
+        lk = threading.Lock()
+        lk.acquire()
+        rt = self.rt
+        with rt.glock:
+            deadline = (self.vnow if self.virtual else time.monotonic_ns()) + max(ns, 0)
+            blk = Block("sleep", proc, None, where, lk, deadline)
+            if self.virtual:
+                heapq.heappush(self.heap, (deadline, next(self.seq), blk))
+        rt.block(proc.exec, blk)
+
+    def real_wait(self, blk):
+        while True:
+            left = blk.deadline - time.monotonic_ns()
+            if left <= 0 or blk.lock.acquire(timeout=left / 1e9):
+                return
+
+    # -- timers ------------------------------------------------------------------------
+    def add_timer(self, timer):
+        rt = self.rt
+        start = None
+        with rt.glock:
+            timer.deadline += self.vnow if self.virtual else time.monotonic_ns()
+            heapq.heappush(self.heap, (timer.deadline, next(self.seq), timer))
+            if self.thread is None and not self.stopped:
+                start = self.thread = threading.Thread(target=self._run, name="scoop-clock",
+                                                       daemon=True)
+            self.cv.notify_all()
+        if start is not None:
+            start.start()
+        return timer
+
+    def pending_locked(self):
+        """[g] Is a timer still to fire (keeps the program alive)?"""
+        return bool(self.due) or any(isinstance(e[2], Timer) and not e[2].cancelled
+                                     for e in self.heap)
+
+    def advance_locked(self):
+        """[g] Virtual clock, every processor thread waiting: jump to the next deadline."""
+        while self.heap and getattr(self.heap[0][2], "cancelled", False):
+            heapq.heappop(self.heap)
+        if not self.heap or self.due:
+            return
+        now = self.vnow = max(self.vnow, self.heap[0][0])
+        while self.heap and self.heap[0][0] <= now:
+            item = heapq.heappop(self.heap)[2]
+            if isinstance(item, Timer):
+                if not item.cancelled:
+                    self.due.append(item)
+            else:
+                self.rt.unblock_locked(item)
+        if self.due:
+            self.rt.n_running += 1     # the clock thread runs until it has logged them
+            self.cv.notify_all()
+
+    def _run(self):
+        rt = self.rt
+        with rt.glock:
+            while not self.stopped:
+                if self.due:
+                    due, self.due = self.due, []
+                    if not self.virtual:        # virtual: counted by advance_locked
+                        rt.n_running += 1
+                    rt.glock.release()
+                    try:
+                        for t in due:
+                            self._fire(t)
+                    finally:
+                        rt.glock.acquire()
+                    rt.n_running -= 1
+                    rt._check_quiet()
+                    continue
+                if self.virtual:
+                    self.cv.wait()
+                    continue
+                self._collect_real()
+
+    def _collect_real(self):
+        """[g] Real clock: wait for the earliest timer and move the due ones to `due`."""
+        while self.heap and self.heap[0][2].cancelled:
+            heapq.heappop(self.heap)
+        if not self.heap:
+            self.cv.wait()
+            return
+        left = self.heap[0][0] - time.monotonic_ns()
+        if left > 0:
+            self.cv.wait(left / 1e9)
+            return
+        t = heapq.heappop(self.heap)[2]
+        self.due.append(t)
+
+    def _fire(self, t):
+        t.source.call(t.target, t.routine, t.args)
+        if t.period:
+            with self.rt.glock:
+                if not t.cancelled:
+                    t.deadline += t.period
+                    heapq.heappush(self.heap, (t.deadline, next(self.seq), t))
+
+    def stop(self):
+        with self.rt.glock:
+            self.stopped = True
+            self.cv.notify_all()
+
+    def join(self, timeout):
+        t = self.thread
+        if t is not None:
+            t.join(timeout)

@@ -1,0 +1,41 @@
+"""Exceptions the SCOOP runtime raises into generated code, and the run-time failure record."""
+
+
+class ScoopError(Exception):
+    """Base class of the runtime's own exceptions."""
+
+
+class PreconditionViolation(ScoopError):
+    """A precondition clause is false and is not a wait condition (no newly reserved target)."""
+
+    def __init__(self, tag, where):
+        super().__init__(f"precondition {tag or '(untagged)'} violated at {fmt_where(where)}")
+        self.tag, self.where = tag, where
+
+
+class DirtyRegionError(ScoopError):
+    """A synchronous call on a region where an earlier asynchronous call of this
+    reservation failed; `__cause__` is that failure."""
+
+
+class UncontrolledTarget(ScoopError):
+    """A separate call on a region the client does not hold: a compiler bug, not a user error."""
+
+
+class Shutdown(BaseException):
+    """Raised in processors when the runtime shuts down (Ctrl-C, deadlock, fatal failure).
+    A BaseException so Eiffel `rescue` clauses (which catch Exception) do not swallow it."""
+
+
+class DeadlockError(ScoopError):
+    """Ends the root routine when a deadlock was detected; the report is in `args[0]`."""
+
+
+def fmt_where(where):
+    """`(class, routine, file, line)` -> 'CLASS.routine (file:line)'; tolerant of None/str."""
+    if where is None:
+        return "?"
+    if isinstance(where, tuple) and len(where) == 4:
+        cls, routine, file, line = where
+        return f"{cls}.{routine} ({file}:{line})"
+    return str(where)

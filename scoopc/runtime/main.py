@@ -1,0 +1,112 @@
+"""The program entry point for generated code: run the root creation procedure as the root
+processor on the main thread, wait for termination, and shut down (Ctrl-C, deadlock,
+failure) with every thread joined and every failure reported."""
+import signal
+import sys
+import threading
+import traceback
+
+from .errors import Shutdown, fmt_where
+from .monitor import Monitor, dump
+from .processor import RUNNING, Processor
+from .sched import Exec, Runtime
+
+_current = None        # the runtime of the running program (one at a time)
+
+
+def current():
+    if _current is None:
+        raise RuntimeError("no SCOOP runtime is running (use rt.run_main or rt.start)")
+    return _current
+
+
+def start(**options):
+    """Create the runtime and the root processor, run by the calling thread. For tests and
+    embedding; `run_main` is start + root creation + finish."""
+    global _current
+    rt = Runtime(**options)
+    _current = rt
+    root = Processor(rt, name="ROOT")
+    ex = Exec("main")
+    root.exec = ex
+    root.state = RUNNING
+    ex.stack.append(root)
+    with rt.glock:
+        rt.n_running += 1
+    rt.monitor = Monitor(rt)
+    rt.monitor.start()
+    return rt, root
+
+
+def finish(rt, root, interrupted=False):
+    """The root routine returned: wait for quiescence, shut down, return the exit status."""
+    global _current
+    root.exec.stack.pop()
+    root.unclaim()
+    rt.leave_running()
+    status = 130 if interrupted else 0
+    try:
+        if not interrupted:
+            rt.wait_quiet()
+    except KeyboardInterrupt:
+        status = 130
+    rt.stop()
+    rt.monitor.stop()
+    _run_hooks(rt)
+    alive = rt.join_workers()
+    rt.clock.join(1.0)
+    rt.out.flush()
+    for message, _exc in rt.failures:
+        rt.stderr.write(f"scoopc: run-time failure: {message}\n")
+    if alive:
+        rt.stderr.write(f"scoopc: threads still running at exit: {', '.join(alive)}\n")
+    _current = None
+    if rt.failures and status == 0:
+        status = 3
+    return status
+
+
+def run_main(root_cls, creator, args=(), **options):
+    """Run a program: `creator(root_object, *args)` on the root processor. Exit status."""
+    rt, root = start(**options)
+    restore = _install_dump_signal(rt)
+    interrupted = False
+    try:
+        obj = root.new(root_cls)
+        root.name = root_cls.__name__
+        if creator is not None:
+            creator(obj, *args)
+    except Shutdown:
+        pass
+    except KeyboardInterrupt:
+        interrupted = True
+    except BaseException as e:
+        rt.fail(_uncaught(root, e), e)
+    try:
+        return finish(rt, root, interrupted)
+    finally:
+        restore()
+
+
+def _uncaught(proc, e):
+    where = f" in {fmt_where(proc.frames[-1])}" if proc.frames else ""
+    text = "".join(traceback.format_exception_only(type(e), e)).strip()
+    return f"uncaught exception on {proc!r}{where}: {text}"
+
+
+def _run_hooks(rt):
+    with rt.glock:
+        hooks = list(reversed(rt.shutdown_hooks))
+    for fn in hooks:
+        try:
+            fn()
+        except Exception as e:     # a failing hook must not stop the others
+            rt.stderr.write(f"scoopc: shutdown hook {fn!r} failed: {e!r}\n")
+
+
+def _install_dump_signal(rt):
+    if threading.current_thread() is not threading.main_thread() or \
+            not hasattr(signal, "SIGUSR1"):
+        return lambda: None
+    old = signal.signal(signal.SIGUSR1, lambda *_: rt.stderr.write(dump(rt)))
+    return lambda: signal.signal(signal.SIGUSR1, old)

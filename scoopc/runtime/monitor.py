@@ -1,0 +1,136 @@
+"""Deadlock detection and the live dump: a wait-for graph between blocked threads.
+
+Each blocked thread waits for at most one other thread: the one running the supplier it
+called, or the one running the client whose private queue is ahead of its own. A cycle is
+a deadlock of synchronous calls. "Every thread blocked, some in wait conditions, no sleeper,
+no timer, no open outside client" is a wait-condition deadlock. The monitor thread looks
+once a tick, and only reports a candidate seen again, unchanged (same Block objects: a
+thread that moved got a new one), on the next tick: no false report from a racy snapshot.
+"""
+import threading
+
+from .errors import fmt_where
+
+
+def _target(blk):
+    """The Exec that must move for `blk`'s thread to move, or None (it can move by itself,
+    or waits for time, a condition or an outside client)."""
+    if blk.kind not in ("sync", "turn"):
+        return None
+    s = blk.on
+    p = s.proc
+    with p.lock:
+        if p.state == 2:                       # RUNNING: whoever runs it
+            return p.exec
+        h = p.head
+        if h is s or h is None or h.calls:
+            return None
+        client = h.client
+    return getattr(client, "exec", None)
+
+
+def _describe(blk):
+    where = fmt_where(blk.where if blk.where is not None else
+                      (blk.proc.frames[-1] if blk.proc.frames else None))
+    if blk.kind == "sync":
+        what = getattr(blk.what, "__qualname__", blk.what)
+        return f"{blk.proc!r} in {where} waits for the result of {what} on {blk.on.proc!r}"
+    if blk.kind == "turn":
+        return f"{blk.proc!r} in {where} waits for its turn on passive {blk.on.proc!r}"
+    if blk.kind == "wait":
+        on = ", ".join(repr(p) for p in blk.on)
+        tag = f" {blk.what}" if blk.what else ""
+        return f"{blk.proc!r} in {where} waits on wait condition{tag} over {on}"
+    return f"{blk.proc!r} in {where} sleeps"
+
+
+def snapshot(rt):
+    """(blocks, all_waiting, quiet_otherwise) read under glock."""
+    with rt.glock:
+        blocks = {ex: ex.blocked for ex in rt.blocked if ex.blocked is not None}
+        all_blocked = rt.n_running == len(rt.blocked) and not rt.runnable
+        no_wakers = (rt.sources == 0 and not rt.clock.pending_locked()
+                     and not rt.clock.heap)
+    return blocks, all_blocked and no_wakers
+
+
+def find_deadlock(rt):
+    """A candidate deadlock as (frozenset of Blocks, report lines), or None."""
+    blocks, stuck = snapshot(rt)
+    if not blocks:
+        return None
+    edges = {ex: _target(blk) for ex, blk in blocks.items()}
+    for start in edges:
+        path, ex = [], start
+        while ex in edges and ex not in path:
+            path.append(ex)
+            ex = edges[ex]
+        if ex in path:
+            cycle = path[path.index(ex):]
+            lines = ["deadlock: a cycle of synchronous calls"]
+            lines += ["  " + _describe(blocks[e]) for e in cycle]
+            return frozenset(blocks[e] for e in cycle), lines
+    kinds = {blk.kind for blk in blocks.values()}
+    if stuck and "wait" in kinds and "sleep" not in kinds:
+        lines = ["deadlock: every processor is idle or blocked and none can make a "
+                 "wait condition true"]
+        lines += ["  " + _describe(blk) for blk in blocks.values()]
+        return frozenset(blocks.values()), lines
+    return None
+
+
+def dump(rt):
+    """A text dump of every live processor and every blocked thread."""
+    from .processor import STATE_NAMES
+    with rt.idlock:
+        procs = sorted(rt.procs.values(), key=lambda p: p.id)
+    lines = [f"scoop runtime dump: {len(procs)} processors"]
+    for p in procs:
+        with p.lock:
+            state, head, n = STATE_NAMES[p.state], p.head, len(p.qoq)
+        if state == "idle" and head is None:
+            continue
+        holder = f", serving {head.client!r}" if head is not None else ""
+        frame = f" at {fmt_where(p.frames[-1])}" if p.frames else ""
+        lines.append(f"  {p!r}: {state}{holder}, {n} queued{frame}")
+    blocks, _ = snapshot(rt)
+    for blk in blocks.values():
+        lines.append("  blocked: " + _describe(blk))
+    return "\n".join(lines) + "\n"
+
+
+class Monitor:
+    """The deadlock watchdog thread, owned by run_main (started, stopped and joined)."""
+
+    def __init__(self, rt):
+        self.rt = rt
+        self.stopped = threading.Event()
+        self.thread = threading.Thread(target=self._run, name="scoop-monitor", daemon=True)
+        self.previous = None
+
+    def start(self):
+        self.thread.start()
+
+    def stop(self):
+        self.stopped.set()
+        self.thread.join()
+
+    def _run(self):
+        rt = self.rt
+        try:
+            while not self.stopped.wait(rt.deadlock_tick):
+                self.check()
+        except BaseException as e:          # collected by the owner
+            rt.fail(f"internal error in the deadlock monitor: {e!r}", e)
+
+    def check(self):
+        found = find_deadlock(self.rt)
+        if found is None:
+            self.previous = None
+            return
+        blocks, lines = found
+        if self.previous is not None and self.previous == blocks:
+            self.rt.fail("\n".join(lines))
+            self.stopped.set()
+            return
+        self.previous = blocks

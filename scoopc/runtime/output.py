@@ -1,0 +1,37 @@
+"""Untorn program output: one print call writes its text whole; with processor tracing,
+every output line carries the tag of the processor that wrote it."""
+import threading
+
+
+class Output:
+    def __init__(self, stream, trace):
+        self.stream = stream
+        self.trace = trace
+        self.lock = threading.Lock()
+        self.partial = {}     # [lock] processor -> unfinished line (trace mode only)
+
+    def write(self, proc, text):
+        if not self.trace:
+            with self.lock:
+                self.stream.write(text)
+            return
+        with self.lock:
+            text = self.partial.pop(proc, "") + text
+            lines = text.split("\n")
+            tail = lines.pop()
+            if lines:
+                tag = f"[P{proc.id}] "
+                self.stream.write("".join(tag + line + "\n" for line in lines))
+            if tail:
+                self.partial[proc] = tail
+
+    def flush(self):
+        """At exit: write unfinished lines, then flush the stream."""
+        with self.lock:
+            for proc, tail in sorted(self.partial.items(), key=lambda kv: kv[0].id):
+                self.stream.write(f"[P{proc.id}] {tail}\n")
+            self.partial.clear()
+            try:
+                self.stream.flush()
+            except (OSError, ValueError):
+                pass

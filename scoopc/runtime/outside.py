@@ -1,0 +1,61 @@
+"""Clients that are not processors (transport callbacks, timers) and agents.
+
+An outside client logs commands from any thread without ever waiting for a processor: each
+call is a closed private queue of one call put in the supplier's queue of queues, so calls
+of one source to one processor run in the order they were logged."""
+from .errors import ScoopError
+from .processor import IDLE, SCHEDULED, Session, enqueue
+
+
+class OutsideClient:
+    """A source of commands from outside the processors; counted open until `close`."""
+
+    def __init__(self, rt, name):
+        self.rt = rt
+        self.name = name
+        self.exec = None       # not a processor: nothing to wait for in the wait-for graph
+        self.open = True       # [rt.glock]
+        with rt.glock:
+            rt.sources += 1
+
+    def __repr__(self):
+        return f"outside client {self.name!r}"
+
+    def call(self, target, routine, args=()):
+        p = target._region_
+        if p.passive:
+            raise ScoopError(f"{self!r}: passive region {p!r} needs a processor client")
+        s = Session(self, p)
+        s.calls.append((routine, target, args, None, None))
+        s.closed = True
+        lock = p.lock
+        lock.acquire()
+        enqueue(p, s)
+        run = p.state == IDLE and p.head is s
+        if run:
+            p.state = SCHEDULED
+        lock.release()
+        if run:
+            self.rt.schedule(p)
+
+    def close(self):
+        with self.rt.glock:
+            if self.open:
+                self.open = False
+                self.rt.sources -= 1
+
+
+class Agent:
+    """An agent object: lives in its target's region; `call` runs routine(target, *closed,
+    *operands). On a separate agent, `here.call(agent, Agent.call, (None,))` is
+    asynchronous and `(operands_tuple,)` passes locks (a tuple is a client reference)."""
+    __slots__ = ("_region_", "target", "routine", "closed")
+
+    def __init__(self, target, routine, closed=()):
+        self._region_ = target._region_
+        self.target, self.routine, self.closed = target, routine, closed
+
+    def call(self, operands=None):
+        return self.routine(self.target, *self.closed, *(operands or ()))
+
+    item = call

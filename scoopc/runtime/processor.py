@@ -1,0 +1,400 @@
+"""Processors (regions) and private queues (sessions): logging calls, serving them, and the
+client-executes fast path. Reservation and wait conditions live in reservation.py.
+
+A processor's state: IDLE (no thread attached), SCHEDULED (in the runnable queue), RUNNING
+(one thread executes on its behalf: a worker, or a client running a query itself). Only the
+thread that moved a processor to RUNNING runs its code or touches its executor-only fields.
+The queue of queues is `head` (the private queue being served) plus `qoq` (those waiting).
+A client whose private queue is at the head of an IDLE supplier runs its synchronous calls
+itself on its own thread ("client executes", as SCOOP/Qs): no thread hand-off.
+"""
+from collections import deque
+
+from .errors import DirtyRegionError, Shutdown, UncontrolledTarget
+from .once import once_in
+from .sched import Block
+
+IDLE, SCHEDULED, RUNNING = 0, 1, 2
+Reservation = None      # set by reservation.py (which imports this module)
+STATE_NAMES = ("idle", "scheduled", "running")
+
+
+class Session:
+    """A private queue: the calls of one client to one supplier within one reservation."""
+    __slots__ = ("client", "proc", "calls", "closed", "dirty", "delivered", "changed",
+                 "turn", "where")
+
+    def __init__(self, client, proc, where=None):
+        self.client = client      # Processor or OutsideClient (immutable)
+        self.proc = proc          # the supplier (immutable)
+        self.calls = deque()      # [proc.lock] (routine, target, args, Block|None, passer|None)
+        self.closed = False       # [proc.lock] the client released the reservation
+        self.dirty = None         # [proc.lock] exception of a failed asynchronous call
+        self.delivered = False    # [proc.lock] the dirty exception reached the client
+        self.changed = False      # [executor of proc] a command ran (wakes wait conditions)
+        self.turn = None          # [proc.lock] passive only: Block of the client awaiting its turn
+        self.where = where        # reservation position, for reports
+
+
+class Processor:
+    """A region and its processor. The public methods are the API for generated code."""
+    __slots__ = ("id", "rt", "lock", "head", "qoq", "state", "passive", "exec", "held",
+                 "waiters", "onces", "frames", "name", "__weakref__")
+
+    def __init__(self, rt, passive=False, name=None):
+        import threading
+        self.rt = rt
+        self.id = rt.register(self)
+        self.lock = threading.Lock()
+        self.head = None          # [lock] Session being served
+        self.qoq = deque()        # [lock] Sessions waiting behind the head, FIFO
+        self.state = IDLE         # [lock]
+        self.passive = passive
+        self.exec = None          # [lock to set] Exec of the thread running on our behalf
+        self.held = {self: self}  # [executor] region -> Session, or region itself (own/borrowed)
+        self.waiters = []         # [lock] Blocks of processors in wait conditions on us
+        self.onces = {}           # [executor] once-per-region values
+        self.frames = []          # [executor] optional Eiffel frame stack (where tuples)
+        self.name = name          # class name of the first object, for reports
+
+    def __repr__(self):
+        return f"P{self.id}" + (f"({self.name})" if self.name else "")
+
+    # -- object creation ---------------------------------------------------------------
+    def new(self, cls):
+        """A new object of `cls` in this region (its creation procedure is not called)."""
+        obj = cls.__new__(cls)
+        obj._region_ = self
+        return obj
+
+    def new_separate(self, cls, creator, args=()):
+        """Separate creation: a new processor; `creator` is logged on it as a command."""
+        return self._create(Processor(self.rt, False, cls.__name__), cls, creator, args)
+
+    def new_passive(self, cls, creator, args=()):
+        """`create <NONE>`: a passive region whose calls its clients run under reservation."""
+        return self._create(Processor(self.rt, True, cls.__name__), cls, creator, args)
+
+    def _create(self, proc, cls, creator, args):
+        obj = proc.new(cls)
+        s = Session(self, proc)
+        proc.head = s             # the new processor is ours alone: no lock needed yet
+        self.held[proc] = s
+        try:
+            if creator is not None:
+                self.call(obj, creator, args)
+        finally:
+            del self.held[proc]
+            close(s)
+        return obj
+
+    # -- calls -------------------------------------------------------------------------
+    def call(self, target, routine, args=()):
+        """A separate command: asynchronous unless it passes locks or the region is passive."""
+        p = target._region_
+        s = self.held.get(p)
+        if s.__class__ is Session:
+            if (args and self._passes(args)) or p.passive:
+                self._sync(s, p, routine, target, args, None, True)
+                return
+            lock = p.lock
+            lock.acquire()
+            if s.dirty is None:      # a dirty region skips later calls
+                if p.state == IDLE and p.head is s and not s.calls and \
+                        routine.__dict__.get("_scoop_leaf_"):
+                    p.state = RUNNING    # client executes a short command itself
+                    lock.release()
+                    self._run_leaf(p, s, routine, target, args)
+                    return
+                s.calls.append((routine, target, args, None, None))
+                if p.state == IDLE and p.head is s:
+                    p.state = SCHEDULED
+                    lock.release()
+                    self.rt.schedule(p)
+                    return
+            lock.release()
+        elif s is p:
+            if p is self:
+                routine(target, *args)
+            else:
+                self._borrowed(p, routine, target, args)
+        else:
+            raise UncontrolledTarget(f"{self} calls {routine.__qualname__} on {p}, not reserved")
+
+    def query(self, target, routine, args=(), where=None):
+        """A separate query: synchronous (wait by necessity)."""
+        p = target._region_
+        s = self.held.get(p)
+        if s.__class__ is Session:
+            return self._sync(s, p, routine, target, args, where, False)
+        if s is p:
+            if p is self:
+                return routine(target, *args)
+            return self._borrowed(p, routine, target, args)
+        raise UncontrolledTarget(f"{self} queries {routine.__qualname__} on {p}, not reserved")
+
+    def _passes(self, args):
+        """Lock passing: an argument is a reference into a region we hold (or a TUPLE)."""
+        held = self.held
+        for a in args:
+            if a.__class__ is tuple or getattr(a, "_region_", None) in held:
+                return True
+        return False
+
+    def _sync(self, s, p, routine, target, args, where, is_cmd):
+        """A synchronous call: run it ourselves if `p` is free for us, else wait for it."""
+        passer = self if args and self._passes(args) else None
+        lock = p.lock
+        while True:
+            lock.acquire()
+            if s.dirty is not None:
+                s.delivered = True
+                err = s.dirty
+                lock.release()
+                raise DirtyRegionError(f"an earlier call on {p} failed: {err!r}") from err
+            if p.head is s and p.state != RUNNING:
+                p.state = RUNNING        # a SCHEDULED worker will find it taken and skip it
+                pending = s.calls
+                if pending:
+                    s.calls = deque()
+                lock.release()
+                return self._inline(p, s, pending, routine, target, args, passer, is_cmd)
+            blk = Block("turn" if p.passive else "sync", self, s, where, _locked(), None, routine)
+            if p.passive:
+                s.turn = blk
+            else:
+                s.calls.append((routine, target, args, blk, passer))
+            lock.release()
+            self.rt.block(self.exec, blk)
+            if not p.passive:
+                if blk.error is not None:
+                    raise blk.error
+                return blk.value
+
+    def _inline(self, p, s, pending, routine, target, args, passer, is_cmd):
+        """Run `p`'s pending calls of this session, then this call, on our thread."""
+        ex = self.exec
+        p.exec = ex
+        ex.stack.append(p)
+        try:
+            if pending:
+                p._run_calls(s, pending)
+                if s.dirty is not None:
+                    with p.lock:
+                        s.delivered = True
+                    raise DirtyRegionError(f"an earlier call on {p} failed: {s.dirty!r}") \
+                        from s.dirty
+            if is_cmd:
+                s.changed = True
+            if passer is None:
+                return routine(target, *args)
+            return p._invoke_passing(passer, routine, target, args)
+        finally:
+            ex.stack.pop()
+            p.unclaim()
+
+    def _run_leaf(self, p, s, routine, target, args):
+        """A leaf command run by its client: a failure makes the region dirty, as if the
+        supplier had run it; the client goes on."""
+        ex = self.exec
+        p.exec = ex
+        ex.stack.append(p)
+        s.changed = True
+        try:
+            routine(target, *args)
+        except Shutdown:
+            raise
+        except BaseException as e:
+            with p.lock:
+                s.dirty = e
+        finally:
+            ex.stack.pop()
+            p.unclaim()
+
+    def _borrowed(self, p, routine, target, args):
+        """A callback into a region whose locks were passed to us: its own thread is blocked
+        waiting for us, so we run the call on its behalf, on our thread."""
+        ex = self.exec
+        saved = p.exec
+        p.exec = ex
+        ex.stack.append(p)
+        try:
+            return routine(target, *args)
+        finally:
+            ex.stack.pop()
+            p.exec = saved
+
+    def _invoke_passing(self, passer, routine, target, args):
+        """Run a call while holding every lock of `passer` (lock passing)."""
+        saved = self.held
+        held = dict(saved)
+        held.update(passer.held)
+        held[self] = self
+        self.held = held
+        try:
+            return routine(target, *args)
+        finally:
+            self.held = saved
+
+    # -- serving -----------------------------------------------------------------------
+    def unclaim(self):
+        """The thread running on our behalf stops; hand remaining work to the pool."""
+        lock = self.lock
+        lock.acquire()
+        self.exec = None
+        s = self.head
+        if s is not None and (s.calls or s.closed) and not self.passive:
+            self.state = SCHEDULED
+            lock.release()
+            self.rt.schedule(self)
+            return
+        self.state = IDLE
+        lock.release()
+
+    def run_scheduled(self, ex):
+        """Worker entry: serve the queue of queues until it has nothing runnable."""
+        lock = self.lock
+        lock.acquire()
+        if self.state != SCHEDULED:      # taken by a client in the meantime
+            lock.release()
+            return
+        self.state = RUNNING
+        self.exec = ex
+        lock.release()
+        ex.stack.append(self)
+        try:
+            self._serve()
+        finally:
+            ex.stack.pop()
+
+    def _serve(self):
+        lock = self.lock
+        while True:
+            lock.acquire()
+            s = self.head
+            while s is not None and not s.calls and s.closed:
+                s = self._advance_locked()
+            if s is None or not s.calls:
+                self.exec = None
+                self.state = IDLE
+                lock.release()
+                return
+            batch = s.calls
+            s.calls = deque()
+            lock.release()
+            self._run_calls(s, batch)
+
+    def _run_calls(self, s, batch):
+        rt = self.rt
+        for routine, target, args, blk, passer in batch:
+            if s.dirty is not None:
+                if blk is not None:
+                    with self.lock:
+                        s.delivered = True
+                    blk.error = DirtyRegionError(f"an earlier call on {self} failed: {s.dirty!r}")
+                    blk.error.__cause__ = s.dirty
+                    rt.unblock(blk)
+                continue
+            try:
+                if passer is None:
+                    r = routine(target, *args)
+                else:
+                    r = self._invoke_passing(passer, routine, target, args)
+            except Shutdown:
+                raise
+            except BaseException as e:
+                if blk is None:
+                    with self.lock:
+                        s.dirty = e
+                else:
+                    blk.error = e
+                    rt.unblock(blk)
+                continue
+            if blk is None or passer is not None:
+                s.changed = True
+            if blk is not None:
+                blk.value = r
+                rt.unblock(blk)
+
+    def _advance_locked(self):
+        """[lock] The head session is finished: report, wake waiters, move to the next."""
+        s = self.head
+        if s.dirty is not None and not s.delivered:
+            self.rt.report_lost(self, s)
+        if s.changed and self.waiters:
+            keep = []
+            for blk in self.waiters:
+                if blk.proc is s.client:
+                    keep.append(blk)
+                else:
+                    self.rt.unblock(blk)
+            self.waiters = keep
+        nxt = self.qoq.popleft() if self.qoq else None
+        self.head = nxt
+        if nxt is not None and nxt.turn is not None:
+            self.rt.unblock(nxt.turn)
+            nxt.turn = None
+        return nxt
+
+    # -- services ----------------------------------------------------------------------
+    def print(self, text):
+        """Write `text` whole (never torn by another processor's output)."""
+        self.rt.out.write(self, text)
+
+    def sleep(self, ns, where=None):
+        """Sleep `ns` nanoseconds on the runtime clock (virtual or real)."""
+        self.rt.clock.sleep(self, ns, where)
+
+    def once(self, key, fn, args=()):
+        """A once routine per region: keyed by this region, whichever thread runs it."""
+        return once_in(self.onces, key, fn, args)
+
+    def push_frame(self, where):
+        self.frames.append(where)
+
+    def pop_frame(self):
+        self.frames.pop()
+
+    def reserve(self, objs, pre=None, where=None):
+        """A reservation of the separate arguments `objs` (see reservation.py)."""
+        return Reservation(self, objs, pre, where)
+
+
+def _locked():
+    import threading
+    lk = threading.Lock()
+    lk.acquire()
+    return lk
+
+
+def enqueue(p, s):
+    """[p.lock] Put session `s` in `p`'s queue of queues."""
+    if p.head is None:
+        p.head = s
+    else:
+        p.qoq.append(s)
+
+
+def close(s):
+    """The client releases its reservation `s`; finish it now if nobody runs its supplier."""
+    p = s.proc
+    lock = p.lock
+    lock.acquire()
+    s.closed = True
+    if p.head is s and p.state == IDLE:
+        if not s.calls:
+            if not p.qoq and s.dirty is None and not (s.changed and p.waiters):
+                p.head = None          # the common case: nothing else to do
+                lock.release()
+                return
+            nxt = p._advance_locked()
+            while nxt is not None and nxt.closed and not nxt.calls:
+                nxt = p._advance_locked()
+            if nxt is None or not nxt.calls or p.passive:
+                lock.release()
+                return
+        p.state = SCHEDULED
+        lock.release()
+        p.rt.schedule(p)
+        return
+    lock.release()

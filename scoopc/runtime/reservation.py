@@ -1,0 +1,151 @@
+"""Reservations of separate arguments (routine entry, separate blocks) and wait conditions.
+
+Which regions to reserve is decided at run time: Void arguments and regions the client
+already holds are skipped. The others get one new private queue each, enqueued atomically
+under their locks taken in processor-id order (never blocking: a private queue is just put
+in the queue of queues). A failed wait condition releases what this reservation took,
+registers a targeted wake-up on the suppliers its failing clause queried, and sleeps.
+"""
+import threading
+
+from .errors import PreconditionViolation
+from . import processor
+from .processor import Session, close, enqueue
+from .sched import Block
+
+
+def _id(p):
+    return p.id
+
+
+class Reservation:
+    """`with here.reserve(objs, pre, where):` — also `enter()` / `exit()` explicitly."""
+    __slots__ = ("here", "objs", "pre", "where", "taken")
+
+    def __init__(self, here, objs, pre, where):
+        self.here = here
+        self.objs = objs
+        self.pre = pre
+        self.where = where
+        self.taken = None   # [here's executor] [(region, Session)] this reservation took
+
+    def enter(self):
+        here = self.here
+        held = here.held
+        objs = self.objs
+        if len(objs) == 1 and self.pre is None:     # the common case, without calls
+            o = objs[0]
+            if o is None or o._region_ in held:
+                self.taken = ()
+                return self
+            r = o._region_
+            s = Session(here, r, self.where)
+            lock = r.lock
+            lock.acquire()
+            if r.head is None:
+                r.head = s
+            else:
+                r.qoq.append(s)
+            lock.release()
+            held[r] = s
+            self.taken = ((r, s),)
+            return self
+        return self._enter_general()
+
+    __enter__ = enter
+
+    def __exit__(self, et, ev, tb):
+        self.exit()
+
+    def _enter_general(self):
+        here = self.here
+        held = here.held
+        regs = []
+        for o in self.objs:
+            if o is not None:
+                r = o._region_
+                if r not in held and r not in regs:
+                    regs.append(r)
+        while True:
+            self.taken = reserve_regions(here, regs, self.where) if regs else ()
+            if self.pre is None:
+                return self
+            try:
+                failing = self._first_false()
+            except BaseException:
+                self.exit()
+                raise
+            if failing is None:
+                return self
+            self._wait(failing, regs)
+
+    def _first_false(self):
+        for clause in self.pre:
+            if not clause[0]():
+                return clause
+        return None
+
+    def _wait(self, clause, regs):
+        """Release, sleep until a queried supplier served another client, or raise."""
+        pred, targets, tag, where = clause
+        fresh = set(regs)
+        queried = []
+        for i in targets:
+            o = self.objs[i]
+            if o is not None and o._region_ in fresh and o._region_ not in queried:
+                queried.append(o._region_)
+        if not queried:
+            self.exit()
+            raise PreconditionViolation(tag, where)
+        here = self.here
+        lk = threading.Lock()
+        lk.acquire()
+        blk = Block("wait", here, tuple(queried), where or self.where, lk, None, tag)
+        for r in queried:                 # before releasing: no change can slip in between
+            with r.lock:
+                r.waiters.append(blk)
+        self.exit()
+        try:
+            here.rt.block(here.exec, blk)
+        finally:
+            for r in queried:
+                with r.lock:
+                    if blk in r.waiters:
+                        r.waiters.remove(blk)
+
+    def exit(self):
+        taken = self.taken
+        if taken:
+            held = self.here.held
+            for r, s in taken:
+                del held[r]
+                close(s)
+        self.taken = None
+
+
+def reserve_regions(here, regs, where):
+    """Enqueue one new private queue per region atomically; record them as held."""
+    held = here.held
+    if len(regs) == 1:
+        r = regs[0]
+        s = Session(here, r, where)
+        lock = r.lock
+        lock.acquire()
+        enqueue(r, s)
+        lock.release()
+        held[r] = s
+        return ((r, s),)
+    ordered = sorted(regs, key=_id)
+    taken = [(r, Session(here, r, where)) for r in ordered]
+    for r in ordered:
+        r.lock.acquire()
+    for r, s in taken:
+        enqueue(r, s)
+    for r in ordered:
+        r.lock.release()
+    for r, s in taken:
+        held[r] = s
+    return taken
+
+
+processor.Reservation = Reservation     # Processor.reserve builds these

@@ -1,0 +1,314 @@
+"""The scheduler: the pool of worker threads that run processors with work, the registry of
+blocked threads, quiescence (termination) and the hook that advances the virtual clock.
+
+Design. A processor is a data structure; an OS thread is attached to it only while its
+queue of queues has work (`schedule`), taken from a pool of parked workers. A worker that
+finishes a processor first takes the next runnable processor itself, so a chain of
+hand-offs (threadring) runs on one thread without a thread switch; a parked worker is woken
+only when no other is already on its way (`n_waking`), and a new thread is started only
+when none is parked, so a processor computing for a long time never delays the others.
+Blocking (synchronous calls, wait conditions, passive-region turns, sleep) goes through
+`block`, which records what the thread waits on for the deadlock monitor and the dump.
+
+Lock order: a processor's `lock` may be held while taking `glock`, never the reverse.
+"""
+import itertools
+import sys
+import threading
+import weakref
+from collections import deque
+
+from .errors import Shutdown, fmt_where
+
+MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
+
+
+class Exec:
+    """One OS thread running processor code (a worker, the main thread, a client)."""
+    __slots__ = ("stack", "blocked", "name")
+
+    def __init__(self, name):
+        self.stack = []        # processors run on behalf of, innermost last; owner thread only
+        self.blocked = None    # Block or None; written by the owner thread under rt.glock
+        self.name = name
+
+
+class Block:
+    """What a blocked thread waits for; a new one per episode, so identity marks progress."""
+    __slots__ = ("kind", "proc", "on", "where", "lock", "deadline", "exec", "value", "error",
+                 "what")
+
+    def __init__(self, kind, proc, on, where, lock, deadline=None, what=None):
+        self.kind = kind          # 'sync' | 'turn' | 'wait' | 'sleep'
+        self.proc = proc          # the processor that waits (innermost context)
+        self.on = on              # sync/turn: the Session; wait: tuple of processors
+        self.where = where
+        self.lock = lock          # released (once) to wake the thread
+        self.deadline = deadline  # sleep only
+        self.exec = None          # the blocked thread's Exec, set by `block`
+        self.value = None         # sync: the result, written before `unblock`
+        self.error = None         # sync: the exception to re-raise in the client
+        self.what = what          # sync: the routine called; wait: the clause tag
+
+
+def wake(lock):
+    """Release a one-shot wake-up lock; a second release (shutdown racing a waker) is harmless."""
+    try:
+        lock.release()
+    except RuntimeError:
+        pass
+
+
+class Worker:
+    __slots__ = ("rt", "lock", "exec", "thread")
+
+    def __init__(self, rt, n):
+        self.rt = rt
+        self.lock = threading.Lock()      # held while parked; released by `schedule`
+        self.lock.acquire()
+        self.exec = Exec(f"worker-{n}")
+        self.thread = threading.Thread(target=self.run, name=self.exec.name, daemon=True)
+
+    def run(self):
+        rt, ex = self.rt, self.exec
+        try:
+            fresh = True     # started by `schedule`, which counted it in n_waking
+            while True:
+                p = rt.next_work(self, fresh)
+                fresh = False
+                if p is None:
+                    return
+                p.run_scheduled(ex)
+        except Shutdown:
+            rt.leave_running()
+        except BaseException as e:   # an internal error: the owner collects it
+            rt.fail(f"internal error in {ex.name}: {e!r}", e)
+            rt.leave_running()
+
+
+class Runtime:
+    """Process-wide runtime state. `glock` protects every field marked [g]."""
+
+    def __init__(self, *, virtual_clock=False, trace_processors=False, strict=False,
+                 stdout=None, stderr=None, deadlock_tick=0.2):
+        from .clock import Clock
+        from .output import Output
+        self.glock = threading.Lock()
+        self.runnable = deque()          # [g] processors in state SCHEDULED, FIFO
+        self.parked = []                 # [g] parked Workers
+        self.n_waking = 0                # [g] workers woken but not yet looking for work
+        self.n_running = 0               # [g] threads counted as running processor code
+        self.blocked = set()             # [g] Execs currently blocked
+        self.workers = []                # [g] every Worker started and not yet joined
+        self.sources = 0                 # [g] open outside clients
+        self.failures = []               # [g] (message, exception) run-time failures
+        self.stopping = False            # [g] set once; read racily as a fast check
+        self.root_done = False           # [g]
+        self.changed = threading.Condition(self.glock)   # quiescence / stop, for run_main
+        self.wait_set = 0                # [g] number of blocked threads of kind 'wait'
+        self.idlock = threading.Lock()
+        self.ids = itertools.count(1)    # [idlock]
+        self.procs = weakref.WeakValueDictionary()   # [idlock] id -> Processor, for the dump
+        self.strict = strict
+        self.trace_processors = trace_processors
+        self.deadlock_tick = deadlock_tick
+        self.stderr = stderr or sys.stderr
+        self.out = Output(stdout or sys.stdout, trace_processors)
+        self.clock = Clock(self, virtual_clock)
+        self.shutdown_hooks = []         # [g]
+        self.process_onces = {}          # [g] once ("PROCESS") values
+        self.monitor = None
+        self.watchers = []               # [g] (predicate, Event): scheduling hooks for tests
+
+    # -- identities ------------------------------------------------------------------
+    def register(self, proc):
+        with self.idlock:
+            pid = next(self.ids)
+            self.procs[pid] = proc
+        return pid
+
+    # -- the pool --------------------------------------------------------------------
+    def schedule(self, p):
+        """`p` was set SCHEDULED under its lock: make sure some thread will run it."""
+        with self.glock:
+            self.runnable.append(p)
+            spawn = self._wake_one_locked() if self.n_waking == 0 else None
+        if spawn is not None:
+            spawn.thread.start()
+
+    def _wake_one_locked(self):
+        """[g] Wake a parked worker, or make a new one (returned: start it unlocked)."""
+        self.n_waking += 1
+        self.n_running += 1
+        if self.parked:
+            self.parked.pop().lock.release()
+            return None
+        if self.stopping:
+            self.n_waking -= 1
+            self.n_running -= 1
+            return None
+        w = Worker(self, len(self.workers))
+        self.workers.append(w)
+        return w
+
+    def next_work(self, w, fresh):
+        """The next runnable processor for worker `w`, parking it while there is none.
+        A worker taking work while more is waiting wakes another one first: a processor
+        that runs for long (or blocks outside the runtime) never holds up the others."""
+        spawn = None
+        with self.glock:
+            if fresh:
+                self.n_waking -= 1
+            while True:
+                if self.stopping:
+                    self.n_running -= 1
+                    self.changed.notify_all()
+                    return None
+                if self.runnable:
+                    p = self.runnable.popleft()
+                    if self.runnable and self.n_waking == 0:
+                        spawn = self._wake_one_locked()
+                    break
+                if len(self.parked) >= MAX_PARKED:
+                    self.n_running -= 1
+                    self._check_quiet()
+                    return None
+                self.parked.append(w)
+                self.n_running -= 1
+                self._check_quiet()
+                self.glock.release()
+                try:
+                    w.lock.acquire()
+                finally:
+                    self.glock.acquire()
+                self.n_waking -= 1
+        if spawn is not None:
+            spawn.thread.start()
+        return p
+
+    def leave_running(self):
+        with self.glock:
+            self.n_running -= 1
+            self._check_quiet()
+
+    def _check_quiet(self):
+        """[g held] Wake run_main on quiescence; advance the virtual clock when all wait."""
+        if self.n_running == len(self.blocked) and not self.runnable:
+            if self.n_running == 0:
+                self.changed.notify_all()
+            if self.clock.virtual:
+                self.clock.advance_locked()
+
+    # -- blocking --------------------------------------------------------------------
+    def block(self, ex, blk):
+        """Block thread `ex` until `blk.lock` is released (by `unblock`); raise Shutdown
+        when the runtime stops. The re-check under glock pairs with `unblock`, so a thread
+        is never counted blocked after its waker ran (the virtual clock relies on it)."""
+        if blk.lock.acquire(False):
+            return
+        blk.exec = ex
+        with self.glock:
+            if blk.lock.acquire(False):
+                return
+            ex.blocked = blk
+            self.blocked.add(ex)
+            if blk.kind == "wait":
+                self.wait_set += 1
+            if self.watchers:
+                self._notify_watchers(blk)
+            self._check_quiet()
+            stopping = self.stopping
+        try:
+            if not stopping:
+                if blk.deadline is not None and not self.clock.virtual:
+                    self.clock.real_wait(blk)
+                else:
+                    blk.lock.acquire()
+        finally:
+            with self.glock:
+                if ex.blocked is blk:
+                    self.blocked.discard(ex)
+                    ex.blocked = None
+                if blk.kind == "wait":
+                    self.wait_set -= 1
+                stopping = self.stopping
+        if stopping:
+            raise Shutdown()
+
+    def watch_blocks(self, predicate):
+        """Scheduling hook: an Event set when a thread blocks on a Block for which
+        `predicate(block)` is true (tests wait on it instead of sleeping)."""
+        ev = threading.Event()
+        with self.glock:
+            self.watchers.append((predicate, ev))
+            for ex in self.blocked:
+                if ex.blocked is not None and predicate(ex.blocked):
+                    ev.set()
+        return ev
+
+    def _notify_watchers(self, blk):
+        for pred, ev in self.watchers:
+            if pred(blk):
+                ev.set()
+
+    def unblock(self, blk):
+        """Wake the thread blocked (or about to block) on `blk`; at most once matters."""
+        with self.glock:
+            self.unblock_locked(blk)
+
+    def unblock_locked(self, blk):
+        ex = blk.exec
+        if ex is not None and ex.blocked is blk:
+            self.blocked.discard(ex)
+            ex.blocked = None
+        wake(blk.lock)
+
+    # -- failures and stopping -------------------------------------------------------
+    def fail(self, message, exc=None):
+        with self.glock:
+            self.failures.append((message, exc))
+        self.stop()
+
+    def report_lost(self, proc, s):
+        """[proc.lock held] An asynchronous call failed and no client ever saw it."""
+        e = s.dirty
+        self.stderr.write(f"scoopc: exception lost in an asynchronous call on {proc!r} "
+                          f"(client {s.client!r}, reservation at {fmt_where(s.where)}): "
+                          f"{type(e).__name__}: {e}\n")
+        if self.strict:
+            self.fail(f"lost exception on {proc!r}: {type(e).__name__}: {e}", e)
+
+    def stop(self):
+        """Stop every processor at its next runtime call and wake every blocked thread."""
+        with self.glock:
+            if self.stopping:
+                return
+            self.stopping = True
+            for ex in list(self.blocked):
+                self.unblock_locked(ex.blocked)
+            for w in self.parked:      # counted as woken, as `schedule` does
+                self.n_waking += 1
+                self.n_running += 1
+                wake(w.lock)
+            self.parked.clear()
+            self.changed.notify_all()
+        self.clock.stop()
+
+    def join_workers(self, timeout=2.0):
+        """Join every worker (structured ownership); returns the names of those still alive."""
+        with self.glock:
+            workers = list(self.workers)
+        alive = []
+        for w in workers:
+            if w.thread.ident is not None:
+                w.thread.join(timeout)
+                if w.thread.is_alive():
+                    alive.append(w.exec.name)
+        return alive
+
+    def wait_quiet(self):
+        """Block the main thread until quiescence or stop; interruptible by Ctrl-C."""
+        with self.glock:
+            while not self.stopping and not (self.n_running == 0 and not self.runnable
+                                             and not self.clock.pending_locked()):
+                self.changed.wait(0.5)

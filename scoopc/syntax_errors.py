@@ -1,0 +1,255 @@
+"""Parser stage, syntax errors: lark's exceptions to diagnostics in Eiffel terms.
+
+Input: the UnexpectedInput raised by the LALR parser, the SourceFile and the parser's
+terminals. Output: one Diagnostic (SYNTAX, SYNTAX-END, SYNTAX-RESERVED or SYNTAX-LEXICAL).
+Diagnosis tries repairs on copies of the parser: if inserting `end` lets the parse go on, an
+`end` is missing; if reading the keyword as a name does, a reserved word was used as a name.
+"""
+from __future__ import annotations
+
+import copy
+from typing import Any, Iterator, Optional
+
+from lark import Token
+from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
+
+from . import diagnostics, syntax
+from .diagnostics import Diagnostic
+from .source import SourceFile, Span
+from .syntax_terms import (EXPRESSION_STARTS, INSTRUCTION_KEYWORDS, KEYWORDS, OPENERS,
+                           OPERATORS, describe_token, display)
+
+# After a keyword used as a name, one of these usually follows (or a `.` precedes it).
+_NAME_FOLLOWERS = {"COLON", "COMMA", "ASSIGNMENT", "DOT", "RPAR", "SEMICOLON", "LPAR"}
+_MAX_MISSING_ENDS = 6
+
+
+def describe(error: UnexpectedInput, source: SourceFile, lark_parser: Any) -> Diagnostic:
+    """The diagnostic for the first syntax error of a file."""
+    if isinstance(error, UnexpectedCharacters):
+        return _lexical(error, source)
+    if isinstance(error, UnexpectedToken):
+        return _unexpected(error, source, lark_parser)
+    return diagnostics.make("SYNTAX", Span.point(source.path, error.line, error.column),
+                            found="this text", expected="Eiffel text")
+
+
+# ---- lexical errors ---------------------------------------------------------------------
+def _lexical(error: UnexpectedCharacters, source: SourceFile) -> Diagnostic:
+    text, pos = source.text, error.pos_in_stream
+    char = text[pos] if pos < len(text) else ""
+    span = Span.point(source.path, error.line, error.column)
+    return diagnostics.make("SYNTAX-LEXICAL", span, reason=_lexical_reason(char, text, pos))
+
+
+def _lexical_reason(char: str, text: str, pos: int) -> str:
+    if char == '"':
+        if text[pos + 1:pos + 2] in ("[", "{") and text[pos + 2:].lstrip(" \t")[:1] == "\n":
+            closer = "]" if text[pos + 1] == "[" else "}"
+            return f'unterminated verbatim string: no line `{closer}"` closes it'
+        return ('unterminated string: a manifest string ends with `"` on the same line '
+                "(end a line with `%` and start the next with `%` to continue it)")
+    if char == "'":
+        return ("bad character constant: write one character between single quotes, "
+                "such as `'a'` or `'%N'`")
+    if char == "\\":
+        return "`\\` is not an Eiffel escape character; special characters are written `%N`, `%T`, `%%`"
+    if char.isprintable() and not char.isspace():
+        return f"`{char}` (U+{ord(char):04X}) is not part of any Eiffel token"
+    return f"the character U+{ord(char):04X} is not allowed in Eiffel text" if char else \
+        "unexpected end of the file"
+
+
+# ---- unexpected tokens ------------------------------------------------------------------
+def _unexpected(error: UnexpectedToken, source: SourceFile, lark_parser: Any) -> Diagnostic:
+    token = error.token
+    span = _token_span(token, source)
+    try:
+        parser, following = _replay(lark_parser, source.text, token)
+        expected = parser.accepts()
+    except UnexpectedInput:  # cannot happen: the prefix parsed once already
+        parser, following, expected = None, None, set(error.expected)
+    if parser is not None:
+        if _is_reserved_name(parser, token, expected, following):
+            return diagnostics.make("SYNTAX-RESERVED", span, word=token.value)
+        opener = _missing_end(parser, token, expected)
+        if opener is not None:
+            construct, where = opener
+            return diagnostics.make("SYNTAX-END", span, construct=construct, opened=where)
+    patterns = {t.name: t.pattern.value for t in lark_parser.terminals}
+    return diagnostics.make("SYNTAX", span, found=describe_token(token),
+                            expected=expected_phrase(expected, patterns))
+
+
+def _replay(lark_parser: Any, text: str, stop: Token) -> tuple[Any, Optional[Token]]:
+    """A parser fed with every token before `stop` (so with no reduction that `stop` caused:
+    LALR may reduce on a token it then rejects), and the token after `stop`."""
+    parser = lark_parser.parse_interactive(text)
+    tokens = parser.lexer_thread.lex(parser.parser_state)
+    at_end = stop.type == "$END"
+    for token in tokens:
+        if not at_end and token.start_pos >= stop.start_pos:
+            return parser, _next(tokens)
+        parser.feed_token(token)
+    return parser, None
+
+
+def _next(tokens: Iterator[Token]) -> Optional[Token]:
+    try:
+        return next(tokens, None)
+    except UnexpectedInput:
+        return None
+
+
+def _token_span(token: Token, source: SourceFile) -> Span:
+    if token.type == "$END":  # the start of the last line with text: where `end` was due
+        line, _ = source.position(max(0, len(source.text.rstrip()) - 1))
+        return Span.point(source.path, line, 1)
+    return Span(source.path, token.line, token.column, token.end_line, token.end_column)
+
+
+def _feeds(parser: Any, tokens: list) -> bool:
+    """Whether `tokens` are accepted one after the other by a copy of `parser` (a copy without
+    the AST callbacks, so trying has no side effect)."""
+    trial = parser.copy(deepcopy_values=False)
+    conf = copy.copy(trial.parser_state.parse_conf)
+    conf.callbacks = {}
+    trial.parser_state.parse_conf = conf
+    try:
+        for token in tokens:
+            trial.feed_token(token)
+    except UnexpectedInput:
+        return False
+    return True
+
+
+def _borrow(type_: str, value: str, token: Token) -> Token:
+    return Token(type_, value, token.start_pos, token.line, token.column, token.line,
+                 token.column, token.start_pos)
+
+
+def _is_reserved_name(parser: Any, token: Token, expected: set, following: Optional[Token]) -> bool:
+    if token.type not in KEYWORDS or token.type in expected or "IDENTIFIER" not in expected:
+        return False
+    stack = parser.parser_state.value_stack
+    after_dot = bool(stack) and getattr(stack[-1], "type", None) == "DOT"
+    if following is None or (following.type not in _NAME_FOLLOWERS and not after_dot):
+        return False
+    return _feeds(parser, [_borrow("IDENTIFIER", token.value, token), following])
+
+
+def _missing_end(parser: Any, token: Token, expected: set) -> Optional[tuple[str, str]]:
+    """(construct, where) of the innermost construct whose `end` is missing, if adding `end`s
+    lets the parser accept `token`."""
+    if "END" not in expected:
+        return None
+    ends: list[Token] = []
+    for _ in range(_MAX_MISSING_ENDS):
+        ends.append(_borrow("END", "end", token))
+        if _feeds(parser, ends + [token]):
+            return _innermost_opener(parser.parser_state.value_stack)
+        if not _feeds(parser, ends):
+            return None
+    return None
+
+
+def _innermost_opener(stack: list) -> Optional[tuple[str, str]]:
+    """The innermost opener on the parser's stack that lacks its `end`. An `end` less indented
+    than the opener it was matched with belonged to an outer construct (Eiffel code aligns
+    `end` with its opener), so that opener, or a construct nested in it that took its `end`,
+    is the one left open."""
+    ends: list[Any] = []
+    inner: list[Any] = []
+    for value in reversed(stack):
+        if getattr(value, "type", None) == "END":
+            ends.append(value)
+            continue
+        opener = _opener(value)
+        if opener is None:
+            inner.append(value)
+            continue
+        if not ends or ends.pop().column < opener[2]:
+            nested = _misaligned_within(inner + [value])
+            return nested or (opener[0], f"{opener[1]}:{opener[2]}")
+        inner.append(value)
+    return None
+
+
+_CONSTRUCTS = {syntax.Conditional: "if", syntax.MultiBranch: "inspect", syntax.Loop: "from",
+               syntax.Across: "across", syntax.Check: "check", syntax.Debug: "debug",
+               syntax.SeparateInstruction: "separate"}
+
+
+def _misaligned_within(values: list) -> Optional[tuple[str, str]]:
+    """The deepest construct, along the last instructions of `values`, whose `end` is less
+    indented than its opening keyword (it took the `end` of the construct around it)."""
+    found = None
+    node: Any = _last_instruction(values)
+    while node is not None:
+        span = node.span
+        if type(node) in _CONSTRUCTS and span.end_column - 3 < span.column:
+            found = (_CONSTRUCTS[type(node)], f"{span.line}:{span.column}")
+        node = _last_instruction(_inner_compound(node))
+    return found
+
+
+def _last_instruction(values: Any) -> Any:
+    for value in reversed(values or ()):
+        if isinstance(value, tuple):
+            value = _last_instruction(value)
+        if value is not None and hasattr(value, "span"):
+            return value
+    return None
+
+
+def _inner_compound(node: Any) -> Any:
+    if isinstance(node, syntax.Conditional):
+        return node.else_part or (node.elseif_parts[-1].then_part if node.elseif_parts else node.then_part)
+    if isinstance(node, syntax.MultiBranch):
+        return node.else_part or (node.when_parts[-1].then_part if node.when_parts else ())
+    if isinstance(node, syntax.Check):
+        return node.then_part
+    if isinstance(node, (syntax.InternalBody, syntax.AttributeBody)):
+        return node.instructions
+    return getattr(node, "body", None) if type(node) in _CONSTRUCTS else None
+
+
+def _opener(value: Any) -> Optional[tuple[str, int, int]]:
+    """(keyword, line, column) if `value` on the parser's stack opens a construct."""
+    if isinstance(getattr(value, "type", None), str):
+        token = value
+    else:
+        token = getattr(value, "keyword", None)
+    if token is not None:
+        if token.type not in OPENERS:
+            return None
+        return token.value.lower(), token.line, token.column
+    body = _BODIES.get(type(value))
+    if body is None:
+        return None
+    word = "once" if getattr(value, "once", False) else body
+    return word, value.span.line, value.span.column
+
+
+_BODIES = {syntax.InternalBody: "do", syntax.DeferredBody: "deferred",
+           syntax.ExternalBody: "external", syntax.AttributeBody: "attribute"}
+
+
+def expected_phrase(expected: set, patterns: dict[str, str]) -> str:
+    """A short human list of what the grammar allowed, in Eiffel terms."""
+    remaining = set(expected)
+    categories: list[str] = []
+    if len(remaining & OPERATORS) >= 4:
+        remaining -= OPERATORS | {"DOT", "LPAR", "LSQB", "ASSIGNMENT", "ASSIGNMENT_ATTEMPT", "INTERVAL"}
+        categories.append("an operator")
+    if len(remaining & INSTRUCTION_KEYWORDS) >= 4:
+        remaining -= INSTRUCTION_KEYWORDS | EXPRESSION_STARTS
+        categories.append("an instruction")
+    elif len(remaining & EXPRESSION_STARTS) >= 6:
+        remaining -= EXPRESSION_STARTS
+        categories.append("an expression")
+    words = sorted({display(name, patterns) for name in remaining} - {""})
+    items = words[:6] + (["..."] if len(words) > 6 else []) + categories
+    if not items:
+        return "something else"
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " or " + items[-1]

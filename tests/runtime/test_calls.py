@@ -1,0 +1,108 @@
+"""Separate creation, passive regions, asynchronous commands, synchronous queries, and
+the private queues: calls of one client within one reservation run in order, never
+interleaved with another client's."""
+import threading
+
+from rt_helpers import Cell, Runner, cell_inc, result_of, spawn
+
+
+def test_separate_creation_makes_a_new_region(h):
+    root = h.root
+    a = root.new_separate(Cell, Cell.make, (5,))
+    b = root.new_separate(Cell, Cell.make, (6,))
+    assert a._region_ is not root and b._region_ is not a._region_
+    assert not a._region_.passive
+    with root.reserve((a, b)):
+        assert root.query(a, Cell.get) == 5 and root.query(b, Cell.get) == 6
+        # a query run by the client itself still runs on behalf of the supplier's region
+        assert root.query(a, Cell.region_of_caller) is a._region_
+
+
+def test_non_separate_creation_stays_in_the_region(h):
+    c = h.root.new(Cell)
+    c.make(3)
+    assert c._region_ is h.root
+    h.root.call(c, Cell.set, (4,))      # own region: a plain call
+    assert c.value == 4
+
+
+def test_command_is_asynchronous_and_query_waits(h):
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    gate, entered = threading.Event(), threading.Event()
+    with root.reserve((c,)):
+        root.call(c, Cell.gate, (gate, entered))
+        root.call(c, Cell.set, (7,))
+        assert entered.wait(10)          # the supplier runs the gate on its own thread...
+        assert c.value == 0              # ...and has not reached `set` yet: we did not wait
+        gate.set()
+        assert root.query(c, Cell.get) == 7   # wait by necessity
+
+
+def test_passive_region_runs_calls_on_the_client_thread(h):
+    root = h.root
+    p = root.new_passive(Cell, Cell.make, (1,))
+    assert p._region_.passive
+    with root.reserve((p,)):
+        root.call(p, Cell.set, (9,))
+        assert p.value == 9              # synchronous: done before call returned
+        assert root.query(p, Cell.thread) == threading.get_ident()
+        assert root.query(p, Cell.region_of_caller) is p._region_
+
+
+def test_calls_within_one_reservation_run_in_order(h):
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    with root.reserve((c,)):
+        for i in range(500):
+            root.call(c, Cell.add, (i,))
+        assert root.query(c, Cell.items) == list(range(500))
+
+
+def _client_a(here, c, a_reserved, b_logged):
+    with here.reserve((c,)):
+        here.call(c, Cell.add, ("a1",))
+        a_reserved.set()
+        assert b_logged.wait(10)         # B has logged its calls meanwhile
+        here.call(c, Cell.add, ("a2",))
+        here.call(c, Cell.add, ("a3",))
+
+
+def _client_b(here, c, a_reserved, b_logged):
+    assert a_reserved.wait(10)
+    with here.reserve((c,)):             # never blocks, though A holds c
+        here.call(c, Cell.add, ("b1",))
+        here.call(c, Cell.add, ("b2",))
+        b_logged.set()
+
+
+def test_no_interleaving_between_clients(h):
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    a_reserved, b_logged = threading.Event(), threading.Event()
+    spawn(root, _client_a, c, a_reserved, b_logged)
+    spawn(root, _client_b, c, a_reserved, b_logged)
+    assert h.finish() == 0
+    assert c.log == ["a1", "a2", "a3", "b1", "b2"]
+
+
+def _bump_many(here, c, n):
+    for _ in range(n):
+        with here.reserve((c,)):
+            here.call(c, cell_inc)
+            here.call(c, Cell.add, (1,))
+
+
+def test_many_clients_nothing_lost(h):
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    for _ in range(8):
+        spawn(root, _bump_many, c, 300)
+    assert h.finish() == 0
+    assert c.value == 2400 and len(c.log) == 2400
+
+
+def test_runner_results(h):
+    r = spawn(h.root, lambda here, x: x * 2, 21)
+    assert result_of(h.root, r) == 42
+    assert isinstance(r, Runner)

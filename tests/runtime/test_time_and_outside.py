@@ -1,0 +1,106 @@
+"""The runtime clock (virtual and real), timers, and outside clients logging commands."""
+import threading
+
+import scoopc.runtime as rt
+from rt_helpers import Cell, spawn
+
+SECOND = 1_000_000_000
+
+
+class Sleeper:
+    def make(self):
+        self.woke = []
+
+    def nap(self, ns, label):
+        self._region_.sleep(ns)
+        self.woke.append((label, rt.now_ns()))
+
+
+def test_virtual_clock_jumps_when_everyone_waits(harness):
+    h = harness(virtual_clock=True)
+    root = h.root
+    s1 = root.new_separate(Sleeper, Sleeper.make)
+    s2 = root.new_separate(Sleeper, Sleeper.make)
+    with root.reserve((s1, s2)):
+        root.call(s1, Sleeper.nap, (3600 * SECOND, "hour"))
+        root.call(s2, Sleeper.nap, (60 * SECOND, "minute"))
+    root.sleep(10 * SECOND)
+    assert rt.now_ns() == 10 * SECOND
+    assert h.finish() == 0
+    assert s2.woke == [("minute", 60 * SECOND)] and s1.woke == [("hour", 3600 * SECOND)]
+
+
+def test_virtual_clock_waits_for_running_processors(harness):
+    """Time does not jump while some processor still computes."""
+    h = harness(virtual_clock=True)
+    root = h.root
+    gate, entered = threading.Event(), threading.Event()
+    s = root.new_separate(Sleeper, Sleeper.make)
+    c = root.new_separate(Cell, Cell.make)
+    with root.reserve((c, s)):
+        root.call(c, Cell.gate, (gate, entered))
+        root.call(s, Sleeper.nap, (5 * SECOND, "nap"))
+    asleep = h.rt.watch_blocks(lambda b: b.kind == "sleep")
+    assert entered.wait(10) and asleep.wait(10)
+    assert rt.now_ns() == 0 and s.woke == []
+    gate.set()
+    assert h.finish() == 0
+    assert s.woke == [("nap", 5 * SECOND)]
+
+
+def test_timers_fire_in_order_and_cancel(harness):
+    h = harness(virtual_clock=True)
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    rt.call_later(3 * SECOND, c, Cell.add, ("three",))
+    rt.call_later(1 * SECOND, c, Cell.add, ("one",))
+    t = rt.call_later(2 * SECOND, c, Cell.add, ("tick",), period_ns=2 * SECOND)
+    dropped = rt.call_later(1 * SECOND, c, Cell.add, ("cancelled",))
+    dropped.cancel()
+
+    class Stopper:
+        def make(self):
+            pass
+
+        def stop(self, timer):
+            timer.cancel()
+    st = root.new_separate(Stopper, Stopper.make)
+    rt.call_later(7 * SECOND, st, Stopper.stop, (t,))
+    assert h.finish() == 0
+    assert c.log == ["one", "tick", "three", "tick", "tick"]
+    assert rt_now(h) == 7 * SECOND
+
+
+def rt_now(h):
+    return h.rt.clock.now_ns()
+
+
+def test_real_clock_sleep(h):
+    t0 = rt.now_ns()
+    h.root.sleep(20_000_000)
+    assert rt.now_ns() - t0 >= 20_000_000
+
+
+def test_outside_client_logs_in_order_without_blocking(h):
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    gate, entered = threading.Event(), threading.Event()
+    with root.reserve((c,)):
+        root.call(c, Cell.gate, (gate, entered))
+    assert entered.wait(10)
+    src = rt.outside_client("transport")
+    logged = threading.Event()
+
+    def transport():                     # e.g. a ROS callback thread
+        for i in range(1000):
+            src.call(c, Cell.add, (i,))
+        logged.set()
+    t = threading.Thread(target=transport)
+    t.start()
+    assert logged.wait(10)               # done while c is still busy: it never blocked
+    t.join()
+    assert c.log == []
+    gate.set()
+    src.close()
+    assert h.finish() == 0
+    assert c.log == list(range(1000))

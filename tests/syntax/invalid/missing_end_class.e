@@ -1,0 +1,16 @@
+note
+	description: "The class itself has no closing `end': the parser notices at the end of the file."
+
+class
+	MISSING_END_CLASS
+
+create
+	make
+
+feature {NONE} -- Initialization
+
+	make
+			-- Do nothing.
+		do
+		end
+-- E: SYNTAX-END

@@ -1,0 +1,28 @@
+note
+	description: "A parent's redefine clause not closed by `end' before the creation clause."
+
+class
+	MISSING_END_REDEFINE
+
+inherit
+	ANY
+		redefine
+			out
+
+create -- E: SYNTAX-END
+	make
+
+feature {NONE} -- Initialization
+
+	make
+		do
+		end
+
+feature -- Output
+
+	out: STRING
+		do
+			Result := "x"
+		end
+
+end
