@@ -88,6 +88,7 @@ def baseline(creatures, meetings):
 
 
 # --- SCOOP, as generated code calls the runtime ----------------------------------
+# (@leaf where codegen would put it: routines without loops, separate or blocking calls)
 # class MALL:     arrive (id, colour): the first waits, the second meets it (outcome_of (id));
 #                 partner_of (id) / has_partner (id) / forget_partner (id) for the first
 # class CREATURE: live: loop: visit (mall); if FIRST then collect (mall) end; change colour

@@ -44,6 +44,7 @@ def baseline(workers, iters):
 
 
 # --- SCOOP, as generated code calls the runtime ----------------------------------
+# (@leaf where codegen would put it: routines without loops, separate or blocking calls)
 # class SHARED:  value: INTEGER; increment do value := value + 1 end
 # class WORKER:  live do across 1 |..| iters loop change (shared) end end
 #                change (s: separate SHARED) require s.value \\ 2 = parity do s.increment end

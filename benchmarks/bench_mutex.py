@@ -40,6 +40,7 @@ def baseline(workers, iters):
 
 
 # --- SCOOP, as generated code calls the runtime ----------------------------------
+# (@leaf where codegen would put it: routines without loops, separate or blocking calls)
 # class COUNTER:  value: INTEGER; increment do value := value + 1 end
 # class WORKER:   live do across 1 |..| iters loop increment (counter) end end
 #                 increment (c: separate COUNTER) do c.increment end

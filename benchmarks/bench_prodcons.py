@@ -55,6 +55,7 @@ def baseline(producers, consumers, items):
 
 
 # --- SCOOP, as generated code calls the runtime ----------------------------------
+# (@leaf where codegen would put it: routines without loops, separate or blocking calls)
 # class SHARED_QUEUE: is_empty, item, extend (v), remove (a LINKED_QUEUE)
 # class PRODUCER: live do across 0 |..| (items - 1) as i loop put (queue, i) end end
 #                 put (q: separate SHARED_QUEUE; v) do q.extend (v) end

@@ -55,6 +55,7 @@ def baseline(nodes, hops):
 
 
 # --- SCOOP, as generated code calls the runtime ----------------------------------
+# (@leaf where codegen would put it: routines without loops, separate or blocking calls)
 # class NODE:   receive (t) do if t = 0 then finish (result) else pass (next, t - 1) end end
 #               pass (n: separate NODE; t) do n.receive (t) end
 #               finish (r: separate RESULT) do r.set_winner (id) end

@@ -1,6 +1,7 @@
-"""Shared helpers for the benchmark modules: result checks and small threading utilities.
+"""Helpers shared by the benchmark modules: result checks, thread utilities, running a program.
 
-Each benchmark module defines SIZES, describe(params), ops(params), baseline(**p) and scoop(**p).
+A benchmark module defines SIZES, ops(**params), baseline(**params) and scoop(**params);
+each variant checks its own result and raises CheckFailed when it is wrong.
 """
 import threading
 

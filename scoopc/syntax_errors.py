@@ -1,7 +1,8 @@
 """Parser stage, syntax errors: lark's exceptions to diagnostics in Eiffel terms.
 
 Input: the UnexpectedInput raised by the LALR parser, the SourceFile and the parser's
-terminals. Output: one Diagnostic (SYNTAX, SYNTAX-END, SYNTAX-RESERVED or SYNTAX-LEXICAL).
+terminals. Output: one Diagnostic (SYNTAX, SYNTAX-END, SYNTAX-RESERVED, SYNTAX-LEXICAL or
+SYNTAX-OBSOLETE).
 Diagnosis tries repairs on copies of the parser: if inserting `end` lets the parse go on, an
 `end` is missing; if reading the keyword as a name does, a reserved word was used as a name.
 """
@@ -72,6 +73,10 @@ def _unexpected(error: UnexpectedToken, source: SourceFile, lark_parser: Any) ->
     if parser is not None:
         if _is_reserved_name(parser, token, expected, following):
             return diagnostics.make("SYNTAX-RESERVED", span, word=token.value)
+    obsolete = _obsolete(token)
+    if obsolete is not None:
+        return diagnostics.make("SYNTAX-OBSOLETE", span, **obsolete)
+    if parser is not None:
         opener = _missing_end(parser, token, expected)
         if opener is not None:
             construct, where = opener
@@ -79,6 +84,28 @@ def _unexpected(error: UnexpectedToken, source: SourceFile, lark_parser: Any) ->
     patterns = {t.name: t.pattern.value for t in lark_parser.terminals}
     return diagnostics.make("SYNTAX", span, found=describe_token(token),
                             expected=expected_phrase(expected, patterns))
+
+
+# Pre-ECMA spellings still found in old course material and old example programs.
+_OBSOLETE = {
+    ("IDENTIFIER", "indexing"): ("`indexing` is the obsolete spelling of `note`", "write `note` instead"),
+    ("IDENTIFIER", "creation"): ("`creation` is the obsolete spelling of `create`",
+                                 "write `create` instead"),
+    ("IS", "is"): ("`is` before a routine body or a constant's value is obsolete syntax",
+                   "delete `is` before a routine's body; write a constant as `Name: TYPE = value`"),
+    ("IDENTIFIER", "infix"): ("`infix \"op\"` feature names are obsolete syntax",
+                              "name the feature and give it an alias: `plus alias \"+\" (other: like Current)`"),
+    ("IDENTIFIER", "prefix"): ("`prefix \"op\"` feature names are obsolete syntax",
+                               "name the feature and give it an alias: `negated alias \"-\"`"),
+}
+
+
+def _obsolete(token: Token) -> Optional[dict]:
+    """Arguments of a SYNTAX-OBSOLETE diagnostic when `token` is an obsolete spelling."""
+    entry = _OBSOLETE.get((token.type, str(token.value).lower()))
+    if entry is None:
+        return None
+    return {"what": entry[0], "instead": entry[1]}
 
 
 def _replay(lark_parser: Any, text: str, stop: Token) -> tuple[Any, Optional[Token]]:
