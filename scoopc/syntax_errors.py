@@ -73,7 +73,7 @@ def _unexpected(error: UnexpectedToken, source: SourceFile, lark_parser: Any) ->
     if parser is not None:
         if _is_reserved_name(parser, token, expected, following):
             return diagnostics.make("SYNTAX-RESERVED", span, word=token.value)
-    obsolete = _obsolete(token)
+    obsolete = _obsolete(token, expected, parser.parser_state.value_stack if parser is not None else [])
     if obsolete is not None:
         return diagnostics.make("SYNTAX-OBSOLETE", span, **obsolete)
     if parser is not None:
@@ -100,9 +100,14 @@ _OBSOLETE = {
 }
 
 
-def _obsolete(token: Token) -> Optional[dict]:
-    """Arguments of a SYNTAX-OBSOLETE diagnostic when `token` is an obsolete spelling."""
+def _obsolete(token: Token, expected: set, stack: list) -> Optional[dict]:
+    """Arguments of a SYNTAX-OBSOLETE diagnostic when `token` starts or shows an obsolete form."""
     entry = _OBSOLETE.get((token.type, str(token.value).lower()))
+    if entry is None and token.type == "QUESTION" and "DETACHABLE" in expected:
+        entry = ("`?T` is the obsolete spelling of `detachable T`", "write `detachable T`")
+    if entry is None and token.type == "COLON" and len(stack) >= 2 \
+            and getattr(stack[-2], "type", None) == "LBRACE" and getattr(stack[-1], "type", None) == "IDENTIFIER":
+        entry = ("`{x: T} e` is the obsolete form of an object test", "write `attached {T} e as x`")
     if entry is None:
         return None
     return {"what": entry[0], "instead": entry[1]}

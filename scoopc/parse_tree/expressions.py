@@ -176,6 +176,12 @@ class ExpressionBuilder(BuilderBase):
     def elseif_expression(self, c: list) -> s.ElseifExpression:
         return s.ElseifExpression(c[1], c[3], self.span(c[0], c[3]))
 
+    def quantifier(self, c: list) -> s.AcrossExpression:
+        """`∀ x: s ¦ e` is `across s is x all e end`; `∃` is `some`."""
+        symbol, iteration, _, body = c
+        quantifier = "all" if symbol.type == "FOR_ALL" else "some"
+        return s.AcrossExpression(iteration, (), None, quantifier, body, None, self.span(symbol, body))
+
     def across_expression(self, c: list) -> s.AcrossExpression:
         keyword, iteration, invariant, until, quantifier, body, variant, end = c
         return s.AcrossExpression(iteration, invariant or (), until, quantifier.value.lower(),

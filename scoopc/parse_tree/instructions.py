@@ -109,6 +109,15 @@ class InstructionBuilder(BuilderBase):
         return s.Across(iteration, initialization or (), invariant or (), until, body, variant,
                         self.span(keyword, end))
 
+    def symbolic_loop(self, c: list) -> s.Across:
+        """`⟳ x: s ¦ compound ⟲` is `across s is x loop compound end`."""
+        opener, iteration, _, body, closer = c
+        return s.Across(iteration, (), (), None, body, None, self.span(opener, closer))
+
+    def symbolic_iteration(self, c: list) -> s.Iteration:
+        name, expression = c
+        return s.Iteration(expression, self.ident(name), False, self.span(name, expression))
+
     def from_part(self, c: list) -> tuple:
         return c[0]
 

@@ -36,6 +36,8 @@ class TypeBuilder(BuilderBase):
         span = self.span(name, closing)
         if name.value.lower() == "tuple":
             return self._tuple_type(groups, span)
+        if not groups:
+            self.report("SYNTAX", closing, found="`]`", expected="a type (only TUPLE may have empty brackets)")
         types = []
         for group_types, label_type in groups:
             if label_type is not None:
@@ -65,6 +67,10 @@ class TypeBuilder(BuilderBase):
 
     def actual_generics(self, c: list) -> tuple:
         return c[1:-1], c[-1]
+
+    def empty_generics(self, c: list) -> tuple:
+        """`TUPLE []`, the same as `TUPLE` (EiffelStudio allows empty brackets for TUPLE only)."""
+        return (), c[-1]
 
     def generic_group(self, c: list) -> tuple:
         return tuple(c[:-1]), c[-1]

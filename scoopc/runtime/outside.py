@@ -27,6 +27,7 @@ class OutsideClient:
             raise ScoopError(f"{self!r}: passive region {p!r} needs a processor client")
         s = Session(self, p)
         s.calls.append((routine, target, args, None, None))
+        s.heavy = not getattr(routine, "_scoop_leaf_", False)
         s.closed = True
         lock = p.lock
         lock.acquire()

@@ -16,13 +16,14 @@ from .sched import Block
 
 IDLE, SCHEDULED, RUNNING = 0, 1, 2
 Reservation = None      # set by reservation.py (which imports this module)
+HELP_LIMIT = 256        # leaf calls a releasing client serves for others before handing off
 STATE_NAMES = ("idle", "scheduled", "running")
 
 
 class Session:
     """A private queue: the calls of one client to one supplier within one reservation."""
     __slots__ = ("client", "proc", "calls", "closed", "dirty", "delivered", "changed",
-                 "turn", "where")
+                 "turn", "where", "heavy")
 
     def __init__(self, client, proc, where=None):
         self.client = client      # Processor or OutsideClient (immutable)
@@ -34,6 +35,8 @@ class Session:
         self.changed = False      # [executor of proc] a command ran (wakes wait conditions)
         self.turn = None          # [proc.lock] passive only: Block of the client awaiting its turn
         self.where = where        # reservation position, for reports
+        self.heavy = False        # [proc.lock] a non-leaf call was logged: no client may
+        #                           run this session's calls on its own thread
 
 
 class Processor:
@@ -100,12 +103,15 @@ class Processor:
             lock = p.lock
             lock.acquire()
             if s.dirty is None:      # a dirty region skips later calls
-                if p.state == IDLE and p.head is s and not s.calls and \
-                        routine.__dict__.get("_scoop_leaf_"):
-                    p.state = RUNNING    # client executes a short command itself
-                    lock.release()
-                    self._run_leaf(p, s, routine, target, args)
-                    return
+                if getattr(routine, "_scoop_leaf_", False):
+                    if p.state != RUNNING and not s.heavy:
+                        ahead = _ahead_locked(p, s)
+                        if ahead is not None:      # client executes the short command
+                            self._inline(p, s, _take(p, s, ahead), routine, target, args,
+                                         None, True)
+                            return
+                else:
+                    s.heavy = True
                 s.calls.append((routine, target, args, None, None))
                 if p.state == IDLE and p.head is s:
                     p.state = SCHEDULED
@@ -152,18 +158,18 @@ class Processor:
                 err = s.dirty
                 lock.release()
                 raise DirtyRegionError(f"an earlier call on {p} failed: {err!r}") from err
-            if p.head is s and p.state != RUNNING:
-                p.state = RUNNING        # a SCHEDULED worker will find it taken and skip it
-                pending = s.calls
-                if pending:
-                    s.calls = deque()
-                lock.release()
-                return self._inline(p, s, pending, routine, target, args, passer, is_cmd)
+            if p.state != RUNNING:
+                ahead = _ahead_locked(p, s)
+                if ahead is not None:
+                    return self._inline(p, s, _take(p, s, ahead), routine, target, args,
+                                        passer, is_cmd)
             blk = Block("turn" if p.passive else "sync", self, s, where, _locked(), None, routine)
             if p.passive:
                 s.turn = blk
             else:
                 s.calls.append((routine, target, args, blk, passer))
+                if passer is not None or not getattr(routine, "_scoop_leaf_", False):
+                    s.heavy = True
             lock.release()
             self.rt.block(self.exec, blk)
             if not p.passive:
@@ -171,42 +177,37 @@ class Processor:
                     raise blk.error
                 return blk.value
 
-    def _inline(self, p, s, pending, routine, target, args, passer, is_cmd):
-        """Run `p`'s pending calls of this session, then this call, on our thread."""
+    def _inline(self, p, s, batches, routine, target, args, passer, is_cmd):
+        """[p.lock held, p claimed by `_take`] Run the calls queued ahead of ours, then this
+        one, on our own thread on `p`'s behalf; a leaf command's failure only dirties `s`."""
         ex = self.exec
         p.exec = ex
+        p.lock.release()
         ex.stack.append(p)
         try:
-            if pending:
-                p._run_calls(s, pending)
+            if batches:
+                p._run_backlog(batches)
                 if s.dirty is not None:
+                    if is_cmd and passer is None:
+                        return None                  # skipped: the region is dirty
                     with p.lock:
                         s.delivered = True
                     raise DirtyRegionError(f"an earlier call on {p} failed: {s.dirty!r}") \
                         from s.dirty
             if is_cmd:
                 s.changed = True
+                if passer is None and not p.passive:   # a leaf command: failure dirties
+                    try:
+                        return routine(target, *args)
+                    except Shutdown:
+                        raise
+                    except BaseException as e:
+                        with p.lock:
+                            s.dirty = e
+                        return None
             if passer is None:
                 return routine(target, *args)
             return p._invoke_passing(passer, routine, target, args)
-        finally:
-            ex.stack.pop()
-            p.unclaim()
-
-    def _run_leaf(self, p, s, routine, target, args):
-        """A leaf command run by its client: a failure makes the region dirty, as if the
-        supplier had run it; the client goes on."""
-        ex = self.exec
-        p.exec = ex
-        ex.stack.append(p)
-        s.changed = True
-        try:
-            routine(target, *args)
-        except Shutdown:
-            raise
-        except BaseException as e:
-            with p.lock:
-                s.dirty = e
         finally:
             ex.stack.pop()
             p.unclaim()
@@ -316,6 +317,51 @@ class Processor:
                 blk.value = r
                 rt.unblock(blk)
 
+    def settle_locked(self, helper):
+        """[lock held, state IDLE; releases it] After a session ended: run the leaf calls
+        queued next on the helper's thread (a releasing client), up to HELP_LIMIT, so a
+        busy shared supplier does not need a thread hand-off per client; hand anything
+        else to the pool."""
+        lock = self.lock
+        ex = getattr(helper, "exec", None)
+        done = 0
+        while True:
+            h = self.head
+            while h is not None and h.closed and not h.calls:
+                h = self._advance_locked()
+            if h is None or not h.calls:
+                lock.release()
+                return
+            if h.heavy or ex is None or done >= HELP_LIMIT or self.passive:
+                self.state = SCHEDULED
+                lock.release()
+                self.rt.schedule(self)
+                return
+            self.state = RUNNING
+            self.exec = ex
+            batch = h.calls
+            h.calls = deque()
+            lock.release()
+            ex.stack.append(self)
+            try:
+                self._run_calls(h, batch)
+            finally:
+                ex.stack.pop()
+            done += len(batch)
+            lock.acquire()
+            self.state = IDLE
+            self.exec = None
+
+    def _run_backlog(self, batches):
+        """Run taken batches in order (ours last), finishing each session ahead of ours."""
+        for h, batch in batches:
+            if batch:
+                self._run_calls(h, batch)
+        if len(batches) > 1:
+            with self.lock:
+                for _ in range(len(batches) - 1):
+                    self._advance_locked()
+
     def _advance_locked(self):
         """[lock] The head session is finished: report, wake waiters, move to the next."""
         s = self.head
@@ -360,6 +406,38 @@ class Processor:
         return Reservation(self, objs, pre, where)
 
 
+def _ahead_locked(p, s):
+    """[p.lock, p not RUNNING] The sessions ahead of `s` in `p`'s queue of queues if a
+    client may run them itself (all closed, leaf calls only), else None. Running them in
+    order keeps every guarantee: it is what the supplier would do next, on another thread."""
+    h = p.head
+    if h is s:
+        return ()
+    if p.passive or h is None or not h.closed or h.heavy:
+        return None
+    ahead = [h]
+    for q in p.qoq:
+        if q is s:
+            return ahead
+        if not q.closed or q.heavy:
+            return None
+        ahead.append(q)
+    return None
+
+
+def _take(p, s, ahead):
+    """[p.lock] Claim `p` and take the calls of the sessions ahead and of `s` itself."""
+    p.state = RUNNING
+    batches = []
+    for h in ahead:
+        batches.append((h, h.calls))
+        h.calls = deque()
+    if s.calls or ahead:
+        batches.append((s, s.calls))
+        s.calls = deque()
+    return batches
+
+
 def _locked():
     import threading
     lk = threading.Lock()
@@ -376,7 +454,8 @@ def enqueue(p, s):
 
 
 def close(s):
-    """The client releases its reservation `s`; finish it now if nobody runs its supplier."""
+    """The client releases its reservation `s`. If nobody runs the supplier, the client
+    finishes the session itself and serves the leaf calls queued behind it (see `settle`)."""
     p = s.proc
     lock = p.lock
     lock.acquire()
@@ -387,14 +466,7 @@ def close(s):
                 p.head = None          # the common case: nothing else to do
                 lock.release()
                 return
-            nxt = p._advance_locked()
-            while nxt is not None and nxt.closed and not nxt.calls:
-                nxt = p._advance_locked()
-            if nxt is None or not nxt.calls or p.passive:
-                lock.release()
-                return
-        p.state = SCHEDULED
-        lock.release()
-        p.rt.schedule(p)
+            p._advance_locked()
+        p.settle_locked(s.client)
         return
     lock.release()

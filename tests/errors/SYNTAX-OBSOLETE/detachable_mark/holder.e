@@ -1,0 +1,8 @@
+class
+	HOLDER
+
+feature
+
+	content: ?STRING -- E: SYNTAX-OBSOLETE@11
+
+end
