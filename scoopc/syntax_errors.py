@@ -103,6 +103,9 @@ _OBSOLETE = {
 def _obsolete(token: Token, expected: set, stack: list) -> Optional[dict]:
     """Arguments of a SYNTAX-OBSOLETE diagnostic when `token` starts or shows an obsolete form."""
     entry = _OBSOLETE.get((token.type, str(token.value).lower()))
+    previous = stack[-1] if stack else None
+    if entry is None and token.type == "STRING" and getattr(previous, "type", None) == "IDENTIFIER":
+        entry = _OBSOLETE.get(("IDENTIFIER", str(previous.value).lower()))
     if entry is None and token.type == "QUESTION" and "DETACHABLE" in expected:
         entry = ("`?T` is the obsolete spelling of `detachable T`", "write `detachable T`")
     if entry is None and token.type == "COLON" and len(stack) >= 2 \

@@ -16,6 +16,7 @@ from .sched import Block
 
 IDLE, SCHEDULED, RUNNING = 0, 1, 2
 Reservation = None      # set by reservation.py (which imports this module)
+BATCH_SESSIONS = 64     # sessions a server takes under one lock hold
 HELP_LIMIT = 256        # leaf calls a releasing client serves for others before handing off
 STATE_NAMES = ("idle", "scheduled", "running")
 
@@ -269,6 +270,10 @@ class Processor:
             ex.stack.pop()
 
     def _serve(self):
+        """Serve the queue of queues. Under one lock hold it takes the head's calls and,
+        while sessions are closed, the calls of those behind it (in order: each closed
+        session is finished before the next starts), so a shared supplier with many short
+        client sessions pays one lock round per batch, not per session."""
         lock = self.lock
         while True:
             lock.acquire()
@@ -280,10 +285,25 @@ class Processor:
                 self.state = IDLE
                 lock.release()
                 return
-            batch = s.calls
+            batches = [(s, s.calls)]
             s.calls = deque()
+            if s.closed:
+                for q in self.qoq:
+                    if len(batches) >= BATCH_SESSIONS:
+                        break
+                    batches.append((q, q.calls))
+                    q.calls = deque()
+                    if not q.closed:
+                        break
             lock.release()
-            self._run_calls(s, batch)
+            for q, batch in batches:
+                if batch:
+                    self._run_calls(q, batch)
+            if len(batches) > 1:
+                lock.acquire()
+                for _ in range(len(batches) - 1):   # all but the last are closed
+                    self._advance_locked()
+                lock.release()
 
     def _run_calls(self, s, batch):
         rt = self.rt
