@@ -7,6 +7,7 @@ reduction callbacks (scoopc/parse_tree); there is no intermediate parse tree.
 from __future__ import annotations
 
 import os
+import re
 import threading
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -72,20 +73,68 @@ def _diagnosis_parser(fast: Lark, builder: AstBuilder) -> Lark:
 
 
 def parse(source: SourceFile) -> ParseResult:
-    """Parse one file, which must hold exactly one class. Never raises for bad input."""
+    """Parse one file, which must hold exactly one class. Never raises for bad input.
+
+    After a syntax error, parsing resumes at the next feature clause (see `_recover`), so that
+    independent mistakes in different clauses are all reported, one diagnostic each."""
     with _lock:
-        lark_parser, builder = _parser()
-        builder.reset(source.path)
-        try:
-            classes = lark_parser.parse(source.text)
-        except UnexpectedInput as error:
-            problems = list(builder.problems)
-            found = syntax_errors.describe(error, source, _diagnosis_parser(lark_parser, builder))
-            return ParseResult(None, _sorted(problems + [found]))
-        except Exception as error:  # a bug in scoopc, not the user's mistake
-            raise InternalError(f"the parser failed on {source.path}: {error!r}") from error
-        problems = builder.problems + _stray_open_operands(builder)
-    return _one_class(classes, source, problems)
+        classes, problems, error = _parse_once(source)
+        if error is None:
+            return _one_class(classes, source, problems)
+        return ParseResult(None, _sorted(problems + [error] + _recover(source, error)))
+
+
+def _parse_once(source: SourceFile) -> tuple[list, list[Diagnostic], Optional[Diagnostic]]:
+    """(classes, problems, the syntax error or None) of one run of the parser over `source`."""
+    lark_parser, builder = _parser()
+    builder.reset(source.path)
+    try:
+        classes = lark_parser.parse(source.text)
+    except UnexpectedInput as error:
+        found = syntax_errors.describe(error, source, _diagnosis_parser(lark_parser, builder))
+        return [], list(builder.problems), found
+    except Exception as error:  # a bug in scoopc, not the user's mistake
+        raise InternalError(f"the parser failed on {source.path}: {error!r}") from error
+    return classes, builder.problems + _stray_open_operands(builder), None
+
+
+# A clause keyword at the start of a line: where parsing can resume after an error.
+_CLAUSE_START = re.compile(r"^(?:feature|invariant|end)\b", re.IGNORECASE | re.MULTILINE)
+_FEATURE_START = re.compile(r"^feature\b", re.IGNORECASE | re.MULTILINE)
+_MAX_ERRORS = 20
+
+
+def _recover(source: SourceFile, error: Diagnostic) -> list[Diagnostic]:
+    """Further syntax errors after `error`: the feature clause holding an error is blanked
+    (spaces, newlines kept, so positions stay true) and the file parsed again, as long as each
+    new error lies after the blanked text. Relies on `feature` starting its line, as Eiffel
+    code is laid out; without that, only the first error is reported."""
+    found: list[Diagnostic] = []
+    text = source.text
+    while error is not None and len(found) < _MAX_ERRORS - 1:
+        at = source.offset(error.span.line, error.span.column)
+        clause = _last_match_before(_FEATURE_START, text, at + 1)
+        resume = _CLAUSE_START.search(text, at + 1 if clause is not None and clause == at else at)
+        if clause is None or resume is None:
+            break
+        text = text[:clause] + re.sub(r"[^\n]", " ", text[clause:resume.start()]) + text[resume.start():]
+        _, problems, error = _parse_once(SourceFile(source.path, text))
+        later = [p for p in problems + ([error] if error else []) if _offset(source, p) >= resume.start()]
+        if error is not None and _offset(source, error) < resume.start():
+            break
+        found.extend(later)
+    return found
+
+
+def _last_match_before(pattern: re.Pattern, text: str, end: int) -> Optional[int]:
+    start = None
+    for match in pattern.finditer(text, 0, end):
+        start = match.start()
+    return start
+
+
+def _offset(source: SourceFile, d: Diagnostic) -> int:
+    return source.offset(d.span.line, d.span.column) if d.span else 0
 
 
 def _stray_open_operands(builder: AstBuilder) -> list[Diagnostic]:

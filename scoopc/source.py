@@ -73,6 +73,11 @@ class SourceFile:
         index = bisect.bisect_right(self._line_starts, offset) - 1
         return index + 1, offset - self._line_starts[index] + 1
 
+    def offset(self, line: int, column: int) -> int:
+        """The 0-based character offset of a 1-based (line, column), clamped to the text."""
+        line = min(max(line, 1), len(self._line_starts))
+        return min(self._line_starts[line - 1] + max(column, 1) - 1, len(self.text))
+
     def span(self, start: int, end: int) -> Span:
         """The span of the character offsets [start, end)."""
         line, column = self.position(start)

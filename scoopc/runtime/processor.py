@@ -150,6 +150,8 @@ class Processor:
 
     def _sync(self, s, p, routine, target, args, where, is_cmd):
         """A synchronous call: run it ourselves if `p` is free for us, else wait for it."""
+        if self.rt.stopping:
+            raise Shutdown()
         passer = self if args and self._passes(args) else None
         lock = p.lock
         while True:
@@ -405,6 +407,8 @@ class Processor:
     # -- services ----------------------------------------------------------------------
     def print(self, text):
         """Write `text` whole (never torn by another processor's output)."""
+        if self.rt.stopping:
+            raise Shutdown()
         self.rt.out.write(self, text)
 
     def sleep(self, ns, where=None):

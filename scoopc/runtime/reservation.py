@@ -8,7 +8,7 @@ registers a targeted wake-up on the suppliers its failing clause queried, and sl
 """
 import threading
 
-from .errors import PreconditionViolation
+from .errors import PreconditionViolation, Shutdown
 from . import processor
 from .processor import Session, close, enqueue
 from .sched import Block
@@ -31,6 +31,8 @@ class Reservation:
 
     def enter(self):
         here = self.here
+        if here.rt.stopping:              # shutting down: stop at the next reservation
+            raise Shutdown()
         held = here.held
         objs = self.objs
         if len(objs) == 1 and self.pre is None:     # the common case, without calls

@@ -3,6 +3,7 @@ the private queues: calls of one client within one reservation run in order, nev
 interleaved with another client's."""
 import threading
 
+import scoopc.runtime as rt
 from rt_helpers import Cell, Runner, cell_inc, result_of, spawn
 
 
@@ -106,3 +107,67 @@ def test_runner_results(h):
     r = spawn(h.root, lambda here, x: x * 2, 21)
     assert result_of(h.root, r) == 42
     assert isinstance(r, Runner)
+
+
+def test_client_serves_closed_leaf_sessions_ahead_in_order(h):
+    """A client whose private queue waits behind closed sessions of leaf calls runs them
+    itself, in order, before its own query (no thread hand-off, same result)."""
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    gate, entered = threading.Event(), threading.Event()
+    hold = threading.Event()
+    logged = threading.Event()
+
+    def holder(here):                       # keeps c reserved (open) until told
+        with here.reserve((c,)):
+            here.call(c, Cell.add, ("h",))
+            entered.set()
+            assert hold.wait(10)
+
+    def leafer(here, i):
+        with here.reserve((c,)):
+            here.call(c, cell_inc)
+            here.call(c, cell_inc)
+        if i == 4:
+            logged.set()
+    spawn(root, holder)
+    assert entered.wait(10)
+    seq = [threading.Event() for _ in range(5)]
+    for i in range(5):
+        spawn(root, lambda here, i=i: (i == 0 or seq[i - 1].wait(10), leafer(here, i),
+                                       seq[i].set()))
+    assert logged.wait(10)                  # five closed sessions queued behind the holder
+    with root.reserve((c,)):
+        hold.set()
+        assert root.query(c, Cell.get) == 10
+        assert root.query(c, Cell.items) == ["h"]
+
+
+def test_failure_in_another_clients_session_does_not_dirty_ours(h):
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    hold, entered, logged = threading.Event(), threading.Event(), threading.Event()
+
+    @rt.leaf
+    def leaf_fail(cell):
+        raise ValueError("theirs")
+
+    def holder(here):
+        with here.reserve((c,)):
+            here.call(c, Cell.add, ("h",))
+            entered.set()
+            assert hold.wait(10)
+
+    def failer(here):
+        with here.reserve((c,), where=("F", "f", "f.e", 3)):
+            here.call(c, leaf_fail)
+        logged.set()
+    spawn(root, holder)
+    assert entered.wait(10)
+    spawn(root, failer)
+    assert logged.wait(10)
+    with root.reserve((c,)):
+        hold.set()
+        assert root.query(c, Cell.items) == ["h"]     # no DirtyRegionError for us
+    assert h.finish() == 0
+    assert "theirs" in h.err.getvalue() and "f.e:3" in h.err.getvalue()

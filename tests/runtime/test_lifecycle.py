@@ -188,3 +188,25 @@ def test_every_worker_is_joined(h):
     assert h.finish() == 0
     assert all(not w.thread.is_alive() for w in h.rt.workers)
     assert h.rt.monitor.thread.is_alive() is False
+
+
+def test_ctrl_c_stops_a_processor_that_keeps_calling():
+    running = threading.Event()
+
+    class App:
+        def make(self):
+            here = self._region_
+            c = here.new_separate(Cell, Cell.make)
+
+            def forever(h2):
+                while True:
+                    with h2.reserve((c,)):
+                        h2.call(c, Cell.set, (1,))
+                    running.set()
+            spawn(here, forever)
+            assert running.wait(10)
+            raise KeyboardInterrupt
+    t0 = time.monotonic()
+    err = io.StringIO()
+    assert rt.run_main(App, App.make, stderr=err, stdout=io.StringIO()) == 130
+    assert time.monotonic() - t0 < 5 and "still running" not in err.getvalue()
