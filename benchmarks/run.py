@@ -18,7 +18,7 @@ ROOT = os.path.dirname(HERE)
 BENCHMARKS = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
 VARIANTS = ("baseline", "scoop")
 REPEATS = {"full": 3, "quick": 3, "smoke": 1}
-TIMEOUTS = {"full": 600, "quick": 60, "smoke": 30}
+TIMEOUTS = {"full": 180, "quick": 60, "smoke": 30}
 STATS = {"best": min, "median": statistics.median}
 
 
@@ -85,6 +85,13 @@ def pin(unpinned):
     return f"pinned to cpu {cpu}"
 
 
+def failure_line(stderr):
+    """The runtime's own failure line if there is one, else the last line (the exception)."""
+    lines = stderr.strip().splitlines() or ["(no output)"]
+    ours = [line for line in lines if line.startswith("scoopc:")]
+    return (ours or lines)[-1]
+
+
 def run_child(name, variant, size):
     command = [sys.executable, os.path.abspath(__file__), "--child", name, variant, size]
     try:
@@ -92,8 +99,7 @@ def run_child(name, variant, size):
     except subprocess.TimeoutExpired:
         raise RunFailed(f"{name} {variant}: timed out after {TIMEOUTS[size]} s") from None
     if done.returncode != 0:
-        lines = done.stderr.strip().splitlines() or ["(no output)"]
-        raise RunFailed(f"{name} {variant}: exit {done.returncode}: {lines[-1]}")
+        raise RunFailed(f"{name} {variant}: exit {done.returncode}: {failure_line(done.stderr)}")
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
@@ -156,11 +162,17 @@ def report_micro(size, repeats, stat):
     return True
 
 
+def load_average():
+    """The 1-minute load average before the run: a busy machine makes the figures noisy."""
+    return f"{os.getloadavg()[0]:.1f}" if hasattr(os, "getloadavg") else "n/a"
+
+
 def print_header(size, repeats, stat, pinning):
     gil = getattr(sys, "_is_gil_enabled", lambda: True)()
     print(f"# scoopc benchmarks: python {platform.python_version()} "
           f"({'GIL' if gil else 'free-threaded'}), {os.cpu_count()} cpus, {pinning}, "
-          f"size={size}, {stat} of {repeats} runs, each run a fresh subprocess", flush=True)
+          f"load {load_average()}, size={size}, {stat} of {repeats} runs, "
+          f"each run a fresh subprocess", flush=True)
 
 
 def main(argv=None):

@@ -162,7 +162,7 @@ def _read_target(project: Project, ecf: Path, target: ElementTree.Element) -> No
         kind = _local(element.tag)
         if kind == "root":
             _read_root(project, element)
-        elif kind == "cluster":
+        elif kind in ("cluster", "override"):  # an override cluster's classes replace library ones
             _read_cluster(project, ecf, element, base)
         elif kind in ("library", "precompile"):
             _read_library(project, ecf, element)

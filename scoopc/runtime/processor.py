@@ -106,6 +106,9 @@ class Processor:
             if s.dirty is None:      # a dirty region skips later calls
                 if getattr(routine, "_scoop_leaf_", False):
                     if p.state != RUNNING and not s.heavy:
+                        if p.head is s and not s.calls:    # the fast path
+                            self._leaf_now(p, s, routine, target, args)
+                            return
                         ahead = _ahead_locked(p, s)
                         if ahead is not None:      # client executes the short command
                             self._inline(p, s, _take(p, s, ahead), routine, target, args,
@@ -162,6 +165,8 @@ class Processor:
                 lock.release()
                 raise DirtyRegionError(f"an earlier call on {p} failed: {err!r}") from err
             if p.state != RUNNING:
+                if p.head is s and not s.calls and passer is None:     # the fast path
+                    return self._query_now(p, s, routine, target, args, is_cmd)
                 ahead = _ahead_locked(p, s)
                 if ahead is not None:
                     return self._inline(p, s, _take(p, s, ahead), routine, target, args,
@@ -179,6 +184,46 @@ class Processor:
                 if blk.error is not None:
                     raise blk.error
                 return blk.value
+
+    def _leaf_now(self, p, s, routine, target, args):
+        """[p.lock held, p free, our session at its head with nothing pending] Run a leaf
+        command ourselves. A leaf never blocks, so no frame is pushed for the monitor."""
+        lock = p.lock
+        p.state = RUNNING
+        p.exec = self.exec
+        lock.release()
+        s.changed = True
+        try:
+            routine(target, *args)
+        except Shutdown:
+            raise
+        except BaseException as e:
+            lock.acquire()
+            s.dirty = e
+        else:
+            lock.acquire()
+        p.exec = None
+        p.state = IDLE
+        lock.release()
+
+    def _query_now(self, p, s, routine, target, args, is_cmd):
+        """[p.lock held, p free, our session at its head with nothing pending] Run a
+        synchronous call ourselves on `p`'s behalf (client executes)."""
+        lock = p.lock
+        p.state = RUNNING
+        ex = p.exec = self.exec
+        lock.release()
+        ex.stack.append(p)
+        try:
+            if is_cmd:
+                s.changed = True
+            return routine(target, *args)
+        finally:
+            ex.stack.pop()
+            lock.acquire()
+            p.exec = None
+            p.state = IDLE
+            lock.release()
 
     def _inline(self, p, s, batches, routine, target, args, passer, is_cmd):
         """[p.lock held, p claimed by `_take`] Run the calls queued ahead of ours, then this

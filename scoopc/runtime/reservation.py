@@ -33,43 +33,17 @@ class Reservation:
         here = self.here
         if here.rt.stopping:              # shutting down: stop at the next reservation
             raise Shutdown()
-        held = here.held
         objs = self.objs
-        if len(objs) == 1 and self.pre is None:     # the common case, without calls
+        if len(objs) == 1:                # the common case, with few calls
             o = objs[0]
-            if o is None or o._region_ in held:
-                self.taken = ()
-                return self
-            r = o._region_
-            s = Session(here, r, self.where)
-            lock = r.lock
-            lock.acquire()
-            if r.head is None:
-                r.head = s
-            else:
-                r.qoq.append(s)
-            lock.release()
-            held[r] = s
-            self.taken = ((r, s),)
-            return self
-        return self._enter_general()
-
-    __enter__ = enter
-
-    def __exit__(self, et, ev, tb):
-        self.exit()
-
-    def _enter_general(self):
-        here = self.here
-        held = here.held
-        regs = []
-        for o in self.objs:
-            if o is not None:
-                r = o._region_
-                if r not in held and r not in regs:
-                    regs.append(r)
+            regs = () if o is None or o._region_ in here.held else (o._region_,)
+        else:
+            regs = self._regions()
         while True:
-            self.taken = reserve_regions(here, regs, self.where) if regs else ()
+            if len(regs) == 1:
+                self.taken = _reserve_one(here, regs[0], self.where)
+            else:
+                self.taken = reserve_regions(here, regs, self.where) if regs else ()
             if self.pre is None:
                 return self
             try:
@@ -80,6 +54,28 @@ class Reservation:
             if failing is None:
                 return self
             self._wait(failing, regs)
+
+    __enter__ = enter
+
+    def __exit__(self, et, ev, tb):
+        taken = self.taken
+        if taken:
+            held = self.here.held
+            for r, s in taken:
+                del held[r]
+                close(s)
+        self.taken = None
+
+    def _regions(self):
+        """The regions to reserve: not Void, not held already, each once."""
+        held = self.here.held
+        regs = []
+        for o in self.objs:
+            if o is not None:
+                r = o._region_
+                if r not in held and r not in regs:
+                    regs.append(r)
+        return regs
 
     def _first_false(self):
         for clause in self.pre:
@@ -123,6 +119,19 @@ class Reservation:
                 del held[r]
                 close(s)
         self.taken = None
+
+
+def _reserve_one(here, r, where):
+    s = Session(here, r, where)
+    lock = r.lock
+    lock.acquire()
+    if r.head is None:
+        r.head = s
+    else:
+        r.qoq.append(s)
+    lock.release()
+    here.held[r] = s
+    return ((r, s),)
 
 
 def reserve_regions(here, regs, where):

@@ -77,3 +77,20 @@ def test_each_variant_checks_its_result(name, variant, monkeypatch):
         monkeypatch.setattr(module, "check_counts", lambda *a: wrong("counts", 0, 1))
     with pytest.raises(CheckFailed):
         getattr(module, variant)(**module.SIZES["smoke"])
+
+
+def test_a_failing_run_is_reported_and_fails_the_command(monkeypatch, capsys):
+    monkeypatch.syspath_prepend(os.path.dirname(RUN))
+    import run as harness
+
+    with pytest.raises(harness.RunFailed):
+        harness.run_child("nosuch", "scoop", "smoke")      # a crashing child: non-zero exit
+
+    def broken(name, variant, size):
+        raise harness.RunFailed(f"{name} {variant}: exit 1: CheckFailed: count")
+
+    monkeypatch.setattr(harness, "run_child", broken)
+    assert harness.main(["--smoke", "--unpinned", "--only", "mutex"]) == 1
+    out = capsys.readouterr().out.splitlines()
+    assert out[1].startswith("mutex workers=") and "FAILED" in out[1]
+    assert out[2] == "geomean_ratio=nan failed=mutex"
