@@ -10,7 +10,7 @@ from scoopc.runtime import leaf
 from common import check, join_all, run_program, start_all, where
 
 SIZES = {
-    "full": {"creatures": 10, "meetings": 200_000},
+    "full": {"creatures": 10, "meetings": 300_000},
     "quick": {"creatures": 10, "meetings": 10_000},
     "smoke": {"creatures": 4, "meetings": 200},
 }

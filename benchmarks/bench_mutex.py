@@ -9,7 +9,7 @@ from scoopc.runtime import leaf
 from common import check, join_all, run_program, start_all, where
 
 SIZES = {
-    "full": {"workers": 32, "iters": 40_000},
+    "full": {"workers": 32, "iters": 100_000},
     "quick": {"workers": 32, "iters": 2_500},
     "smoke": {"workers": 4, "iters": 200},
 }

@@ -1,4 +1,4 @@
-"""prodcons (SCOOP/Qs): producers and consumers over a shared queue; consumers wait until it is non-empty.
+"""prodcons (SCOOP/Qs): producers and consumers share a queue; consumers wait until it is non-empty.
 
 Baseline: threads sharing one queue.Queue (unbounded, as the SCOOP queue is).
 """
@@ -10,7 +10,7 @@ from scoopc.runtime import leaf
 from common import check, join_all, run_program, start_all, where
 
 SIZES = {
-    "full": {"producers": 4, "consumers": 4, "items": 100_000},
+    "full": {"producers": 4, "consumers": 4, "items": 200_000},
     "quick": {"producers": 4, "consumers": 4, "items": 5_000},
     "smoke": {"producers": 2, "consumers": 2, "items": 100},
 }

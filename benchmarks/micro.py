@@ -127,7 +127,8 @@ class Root:
         here = self._region_
         sinks = [here.new_separate(Sink, Sink.make) for _ in range(max(RESERVE_COUNTS))]
         self.sync_with(sinks)
-        for key, routine in (("async_command", Sink.bump), ("async_command_queued", Sink.bump_queued)):
+        commands = (("async_command", Sink.bump), ("async_command_queued", Sink.bump_queued))
+        for key, routine in commands:
             out[key] = per_call_us(self.time_commands(sinks[0], routine, calls), calls)
         out["sync_query"] = per_call_us(self.time_queries(sinks[0], calls), calls)
         seconds = self.time_guarded(sinks[0], reservations)
@@ -166,7 +167,7 @@ class Root:
             return time.perf_counter() - start
 
     def time_guarded(self, sink, count):
-        """A routine `guarded (s: separate SINK) require s.count >= 0 do end`, called `count` times."""
+        """`guarded (s: separate SINK) require s.count >= 0 do end`, called `count` times."""
         here = self._region_
         start = time.perf_counter()
         for _ in range(count):

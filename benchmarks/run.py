@@ -1,6 +1,6 @@
-"""scoopc benchmark suite (DESIGN section 9): SCOOP/Qs programs on the runtime vs hand-written threading.
+"""scoopc benchmark suite (DESIGN section 9): SCOOP/Qs programs on the runtime vs threading.
 
-Run `python benchmarks/run.py --help`. Every measurement runs in a fresh subprocess; the best (or median) of R runs is reported.
+`python benchmarks/run.py --help`. Each run is a fresh subprocess; best (or median) of R runs.
 """
 import argparse
 import importlib
@@ -18,7 +18,7 @@ ROOT = os.path.dirname(HERE)
 BENCHMARKS = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
 VARIANTS = ("baseline", "scoop")
 REPEATS = {"full": 3, "quick": 3, "smoke": 1}
-TIMEOUTS = {"full": 180, "quick": 60, "smoke": 30}
+TIMEOUTS = {"full": 120, "quick": 30, "smoke": 10}
 STATS = {"best": min, "median": statistics.median}
 
 
@@ -30,8 +30,9 @@ def parse_args(argv):
     parser = argparse.ArgumentParser(
         description="Run the SCOOP/Qs concurrency benchmarks and micro costs: each benchmark "
         "against the scoopc runtime (as generated code calls it) and as hand-written threading, "
-        "with the time ratio scoop/baseline. Each run is a fresh subprocess; the best of "
-        "several runs is reported.")
+        "with the time ratio scoop/baseline, then micro costs of separate calls. Each run is "
+        "a fresh subprocess, pinned to one CPU unless --unpinned; the best (or, with --stat "
+        "median, the median) of several runs is reported.")
     size = parser.add_mutually_exclusive_group()
     size.add_argument("--quick", action="store_true", help="small sizes (well under 1 s each)")
     size.add_argument("--smoke", action="store_true", help="tiny sizes, one run: for tests")
@@ -67,9 +68,9 @@ def child_main(name, variant, size):
     if name == "micro":
         result = getattr(module, variant)(**params)
     else:
-        start = time.perf_counter()
+        start, cpu = time.perf_counter(), time.process_time()
         getattr(module, variant)(**params)
-        result = {"seconds": time.perf_counter() - start}
+        result = {"seconds": time.perf_counter() - start, "cpu": time.process_time() - cpu}
     print(json.dumps(result))
 
 
@@ -105,7 +106,8 @@ def run_child(name, variant, size):
 
 def summarise(runs, stat):
     """{variant: {key: [values]}} -> {variant: {key: stat(values)}}."""
-    return {v: {key: STATS[stat](values) for key, values in keys.items()} for v, keys in runs.items()}
+    return {variant: {key: STATS[stat](values) for key, values in keys.items()}
+            for variant, keys in runs.items()}
 
 
 def measure(name, size, repeats, stat):
@@ -134,8 +136,10 @@ def report_benchmark(name, size, repeats, stat):
     best = {variant: summary[variant]["seconds"] for variant in VARIANTS}
     ratio = best["scoop"] / best["baseline"]
     per_op = [1e6 * best[v] / module.ops(**params) for v in ("scoop", "baseline")]
+    cpu_ratio = summary["scoop"]["cpu"] / max(summary["baseline"]["cpu"], 1e-9)
     print(f"{name} {describe(params)} scoop_s={best['scoop']:.3f} baseline_s={best['baseline']:.3f}"
-          f" ratio={ratio:.2f} us_per_op={per_op[0]:.2f}/{per_op[1]:.2f}", flush=True)
+          f" ratio={ratio:.2f} us_per_op={per_op[0]:.2f}/{per_op[1]:.2f}"
+          f" cpu_ratio={cpu_ratio:.2f}", flush=True)
     return ratio
 
 

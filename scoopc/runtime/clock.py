@@ -141,7 +141,12 @@ class Clock:
         self.due.append(t)
 
     def _fire(self, t):
-        t.source.call(t.target, t.routine, t.args)
+        try:
+            t.source.call(t.target, t.routine, t.args)
+        except Exception as e:             # e.g. a timer on a passive region: collected
+            self.rt.fail(f"timer {getattr(t.routine, '__qualname__', t.routine)} "
+                         f"could not be logged: {e}", e)
+            return
         if t.period:
             with self.rt.glock:
                 if not t.cancelled:

@@ -33,6 +33,7 @@ def start(**options):
     ex.stack.append(root)
     with rt.glock:
         rt.n_running += 1
+    rt.permits.acquire(ex)
     rt.monitor = Monitor(rt)
     rt.monitor.start()
     return rt, root
@@ -41,9 +42,10 @@ def start(**options):
 def finish(rt, root, interrupted=False):
     """The root routine returned: wait for quiescence, shut down, return the exit status."""
     global _current
-    root.exec.stack.pop()
+    ex = root.exec
+    ex.stack.pop()
     root.unclaim()
-    rt.leave_running()
+    rt.leave_running(ex)
     status = 130 if interrupted else 0
     try:
         if not interrupted:

@@ -29,9 +29,16 @@ def _target(blk):
     return getattr(client, "exec", None)
 
 
+def _top_frame(proc):
+    """The innermost frame pushed by generated code; read racily (a report, not logic)."""
+    try:
+        return proc.frames[-1]
+    except IndexError:
+        return None
+
+
 def _describe(blk):
-    where = fmt_where(blk.where if blk.where is not None else
-                      (blk.proc.frames[-1] if blk.proc.frames else None))
+    where = fmt_where(blk.where if blk.where is not None else _top_frame(blk.proc))
     if blk.kind == "sync":
         what = getattr(blk.what, "__qualname__", blk.what)
         return f"{blk.proc!r} in {where} waits for the result of {what} on {blk.on.proc!r}"
@@ -91,7 +98,8 @@ def dump(rt):
         if state == "idle" and head is None:
             continue
         holder = f", serving {head.client!r}" if head is not None else ""
-        frame = f" at {fmt_where(p.frames[-1])}" if p.frames else ""
+        top = _top_frame(p)
+        frame = f" at {fmt_where(top)}" if top is not None else ""
         lines.append(f"  {p!r}: {state}{holder}, {n} queued{frame}")
     blocks, _ = snapshot(rt)
     for blk in blocks.values():

@@ -8,6 +8,7 @@ The queue of queues is `head` (the private queue being served) plus `qoq` (those
 A client whose private queue is at the head of an IDLE supplier runs its synchronous calls
 itself on its own thread ("client executes", as SCOOP/Qs): no thread hand-off.
 """
+import threading
 from collections import deque
 
 from .errors import DirtyRegionError, Shutdown, UncontrolledTarget
@@ -46,7 +47,6 @@ class Processor:
                  "waiters", "onces", "frames", "name", "__weakref__")
 
     def __init__(self, rt, passive=False, name=None):
-        import threading
         self.rt = rt
         self.id = rt.register(self)
         self.lock = threading.Lock()
@@ -136,6 +136,24 @@ class Processor:
         p = target._region_
         s = self.held.get(p)
         if s.__class__ is Session:
+            if not args or not self._passes(args):
+                lock = p.lock                  # the fast path of `_sync`, inlined
+                lock.acquire()
+                if p.state != RUNNING and p.head is s and not s.calls and s.dirty is None \
+                        and not self.rt.stopping:
+                    p.state = RUNNING
+                    ex = p.exec = self.exec
+                    lock.release()
+                    ex.stack.append(p)
+                    try:
+                        return routine(target, *args)
+                    finally:
+                        ex.stack.pop()
+                        lock.acquire()
+                        p.exec = None
+                        p.state = IDLE
+                        lock.release()
+                lock.release()
             return self._sync(s, p, routine, target, args, where, False)
         if s is p:
             if p is self:
@@ -171,7 +189,8 @@ class Processor:
                 if ahead is not None:
                     return self._inline(p, s, _take(p, s, ahead), routine, target, args,
                                         passer, is_cmd)
-            blk = Block("turn" if p.passive else "sync", self, s, where, _locked(), None, routine)
+            blk = Block("turn" if p.passive else "sync", self, s, where, locked_lock(), None,
+                        routine)
             if p.passive:
                 s.turn = blk
             else:
@@ -312,11 +331,11 @@ class Processor:
         lock.release()
         ex.stack.append(self)
         try:
-            self._serve()
+            self._serve(ex)
         finally:
             ex.stack.pop()
 
-    def _serve(self):
+    def _serve(self, ex):
         """Serve the queue of queues. Under one lock hold it takes the head's calls and,
         while sessions are closed, the calls of those behind it (in order: each closed
         session is finished before the next starts), so a shared supplier with many short
@@ -507,8 +526,8 @@ def _take(p, s, ahead):
     return batches
 
 
-def _locked():
-    import threading
+def locked_lock():
+    """A new lock, already held: a one-shot wake-up for a blocked thread."""
     lk = threading.Lock()
     lk.acquire()
     return lk

@@ -6,11 +6,9 @@ under their locks taken in processor-id order (never blocking: a private queue i
 in the queue of queues). A failed wait condition releases what this reservation took,
 registers a targeted wake-up on the suppliers its failing clause queried, and sleeps.
 """
-import threading
-
 from .errors import PreconditionViolation, Shutdown
 from . import processor
-from .processor import Session, close, enqueue
+from .processor import Session, close, enqueue, locked_lock
 from .sched import Block
 
 
@@ -31,7 +29,10 @@ class Reservation:
 
     def enter(self):
         here = self.here
-        if here.rt.stopping:              # shutting down: stop at the next reservation
+        rt = here.rt
+        if rt.permits.want_yield:         # a permit waiter asked: a safe point to yield
+            rt.permits.yield_point(here.exec)
+        if rt.stopping:                   # shutting down: stop at the next reservation
             raise Shutdown()
         objs = self.objs
         if len(objs) == 1:                # the common case, with few calls
@@ -83,30 +84,30 @@ class Reservation:
                 return clause
         return None
 
+    def _queried(self, clause, regs):
+        """The newly reserved regions that `clause` uses as targets."""
+        queried = []
+        for i in clause[1]:
+            o = self.objs[i]
+            if o is not None and o._region_ in regs and o._region_ not in queried:
+                queried.append(o._region_)
+        return queried
+
     def _wait(self, clause, regs):
         """Release, sleep until a queried supplier served another client, or raise."""
-        pred, targets, tag, where = clause
-        fresh = set(regs)
-        queried = []
-        for i in targets:
-            o = self.objs[i]
-            if o is not None and o._region_ in fresh and o._region_ not in queried:
-                queried.append(o._region_)
+        queried = self._queried(clause, regs)
         if not queried:
             self.exit()
-            raise PreconditionViolation(tag, where)
+            raise PreconditionViolation(clause[2], clause[3])
         here = self.here
-        lk = threading.Lock()
-        lk.acquire()
-        blk = Block("wait", here, tuple(queried), where or self.where, lk, None, tag)
-        for r in queried:                 # before releasing: no change can slip in between
-            with r.lock:
-                r.waiters.append(blk)
+        blk = Block("wait", here, tuple(queried), clause[3] or self.where, locked_lock(), None,
+                    clause[2])
+        _register(blk, queried)           # before releasing: no change can slip in between
         self.exit()
         try:
             here.rt.block(here.exec, blk)
         finally:
-            for r in queried:
+            for r in regs:
                 with r.lock:
                     if blk in r.waiters:
                         r.waiters.remove(blk)
@@ -119,6 +120,13 @@ class Reservation:
                 del held[r]
                 close(s)
         self.taken = None
+
+
+def _register(blk, regions):
+    for r in regions:
+        with r.lock:
+            if blk not in r.waiters:
+                r.waiters.append(blk)
 
 
 def _reserve_one(here, r, where):
@@ -136,16 +144,9 @@ def _reserve_one(here, r, where):
 
 def reserve_regions(here, regs, where):
     """Enqueue one new private queue per region atomically; record them as held."""
-    held = here.held
     if len(regs) == 1:
-        r = regs[0]
-        s = Session(here, r, where)
-        lock = r.lock
-        lock.acquire()
-        enqueue(r, s)
-        lock.release()
-        held[r] = s
-        return ((r, s),)
+        return _reserve_one(here, regs[0], where)
+    held = here.held
     ordered = sorted(regs, key=_id)
     taken = [(r, Session(here, r, where)) for r in ordered]
     for r in ordered:

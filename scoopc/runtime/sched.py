@@ -5,8 +5,10 @@ Design. A processor is a data structure; an OS thread is attached to it only whi
 queue of queues has work (`schedule`), taken from a pool of parked workers. A worker that
 finishes a processor first takes the next runnable processor itself, so a chain of
 hand-offs (threadring) runs on one thread without a thread switch; a parked worker is woken
-only when no other is already on its way (`n_waking`), and a new thread is started only
-when none is parked, so a processor computing for a long time never delays the others.
+only when it can be useful (`_want_worker`), and a new thread is started only when none is
+parked. Threads run processor code only while holding a run permit (permits.py); a
+permit waiter that finds the holders stuck takes an extra one, so a long computation
+delays the other processors by about 10 ms at most.
 Blocking (synchronous calls, wait conditions, passive-region turns, sleep) goes through
 `block`, which records what the thread waits on for the deadlock monitor and the dump.
 
@@ -25,12 +27,14 @@ MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
 
 class Exec:
     """One OS thread running processor code (a worker, the main thread, a client)."""
-    __slots__ = ("stack", "blocked", "name")
+    __slots__ = ("stack", "blocked", "name", "permit", "plock")
 
     def __init__(self, name):
         self.stack = []        # processors run on behalf of, innermost last; owner thread only
         self.blocked = None    # Block or None; written by the owner thread under rt.glock
         self.name = name
+        self.permit = False    # [rt.glock] this thread holds a run permit (permits.py)
+        self.plock = threading.Lock()   # locked while waiting for a permit
 
 
 class Block:
@@ -78,12 +82,14 @@ class Worker:
                 fresh = False
                 if p is None:
                     return
+                if not ex.permit:
+                    rt.permits.acquire(ex)
                 p.run_scheduled(ex)
         except Shutdown:
-            rt.leave_running()
+            rt.leave_running(ex)
         except BaseException as e:   # an internal error: the owner collects it
             rt.fail(f"internal error in {ex.name}: {e!r}", e)
-            rt.leave_running()
+            rt.leave_running(ex)
 
 
 class Runtime:
@@ -93,7 +99,9 @@ class Runtime:
                  stdout=None, stderr=None, deadlock_tick=0.2):
         from .clock import Clock
         from .output import Output
+        from .permits import Permits
         self.glock = threading.Lock()
+        self.permits = Permits(self)
         self.runnable = deque()          # [g] processors in state SCHEDULED, FIFO
         self.parked = []                 # [g] parked Workers
         self.n_waking = 0                # [g] workers woken but not yet looking for work
@@ -132,9 +140,16 @@ class Runtime:
         """`p` was set SCHEDULED under its lock: make sure some thread will run it."""
         with self.glock:
             self.runnable.append(p)
-            spawn = self._wake_one_locked() if self.n_waking == 0 else None
+            spawn = self._wake_one_locked() if self._want_worker() else None
         if spawn is not None:
             spawn.thread.start()
+
+    def _want_worker(self):
+        """[g] Should one more worker come for the runnable queue? Not if one is already
+        on its way, nor if all permits are taken and a thread already waits for one (it
+        would only wait too; the waiter's stuck check guarantees progress)."""
+        pm = self.permits
+        return self.n_waking == 0 and (pm.held < pm.total or not pm.waiting)
 
     def _wake_one_locked(self):
         """[g] Wake a parked worker, or make a new one (returned: start it unlocked)."""
@@ -161,14 +176,16 @@ class Runtime:
                 self.n_waking -= 1
             while True:
                 if self.stopping:
+                    self.permits.release_locked(w.exec)
                     self.n_running -= 1
                     self.changed.notify_all()
                     return None
                 if self.runnable:
                     p = self.runnable.popleft()
-                    if self.runnable and self.n_waking == 0:
+                    if self.runnable and self._want_worker():
                         spawn = self._wake_one_locked()
                     break
+                self.permits.release_locked(w.exec)
                 if len(self.parked) >= MAX_PARKED:
                     self.n_running -= 1
                     self._check_quiet()
@@ -186,10 +203,21 @@ class Runtime:
             spawn.thread.start()
         return p
 
-    def leave_running(self):
+    def leave_running(self, ex):
         with self.glock:
+            spawn = self._release_permit_locked(ex)
             self.n_running -= 1
             self._check_quiet()
+        if spawn is not None:
+            spawn.thread.start()
+
+    def _release_permit_locked(self, ex):
+        """[g] Give up `ex`'s permit; if it is now free and processors wait in the
+        runnable queue with no worker coming, wake one (returned: start it unlocked)."""
+        self.permits.release_locked(ex)
+        if self.runnable and self._want_worker():
+            return self._wake_one_locked()
+        return None
 
     def _check_quiet(self):
         """[g held] Wake run_main on quiescence; advance the virtual clock when all wait."""
@@ -218,6 +246,10 @@ class Runtime:
                 self._notify_watchers(blk)
             self._check_quiet()
             stopping = self.stopping
+            had_permit = ex.permit
+            spawn = self._release_permit_locked(ex)
+        if spawn is not None:
+            spawn.thread.start()
         try:
             if not stopping:
                 if blk.deadline is not None and not self.clock.virtual:
@@ -234,6 +266,8 @@ class Runtime:
                 stopping = self.stopping
         if stopping:
             raise Shutdown()
+        if had_permit:
+            self.permits.acquire(ex)
 
     def watch_blocks(self, predicate):
         """Scheduling hook: an Event set when a thread blocks on a Block for which
@@ -286,6 +320,7 @@ class Runtime:
             self.stopping = True
             for ex in list(self.blocked):
                 self.unblock_locked(ex.blocked)
+            self.permits.stop_locked()
             for w in self.parked:      # counted as woken, as `schedule` does
                 self.n_waking += 1
                 self.n_running += 1

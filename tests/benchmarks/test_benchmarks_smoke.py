@@ -3,6 +3,7 @@ import os
 import re
 import subprocess
 import sys
+import threading
 
 import pytest
 
@@ -10,13 +11,16 @@ RUN = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "run.py"
 NAMES = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
 NUMBER = r"\d+\.\d+"
 BENCH_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) baseline_s=({NUMBER}) "
-                        rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER}$")
-MICRO_LINE = re.compile(rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
-MICRO_KEYS = ["async_command", "async_command_queued", "sync_query", "reserve_1_wait_condition", "reserve_1", "reserve_2", "reserve_4", "reserve_8"]
+                        rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER} cpu_ratio={NUMBER}$")
+MICRO_LINE = re.compile(
+    rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
+MICRO_KEYS = ["async_command", "async_command_queued", "sync_query", "reserve_1_wait_condition",
+              "reserve_1", "reserve_2", "reserve_4", "reserve_8"]
 
 
 def run(*options):
-    return subprocess.run([sys.executable, RUN, *options], capture_output=True, text=True, timeout=60)
+    command = [sys.executable, RUN, *options]
+    return subprocess.run(command, capture_output=True, text=True, timeout=120)
 
 
 @pytest.fixture(scope="module")
@@ -75,8 +79,27 @@ def test_each_variant_checks_its_result(name, variant, monkeypatch):
     monkeypatch.setattr(module, "check", wrong)
     if hasattr(module, "check_counts"):
         monkeypatch.setattr(module, "check_counts", lambda *a: wrong("counts", 0, 1))
-    with pytest.raises(CheckFailed):
-        getattr(module, variant)(**module.SIZES["smoke"])
+    raised = run_with_timeout(lambda: getattr(module, variant)(**module.SIZES["smoke"]))
+    assert isinstance(raised, CheckFailed), raised
+
+
+def run_with_timeout(fn, seconds=20):
+    """Run `fn` in a daemon thread so that a hung runtime fails the test instead of pytest.
+    Returns what it raised (None if nothing)."""
+    outcome = []
+
+    def target():
+        try:
+            fn()
+            outcome.append(None)
+        except BaseException as e:
+            outcome.append(e)
+
+    thread = threading.Thread(target=target, daemon=True)
+    thread.start()
+    thread.join(seconds)
+    assert outcome, f"no result after {seconds} s: the run hangs"
+    return outcome[0]
 
 
 def test_a_failing_run_is_reported_and_fails_the_command(monkeypatch, capsys):

@@ -171,3 +171,36 @@ def test_failure_in_another_clients_session_does_not_dirty_ours(h):
         assert root.query(c, Cell.items) == ["h"]     # no DirtyRegionError for us
     assert h.finish() == 0
     assert "theirs" in h.err.getvalue() and "f.e:3" in h.err.getvalue()
+
+
+class Spinner:
+    def make(self):
+        self.spins = 0
+
+    def spin_until(self, flag_cell, started):
+        """A long computation with no runtime call: it ends only once another processor
+        has run (it reads a plain attribute that another processor's command sets)."""
+        import time
+        started.set()
+        deadline = time.monotonic() + 10
+        while not flag_cell.value and time.monotonic() < deadline:
+            self.spins += 1
+        assert flag_cell.value, "the other processor never ran"
+
+
+def _set_flag(here, flag):
+    with here.reserve((flag,)):
+        here.call(flag, Cell.set, (1,))
+
+
+def test_long_computation_does_not_stop_other_processors(h):
+    root = h.root
+    flag = root.new_separate(Cell, Cell.make)
+    s = root.new_separate(Spinner, Spinner.make)
+    started = threading.Event()
+    with root.reserve((s,)):
+        root.call(s, Spinner.spin_until, (flag, started))   # flag not held: asynchronous
+    assert started.wait(10)
+    spawn(root, _set_flag, flag)       # runs on another processor while s computes
+    assert h.finish() == 0
+    assert h.err.getvalue() == "" and s.spins > 0

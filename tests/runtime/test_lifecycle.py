@@ -99,8 +99,9 @@ def test_cycle_of_synchronous_calls_is_reported_quickly(harness):
     assert time.monotonic() - t0 < 1.0
     err = h.err.getvalue()
     assert "deadlock: a cycle of synchronous calls" in err
-    assert f"{a._region_!r} in NODE.ping (ring.e:10) waits for the result of Cell.get on {b._region_!r}" in err
-    assert f"{b._region_!r} in NODE.ping (ring.e:10) waits for the result of Cell.get on {a._region_!r}" in err
+    for x, y in ((a, b), (b, a)):
+        assert (f"{x._region_!r} in NODE.ping (ring.e:10) waits for the result of Cell.get "
+                f"on {y._region_!r}") in err
 
 
 def test_wait_condition_deadlock_is_reported_but_not_while_an_outside_client_is_open(harness):
@@ -210,3 +211,44 @@ def test_ctrl_c_stops_a_processor_that_keeps_calling():
     err = io.StringIO()
     assert rt.run_main(App, App.make, stderr=err, stdout=io.StringIO()) == 130
     assert time.monotonic() - t0 < 5 and "still running" not in err.getvalue()
+
+
+def test_deadlock_on_passive_regions_is_reported(harness):
+    """Two clients each hold one passive region and ask for the other's: a cycle of
+    processors waiting for their turn."""
+    h = harness()
+    root = h.root
+    p = root.new_passive(Cell, Cell.make)
+    q = root.new_passive(Cell, Cell.make)
+    barrier = threading.Barrier(2)
+
+    def client(here, first, second):
+        with here.reserve((first,)):
+            here.call(first, Cell.set, (1,))
+            barrier.wait(10)
+            with here.reserve((second,), where=W_B):
+                here.query(second, Cell.get, (), W_B)
+    spawn(root, client, p, q)
+    spawn(root, client, q, p)
+    assert h.finish() == 3
+    err = h.err.getvalue()
+    assert "deadlock: a cycle" in err and err.count("waits for its turn on passive") == 2
+
+
+def test_sleepers_are_not_deadlocked(harness):
+    h = harness(deadlock_tick=0.01)
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    waiting = h.rt.watch_blocks(lambda b: b.kind == "wait")
+
+    def waiter(here):
+        pre = [(lambda: here.query(c, Cell.get) > 0, (0,), "set", W_B)]
+        with here.reserve((c,), pre=pre):
+            pass
+    spawn(root, waiter)
+    assert waiting.wait(10)
+    root.sleep(100_000_000)              # a sleeper: time may still change things
+    assert not h.rt.failures
+    with root.reserve((c,)):
+        root.call(c, Cell.set, (1,))
+    assert h.finish() == 0

@@ -64,6 +64,7 @@ def test_non_reference_and_void_arguments_do_not_pass_locks(h):
         root.call(s, Cell.gate, (gate, entered))      # any routine works on any object
         root.call(s, Server.note, (None,))
         root.call(s, Server.note, (3,))
+        assert entered.wait(10)                       # make has run, the gate holds s
         assert s.seen == []                           # asynchronous: nothing ran yet
         gate.set()
         root.query(s, Cell.thread)
@@ -106,3 +107,19 @@ def test_callback_from_another_processor_client(h):
     spawn(root, client)
     assert h.finish() == 0
     assert done == [["visited"]]
+
+
+class Greeter:
+    def make_with(self, who):
+        """Creation procedure calling back the creator's object: needs the creator's locks."""
+        here = self._region_
+        here.call(who, Cell.add, ("created",))
+
+
+def test_separate_creation_with_a_reference_argument_passes_locks(h):
+    root = h.root
+    mine = root.new(Cell)
+    mine.make()
+    g = root.new_separate(Greeter, Greeter.make_with, (mine,))
+    assert mine.log == ["created"]            # synchronous: done when creation returned
+    assert g._region_ is not root

@@ -115,6 +115,7 @@ def test_agents_on_separate_targets(h):
     with root.reserve((c,)):
         root.call(c, Cell.gate, (gate, entered))
         root.call(ag, rt.Agent.call, (None,))        # asynchronous
+        assert entered.wait(10)
         assert c.log == []
         gate.set()
         assert root.query(c, Cell.items) == ["closed"]

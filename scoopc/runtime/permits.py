@@ -1,0 +1,121 @@
+"""Run permits: how many threads run processor code at once (one under the GIL).
+
+Why. Under the GIL, threads that all want to run are switched every 5 ms wherever they
+are; a client switched out while it holds a reservation makes every other client of
+that supplier queue behind it, and each of them then waits for a thread switch (a
+convoy). With permits, a thread runs processor code only while it holds one; the others
+sleep on their own lock, so the GIL is not contested and a thread runs until it blocks
+in the runtime, where it hands its permit directly to the next waiter (FIFO).
+
+Fairness and progress, without polling: a permit waiter sleeps at most one SLICE at a
+time. After a slice it asks the holders to yield (`want_yield`, checked at reservation
+entry, a point where yielding holds up no queue); if no permit changed hands during a
+whole further slice, the holders are stuck in a long computation or a blocking call
+outside the runtime, and the waiter takes an extra permit (given back later). So a long
+computation or a blocking external call never stops the other processors for more than
+about two slices. Correctness never depends on permits: every shared structure has its
+own lock; permits only decide who runs.
+"""
+import os
+import sys
+import threading
+from collections import deque
+
+from .errors import Shutdown
+
+SLICE = 0.005      # seconds
+
+
+def base_permits():
+    """One permit with the GIL; one per CPU on a free-threaded interpreter."""
+    gil = getattr(sys, "_is_gil_enabled", lambda: True)()
+    return 1 if gil else (os.cpu_count() or 1)
+
+
+class Permits:
+    """Fields marked [g] are protected by the runtime's glock (`rt.glock`)."""
+
+    def __init__(self, rt):
+        self.rt = rt
+        self.base = base_permits()
+        self.total = self.base        # [g] permits, including extra ones for stuck holders
+        self.held = 0                 # [g]
+        self.waiting = deque()        # [g] Execs waiting for a permit, FIFO
+        self.moves = 0                # [g] permits changed hands (progress, for stuck checks)
+        self.want_yield = False       # [g] written; read racily at yield points
+
+    def acquire(self, ex):
+        """Take a permit for thread `ex` (waiting for one if none is free)."""
+        rt = self.rt
+        with rt.glock:
+            if self.held < self.total and not self.waiting or rt.stopping:
+                self.held += 1
+                ex.permit = True
+                return
+            ex.plock.acquire()
+            self.waiting.append(ex)
+        self._wait(ex)
+
+    def release_locked(self, ex):
+        """[g] Give thread `ex`'s permit to the first waiter, or back."""
+        if not ex.permit:
+            return
+        ex.permit = False
+        self.moves += 1
+        if self.waiting:
+            self.want_yield = False
+            self.waiting.popleft().plock.release()     # the permit moves over
+            return
+        self.held -= 1
+        if self.total > self.base:
+            self.total -= 1                            # an extra permit is given back
+
+    def release(self, ex):
+        with self.rt.glock:
+            self.release_locked(ex)
+
+    def yield_point(self, ex):
+        """Called at reservation entry when `want_yield` is set: let a waiter run."""
+        rt = self.rt
+        with rt.glock:
+            self.want_yield = False
+            if not self.waiting or not ex.permit:
+                return
+            self.moves += 1
+            self.waiting.popleft().plock.release()
+            ex.plock.acquire()
+            self.waiting.append(ex)
+        self._wait(ex)
+
+    def _wait(self, ex):
+        rt = self.rt
+        lk = ex.plock
+        seen = None
+        while not lk.acquire(timeout=SLICE):
+            with rt.glock:
+                if ex not in self.waiting:    # handed over just now: take it
+                    continue
+                if not rt.stopping and (seen != self.moves or not self.want_yield):
+                    seen = self.moves         # ask the holders to yield, wait a slice more
+                    self.want_yield = True
+                    continue
+                self.waiting.remove(ex)       # stuck holders (or stopping): one more permit
+                self.total += 1
+                self.held += 1
+                break
+        lk.release()
+        ex.permit = True
+        if rt.stopping:
+            raise Shutdown()
+
+    def stop_locked(self):
+        """[g] Shutdown: let every waiter run (to meet Shutdown at its next runtime call)."""
+        while self.waiting:
+            ex = self.waiting.popleft()
+            self.total += 1
+            self.held += 1
+            ex.plock.release()
+
+
+def new_plock():
+    return threading.Lock()
