@@ -1,0 +1,261 @@
+"""Syntax tree, expressions: calls, operators, manifest constants, agents, object tests."""
+from __future__ import annotations
+
+from typing import Optional, Union
+
+from ..source import Span
+from .base import Identifier, node
+
+
+__all__ = [
+    "UnqualifiedCall", "QualifiedCall", "StaticCall", "Precursor", "BracketExpression",
+    "Current", "Result", "Void", "Parenthesized", "BinaryExpression", "UnaryExpression", "Old",
+    "ManifestInteger", "ManifestReal", "ManifestString", "ManifestCharacter", "ManifestBoolean",
+    "TypedConstant", "Unique", "ManifestType", "TupleExpression", "ManifestArray", "ObjectTest",
+    "OpenOperand", "Agent", "InlineAgent", "CreationExpression", "ConditionalExpression",
+    "ElseifExpression", "AcrossExpression", "Address", "ClassAssertion", "Expression",
+]
+
+
+@node
+class UnqualifiedCall:
+    """`f` or `f (args)`: a feature, local, argument or object-test local (resolved later)."""
+    name: Identifier
+    arguments: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class QualifiedCall:
+    target: "Expression"
+    name: Identifier
+    arguments: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class StaticCall:
+    """`{T}.f (args)`."""
+    type: Type
+    name: Identifier
+    arguments: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class Precursor:
+    parent: Optional[Identifier]
+    arguments: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class BracketExpression:
+    """`target [arguments]`: a call of the feature aliased `[]`."""
+    target: "Expression"
+    arguments: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class Current:
+    span: Span
+
+
+@node
+class Result:
+    span: Span
+
+
+@node
+class Void:
+    span: Span
+
+
+@node
+class Parenthesized:
+    expression: "Expression"
+    span: Span
+
+
+@node
+class BinaryExpression:
+    """`left operator right`; operator lowercased, `and then`/`or else` as two words."""
+    operator: str
+    left: "Expression"
+    right: "Expression"
+    operator_span: Span
+    span: Span
+
+
+@node
+class UnaryExpression:
+    operator: str                  # "not", "-", "+" or a free operator
+    operand: "Expression"
+    span: Span
+
+
+@node
+class Old:
+    expression: "Expression"
+    span: Span
+
+
+@node
+class ManifestInteger:
+    value: int
+    text: str
+    span: Span
+
+
+@node
+class ManifestReal:
+    value: float
+    text: str
+    span: Span
+
+
+@node
+class ManifestString:
+    value: str                     # escapes decoded
+    verbatim: bool
+    once: bool                     # `once "..."`
+    span: Span
+
+
+@node
+class ManifestCharacter:
+    value: str
+    span: Span
+
+
+@node
+class ManifestBoolean:
+    value: bool
+    span: Span
+
+
+@node
+class TypedConstant:
+    """`{INTEGER_64} 1`: a manifest constant with an explicit type."""
+    type: Type
+    constant: "Expression"
+    span: Span
+
+
+@node
+class Unique:
+    """The value `unique` of a constant attribute."""
+    span: Span
+
+
+@node
+class ManifestType:
+    """`{T}` as an expression (an object of TYPE [T])."""
+    type: Type
+    span: Span
+
+
+@node
+class TupleExpression:
+    items: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class ManifestArray:
+    items: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class ObjectTest:
+    """`attached [{T}] expression [as local]`."""
+    type: Optional[Type]
+    expression: "Expression"
+    local: Optional[Identifier]
+    span: Span
+
+
+@node
+class OpenOperand:
+    """`?` or `{T}` among an agent's operands; `type` is None for `?`."""
+    type: Optional[Type]
+    span: Span
+
+
+@node
+class Agent:
+    """`agent [target.]f [(operands)]`. target None: unqualified (Current); a ManifestType
+    target is an open target of that type. arguments None: every argument open."""
+    target: Optional["Expression"]
+    name: Identifier
+    arguments: Optional[tuple["Expression", ...]]
+    span: Span
+
+
+@node
+class InlineAgent:
+    arguments: tuple["EntityDeclaration", ...]
+    type: Optional[Type]
+    body: "RoutineBody"
+    actuals: Optional[tuple["Expression", ...]]
+    span: Span
+
+
+@node
+class CreationExpression:
+    processor: Optional[Identifier]   # `create <NONE> {T}`
+    type: Type
+    procedure: Optional[Identifier]
+    arguments: tuple["Expression", ...]
+    span: Span
+
+
+@node
+class ConditionalExpression:
+    condition: "Expression"
+    then_part: "Expression"
+    elseif_parts: tuple["ElseifExpression", ...]
+    else_part: "Expression"
+    span: Span
+
+
+@node
+class ElseifExpression:
+    condition: "Expression"
+    then_part: "Expression"
+    span: Span
+
+
+@node
+class AcrossExpression:
+    """`across e as c ... all|some expression end`."""
+    iteration: "Iteration"
+    invariant: tuple["AssertionClause", ...]
+    until: Optional["Expression"]
+    quantifier: str                # "all" or "some"
+    body: "Expression"
+    variant: Optional["Variant"]
+    span: Span
+
+
+@node
+class Address:
+    """`$name`: the address of a feature or entity (for externals)."""
+    name: Identifier
+    span: Span
+
+
+@node
+class ClassAssertion:
+    """The postcondition `class` (a feature that does not use Current)."""
+    span: Span
+
+
+Expression = Union[UnqualifiedCall, QualifiedCall, StaticCall, Precursor, BracketExpression,
+                   Current, Result, Void, Parenthesized, BinaryExpression, UnaryExpression,
+                   Old, ManifestInteger, ManifestReal, ManifestString, ManifestCharacter,
+                   ManifestBoolean, TypedConstant, ManifestType, TupleExpression, ManifestArray,
+                   ObjectTest, OpenOperand, Agent, InlineAgent, CreationExpression,
+                   ConditionalExpression, AcrossExpression, Address]

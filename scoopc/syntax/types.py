@@ -1,0 +1,63 @@
+"""Syntax tree, types: class types, tuple types, anchored types, formal generics."""
+from __future__ import annotations
+
+from typing import Optional, Union
+
+from ..source import Span
+from .base import Identifier, node
+
+
+__all__ = [
+    "ClassType", "TupleType", "AnchoredType", "FormalGeneric", "Constraint", "Type",
+]
+
+
+@node
+class ClassType:
+    """`NAME [generics]`; formal generic parameters are ClassTypes too (the checker tells)."""
+    name: Identifier
+    generics: tuple["Type", ...]
+    attachment: Optional[str]      # "attached", "detachable" or None
+    separate: bool
+    variance: Optional[str]        # "frozen", "variant" or None
+    span: Span
+
+
+@node
+class TupleType:
+    """`TUPLE [...]`; `labels` is empty or has one label per generic (`TUPLE [a: X; b: Y]`)."""
+    generics: tuple["Type", ...]
+    labels: tuple[Identifier, ...]
+    attachment: Optional[str]
+    separate: bool
+    variance: Optional[str]
+    span: Span
+
+
+@node
+class AnchoredType:
+    """`like anchor`: anchor is Current, an UnqualifiedCall, a QualifiedCall chain or a StaticCall."""
+    anchor: "Expression"
+    attachment: Optional[str]
+    separate: bool
+    variance: Optional[str]
+    span: Span
+
+
+Type = Union[ClassType, TupleType, AnchoredType]
+
+
+@node
+class FormalGeneric:
+    name: Identifier
+    mark: Optional[str]            # "frozen", "expanded" or None
+    constraints: tuple["Constraint", ...]
+    creators: Optional[tuple[Identifier, ...]]   # `create make end`; None when absent
+    span: Span
+
+
+@node
+class Constraint:
+    type: Type
+    renames: tuple["Rename", ...]
+    span: Span
