@@ -1,4 +1,7 @@
-"""Syntax tree, the text dump: a stable indented form for `scoopc parse --dump` and goldens."""
+"""Syntax tree, the text dump: a stable indented form for `scoopc parse --dump` and goldens.
+
+Iterative (an explicit stack), so a deeply nested expression cannot exhaust Python's stack.
+"""
 from __future__ import annotations
 
 from dataclasses import fields
@@ -15,37 +18,39 @@ def dump(tree: object) -> str:
     """A deterministic indented text form: one node per line with its span, then its fields
     (None, False and empty fields are left out)."""
     lines: list[str] = []
-    _dump_node(tree, 0, "", lines)
+    work: list[tuple[str, object, int, str]] = [("node", tree, 0, "")]
+    while work:
+        kind, value, depth, label = work.pop()
+        produced = _node(value, depth, label, lines) if kind == "node" else _field(value, depth, label, lines)
+        work.extend(reversed(produced))
     return "\n".join(lines) + "\n"
 
 
-def _dump_node(value: object, depth: int, label: str, lines: list[str]) -> None:
+def _node(value: object, depth: int, label: str, lines: list[str]) -> list:
     pad = "  " * depth
     if isinstance(value, Identifier):
         lines.append(f"{pad}{label}{value.text!r} {where(value.span)}")
-        return
+        return []
     span = getattr(value, "span", None)
     if span is None:
         lines.append(f"{pad}{label}{value!r}")
-        return
+        return []
     lines.append(f"{pad}{label}{type(value).__name__} {where(span)}")
-    for f in fields(value):  # type: ignore[arg-type]
-        if f.name in ("span", "key"):
-            continue
-        _dump_field(getattr(value, f.name), depth + 1, f.name, lines)
+    return [("field", getattr(value, f.name), depth + 1, f.name)
+            for f in fields(value) if f.name not in ("span", "key")]  # type: ignore[arg-type]
 
 
-def _dump_field(value: object, depth: int, name: str, lines: list[str]) -> None:
+def _field(value: object, depth: int, name: str, lines: list[str]) -> list:
     if value is None or value == () or (value is False and name != "value"):
-        return
+        return []
     pad = "  " * depth
     if isinstance(value, tuple):
         lines.append(f"{pad}{name}:")
-        for item in value:
-            _dump_node(item, depth + 1, "- ", lines)
-    elif isinstance(value, Span):
+        return [("node", item, depth + 1, "- ") for item in value]
+    if isinstance(value, Span):
         lines.append(f"{pad}{name}: {where(value)}")
     elif hasattr(value, "span"):
-        _dump_node(value, depth, f"{name}: ", lines)
+        return [("node", value, depth, f"{name}: ")]
     else:
         lines.append(f"{pad}{name}: {value!r}")
+    return []

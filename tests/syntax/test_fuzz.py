@@ -59,3 +59,13 @@ def test_mutated_programs_get_located_diagnostics_or_a_tree(text):
 
 def test_the_fuzz_corpus_is_not_empty():
     assert len(PROGRAMS) >= 10
+
+
+def test_deep_nesting_parses_and_dumps_without_exhausting_the_stack():
+    depth = 5_000
+    text = f"class DEEP feature f: INTEGER do Result := {'(' * depth}1{')' * depth} end end\n"
+    result = parser.parse(SourceFile("deep.e", text))
+    assert not result.diagnostics
+    from scoopc import syntax
+
+    assert syntax.dump(result.tree).count("Parenthesized") == depth
