@@ -54,16 +54,24 @@ class InternalError(Exception):
 
 def make(code: str, span: Optional[Span], notes: Iterable[Note] = (), severity: str = ERROR,
          **arguments: object) -> Diagnostic:
-    """A diagnostic whose message and hint are the templates of `code` filled with `arguments`."""
+    """A diagnostic whose message and hint are the templates of `code` filled with `arguments`
+    (every argument of the message is required; those of the hint are optional)."""
     entry = messages.MESSAGES.get(code)
     if entry is None:
         raise InternalError(f"no message registered for diagnostic code {code!r}")
     try:
         text = entry.text.format(**arguments)
-        hint = entry.hint.format(**arguments)
     except (KeyError, IndexError) as missing:
         raise InternalError(f"message {code} lacks argument {missing}") from None
+    hint = entry.hint.format_map(_Optional(arguments))
     return Diagnostic(code, span, text, tuple(notes), severity, hint)
+
+
+class _Optional(dict):
+    """Hint arguments: a hint whose argument a raise site does not give is left empty."""
+
+    def __missing__(self, key: str) -> str:
+        return ""
 
 
 def short(d: Diagnostic) -> str:

@@ -33,7 +33,7 @@ MESSAGES: dict[str, Message] = {
     "ECF": Message("{reason}"),
     "ECF-NOTE": Message("{reason}"),
     # --- syntax ---------------------------------------------------------------------------
-    "SYNTAX": Message("{found} is not allowed here; expected {expected}"),
+    "SYNTAX": Message("{found} is not allowed here; expected {expected}", "{hint}"),
     "SYNTAX-END": Message(
         "missing `end` of the `{construct}` opened at {opened}",
         "every `{construct}` needs its own `end`; check the lines between {opened} and here",

@@ -82,8 +82,32 @@ def _unexpected(error: UnexpectedToken, source: SourceFile, lark_parser: Any) ->
             construct, where = opener
             return diagnostics.make("SYNTAX-END", span, construct=construct, opened=where)
     patterns = {t.name: t.pattern.value for t in lark_parser.terminals}
+    stack = parser.parser_state.value_stack if parser is not None else []
     return diagnostics.make("SYNTAX", span, found=describe_token(token),
-                            expected=expected_phrase(expected, patterns))
+                            expected=expected_phrase(expected, patterns),
+                            hint=_hint(token, expected, stack))
+
+
+def _hint(token: Token, expected: set, stack: list) -> str:
+    """Advice for the mistakes students make most, recognised by the token and what the parser
+    wanted; '' when none applies."""
+    previous = getattr(stack[-1], "type", None) if stack else None
+    kind = token.type
+    if kind == "EQUAL" and previous == "EQUAL":
+        return "Eiffel compares with a single `=` (and `/=` for not equal)"
+    if kind == "ASSIGNMENT" and expected and expected <= {"COMMA", "COLON"}:
+        return "instructions come after `do`: is the `do` of this routine missing?"
+    if kind == "ASSIGNMENT" and expected & OPERATORS:
+        return "`:=` assigns a value; to compare two values write `=`"
+    if kind == "EQUAL" and "ASSIGNMENT" in expected:
+        return "`=` compares two values; to assign a value write `:=`"
+    if kind == "SEMICOLON" and "THEN" in expected:
+        return "a condition ends with `then`"
+    if kind == "IDENTIFIER" and "THEN" in expected:
+        return "a condition ends with `then` before the instructions it guards"
+    if kind == "IDENTIFIER" and "LOOP" in expected:
+        return "the exit condition after `until` ends with `loop` before the loop body"
+    return ""
 
 
 # Pre-ECMA spellings still found in old course material and old example programs.

@@ -30,7 +30,6 @@ def start(**options):
     ex = Exec("main")
     root.exec = ex
     root.state = RUNNING
-    ex.stack.append(root)
     with rt.glock:
         rt.n_running += 1
     rt.permits.acquire(ex)
@@ -43,7 +42,6 @@ def finish(rt, root, interrupted=False):
     """The root routine returned: wait for quiescence, shut down, return the exit status."""
     global _current
     ex = root.exec
-    ex.stack.pop()
     root.unclaim()
     rt.leave_running(ex)
     status = 130 if interrupted else 0

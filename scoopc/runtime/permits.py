@@ -46,15 +46,21 @@ class Permits:
 
     def acquire(self, ex):
         """Take a permit for thread `ex` (waiting for one if none is free)."""
-        rt = self.rt
-        with rt.glock:
-            if self.held < self.total and not self.waiting or rt.stopping:
-                self.held += 1
-                ex.permit = True
-                return
-            ex.plock.acquire()
-            self.waiting.append(ex)
-        self._wait(ex)
+        with self.rt.glock:
+            queued = self.acquire_locked(ex)
+        if queued:
+            self._wait(ex)
+
+    def acquire_locked(self, ex):
+        """[g] Take a free permit for `ex` (False), or queue `ex` for one (True: the
+        caller must then call `wait_turn` after releasing glock)."""
+        if self.held < self.total and not self.waiting or self.rt.stopping:
+            self.held += 1
+            ex.permit = True
+            return False
+        ex.plock.acquire()
+        self.waiting.append(ex)
+        return True
 
     def release_locked(self, ex):
         """[g] Give thread `ex`'s permit to the first waiter, or back."""
@@ -63,7 +69,7 @@ class Permits:
         ex.permit = False
         self.moves += 1
         if self.waiting:
-            self.want_yield = False
+            self._want_yield(False)
             self.waiting.popleft().plock.release()     # the permit moves over
             return
         self.held -= 1
@@ -74,17 +80,25 @@ class Permits:
         with self.rt.glock:
             self.release_locked(ex)
 
+    def _want_yield(self, flag):
+        """[g] Set `want_yield` and the runtime's summary flag read at reservation entry."""
+        self.want_yield = flag
+        self.rt.attention = flag or self.rt.stopping
+
     def yield_point(self, ex):
         """Called at reservation entry when `want_yield` is set: let a waiter run."""
         rt = self.rt
         with rt.glock:
-            self.want_yield = False
+            self._want_yield(False)
             if not self.waiting or not ex.permit:
                 return
             self.moves += 1
             self.waiting.popleft().plock.release()
             ex.plock.acquire()
             self.waiting.append(ex)
+        self._wait(ex)
+
+    def wait_turn(self, ex):
         self._wait(ex)
 
     def _wait(self, ex):
@@ -97,7 +111,7 @@ class Permits:
                     continue
                 if not rt.stopping and (seen != self.moves or not self.want_yield):
                     seen = self.moves         # ask the holders to yield, wait a slice more
-                    self.want_yield = True
+                    self._want_yield(True)
                     continue
                 self.waiting.remove(ex)       # stuck holders (or stopping): one more permit
                 self.total += 1

@@ -6,7 +6,9 @@ A processor's state: IDLE (no thread attached), SCHEDULED (in the runnable queue
 thread that moved a processor to RUNNING runs its code or touches its executor-only fields.
 The queue of queues is `head` (the private queue being served) plus `qoq` (those waiting).
 A client whose private queue is at the head of an IDLE supplier runs its synchronous calls
-itself on its own thread ("client executes", as SCOOP/Qs): no thread hand-off.
+itself on its own thread ("client executes", as SCOOP/Qs): no thread hand-off. It keeps
+that claim (`Session.claimed`) until it releases the reservation, so its later calls on the
+supplier take no lock at all.
 """
 import threading
 from collections import deque
@@ -14,31 +16,16 @@ from collections import deque
 from .errors import DirtyRegionError, Shutdown, UncontrolledTarget
 from .once import once_in
 from .sched import Block
+from .session import (IDLE, RUNNING, SCHEDULED, Session, close, close_locked,  # noqa: F401
+                      drop_claim_locked, enqueue, enqueue_claim)
 
-IDLE, SCHEDULED, RUNNING = 0, 1, 2
 Reservation = None      # set by reservation.py (which imports this module)
 BATCH_SESSIONS = 64     # sessions a server takes under one lock hold
 HELP_LIMIT = 256        # leaf calls a releasing client serves for others before handing off
 STATE_NAMES = ("idle", "scheduled", "running")
-
-
-class Session:
-    """A private queue: the calls of one client to one supplier within one reservation."""
-    __slots__ = ("client", "proc", "calls", "closed", "dirty", "delivered", "changed",
-                 "turn", "where", "heavy")
-
-    def __init__(self, client, proc, where=None):
-        self.client = client      # Processor or OutsideClient (immutable)
-        self.proc = proc          # the supplier (immutable)
-        self.calls = deque()      # [proc.lock] (routine, target, args, Block|None, passer|None)
-        self.closed = False       # [proc.lock] the client released the reservation
-        self.dirty = None         # [proc.lock] exception of a failed asynchronous call
-        self.delivered = False    # [proc.lock] the dirty exception reached the client
-        self.changed = False      # [executor of proc] a command ran (wakes wait conditions)
-        self.turn = None          # [proc.lock] passive only: Block of the client awaiting its turn
-        self.where = where        # reservation position, for reports
-        self.heavy = False        # [proc.lock] a non-leaf call was logged: no client may
-        #                           run this session's calls on its own thread
+# Argument types that are never references into a region (no lock passing): checked first,
+# since `getattr(a, "_region_", None)` on them costs an AttributeError inside getattr.
+VALUES = frozenset((int, float, str, bool, type(None), bytes, complex))
 
 
 class Processor:
@@ -98,11 +85,23 @@ class Processor:
         p = target._region_
         s = self.held.get(p)
         if s.__class__ is Session:
+            if s.claimed and s.dirty is None and (not args or not self._passes(args)):
+                if p.passive:                  # synchronous, failures reach the client
+                    if self.rt.stopping:
+                        raise Shutdown()
+                    s.changed = True
+                    routine(target, *args)
+                    return
+                if getattr(routine, "_scoop_leaf_", False):
+                    self._leaf_claimed(p, s, routine, target, args)
+                    return
             if (args and self._passes(args)) or p.passive:
                 self._sync(s, p, routine, target, args, None, True)
                 return
             lock = p.lock
             lock.acquire()
+            if s.claimed:
+                drop_claim_locked(p, s)
             if s.dirty is None:      # a dirty region skips later calls
                 if getattr(routine, "_scoop_leaf_", False):
                     if p.state != RUNNING and not s.heavy:
@@ -136,24 +135,9 @@ class Processor:
         p = target._region_
         s = self.held.get(p)
         if s.__class__ is Session:
-            if not args or not self._passes(args):
-                lock = p.lock                  # the fast path of `_sync`, inlined
-                lock.acquire()
-                if p.state != RUNNING and p.head is s and not s.calls and s.dirty is None \
-                        and not self.rt.stopping:
-                    p.state = RUNNING
-                    ex = p.exec = self.exec
-                    lock.release()
-                    ex.stack.append(p)
-                    try:
-                        return routine(target, *args)
-                    finally:
-                        ex.stack.pop()
-                        lock.acquire()
-                        p.exec = None
-                        p.state = IDLE
-                        lock.release()
-                lock.release()
+            if s.claimed and s.dirty is None and not self.rt.stopping \
+                    and (not args or not self._passes(args)):
+                return routine(target, *args)   # `p` is ours until we release it
             return self._sync(s, p, routine, target, args, where, False)
         if s is p:
             if p is self:
@@ -165,7 +149,10 @@ class Processor:
         """Lock passing: an argument is a reference into a region we hold (or a TUPLE)."""
         held = self.held
         for a in args:
-            if a.__class__ is tuple or getattr(a, "_region_", None) in held:
+            c = a.__class__
+            if c in VALUES:
+                continue
+            if c is tuple or getattr(a, "_region_", None) in held:
                 return True
         return False
 
@@ -177,6 +164,8 @@ class Processor:
         lock = p.lock
         while True:
             lock.acquire()
+            if s.claimed:            # queued or passing calls need `p` free for its thread
+                drop_claim_locked(p, s)
             if s.dirty is not None:
                 s.delivered = True
                 err = s.dirty
@@ -204,53 +193,62 @@ class Processor:
                     raise blk.error
                 return blk.value
 
+    def _claim_locked(self, p, s):
+        """[p.lock held, then released; p free, `s` its head with nothing pending] Claim `p`
+        for a call we run ourselves. Our own session keeps the claim until we release it; a
+        supplier running on our behalf by lock passing claims per call, so `p.exec` never
+        names a thread that has gone on (the monitor's wait-for graph reads it). True if
+        kept."""
+        p.state = RUNNING
+        p.exec = self.exec
+        if s.client is self:
+            s.claimed = True
+            p.lock.release()
+            return True
+        p.lock.release()
+        return False
+
     def _leaf_now(self, p, s, routine, target, args):
         """[p.lock held, p free, our session at its head with nothing pending] Run a leaf
         command ourselves. A leaf never blocks, so no frame is pushed for the monitor."""
-        lock = p.lock
-        p.state = RUNNING
-        p.exec = self.exec
-        lock.release()
+        if self._claim_locked(p, s):
+            self._leaf_claimed(p, s, routine, target, args)
+            return
+        try:
+            self._leaf_claimed(p, s, routine, target, args)
+        finally:
+            p.release_claim()
+
+    def _leaf_claimed(self, p, s, routine, target, args):
+        """[`p` claimed for `s`] A leaf command: its failure only makes `s` dirty."""
         s.changed = True
         try:
             routine(target, *args)
         except Shutdown:
             raise
         except BaseException as e:
+            lock = p.lock
             lock.acquire()
             s.dirty = e
-        else:
-            lock.acquire()
-        p.exec = None
-        p.state = IDLE
-        lock.release()
+            lock.release()
 
     def _query_now(self, p, s, routine, target, args, is_cmd):
         """[p.lock held, p free, our session at its head with nothing pending] Run a
         synchronous call ourselves on `p`'s behalf (client executes)."""
-        lock = p.lock
-        p.state = RUNNING
-        ex = p.exec = self.exec
-        lock.release()
-        ex.stack.append(p)
+        if is_cmd:
+            s.changed = True
+        if self._claim_locked(p, s):
+            return routine(target, *args)
         try:
-            if is_cmd:
-                s.changed = True
             return routine(target, *args)
         finally:
-            ex.stack.pop()
-            lock.acquire()
-            p.exec = None
-            p.state = IDLE
-            lock.release()
+            p.release_claim()
 
     def _inline(self, p, s, batches, routine, target, args, passer, is_cmd):
         """[p.lock held, p claimed by `_take`] Run the calls queued ahead of ours, then this
         one, on our own thread on `p`'s behalf; a leaf command's failure only dirties `s`."""
-        ex = self.exec
-        p.exec = ex
+        p.exec = self.exec
         p.lock.release()
-        ex.stack.append(p)
         try:
             if batches:
                 p._run_backlog(batches)
@@ -276,20 +274,16 @@ class Processor:
                 return routine(target, *args)
             return p._invoke_passing(passer, routine, target, args)
         finally:
-            ex.stack.pop()
             p.unclaim()
 
     def _borrowed(self, p, routine, target, args):
         """A callback into a region whose locks were passed to us: its own thread is blocked
         waiting for us, so we run the call on its behalf, on our thread."""
-        ex = self.exec
         saved = p.exec
-        p.exec = ex
-        ex.stack.append(p)
+        p.exec = self.exec
         try:
             return routine(target, *args)
         finally:
-            ex.stack.pop()
             p.exec = saved
 
     def _invoke_passing(self, passer, routine, target, args):
@@ -305,6 +299,14 @@ class Processor:
             self.held = saved
 
     # -- serving -----------------------------------------------------------------------
+    def release_claim(self):
+        """A per-call claim ends (the session stays at the head, nothing queued)."""
+        lock = self.lock
+        lock.acquire()
+        self.exec = None
+        self.state = IDLE
+        lock.release()
+
     def unclaim(self):
         """The thread running on our behalf stops; hand remaining work to the pool."""
         lock = self.lock
@@ -329,11 +331,7 @@ class Processor:
         self.state = RUNNING
         self.exec = ex
         lock.release()
-        ex.stack.append(self)
-        try:
-            self._serve(ex)
-        finally:
-            ex.stack.pop()
+        self._serve(ex)
 
     def _serve(self, ex):
         """Serve the queue of queues. Under one lock hold it takes the head's calls and,
@@ -352,13 +350,13 @@ class Processor:
                 lock.release()
                 return
             batches = [(s, s.calls)]
-            s.calls = deque()
+            s.calls = []
             if s.closed:
                 for q in self.qoq:
                     if len(batches) >= BATCH_SESSIONS:
                         break
                     batches.append((q, q.calls))
-                    q.calls = deque()
+                    q.calls = []
                     if not q.closed:
                         break
             lock.release()
@@ -426,13 +424,9 @@ class Processor:
             self.state = RUNNING
             self.exec = ex
             batch = h.calls
-            h.calls = deque()
+            h.calls = []
             lock.release()
-            ex.stack.append(self)
-            try:
-                self._run_calls(h, batch)
-            finally:
-                ex.stack.pop()
+            self._run_calls(h, batch)
             done += len(batch)
             lock.acquire()
             self.state = IDLE
@@ -459,6 +453,7 @@ class Processor:
                 if blk.proc is s.client:
                     keep.append(blk)
                 else:
+                    blk.value = self      # tells the waiter it is off our list already
                     self.rt.unblock(blk)
             self.waiters = keep
         nxt = self.qoq.popleft() if self.qoq else None
@@ -490,7 +485,12 @@ class Processor:
         self.frames.pop()
 
     def reserve(self, objs, pre=None, where=None):
-        """A reservation of the separate arguments `objs` (see reservation.py)."""
+        """A reservation of the separate arguments `objs` (see reservation.py); the common
+        one-supplier reservation without wait condition is its private queue itself."""
+        if pre is None and len(objs) == 1:
+            o = objs[0]
+            if o is not None:
+                return Session(self, o._region_, where)
         return Reservation(self, objs, pre, where)
 
 
@@ -519,10 +519,10 @@ def _take(p, s, ahead):
     batches = []
     for h in ahead:
         batches.append((h, h.calls))
-        h.calls = deque()
+        h.calls = []
     if s.calls or ahead:
         batches.append((s, s.calls))
-        s.calls = deque()
+        s.calls = []
     return batches
 
 
@@ -531,30 +531,3 @@ def locked_lock():
     lk = threading.Lock()
     lk.acquire()
     return lk
-
-
-def enqueue(p, s):
-    """[p.lock] Put session `s` in `p`'s queue of queues."""
-    if p.head is None:
-        p.head = s
-    else:
-        p.qoq.append(s)
-
-
-def close(s):
-    """The client releases its reservation `s`. If nobody runs the supplier, the client
-    finishes the session itself and serves the leaf calls queued behind it (see `settle`)."""
-    p = s.proc
-    lock = p.lock
-    lock.acquire()
-    s.closed = True
-    if p.head is s and p.state == IDLE:
-        if not s.calls:
-            if not p.qoq and s.dirty is None and not (s.changed and p.waiters):
-                p.head = None          # the common case: nothing else to do
-                lock.release()
-                return
-            p._advance_locked()
-        p.settle_locked(s.client)
-        return
-    lock.release()

@@ -8,7 +8,7 @@ registers a targeted wake-up on the suppliers its failing clause queried, and sl
 """
 from .errors import PreconditionViolation, Shutdown
 from . import processor
-from .processor import Session, close, enqueue, locked_lock
+from .processor import Session, close, enqueue_claim, locked_lock
 from .sched import Block
 
 
@@ -30,31 +30,32 @@ class Reservation:
     def enter(self):
         here = self.here
         rt = here.rt
-        if rt.permits.want_yield:         # a permit waiter asked: a safe point to yield
-            rt.permits.yield_point(here.exec)
-        if rt.stopping:                   # shutting down: stop at the next reservation
-            raise Shutdown()
+        if rt.attention:                  # a permit waiter asked to yield, or stopping
+            rt.attend(here.exec)
         objs = self.objs
         if len(objs) == 1:                # the common case, with few calls
             o = objs[0]
             regs = () if o is None or o._region_ in here.held else (o._region_,)
         else:
             regs = self._regions()
+        pre = self.pre
         while True:
             if len(regs) == 1:
                 self.taken = _reserve_one(here, regs[0], self.where)
             else:
                 self.taken = reserve_regions(here, regs, self.where) if regs else ()
-            if self.pre is None:
+            if pre is None:
                 return self
             try:
-                failing = self._first_false()
+                for clause in pre:            # in order; the first false one decides
+                    if not clause[0]():
+                        break
+                else:
+                    return self
             except BaseException:
                 self.exit()
                 raise
-            if failing is None:
-                return self
-            self._wait(failing, regs)
+            self._wait(clause, regs)
 
     __enter__ = enter
 
@@ -77,12 +78,6 @@ class Reservation:
                 if r not in held and r not in regs:
                     regs.append(r)
         return regs
-
-    def _first_false(self):
-        for clause in self.pre:
-            if not clause[0]():
-                return clause
-        return None
 
     def _queried(self, clause, regs):
         """The newly reserved regions that `clause` uses as targets."""
@@ -107,10 +102,12 @@ class Reservation:
         try:
             here.rt.block(here.exec, blk)
         finally:
-            for r in regs:
-                with r.lock:
-                    if blk in r.waiters:
-                        r.waiters.remove(blk)
+            done = blk.value              # the region whose waker already unlisted blk
+            for r in queried:
+                if r is not done:
+                    with r.lock:
+                        if blk in r.waiters:
+                            r.waiters.remove(blk)
 
     def exit(self):
         taken = self.taken
@@ -123,20 +120,16 @@ class Reservation:
 
 
 def _register(blk, regions):
-    for r in regions:
+    for r in regions:                     # `regions` has no duplicates
         with r.lock:
-            if blk not in r.waiters:
-                r.waiters.append(blk)
+            r.waiters.append(blk)
 
 
 def _reserve_one(here, r, where):
     s = Session(here, r, where)
     lock = r.lock
     lock.acquire()
-    if r.head is None:
-        r.head = s
-    else:
-        r.qoq.append(s)
+    enqueue_claim(r, s, here.exec)
     lock.release()
     here.held[r] = s
     return ((r, s),)
@@ -151,8 +144,9 @@ def reserve_regions(here, regs, where):
     taken = [(r, Session(here, r, where)) for r in ordered]
     for r in ordered:
         r.lock.acquire()
+    ex = here.exec
     for r, s in taken:
-        enqueue(r, s)
+        enqueue_claim(r, s, ex)
     for r in ordered:
         r.lock.release()
     for r, s in taken:

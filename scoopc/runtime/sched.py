@@ -27,10 +27,9 @@ MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
 
 class Exec:
     """One OS thread running processor code (a worker, the main thread, a client)."""
-    __slots__ = ("stack", "blocked", "name", "permit", "plock")
+    __slots__ = ("blocked", "name", "permit", "plock")
 
     def __init__(self, name):
-        self.stack = []        # processors run on behalf of, innermost last; owner thread only
         self.blocked = None    # Block or None; written by the owner thread under rt.glock
         self.name = name
         self.permit = False    # [rt.glock] this thread holds a run permit (permits.py)
@@ -50,7 +49,8 @@ class Block:
         self.lock = lock          # released (once) to wake the thread
         self.deadline = deadline  # sleep only
         self.exec = None          # the blocked thread's Exec, set by `block`
-        self.value = None         # sync: the result, written before `unblock`
+        self.value = None         # sync: the result, written before `unblock`; wait: the
+        #                           region whose waker took it off its `waiters` list
         self.error = None         # sync: the exception to re-raise in the client
         self.what = what          # sync: the routine called; wait: the clause tag
 
@@ -111,6 +111,8 @@ class Runtime:
         self.sources = 0                 # [g] open outside clients
         self.failures = []               # [g] (message, exception) run-time failures
         self.stopping = False            # [g] set once; read racily as a fast check
+        self.attention = False           # [g] stopping or permits.want_yield: one racy read
+        #                                  at reservation entry instead of two
         self.root_done = False           # [g]
         self.changed = threading.Condition(self.glock)   # quiescence / stop, for run_main
         self.wait_set = 0                # [g] number of blocked threads of kind 'wait'
@@ -227,6 +229,14 @@ class Runtime:
             if self.clock.virtual:
                 self.clock.advance_locked()
 
+    def attend(self, ex):
+        """Reservation entry found `attention` set: a safe point to yield the permit to a
+        waiter that asked; a stop point when shutting down."""
+        if self.permits.want_yield:
+            self.permits.yield_point(ex)
+        if self.stopping:
+            raise Shutdown()
+
     # -- blocking --------------------------------------------------------------------
     def block(self, ex, blk):
         """Block thread `ex` until `blk.lock` is released (by `unblock`); raise Shutdown
@@ -250,12 +260,14 @@ class Runtime:
             spawn = self._release_permit_locked(ex)
         if spawn is not None:
             spawn.thread.start()
+        woke = queued = False
         try:
             if not stopping:
                 if blk.deadline is not None and not self.clock.virtual:
                     self.clock.real_wait(blk)
                 else:
                     blk.lock.acquire()
+            woke = True
         finally:
             with self.glock:
                 if ex.blocked is blk:
@@ -264,10 +276,12 @@ class Runtime:
                 if blk.kind == "wait":
                     self.wait_set -= 1
                 stopping = self.stopping
+                if woke and had_permit and not stopping:   # one glock round for both
+                    queued = self.permits.acquire_locked(ex)
         if stopping:
             raise Shutdown()
-        if had_permit:
-            self.permits.acquire(ex)
+        if queued:
+            self.permits.wait_turn(ex)
 
     def watch_blocks(self, predicate):
         """Scheduling hook: an Event set when a thread blocks on a Block for which
@@ -318,6 +332,7 @@ class Runtime:
             if self.stopping:
                 return
             self.stopping = True
+            self.attention = True
             for ex in list(self.blocked):
                 self.unblock_locked(ex.blocked)
             self.permits.stop_locked()

@@ -1,0 +1,145 @@
+"""Private queues (`Session`) and their life in a supplier's queue of queues: enqueueing,
+the claim-once fast path, release. A Session is also the reservation object of the
+common one-supplier reservation without wait condition (`Processor.reserve`).
+
+Claim once: when a new private queue becomes the head of an IDLE supplier, the client
+claims the supplier (RUNNING on its behalf) and keeps it until it releases the
+reservation, so its leaf commands and queries are plain calls on its own thread, with no
+lock. Nobody else could run the supplier meanwhile anyway: the client's open private
+queue is at the head. The claim is dropped (under the supplier's lock) when a call must be
+queued for the supplier's own thread (a non-leaf command, a lock-passing call) and at
+release.
+"""
+from .errors import Shutdown
+
+IDLE, SCHEDULED, RUNNING = 0, 1, 2
+
+
+class Session:
+    """A private queue: the calls of one client to one supplier within one reservation.
+    It is also the reservation object of the common one-supplier reservation without
+    wait condition (`Processor.reserve`): `with` enters and releases it."""
+    __slots__ = ("client", "proc", "calls", "closed", "dirty", "delivered", "changed",
+                 "turn", "where", "heavy", "claimed")
+
+    def __init__(self, client, proc, where=None):
+        self.client = client      # Processor or OutsideClient (immutable)
+        self.proc = proc          # the supplier (immutable)
+        self.calls = []           # [proc.lock] (routine, target, args, Block|None, passer|None)
+        self.closed = False       # [proc.lock] the client released the reservation
+        self.dirty = None         # [proc.lock] exception of a failed asynchronous call
+        self.delivered = False    # [proc.lock] the dirty exception reached the client
+        self.changed = False      # [executor of proc] a command ran (wakes wait conditions)
+        self.turn = None          # [proc.lock] passive only: Block of the client awaiting its turn
+        self.where = where        # reservation position, for reports
+        self.heavy = False        # [proc.lock] a non-leaf call was logged: no client may
+        #                           run this session's calls on its own thread
+        self.claimed = False      # [set/cleared under proc.lock by the session's user; read
+        #   by it] `proc` is RUNNING on behalf of this session's user: it is the head, no call
+        #   is queued, so the user runs its calls directly, lock-free, until it drops the
+        #   claim (close, a queued or lock-passing call). Only one thread uses a session at a
+        #   time: its client, or the supplier it passed its locks to while it waits.
+
+    # -- the one-supplier reservation (Processor.reserve) ------------------------------
+    def __enter__(self):
+        here = self.client
+        rt = here.rt
+        if rt.attention:                  # a permit waiter asked to yield, or stopping
+            rt.attend(here.exec)
+        p = self.proc
+        held = here.held
+        if p not in held:                 # else nested: the outer reservation keeps it
+            lock = p.lock                 # `enqueue_claim`, inlined (the hottest path)
+            lock.acquire()
+            if p.head is None:
+                p.head = self
+                if p.state == IDLE:
+                    p.state = RUNNING
+                    p.exec = here.exec
+                    self.claimed = True
+            else:
+                p.qoq.append(self)
+            lock.release()
+            held[p] = self
+        return self
+
+    def __exit__(self, et=None, ev=None, tb=None):
+        held = self.client.held
+        p = self.proc
+        if held.get(p) is self:
+            del held[p]
+            lock = p.lock
+            lock.acquire()
+            self.closed = True
+            if self.claimed and not p.qoq and self.dirty is None \
+                    and not (self.changed and p.waiters):
+                self.claimed = False      # the common case of `close_locked`, inlined
+                p.exec = None
+                p.state = IDLE
+                p.head = None
+                lock.release()
+                return
+            close_locked(p, self)
+
+    enter = __enter__
+    exit = __exit__
+
+    @property
+    def taken(self):
+        """As `Reservation.taken`: the (region, session) pairs held by this reservation."""
+        return ((self.proc, self),) if self.client.held.get(self.proc) is self else None
+
+
+def enqueue(p, s):
+    """[p.lock] Put session `s` in `p`'s queue of queues."""
+    if p.head is None:
+        p.head = s
+    else:
+        p.qoq.append(s)
+
+
+def enqueue_claim(p, s, ex):
+    """[p.lock] Put a new reservation's session `s` in `p`'s queue of queues; if it is the
+    head of an idle `p`, claim `p` for the client's thread `ex` at once (a reservation is
+    usually followed by calls the client runs itself)."""
+    if p.head is None:
+        p.head = s
+        if p.state == IDLE:
+            p.state = RUNNING
+            p.exec = ex
+            s.claimed = True
+    else:
+        p.qoq.append(s)
+
+
+def drop_claim_locked(p, s):
+    """[p.lock] `s` gives up its claim on `p`: `p` is idle again, `s` still its head."""
+    s.claimed = False
+    p.exec = None
+    p.state = IDLE
+
+
+def close(s):
+    """The client releases its reservation `s`. If nobody runs the supplier, the client
+    finishes the session itself and serves the leaf calls queued behind it (see `settle`)."""
+    p = s.proc
+    p.lock.acquire()
+    close_locked(p, s)
+
+
+def close_locked(p, s):
+    """[p.lock held; releases it] `close` after taking the lock."""
+    lock = p.lock
+    s.closed = True
+    if s.claimed:
+        drop_claim_locked(p, s)
+    if p.head is s and p.state == IDLE:
+        if not s.calls:
+            if not p.qoq and s.dirty is None and not (s.changed and p.waiters):
+                p.head = None          # the common case: nothing else to do
+                lock.release()
+                return
+            p._advance_locked()
+        p.settle_locked(s.client)
+        return
+    lock.release()
