@@ -4,7 +4,7 @@ An outside client logs commands from any thread without ever waiting for a proce
 call is a closed private queue of one call put in the supplier's queue of queues, so calls
 of one source to one processor run in the order they were logged."""
 from .errors import ScoopError
-from .processor import IDLE, SCHEDULED, Session, enqueue
+from .session import IDLE, SCHEDULED, Session, enqueue
 
 
 class OutsideClient:

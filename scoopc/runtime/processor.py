@@ -16,8 +16,7 @@ from collections import deque
 from .errors import DirtyRegionError, Shutdown, UncontrolledTarget
 from .once import once_in
 from .sched import Block
-from .session import (IDLE, RUNNING, SCHEDULED, Session, close, close_locked,  # noqa: F401
-                      drop_claim_locked, enqueue, enqueue_claim)
+from .session import IDLE, RUNNING, SCHEDULED, Session, close, drop_claim_locked  # noqa: F401
 
 Reservation = None      # set by reservation.py (which imports this module)
 BATCH_SESSIONS = 64     # sessions a server takes under one lock hold

@@ -8,7 +8,8 @@ registers a targeted wake-up on the suppliers its failing clause queried, and sl
 """
 from .errors import PreconditionViolation, Shutdown
 from . import processor
-from .processor import Session, close, enqueue_claim, locked_lock
+from .processor import locked_lock
+from .session import Session, close, enqueue_claim
 from .sched import Block
 
 

@@ -10,8 +10,6 @@ queue is at the head. The claim is dropped (under the supplier's lock) when a ca
 queued for the supplier's own thread (a non-leaf command, a lock-passing call) and at
 release.
 """
-from .errors import Shutdown
-
 IDLE, SCHEDULED, RUNNING = 0, 1, 2
 
 
