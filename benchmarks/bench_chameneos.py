@@ -139,6 +139,12 @@ class Mall:
         del self.partner[ident]
 
 
+# Codegen's clause table for `collect` (see bench_condition.PRE_CHANGE).
+PRE_COLLECT = ((lambda here, current, m:
+                here.leaf_query(m, Mall.has_partner, (current.ident,), W_HAS_PARTNER),
+                (0,), "has_partner", W_HAS_PARTNER),)
+
+
 class Creature:
     @leaf
     def make(self, ident, colour, mall):
@@ -156,17 +162,15 @@ class Creature:
 
     def visit(self, m):
         here = self._region_
-        with here.reserve((m,), where=W_VISIT):
-            here.call(m, Mall.arrive, (self.ident, self.colour))
-            return here.query(m, Mall.outcome_of, (self.ident,), W_OUTCOME)
+        with here.reserve1(m, W_VISIT):        # id, colour: expanded (INTEGER, COLOUR)
+            here.leaf_call(m, Mall.arrive, (self.ident, self.colour))
+            return here.leaf_query(m, Mall.outcome_of, (self.ident,), W_OUTCOME)
 
     def collect(self, m):
         here = self._region_
-        pre = ((lambda: here.query(m, Mall.has_partner, (self.ident,), W_HAS_PARTNER),
-                (0,), "has_partner", W_HAS_PARTNER),)
-        with here.reserve((m,), pre=pre, where=W_COLLECT):
-            partner = here.query(m, Mall.partner_of, (self.ident,), W_PARTNER)
-            here.call(m, Mall.forget_partner, (self.ident,))
+        with here.reserve1(m, W_COLLECT, PRE_COLLECT, (here, self, m)):
+            partner = here.leaf_query(m, Mall.partner_of, (self.ident,), W_PARTNER)
+            here.leaf_call(m, Mall.forget_partner, (self.ident,))
             return partner
 
 
@@ -181,8 +185,7 @@ class Root:
 
     def launch(self, c):
         here = self._region_
-        with here.reserve((c,), where=W_LAUNCH):
-            here.call(c, Creature.live)
+        here.command1(c, Creature.live, (), W_LAUNCH)
 
 
 def scoop(creatures, meetings):

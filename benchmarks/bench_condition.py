@@ -68,6 +68,13 @@ class Shared:
         self.value += 1
 
 
+# The precondition as codegen emits it: a module-level clause table, one predicate per
+# clause taking `pre_args` (here: the processor, Current, the separate argument).
+PRE_CHANGE = ((lambda here, current, s:
+               here.leaf_query(s, Shared.get_value, (), W_PARITY) % 2 == current.parity,
+               (0,), "parity", W_PARITY),)
+
+
 class Worker:
     @leaf
     def make(self, shared, parity, iters):
@@ -79,10 +86,8 @@ class Worker:
 
     def change(self, s):
         here = self._region_
-        pre = ((lambda: here.query(s, Shared.get_value, (), W_PARITY) % 2 == self.parity,
-                (0,), "parity", W_PARITY),)
-        with here.reserve((s,), pre=pre, where=W_CHANGE):
-            here.call(s, Shared.increment)
+        with here.reserve1(s, W_CHANGE, PRE_CHANGE, (here, self, s)):
+            here.leaf_call(s, Shared.increment)
 
 
 class Root:
@@ -94,8 +99,7 @@ class Root:
 
     def launch(self, w):
         here = self._region_
-        with here.reserve((w,), where=W_LAUNCH):
-            here.call(w, Worker.live)
+        here.command1(w, Worker.live, (), W_LAUNCH)
 
 
 def scoop(workers, iters):

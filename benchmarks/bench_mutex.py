@@ -71,8 +71,8 @@ class Worker:
 
     def increment(self, c):
         here = self._region_
-        with here.reserve((c,), where=W_INCREMENT):
-            here.call(c, Counter.increment)
+        # one separate argument, no precondition, body = one command with no argument
+        here.command1(c, Counter.increment, (), W_INCREMENT)
 
 
 class Root:
@@ -84,8 +84,7 @@ class Root:
 
     def launch(self, w):
         here = self._region_
-        with here.reserve((w,), where=W_LAUNCH):
-            here.call(w, Worker.live)
+        here.command1(w, Worker.live, (), W_LAUNCH)
 
 
 def scoop(workers, iters):

@@ -103,8 +103,12 @@ class Producer:
 
     def put(self, q, value):
         here = self._region_
-        with here.reserve((q,), where=W_PUT):
-            here.call(q, SharedQueue.extend, (value,))
+        here.command1(q, SharedQueue.extend, (value,), W_PUT)   # INTEGER: passes no lock
+
+
+# Codegen's clause table for `take` (see bench_condition.PRE_CHANGE).
+PRE_TAKE = ((lambda here, q: not here.leaf_query(q, SharedQueue.is_empty, (), W_NOT_EMPTY),
+             (0,), "not_empty", W_NOT_EMPTY),)
 
 
 class Consumer:
@@ -118,11 +122,9 @@ class Consumer:
 
     def take(self, q):
         here = self._region_
-        pre = ((lambda: not here.query(q, SharedQueue.is_empty, (), W_NOT_EMPTY),
-                (0,), "not_empty", W_NOT_EMPTY),)
-        with here.reserve((q,), pre=pre, where=W_TAKE):
-            self.total += here.query(q, SharedQueue.item, (), W_ITEM)
-            here.call(q, SharedQueue.remove)
+        with here.reserve1(q, W_TAKE, PRE_TAKE, (here, q)):
+            self.total += here.leaf_query(q, SharedQueue.item, (), W_ITEM)
+            here.leaf_call(q, SharedQueue.remove)
 
 
 class Root:
@@ -139,8 +141,7 @@ class Root:
 
     def launch(self, w, live):
         here = self._region_
-        with here.reserve((w,), where=W_LAUNCH):
-            here.call(w, live)
+        here.command1(w, live, (), W_LAUNCH)
 
 
 def scoop(producers, consumers, items):

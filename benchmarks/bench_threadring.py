@@ -94,13 +94,11 @@ class Node:
 
     def pass_token(self, n, token):
         here = self._region_
-        with here.reserve((n,), where=W_PASS):
-            here.call(n, Node.receive, (token,))
+        here.command1(n, Node.receive, (token,), W_PASS)      # INTEGER: passes no lock
 
     def finish(self, r):
         here = self._region_
-        with here.reserve((r,), where=W_FINISH):
-            here.call(r, Result.set_winner, (self.ident,))
+        here.command1(r, Result.set_winner, (self.ident,), W_FINISH)
 
 
 class Root:
@@ -116,13 +114,12 @@ class Root:
 
     def close_ring(self, last):
         here = self._region_
-        with here.reserve((last,), where=W_CLOSE):
+        with here.reserve1(last, W_CLOSE):
             here.call(last, Node.set_next, (self.first,))
 
     def start(self, first, hops):
         here = self._region_
-        with here.reserve((first,), where=W_START):
-            here.call(first, Node.receive, (hops,))
+        here.command1(first, Node.receive, (hops,), W_START)
 
 
 def scoop(nodes, hops):

@@ -14,6 +14,7 @@ import threading
 from collections import deque
 
 from .errors import DirtyRegionError, Shutdown, UncontrolledTarget
+from .fast import FastPaths
 from .once import once_in
 from .sched import Block
 from .session import IDLE, RUNNING, SCHEDULED, Session, close, drop_claim_locked  # noqa: F401
@@ -27,10 +28,11 @@ STATE_NAMES = ("idle", "scheduled", "running")
 VALUES = frozenset((int, float, str, bool, type(None), bytes, complex))
 
 
-class Processor:
-    """A region and its processor. The public methods are the API for generated code."""
+class Processor(FastPaths):
+    """A region and its processor. The public methods (and those of `FastPaths`, fast.py)
+    are the API for generated code."""
     __slots__ = ("id", "rt", "lock", "head", "qoq", "state", "passive", "exec", "held",
-                 "waiters", "onces", "frames", "name", "__weakref__")
+                 "waiters", "onces", "frames", "name", "spare", "__weakref__")
 
     def __init__(self, rt, passive=False, name=None):
         self.rt = rt
@@ -46,6 +48,8 @@ class Processor:
         self.onces = {}           # [executor] once-per-region values
         self.frames = []          # [executor] optional Eiffel frame stack (where tuples)
         self.name = name          # class name of the first object, for reports
+        self.spare = None         # [executor] a finished Session of ours no one refers to,
+        #                           reused by the next `reserve1` (saves an allocation)
 
     def __repr__(self):
         return f"P{self.id}" + (f"({self.name})" if self.name else "")
@@ -329,17 +333,15 @@ class Processor:
             return
         self.state = RUNNING
         self.exec = ex
-        lock.release()
-        self._serve(ex)
+        self._serve_locked()         # the same lock hold: one round fewer per hand-off
 
-    def _serve(self, ex):
-        """Serve the queue of queues. Under one lock hold it takes the head's calls and,
-        while sessions are closed, the calls of those behind it (in order: each closed
-        session is finished before the next starts), so a shared supplier with many short
-        client sessions pays one lock round per batch, not per session."""
+    def _serve_locked(self):
+        """[lock held] Serve the queue of queues. Under one lock hold it takes the head's
+        calls and, while sessions are closed, the calls of those behind it (in order: each
+        closed session is finished before the next starts), so a shared supplier with many
+        short client sessions pays one lock round per batch, not per session."""
         lock = self.lock
         while True:
-            lock.acquire()
             s = self.head
             while s is not None and not s.calls and s.closed:
                 s = self._advance_locked()
@@ -362,11 +364,9 @@ class Processor:
             for q, batch in batches:
                 if batch:
                     self._run_calls(q, batch)
-            if len(batches) > 1:
-                lock.acquire()
-                for _ in range(len(batches) - 1):   # all but the last are closed
-                    self._advance_locked()
-                lock.release()
+            lock.acquire()
+            for _ in range(len(batches) - 1):       # all but the last are closed
+                self._advance_locked()
 
     def _run_calls(self, s, batch):
         rt = self.rt
@@ -447,20 +447,25 @@ class Processor:
         if s.dirty is not None and not s.delivered:
             self.rt.report_lost(self, s)
         if s.changed and self.waiters:
-            keep = []
-            for blk in self.waiters:
-                if blk.proc is s.client:
-                    keep.append(blk)
-                else:
-                    blk.value = self      # tells the waiter it is off our list already
-                    self.rt.unblock(blk)
-            self.waiters = keep
+            self.wake_waiters_locked(s)
         nxt = self.qoq.popleft() if self.qoq else None
         self.head = nxt
         if nxt is not None and nxt.turn is not None:
             self.rt.unblock(nxt.turn)
             nxt.turn = None
         return nxt
+
+    def wake_waiters_locked(self, s):
+        """[lock] Session `s`, in which a command ran, ends: wake the other clients
+        waiting on a wait condition over us (targeted wake-up)."""
+        keep = []
+        for blk in self.waiters:
+            if blk.proc is s.client:
+                keep.append(blk)
+            else:
+                blk.value = self          # tells the waiter it is off our list already
+                self.rt.unblock(blk)
+        self.waiters = keep
 
     # -- services ----------------------------------------------------------------------
     def print(self, text):
@@ -483,14 +488,14 @@ class Processor:
     def pop_frame(self):
         self.frames.pop()
 
-    def reserve(self, objs, pre=None, where=None):
+    def reserve(self, objs, pre=None, where=None, pre_args=None):
         """A reservation of the separate arguments `objs` (see reservation.py); the common
-        one-supplier reservation without wait condition is its private queue itself."""
+        one-supplier reservation without wait condition is its private queue itself.
+        `pre_args`: None (each clause's `pred()` takes no argument) or the tuple passed
+        to every `pred` (a module-level clause table, see docs/RUNTIME.md)."""
         if pre is None and len(objs) == 1:
-            o = objs[0]
-            if o is not None:
-                return Session(self, o._region_, where)
-        return Reservation(self, objs, pre, where)
+            return self.reserve1(objs[0], where)
+        return Reservation(self, objs, pre, where, pre_args)
 
 
 def _ahead_locked(p, s):

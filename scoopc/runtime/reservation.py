@@ -19,10 +19,11 @@ def _id(p):
 
 class Reservation:
     """`with here.reserve(objs, pre, where):` — also `enter()` / `exit()` explicitly."""
-    __slots__ = ("here", "objs", "pre", "where", "taken")
+    __slots__ = ("here", "objs", "pre", "where", "taken", "pre_args")
 
-    def __init__(self, here, objs, pre, where):
+    def __init__(self, here, objs, pre, where, pre_args=None):
         self.here = here
+        self.pre_args = pre_args  # None: clauses are closures; else passed to each `pred`
         self.objs = objs
         self.pre = pre
         self.where = where
@@ -47,9 +48,10 @@ class Reservation:
                 self.taken = reserve_regions(here, regs, self.where) if regs else ()
             if pre is None:
                 return self
+            args = self.pre_args
             try:
                 for clause in pre:            # in order; the first false one decides
-                    if not clause[0]():
+                    if not (clause[0]() if args is None else clause[0](*args)):
                         break
                 else:
                     return self

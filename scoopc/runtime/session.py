@@ -22,7 +22,8 @@ class Session:
 
     def __init__(self, client, proc, where=None):
         self.client = client      # Processor or OutsideClient (immutable)
-        self.proc = proc          # the supplier (immutable)
+        self.proc = proc          # the supplier (set by the client before it enqueues the
+        #                           session; a reused spare is re-targeted, see `__exit__`)
         self.calls = []           # [proc.lock] (routine, target, args, Block|None, passer|None)
         self.closed = False       # [proc.lock] the client released the reservation
         self.dirty = None         # [proc.lock] exception of a failed asynchronous call
@@ -42,11 +43,18 @@ class Session:
     def __enter__(self):
         here = self.client
         rt = here.rt
-        if rt.attention:                  # a permit waiter asked to yield, or stopping
-            rt.attend(here.exec)
         p = self.proc
         held = here.held
-        if p not in held:                 # else nested: the outer reservation keeps it
+        if p in held:
+            # Nested: the outer reservation keeps `p`. Or `reserve1` with a precondition
+            # entered us already: then never yield here, we hold `p` (others would queue
+            # behind a client waiting for a permit) and a Shutdown raised here would skip
+            # `__exit__`.
+            if rt.attention and held[p] is not self:
+                rt.attend(here.exec)
+        else:
+            if rt.attention:              # a permit waiter asked to yield, or stopping
+                rt.attend(here.exec)
             lock = p.lock                 # `enqueue_claim`, inlined (the hottest path)
             lock.acquire()
             if p.head is None:
@@ -69,13 +77,17 @@ class Session:
             lock = p.lock
             lock.acquire()
             self.closed = True
-            if self.claimed and not p.qoq and self.dirty is None \
-                    and not (self.changed and p.waiters):
+            if self.claimed and not p.qoq and self.dirty is None:
+                if self.changed and p.waiters:
+                    p.wake_waiters_locked(self)
                 self.claimed = False      # the common case of `close_locked`, inlined
                 p.exec = None
                 p.state = IDLE
                 p.head = None
                 lock.release()
+                # Nothing refers to us any more (not queued, no call, not held, not
+                # dirty): the client's next `reserve1` may reuse us.
+                self.client.spare = self
                 return
             close_locked(p, self)
 

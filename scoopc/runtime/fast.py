@@ -1,0 +1,237 @@
+"""Fast entry points for facts the code generator knows statically (docs/RUNTIME.md 2-3).
+
+The general entry points (`reserve`, `call`, `query`) decide everything at run time:
+how many objects to reserve, whether a routine is a leaf, whether an argument passes
+locks. Codegen knows most of that from the Eiffel source, and in pure Python every check
+costs about as much as the work it guards, so these entry points skip them:
+
+- `reserve1(x, where, pre, pre_args)`: exactly one separate argument (or separate block
+  expression); `pre` a module-level clause table evaluated with `pre_args`, so no tuple
+  or closure is allocated per call.
+- `leaf_call` / `leaf_query`: the routine is `@leaf` and no actual argument can pass
+  locks (every argument is of an expanded type, or there is none). On a supplier the
+  client has claimed they are a plain call; otherwise they fall back to `call`/`query`,
+  which decide at run time exactly as before.
+
+Every guarantee is kept by falling back to the general path whenever the fast one does
+not apply; the fast paths only skip checks whose answer codegen promised.
+"""
+import threading
+
+from .errors import PreconditionViolation, Shutdown
+from .sched import Block
+from .session import IDLE, RUNNING, SCHEDULED, Session, close_locked, enqueue
+
+
+class _Nothing:
+    """The reservation of a Void separate argument: nothing to take or release."""
+    __slots__ = ()
+    taken = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, et=None, ev=None, tb=None):
+        return None
+
+    enter = __enter__
+    exit = __exit__
+
+
+NOTHING = _Nothing()
+
+
+class FastPaths:
+    """Mixin of `Processor` (fields documented there)."""
+    __slots__ = ()
+
+    def reserve1(self, x, where=None, pre=None, pre_args=()):
+        """`with here.reserve1(x, where):` reserves the one separate argument `x` (Void
+        or already held: nothing). With `pre` (a tuple of clauses `(pred, targets, tag,
+        where)`, `pred(*pre_args) -> bool`, `targets` `(0,)` if the clause calls `x`,
+        else `()`), the precondition is established (waiting as needed) before the
+        private queue is returned; its `__enter__` then only re-checks it is held."""
+        if x is None:
+            return NOTHING
+        s = self._session1(x._region_, where)
+        if pre is None:
+            return s
+        return self._guarded1(s, pre, pre_args)
+
+    def _session1(self, p, where):
+        """A private queue for `p`: the client's spare one if any (see `Session.__exit__`)."""
+        s = self.spare
+        if s is None:
+            return Session(self, p, where)
+        self.spare = None
+        s.proc = p
+        s.where = where
+        s.closed = s.changed = s.heavy = False
+        return s
+
+    def _guarded1(self, s, pre, pre_args):
+        """Reserve through `s`, evaluate the clauses; wait or raise on a false one."""
+        p = s.proc
+        while True:
+            s.__enter__()
+            try:
+                for clause in pre:            # in order; the first false one decides
+                    if not clause[0](*pre_args):
+                        break
+                else:
+                    return s
+            except BaseException:
+                s.__exit__()
+                raise
+            if not clause[1] or self.held.get(p) is not s:   # not newly reserved by us
+                s.__exit__()
+                raise PreconditionViolation(clause[2], clause[3])
+            self._wait1(s, p, clause)
+            s = self._session1(p, s.where)    # a private queue for the next try
+
+    def _wait1(self, s, p, clause):
+        """Register the wake-up and release `s` under one hold of `p.lock` (no change can
+        slip in between), sleep until another client's session with a command ends."""
+        lk = threading.Lock()                # the one-shot wake-up, already held
+        lk.acquire()
+        blk = Block("wait", self, (p,), clause[3] or s.where, lk, None, clause[2])
+        del self.held[p]
+        lock = p.lock
+        lock.acquire()
+        p.waiters.append(blk)
+        if s.claimed and not p.qoq and s.dirty is None and not s.changed:
+            s.claimed = False                # the common case of `close_locked`: only
+            s.closed = True                  # queries ran, nobody queued behind us
+            p.exec = None
+            p.state = IDLE
+            p.head = None
+            lock.release()
+            self.spare = s                   # unreferenced now: reusable
+        else:
+            close_locked(p, s)               # releases p.lock
+        try:
+            self.rt.block(self.exec, blk)
+        finally:
+            if blk.value is not p:           # our waker did not unlist us already
+                with p.lock:
+                    if blk in p.waiters:
+                        p.waiters.remove(blk)
+
+    def command1(self, x, routine, args=(), where=None):
+        """`with here.reserve1(x, where): here.call(x, routine, args)` in one step: a
+        routine (or separate block) with one separate argument `x`, no precondition, whose
+        body is the single command `x.routine (args)`, none of whose arguments can pass
+        locks (rules: docs/RUNTIME.md section 3). A leaf command on an idle supplier runs
+        here, claimed, with no `with` protocol and no `held` entry (a leaf makes no
+        separate call, so nothing consults it); a non-leaf one is logged in a closed
+        private queue for the supplier's thread with one lock round."""
+        p = x._region_
+        if p in self.held or p.passive or self.rt.attention:
+            with self.reserve1(x, where):
+                self.call(x, routine, args)
+            return
+        if not getattr(routine, "_scoop_leaf_", False):
+            self._log1(p, x, routine, args, where)
+            return
+        s = self.spare                              # `_session1`, inlined (hot path)
+        if s is None:
+            s = Session(self, p, where)
+        else:
+            self.spare = None
+            s.proc = p
+            s.where = where
+            s.closed = s.heavy = False
+        lock = p.lock
+        lock.acquire()
+        if p.head is not None or p.state != IDLE:
+            self._busy1(p, s, x, routine, args)     # releases p.lock
+            return
+        p.head = s                                  # claim, as `Session.__enter__`
+        p.state = RUNNING
+        p.exec = self.exec
+        s.claimed = True
+        lock.release()
+        s.changed = True
+        try:
+            routine(x, *args)
+        except Shutdown:
+            lock.acquire()
+            close_locked(p, s)
+            raise
+        except BaseException as e:                 # dirty, then lost: reported at close
+            lock.acquire()
+            s.dirty = e
+            close_locked(p, s)
+            return
+        lock.acquire()
+        if not p.qoq:                              # the common case of `close_locked`
+            if p.waiters:
+                p.wake_waiters_locked(s)
+            s.claimed = False
+            s.closed = True
+            p.exec = None
+            p.state = IDLE
+            p.head = None
+            lock.release()
+            self.spare = s                          # unreferenced now: reusable
+            return
+        close_locked(p, s)
+
+    def _busy1(self, p, s, x, routine, args):
+        """[p.lock held; released] `command1` on a busy supplier: the general path with the
+        private queue `s`, enqueued behind the others (never blocks)."""
+        s.changed = False
+        enqueue(p, s)
+        p.lock.release()
+        self.held[p] = s
+        try:
+            self.call(x, routine, args)
+        finally:
+            s.__exit__()
+
+    def _log1(self, p, x, routine, args, where):
+        """Log a non-leaf command in a new closed private queue (one lock round)."""
+        s = Session(self, p, where)
+        s.calls.append((routine, x, args, None, None))
+        s.heavy = True
+        s.closed = True
+        lock = p.lock
+        lock.acquire()
+        if p.head is None:
+            p.head = s
+            if p.state == IDLE:
+                p.state = SCHEDULED
+                lock.release()
+                self.rt.schedule(p)
+                return
+        else:
+            p.qoq.append(s)
+        lock.release()
+
+    def leaf_call(self, target, routine, args=()):
+        """`call` of a `@leaf` command whose arguments cannot pass locks (codegen-checked:
+        all expanded, or none). On a claimed supplier: a plain call; a failure dirties."""
+        p = target._region_
+        s = self.held.get(p)
+        if s.__class__ is Session and s.claimed and s.dirty is None and not p.passive:
+            s.changed = True
+            try:
+                routine(target, *args)
+            except Shutdown:
+                raise
+            except BaseException as e:
+                lock = p.lock
+                lock.acquire()
+                s.dirty = e
+                lock.release()
+            return
+        self.call(target, routine, args)
+
+    def leaf_query(self, target, routine, args=(), where=None):
+        """`query` of a `@leaf` routine whose arguments cannot pass locks (as `leaf_call`)."""
+        s = self.held.get(target._region_)
+        if s.__class__ is Session and s.claimed and s.dirty is None \
+                and not self.rt.stopping:
+            return routine(target, *args)
+        return self.query(target, routine, args, where)
+
