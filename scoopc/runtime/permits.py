@@ -107,6 +107,10 @@ class Permits:
         seen = None
         while not lk.acquire(timeout=SLICE):
             with rt.glock:
+                spawn = rt.overdue_worker_locked()
+            if spawn is not None:
+                spawn.thread.start()
+            with rt.glock:
                 if ex not in self.waiting:    # handed over just now: take it
                     continue
                 if not rt.stopping and (seen != self.moves or not self.want_yield):

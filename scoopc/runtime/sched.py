@@ -17,11 +17,13 @@ Lock order: a processor's `lock` may be held while taking `glock`, never the rev
 import itertools
 import sys
 import threading
+import time
 import weakref
 from collections import deque
 
 from .errors import Shutdown, fmt_where
 
+STARVE_AFTER = 0.005  # seconds a runnable processor may wait for a permit before a worker comes
 MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
 
 
@@ -103,6 +105,7 @@ class Runtime:
         self.glock = threading.Lock()
         self.permits = Permits(self)
         self.runnable = deque()          # [g] processors in state SCHEDULED, FIFO
+        self.runnable_since = 0.0        # [g] monotonic time the runnable queue's head was queued
         self.parked = []                 # [g] parked Workers
         self.n_waking = 0                # [g] workers woken but not yet looking for work
         self.n_running = 0               # [g] threads counted as running processor code
@@ -141,17 +144,33 @@ class Runtime:
     def schedule(self, p):
         """`p` was set SCHEDULED under its lock: make sure some thread will run it."""
         with self.glock:
+            if not self.runnable:
+                self.runnable_since = time.monotonic()
             self.runnable.append(p)
             spawn = self._wake_one_locked() if self._want_worker() else None
         if spawn is not None:
             spawn.thread.start()
 
     def _want_worker(self):
-        """[g] Should one more worker come for the runnable queue? Not if one is already
-        on its way, nor if all permits are taken and a thread already waits for one (it
-        would only wait too; the waiter's stuck check guarantees progress)."""
+        """[g] Should one more worker come for the runnable queue? Not if one is already on
+        its way. When every permit is taken and threads wait for one, a worker would only
+        wait too, and the permit usually comes back to the runnable queue soon (a waiter
+        blocks or finishes): wake one only once the queue's head has waited STARVE_AFTER.
+        The waiters may be busy processors handing the permit among themselves at
+        reservation entry, which would otherwise starve the runnable queue."""
+        if self.n_waking:
+            return False
         pm = self.permits
-        return self.n_waking == 0 and (pm.held < pm.total or not pm.waiting)
+        if pm.held < pm.total or not pm.waiting:
+            return True
+        return time.monotonic() - self.runnable_since > STARVE_AFTER
+
+    def overdue_worker_locked(self):
+        """[g] A worker for the runnable queue if its head has waited too long (permit
+        waiters call this on every slice; returned: start it unlocked)."""
+        if self.runnable and self._want_worker():
+            return self._wake_one_locked()
+        return None
 
     def _wake_one_locked(self):
         """[g] Wake a parked worker, or make a new one (returned: start it unlocked)."""
@@ -184,8 +203,10 @@ class Runtime:
                     return None
                 if self.runnable:
                     p = self.runnable.popleft()
-                    if self.runnable and self._want_worker():
-                        spawn = self._wake_one_locked()
+                    if self.runnable:
+                        self.runnable_since = time.monotonic()
+                        if self._want_worker():
+                            spawn = self._wake_one_locked()
                     break
                 self.permits.release_locked(w.exec)
                 if len(self.parked) >= MAX_PARKED:

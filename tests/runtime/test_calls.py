@@ -204,3 +204,42 @@ def test_long_computation_does_not_stop_other_processors(h):
     spawn(root, _set_flag, flag)       # runs on another processor while s computes
     assert h.finish() == 0
     assert h.err.getvalue() == "" and s.spins > 0
+
+
+class Busy:
+    """A processor that reserves and calls, never blocking, until another one sets a flag."""
+
+    def make(self):
+        self.timed_out = False
+
+    def loop(self, flag, counter, started):
+        import time
+        here = self._region_
+        started.set()
+        deadline = time.monotonic() + 3     # a bound: the flag comes within milliseconds
+        while not flag.value:
+            if time.monotonic() > deadline:
+                self.timed_out = True
+                return
+            with here.reserve((counter,)):
+                here.call(counter, cell_inc)
+
+
+def test_busy_processors_handing_the_permit_around_do_not_starve_a_runnable_one(h):
+    """Three processors that only yield their run permit to each other at reservation entry
+    must not keep a newly scheduled processor from running (it gets a worker within a few
+    permit slices, not when they stop)."""
+    root = h.root
+    flag = root.new_separate(Cell, Cell.make)
+    started, busies = [], []
+    for _ in range(3):
+        busy = root.new_separate(Busy, Busy.make)
+        busies.append(busy)
+        counter = root.new_separate(Cell, Cell.make)
+        started.append(threading.Event())
+        with root.reserve((busy,)):
+            root.call(busy, Busy.loop, (flag, counter, started[-1]))
+    assert all(e.wait(10) for e in started)
+    spawn(root, _set_flag, flag)
+    assert h.finish() == 0, h.err.getvalue()
+    assert not any(b.timed_out for b in busies), "the runnable processor starved"
