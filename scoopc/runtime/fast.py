@@ -214,16 +214,7 @@ class FastPaths:
         p = target._region_
         s = self.held.get(p)
         if s.__class__ is Session and s.claimed and s.dirty is None and not p.passive:
-            s.changed = True
-            try:
-                routine(target, *args)
-            except Shutdown:
-                raise
-            except BaseException as e:
-                lock = p.lock
-                lock.acquire()
-                s.dirty = e
-                lock.release()
+            self._leaf_claimed(p, s, routine, target, args)
             return
         self.call(target, routine, args)
 

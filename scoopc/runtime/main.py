@@ -2,7 +2,6 @@
 processor on the main thread, wait for termination, and shut down (Ctrl-C, deadlock,
 failure) with every thread joined and every failure reported."""
 import signal
-import sys
 import threading
 import traceback
 

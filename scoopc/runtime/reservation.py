@@ -6,7 +6,7 @@ under their locks taken in processor-id order (never blocking: a private queue i
 in the queue of queues). A failed wait condition releases what this reservation took,
 registers a targeted wake-up on the suppliers its failing clause queried, and sleeps.
 """
-from .errors import PreconditionViolation, Shutdown
+from .errors import PreconditionViolation
 from . import processor
 from .processor import locked_lock
 from .session import Session, close, enqueue_claim
@@ -63,13 +63,7 @@ class Reservation:
     __enter__ = enter
 
     def __exit__(self, et, ev, tb):
-        taken = self.taken
-        if taken:
-            held = self.here.held
-            for r, s in taken:
-                del held[r]
-                close(s)
-        self.taken = None
+        self.exit()
 
     def _regions(self):
         """The regions to reserve: not Void, not held already, each once."""

@@ -1,10 +1,15 @@
 """Syntax tree, declarations: features (routines, attributes, constants) and classes."""
 from __future__ import annotations
 
-from typing import Optional, Union
+from typing import TYPE_CHECKING, Optional, Union
 
 from ..source import Span
 from .base import Identifier, node
+
+if TYPE_CHECKING:  # names used only in annotations (strings at run time)
+    from .expressions import Expression
+    from .instructions import AssertionClause, Instruction, Postcondition, Precondition
+    from .types import ClassType, FormalGeneric, Type
 
 
 __all__ = [

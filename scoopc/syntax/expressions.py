@@ -1,10 +1,15 @@
 """Syntax tree, expressions: calls, operators, manifest constants, agents, object tests."""
 from __future__ import annotations
 
-from typing import Optional, Union
+from typing import TYPE_CHECKING, Optional, Union
 
 from ..source import Span
 from .base import Identifier, node
+
+if TYPE_CHECKING:  # names used only in annotations (strings at run time)
+    from .declarations import EntityDeclaration, RoutineBody
+    from .instructions import AssertionClause, Iteration, Variant
+    from .types import Type
 
 
 __all__ = [

@@ -2,10 +2,14 @@
 separate blocks, assertion clauses."""
 from __future__ import annotations
 
-from typing import Optional, Union
+from typing import TYPE_CHECKING, Optional, Union
 
 from ..source import Span
 from .base import Identifier, node
+
+if TYPE_CHECKING:  # names used only in annotations (strings at run time)
+    from .expressions import Expression
+    from .types import Type
 
 
 __all__ = [

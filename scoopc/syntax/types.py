@@ -1,10 +1,14 @@
 """Syntax tree, types: class types, tuple types, anchored types, formal generics."""
 from __future__ import annotations
 
-from typing import Optional, Union
+from typing import TYPE_CHECKING, Optional, Union
 
 from ..source import Span
 from .base import Identifier, node
+
+if TYPE_CHECKING:  # names used only in annotations (strings at run time)
+    from .declarations import Rename
+    from .expressions import Expression
 
 
 __all__ = [

@@ -114,7 +114,7 @@ def test_client_serves_closed_leaf_sessions_ahead_in_order(h):
     itself, in order, before its own query (no thread hand-off, same result)."""
     root = h.root
     c = root.new_separate(Cell, Cell.make)
-    gate, entered = threading.Event(), threading.Event()
+    entered = threading.Event()
     hold = threading.Event()
     logged = threading.Event()
 

@@ -1,5 +1,4 @@
 """once per region / process / object, untorn and tagged output, agents."""
-import io
 import threading
 
 import scoopc.runtime as rt

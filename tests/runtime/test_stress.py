@@ -1,7 +1,6 @@
 """Stress: 1,000 processors and 1,000,000 separate calls in all: nothing lost, nothing
 reordered within a private queue, no false deadlock report (the detector runs at a short
 tick throughout)."""
-import scoopc.runtime as rt
 from rt_helpers import Cell, spawn
 
 W = ("STRESS", "consume", "stress.e", 1)

@@ -2,7 +2,7 @@
 import threading
 
 import scoopc.runtime as rt
-from rt_helpers import Cell, spawn
+from rt_helpers import Cell
 
 SECOND = 1_000_000_000
 

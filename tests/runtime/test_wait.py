@@ -2,7 +2,6 @@
 only when a target of the failing clause was newly reserved (else a precondition
 violation); release, sleep until a queried supplier served another client, re-reserve,
 re-evaluate; wake-ups are targeted and nothing polls."""
-import threading
 
 import pytest
 

@@ -5,7 +5,6 @@ The default profile runs 2,000 examples; SCOOPC_HYPOTHESIS_PROFILE=thorough runs
 """
 import os
 import re
-from pathlib import Path
 
 from hypothesis import HealthCheck, given, settings, strategies as st
 
