@@ -39,3 +39,9 @@ def fmt_where(where):
         cls, routine, file, line = where
         return f"{cls}.{routine} ({file}:{line})"
     return str(where)
+
+
+# Raised through user code untouched by the paths that turn a call's failure into a dirty
+# region: the runtime's own stop signal, and Ctrl-C arriving on the main thread while it runs
+# a call on a supplier's behalf (client-executed), which must stop the program, not be "lost".
+PASS_THROUGH = (Shutdown, KeyboardInterrupt)

@@ -18,7 +18,7 @@ not apply; the fast paths only skip checks whose answer codegen promised.
 """
 import threading
 
-from .errors import PreconditionViolation, Shutdown
+from .errors import PASS_THROUGH, PreconditionViolation
 from .sched import Block
 from .session import IDLE, RUNNING, SCHEDULED, Session, close_locked, enqueue
 
@@ -154,7 +154,7 @@ class FastPaths:
         s.changed = True
         try:
             routine(x, *args)
-        except Shutdown:
+        except PASS_THROUGH:
             lock.acquire()
             close_locked(p, s)
             raise

@@ -13,7 +13,7 @@ supplier take no lock at all.
 import threading
 from collections import deque
 
-from .errors import DirtyRegionError, Shutdown, UncontrolledTarget
+from .errors import PASS_THROUGH, DirtyRegionError, Shutdown, UncontrolledTarget
 from .fast import FastPaths
 from .once import once_in
 from .sched import Block
@@ -227,7 +227,7 @@ class Processor(FastPaths):
         s.changed = True
         try:
             routine(target, *args)
-        except Shutdown:
+        except PASS_THROUGH:
             raise
         except BaseException as e:
             lock = p.lock
@@ -267,7 +267,7 @@ class Processor(FastPaths):
                 if passer is None and not p.passive:   # a leaf command: failure dirties
                     try:
                         return routine(target, *args)
-                    except Shutdown:
+                    except PASS_THROUGH:
                         raise
                     except BaseException as e:
                         with p.lock:
@@ -384,7 +384,7 @@ class Processor(FastPaths):
                     r = routine(target, *args)
                 else:
                     r = self._invoke_passing(passer, routine, target, args)
-            except Shutdown:
+            except PASS_THROUGH:
                 raise
             except BaseException as e:
                 if blk is None:

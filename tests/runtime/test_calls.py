@@ -243,3 +243,23 @@ def test_busy_processors_handing_the_permit_around_do_not_starve_a_runnable_one(
     spawn(root, _set_flag, flag)
     assert h.finish() == 0, h.err.getvalue()
     assert not any(b.timed_out for b in busies), "the runnable processor starved"
+
+
+def _block_outside(here, event):
+    event.wait(10)                 # a blocking external call (I/O, a transport) in user code
+
+
+def _open(here, event):
+    event.set()
+
+
+def test_processors_blocked_outside_the_runtime_do_not_keep_a_scheduled_one_waiting(h):
+    """A blocks in an external call and the root waits outside the runtime too: B, already
+    scheduled, still gets a thread and runs (it is what the root waits for)."""
+    root = h.root
+    a_may_go, b_ran = threading.Event(), threading.Event()
+    spawn(root, _block_outside, a_may_go)
+    spawn(root, _open, b_ran)
+    ran = b_ran.wait(5)            # the root blocks outside the runtime
+    a_may_go.set()
+    assert ran, "the scheduled processor never ran"

@@ -6,6 +6,8 @@ import signal
 import threading
 import time
 
+import pytest
+
 import scoopc.runtime as rt
 from rt_helpers import Cell, spawn
 
@@ -252,3 +254,34 @@ def test_sleepers_are_not_deadlocked(harness):
     with root.reserve((c,)):
         root.call(c, Cell.set, (1,))
     assert h.finish() == 0
+
+
+@rt.leaf
+def _interrupted(cell):
+    """Ctrl-C arriving while the main thread runs this leaf on the supplier's behalf (the
+    supplier's own thread never gets SIGINT, so it just counts)."""
+    if threading.current_thread() is threading.main_thread():
+        raise KeyboardInterrupt
+    cell.value += 1
+
+
+@pytest.mark.parametrize("entry", ["call", "leaf_call"])
+def test_ctrl_c_inside_a_client_executed_leaf_command_stops_the_program(entry):
+    """A leaf command the root runs itself on a claimed supplier is still the main thread:
+    Ctrl-C there ends the program (hooks, 130); it is not a failure of the call, lost."""
+    events = []
+
+    class App:
+        def make(self):
+            here = self._region_
+            rt.add_shutdown_hook(lambda: events.append("hook"))
+            c = here.new_separate(Cell, Cell.make)
+            with here.reserve((c,)):
+                here.query(c, Cell.get)     # waits until c is idle (created)
+            for _ in range(1000):           # so the root runs the leaf itself, at once
+                with here.reserve((c,)):
+                    getattr(here, entry)(c, _interrupted, ())
+            events.append("never interrupted")
+    err = io.StringIO()
+    assert rt.run_main(App, App.make, stderr=err, stdout=io.StringIO()) == 130
+    assert events == ["hook"] and "lost" not in err.getvalue()
