@@ -111,7 +111,12 @@ def _ecf_span(path: Path) -> Span:
 def _read_ecf(project: Project, path: Path, target_name: Optional[str]) -> None:
     try:
         system = ElementTree.parse(path).getroot()
-    except (ElementTree.ParseError, OSError) as problem:
+    except ElementTree.ParseError as problem:
+        line, column = problem.position
+        span = Span(str(path), line, column + 1, line, column + 2)
+        project.errors.append(diagnostics.make("ECF", span, reason=f"{path} is not well-formed XML: {problem}"))
+        return
+    except OSError as problem:
         project.errors.append(diagnostics.make("ECF", _ecf_span(path), reason=f"cannot read {path}: {problem}"))
         return
     targets = {t.get("name", ""): t for t in _children(system, "target")}

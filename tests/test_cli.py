@@ -149,3 +149,9 @@ def test_the_console_script_runs():
     done = subprocess.run([sys.executable, "-m", "scoopc", "check", str(SAMPLE)],
                           capture_output=True, text=True, cwd=ROOT, timeout=120)
     assert done.returncode == 0, done.stderr
+
+
+def test_malformed_ecf_is_located_at_the_xml_error(capsys, tmp_path):
+    (tmp_path / "bad.ecf").write_text('<system name="x">\n\t<target name="t">\n\t\t<root class=APP/>\n')
+    code, _, err = run(capsys, "check", "--format", "short", str(tmp_path / "bad.ecf"))
+    assert code == cli.EXIT_SOURCE and f"{tmp_path / 'bad.ecf'}:3:15: error ECF: " in err
