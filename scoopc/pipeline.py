@@ -5,6 +5,8 @@ Stages produce diagnostics; only the CLI renders them.
 """
 from __future__ import annotations
 
+import gc
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import Optional
 
@@ -64,6 +66,76 @@ def parse_project(project: Project) -> Parsed:
     return parsed
 
 
-def check_project(project: Project) -> Parsed:
-    """Everything `scoopc check` verifies. Today that is syntax; the semantic checker joins here."""
-    return parse_project(project)
+@dataclass
+class Checked(Parsed):
+    """Parsed plus what the checker proved (None when syntax errors stopped it)."""
+
+    semantics: Optional[object] = None
+
+
+def _parse_library_file(path) -> tuple:
+    from . import parser
+
+    source, problem = read_source(str(path))
+    if problem is not None:
+        return None, None, [problem]
+    result = parser.parse(source)
+    return source, result.tree, list(result.diagnostics)
+
+
+@contextmanager
+def without_gc_pauses():
+    """The compiler builds large, long-lived trees and little garbage: the cyclic collector's
+    full passes over them would cost more than the whole check, so it waits until the end."""
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
+
+
+def check_project(project: Project, use_cache: bool = True, library_bodies: Optional[bool] = None) -> Checked:
+    """Everything `scoopc check` verifies: syntax, then the semantic checker over the project's
+    classes and the standard library. Library bodies are checked unless they come from the cache."""
+    with without_gc_pauses():
+        return _check_project(project, use_cache, library_bodies)
+
+
+def _check_project(project: Project, use_cache: bool, library_bodies: Optional[bool]) -> Checked:
+    from . import semantics
+    from .semantics import library
+
+    parsed = parse_project(project)
+    checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
+    library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache)
+    trees = [(unit.tree, False) for unit in parsed.units if unit.tree is not None]
+    base = prepared[0] if prepared is not None else None
+    for source, tree, found in library_units:
+        if source is not None:
+            checked.sources.setdefault(source.path, source)
+        checked.diagnostics.extend(found)
+    if prepared is not None:
+        checked.diagnostics.extend(prepared[1])
+    user_names = {tree.name.key.upper() for tree, _ in trees}
+    if base is None or any(base.get(name) is not None for name in user_names):
+        base = None
+        trees += [(tree, True) for _, tree, _ in library_units if tree is not None]
+    if library_bodies is None:
+        library_bodies = not use_cache
+    result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base)
+    checked.semantics = result
+    checked.diagnostics.extend(result.diagnostics)
+    checked.diagnostics = list({(d.code, d.span, d.message): d for d in checked.diagnostics}.values())
+    checked.diagnostics.sort(key=diagnostics.sort_key)
+    return checked
+
+
+def _prepare_library(units) -> tuple:
+    """The library's universe with feature tables and signatures, and what preparing it reported."""
+    from . import semantics
+
+    found: list = []
+    universe, _ = semantics.prepare([(tree, True) for _, tree, _ in units if tree is not None], found)
+    return universe, found

@@ -87,8 +87,8 @@ def test_unreadable_source_is_a_located_error(capsys, tmp_path):
 
 
 def test_explain_accepts_dashes_for_parentheses(capsys):
-    code, out, _ = run(capsys, "check", "--explain", "syntax-end")
-    assert code == 0 and out.startswith("SYNTAX-END: missing `end`")
+    code, out, _ = run(capsys, "check", "--explain", "vuta-3")
+    assert code == 0 and out.startswith("VUTA(3): ") and "Wrong:" in out and "Fix:" in out
 
 
 ECF = """<?xml version="1.0" encoding="ISO-8859-1"?>

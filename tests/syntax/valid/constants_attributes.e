@@ -20,7 +20,9 @@ feature {NONE} -- Initialization
 			print (history.count.out + "%N")
 			threshold := 10
 			print (threshold.out + "%N")
-			print (limit.out + "%N")
+			if attached limit as l_limit then
+				print (l_limit.out + "%N")
+			end
 			print (Banner + "%N")
 		end
 

@@ -23,7 +23,9 @@ feature {NONE} -- Initialization
 				print (cfg.item.out)
 			end
 			print ("%N")
-			print (global_log.count.out + "%N")
+			separate global_log as l_log do
+				print (l_log.count.out + "%N")
+			end
 		end
 
 feature -- Once routines
@@ -60,7 +62,7 @@ feature -- Once routines
 			create <NONE> Result.put (2_024)
 		end
 
-	global_log: ARRAYED_LIST [STRING]
+	global_log: separate ARRAYED_LIST [STRING]
 			-- A log shared by the whole process.
 		once ("process")
 			create Result.make (10)

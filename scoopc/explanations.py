@@ -1,0 +1,1014 @@
+"""What `scoopc check --explain CODE` prints: for every diagnostic code, the rule in plain words,
+a wrong example and its fix. Gobo's finer SCOOP codes are accepted as aliases of ours.
+"""
+from __future__ import annotations
+
+import textwrap
+from typing import NamedTuple
+
+
+class Explanation(NamedTuple):
+    rule: str   # the validity rule, 1-4 sentences
+    wrong: str  # a short Eiffel example that breaks the rule
+    fix: str    # the corrected example, a blank line, then one sentence saying what changed
+
+
+def _x(rule: str, wrong: str, fix: str, why: str) -> Explanation:
+    def block(text: str) -> str:
+        return textwrap.dedent(text).strip("\n")
+
+    return Explanation(" ".join(rule.split()), block(wrong), block(fix) + "\n\n" + " ".join(why.split()))
+
+
+EXPLANATIONS: dict[str, Explanation] = {
+    # --- input files ------------------------------------------------------------------------------
+    "SOURCE": _x(
+        """A file given on the command line or found in a cluster could not be read: it does not exist,
+        cannot be opened, or is not UTF-8 text. Eiffel sources are read as UTF-8.""",
+        """
+        scoopc check aplication.e
+        """,
+        """
+        scoopc check application.e
+        """,
+        "Name a file that exists; re-save a source written in another encoding as UTF-8."),
+    "ECF": _x(
+        """An .ecf project file could not be used: it is not well-formed XML, defines no target, has no
+        target of the name given with `--target`, or names a cluster directory that does not exist.""",
+        """
+        <cluster name="app" location="./scr/"/>
+        """,
+        """
+        <cluster name="app" location="./src/"/>
+        """,
+        "Make every cluster location point at an existing directory (relative to the .ecf file)."),
+    "ECF-NOTE": _x(
+        """Not an error: the .ecf file holds a setting or element that scoopc does not use (for example
+        a `<setting>` for the C compiler), so it is ignored.""",
+        """
+        <setting name="console_application" value="true"/>
+        """,
+        """
+        <!-- nothing to change: the setting is simply not needed by scoopc -->
+        """,
+        "Leave the setting if the project is also built with EiffelStudio; scoopc just says it skips it."),
+    # --- syntax -----------------------------------------------------------------------------------
+    "SYNTAX": _x(
+        """The text does not follow Eiffel's grammar at this point: a token appears where the language
+        expects something else. The message lists what could come here; the mistake is often just
+        before the reported place (a missing `then`, `do`, `:=` or closing parenthesis).""",
+        """
+        if x > 0
+            print (x)
+        end
+        """,
+        """
+        if x > 0 then
+            print (x)
+        end
+        """,
+        "The condition of an `if` is followed by `then`."),
+    "SYNTAX-END": _x(
+        """Every compound construct (`class`, routine body, `if`, `inspect`, `from`/`loop`, `across`,
+        `check`, `debug`, `separate`, `attached ... then` block) is closed by its own `end`. The error
+        names the construct whose `end` is missing and where it was opened.""",
+        """
+        if x > 0 then
+            print (x)
+        -- the `if` is never closed
+        """,
+        """
+        if x > 0 then
+            print (x)
+        end
+        """,
+        "Close the `if` with `end` before the routine's own `end`."),
+    "SYNTAX-RESERVED": _x(
+        """Keywords such as `end`, `from`, `loop`, `class`, `result`, `current` or `old` are reserved:
+        they cannot name a feature, an argument or a local. Keywords are case-insensitive, so `Loop`
+        and `LOOP` are reserved too.""",
+        """
+        set_range (from: INTEGER; to: INTEGER)
+        """,
+        """
+        set_range (a_from: INTEGER; a_to: INTEGER)
+        """,
+        "Choose a name that is not a keyword; the `a_` prefix is the usual Eiffel style for arguments."),
+    "SYNTAX-LEXICAL": _x(
+        """A character or literal that is no Eiffel token: an unterminated string or character constant,
+        a stray character such as `\\` or `$`, or a character outside Eiffel text. Special characters in
+        strings are written with `%`: `%N` (new line), `%T` (tab), `%"` (quote), `%%` (percent).""",
+        """
+        print ("Hello\\n")
+        """,
+        """
+        print ("Hello%N")
+        """,
+        "Eiffel escapes special characters with `%`, not with a backslash."),
+    "SYNTAX-CLASS": _x(
+        """Each .e file holds exactly one class, and the file is named after it in lower case
+        (class SHAPE lives in shape.e). An empty file or a second class in the same file is an
+        error.""",
+        """
+        -- shapes.e
+        class CIRCLE ... end
+        class SQUARE ... end
+        """,
+        """
+        -- circle.e
+        class CIRCLE ... end
+        -- square.e
+        class SQUARE ... end
+        """,
+        "Move each class into its own file."),
+    "SYNTAX-OBSOLETE": _x(
+        """Pre-ECMA syntax that modern EiffelStudio only accepts in its obsolete-syntax mode:
+        `indexing` (now `note`), `is` before a routine body or a constant's value, `creation` (now
+        `create`), `infix`/`prefix` names (now `alias`), `?T` (now `detachable T`) and the object
+        test `{x: T} e` (now `attached {T} e as x`). scoopc reads ECMA-367 syntax only.""",
+        """
+        indexing
+            description: "A counter"
+        class COUNTER
+        feature
+            increment is
+                do count := count + 1 end
+        """,
+        """
+        note
+            description: "A counter"
+        class COUNTER
+        feature
+            increment
+                do count := count + 1 end
+        """,
+        "Write `note` instead of `indexing`, and drop `is` before a routine body."),
+    "SYNTAX-FEATURE": _x(
+        """An attribute has a type and no arguments; a routine may have arguments. An `attribute` body
+        therefore needs a type, and an attribute or constant cannot be declared with arguments.""",
+        """
+        scale (factor: INTEGER): INTEGER = 10
+        """,
+        """
+        scale (factor: INTEGER): INTEGER
+            do
+                Result := 10 * factor
+            end
+        """,
+        "A feature with arguments is a routine: give it a `do` body."),
+    # --- Eiffel validity rules: classes and types ------------------------------------------------
+    "VSCN": _x(
+        """Class names are unique in a program: two files of the clusters (or a file and a class of the
+        standard library) may not declare classes with the same name, compared without regard to
+        case.""",
+        """
+        -- src/point.e        class POINT ...
+        -- old/point.e        class POINT ...
+        """,
+        """
+        -- src/point.e        class POINT ...
+        -- old/old_point.e    class OLD_POINT ...
+        """,
+        "Rename one of the classes (and its file), or leave the old copy out of the clusters you check."),
+    "VTCT": _x(
+        """Every class name used in a type must name a class of the program: a class of one of its
+        clusters, a class of the standard library, or a built-in name such as INTEGER or STRING.
+        Usually the name is misspelt or the file holding the class is not part of the project.""",
+        """
+        shape: detachable SHAPE   -- there is no class SHAPE
+        """,
+        """
+        shape: detachable FIGURE  -- FIGURE is declared in figure.e
+        """,
+        "Spell the class as it is declared, or add its file to a cluster of the project."),
+    "VTUG(1)": _x(
+        """Only a generic class, declared with formal parameters such as `class BOX [G]`, accepts actual
+        generic parameters in brackets. Writing `POINT [INTEGER]` for a class that has none is
+        invalid.""",
+        """
+        origin: POINT [INTEGER]   -- class POINT has no generic parameter
+        """,
+        """
+        origin: POINT
+        """,
+        "Drop the brackets, or declare the class generic if it should hold values of a chosen type."),
+    "VTUG(2)": _x(
+        """A generic type gives exactly as many actual parameters as its class declares formal ones:
+        `PAIR [G, H]` needs two, `ARRAY [G]` one.""",
+        """
+        names: PAIR [STRING]              -- class PAIR [G, H]
+        """,
+        """
+        names: PAIR [STRING, STRING]
+        """,
+        "Give one actual type for each formal generic parameter of the class."),
+    "VTCG": _x(
+        """When a formal generic parameter is constrained (`G -> ANIMAL`), every actual parameter must
+        conform to the constraint: ANIMAL itself or one of its descendants. If the constraint names
+        creation procedures (`G -> ANIMAL create make end`), the actual must offer them as creation
+        procedures.""",
+        """
+        class CAGE [G -> ANIMAL] ...
+        rock_cage: CAGE [ROCK]            -- ROCK does not inherit from ANIMAL
+        """,
+        """
+        dog_cage: CAGE [DOG]              -- DOG inherits from ANIMAL
+        """,
+        "Use an actual type that conforms to the constraint, or loosen the constraint."),
+    "VTAT(1)": _x(
+        """In an anchored type `like x`, the anchor `x` must be a query of the class, an argument or a
+        local of the enclosing routine, or `Current`.""",
+        """
+        total: INTEGER
+        average: like totl
+        """,
+        """
+        total: INTEGER
+        average: like total
+        """,
+        "Anchor the type to an entity that exists (here the misspelt `totl` is `total`)."),
+    # --- inheritance -------------------------------------------------------------------------------
+    "VHPR(1)": _x(
+        """Inheritance may not go round in a circle: a class cannot be its own ancestor, directly
+        (`class A inherit A`) or through other classes (A inherits from B and B from A).""",
+        """
+        class NODE
+        inherit
+            NODE
+        """,
+        """
+        class NODE
+        feature
+            next: detachable NODE
+        """,
+        "A class that needs another object of its own kind refers to it through an attribute."),
+    "VHRC(1)": _x(
+        """A `rename` clause can only rename a feature that the parent really has, under the name it
+        has in that parent.""",
+        """
+        inherit
+            ANIMAL
+                rename fly as soar end    -- ANIMAL has no `fly`
+        """,
+        """
+        inherit
+            ANIMAL
+                rename speak as talk end
+        """,
+        "Rename only features of the parent, spelt as the parent spells them."),
+    "VDRS(1)": _x(
+        """A `redefine` clause may only list features that the parent has (under their name in the
+        parent, after any renaming). A brand-new feature needs no `redefine`: just declare it.""",
+        """
+        inherit
+            ANIMAL
+                redefine fly end          -- ANIMAL has no `fly`
+        """,
+        """
+        inherit
+            ANIMAL
+        feature
+            fly do print ("flap%N") end
+        """,
+        "Remove the name from `redefine` when the feature is new in this class."),
+    "VDRS(4)": _x(
+        """Every feature listed in a `redefine` clause must be given a new declaration in the class
+        body. Listing it without redeclaring it is a mistake.""",
+        """
+        inherit
+            ANIMAL
+                redefine speak end
+        feature
+            purr do print ("Purr%N") end  -- but no new `speak`
+        """,
+        """
+        inherit
+            ANIMAL
+                redefine speak end
+        feature
+            speak do print ("Meow%N") end
+        """,
+        "Write the new version of the feature, or remove its name from the `redefine` clause."),
+    "VDUS(1)": _x(
+        """An `undefine` clause may only name features that the parent has (under their name in the
+        parent, after any renaming).""",
+        """
+        inherit
+            ANIMAL
+                undefine fly end          -- ANIMAL has no `fly`
+        """,
+        """
+        inherit
+            ANIMAL
+                undefine speak end
+        """,
+        "Undefine only features the parent has, spelt as the parent spells them."),
+    "VDUS(2)": _x(
+        """`undefine` turns an inherited routine into a deferred one. It therefore applies only to
+        effective routines that descendants may change: not to attributes, constants or `frozen`
+        features.""",
+        """
+        inherit
+            MACHINE
+                undefine serial end       -- `serial` is an attribute
+        """,
+        """
+        inherit
+            MACHINE
+                undefine describe end     -- `describe` is a routine
+        """,
+        "Undefine only routines that are not frozen; keep attributes and constants as they are."),
+    "VMSS(1)": _x(
+        """A `select` clause may only name features that the parent has (under their final name after
+        renaming). It chooses which version of a repeatedly inherited feature dynamic binding uses.""",
+        """
+        inherit
+            ANIMAL
+                select fly end            -- ANIMAL has no `fly`
+        """,
+        """
+        inherit
+            DOG
+                rename speak as bark select bark end
+            CAT
+                rename speak as meow end
+        """,
+        "Select a feature the parent has, and only where a repeated ancestor gives two versions."),
+    "VMRC(2)": _x(
+        """When a class inherits a feature of a common ancestor along two paths and ends up with two
+        different versions of it, a call of the ancestor's feature on an object of the class would be
+        ambiguous. The class must `select` exactly one of the versions.""",
+        """
+        class CAT_DOG
+        inherit
+            DOG rename speak as bark end
+            CAT rename speak as meow end
+        """,
+        """
+        class CAT_DOG
+        inherit
+            DOG rename speak as bark select bark end
+            CAT rename speak as meow end
+        """,
+        "Name one version in a `select` clause: calls through ANIMAL then use `bark`."),
+    "VMFN": _x(
+        """In a class each final feature name denotes exactly one feature. Declaring a name twice,
+        declaring again a feature a parent already has without listing it in `redefine`, or
+        inheriting two different effective features under the same name all break this rule.""",
+        """
+        class DOG
+        inherit
+            ANIMAL
+        feature
+            speak do print ("Woof%N") end   -- ANIMAL already has `speak`
+        """,
+        """
+        class DOG
+        inherit
+            ANIMAL
+                redefine speak end
+        feature
+            speak do print ("Woof%N") end
+        """,
+        """List an inherited feature in `redefine` to give it a new version; rename one of two clashing
+        features, or undefine one of them to join them."""),
+    "VDRD(2)": _x(
+        """A redeclared feature keeps a signature that conforms to its parent's: the same number of
+        arguments, argument and result types that conform to the inherited ones, and a query stays a
+        query.""",
+        """
+        -- in ANIMAL:  legs: INTEGER
+        legs: BOOLEAN
+            do Result := False end
+        """,
+        """
+        legs: INTEGER
+            do Result := 0 end
+        """,
+        "Keep the inherited types (or descendants of them) when redefining a feature."),
+    "VCCH(1)": _x(
+        """A class that has a deferred feature, declared `deferred` in the class or inherited and not
+        effected, must itself be declared `deferred class`. Only classes with no deferred feature can
+        be effective.""",
+        """
+        class SHAPE
+        feature
+            area: REAL_64 deferred end
+        """,
+        """
+        deferred class SHAPE
+        feature
+            area: REAL_64 deferred end
+        """,
+        "Mark the class `deferred`, or give every deferred feature an implementation."),
+    "VDPR(1)": _x(
+        """`Precursor` calls the parent's version of the routine being redefined. It may only appear in
+        a routine that redefines an inherited effective routine.""",
+        """
+        class ROBOT            -- no parent has `speak`
+        feature
+            speak do Precursor; print ("Beep%N") end
+        """,
+        """
+        class ROBOT
+        feature
+            speak do print ("Beep%N") end
+        """,
+        "Use `Precursor` only in a redefinition, where there is a parent version to call."),
+    "VDPR(2)": _x(
+        """In `Precursor {P}`, P must be a parent of the class (named in its `inherit` clause) from
+        which the routine being redefined comes.""",
+        """
+        class DOG
+        inherit ANIMAL redefine speak end
+        feature
+            speak do Precursor {CAT} end     -- CAT is not a parent
+        """,
+        """
+        speak do Precursor {ANIMAL} end
+        """,
+        "Name the parent whose version you want, or write plain `Precursor`."),
+    # --- names ------------------------------------------------------------------------------------
+    "VRFA": _x(
+        """A formal argument may not have the name of a feature of the class (names are compared
+        without regard to case): inside the routine it would hide that feature.""",
+        """
+        count: INTEGER
+        set_count (count: INTEGER) do ... end
+        """,
+        """
+        count: INTEGER
+        set_count (a_count: INTEGER) do count := a_count end
+        """,
+        "Give arguments names of their own; the `a_` prefix is the usual Eiffel style."),
+    "VRLE(1)": _x(
+        """A local variable may not have the name of a feature of the class (compared without regard
+        to case): it would hide the feature.""",
+        """
+        count: INTEGER
+        show
+            local count: INTEGER do ... end
+        """,
+        """
+        show
+            local l_count: INTEGER do ... end
+        """,
+        "Rename the local; the `l_` prefix is the usual Eiffel style."),
+    "VRLE(2)": _x(
+        """A local variable may not have the name of an argument of the same routine.""",
+        """
+        show (n: INTEGER)
+            local n: INTEGER do ... end
+        """,
+        """
+        show (n: INTEGER)
+            local i: INTEGER do ... end
+        """,
+        "Use a different name for the local; the argument already holds the value passed in."),
+    "VREG": _x(
+        """Within one routine, each name among its arguments and locals is declared only once.""",
+        """
+        shift (dx: INTEGER; dx: INTEGER)
+        """,
+        """
+        shift (dx: INTEGER; dy: INTEGER)
+        """,
+        "Give the second entity its own name."),
+    "VEEN": _x(
+        """Every name must be known where it is used. Unqualified, it must be a feature of the class,
+        an argument, a local, `Result`, or an object-test, iteration or separate-block local in
+        scope; in a qualified call `x.f`, `f` must be a feature of the class of `x`'s type.""",
+        """
+        total := totl + 1        -- misspelt
+        print (p.z)              -- POINT has only x and y
+        """,
+        """
+        total := total + 1
+        print (p.y)
+        """,
+        "Check the spelling, and the class of the target's type, which decides the features you may call."),
+    "VEEN(2)": _x(
+        """`Result` exists only in functions (and attribute bodies) and their postconditions: a
+        procedure returns nothing and a class invariant belongs to no routine.""",
+        """
+        reset
+            do
+                count := 0
+                Result := count
+            end
+        """,
+        """
+        reset: INTEGER
+            do
+                count := 0
+                Result := count
+            end
+        """,
+        "Make the routine a function (give it a result type), or drop the use of `Result`."),
+    "VUEX(2)": _x(
+        """A qualified call `x.f` is allowed only if `f` is exported to the calling class. Features
+        under `feature {NONE}` can only be called unqualified, by the class and its descendants;
+        features under `feature {A, B}` only by A, B and their descendants.""",
+        """
+        -- in ACCOUNT:  feature {NONE} pin: INTEGER
+        print (acc.pin)
+        """,
+        """
+        -- in ACCOUNT:  feature {NONE} pin: INTEGER
+        --              feature is_valid_pin (n: INTEGER): BOOLEAN do Result := n = pin end
+        print (acc.is_valid_pin (1234))
+        """,
+        "Call a feature the class exports to you, or export the feature if clients really need it."),
+    "VUAR(1)": _x(
+        """A call passes exactly as many actual arguments as the routine declares formal arguments
+        (also for creation calls and agents' closed arguments).""",
+        """
+        -- move (dx, dy: INTEGER)
+        p.move (1, 2, 3)
+        """,
+        """
+        p.move (1, 2)
+        """,
+        "Pass one actual argument for each formal argument, in order."),
+    "VUAR(2)": _x(
+        """Each actual argument must conform (or convert) to the type of its formal argument. In
+        void-safe code a detachable actual cannot be passed to an attached formal, and with SCOOP a
+        separate actual cannot be passed to a non-separate formal: the object may belong to another
+        processor.""",
+        """
+        -- show (s: STRING);  name: detachable STRING
+        p.move ("one", 2)
+        show (name)
+        """,
+        """
+        p.move (1, 2)
+        if attached name as l_name then
+            show (l_name)
+        end
+        """,
+        """Pass a value of the formal's type; test a detachable value with an object test first (and for
+        a separate value, declare the formal `separate`)."""),
+    "VKCN(1)": _x(
+        """A query (attribute, function or constant) returns a value; written alone as an instruction
+        its value would be lost. Only procedures can be called as instructions.""",
+        """
+        p.x
+        """,
+        """
+        print (p.x)
+        """,
+        "Use the value of the query: assign it, pass it on, or test it."),
+    "VKCN(2)": _x(
+        """A procedure returns nothing, so it cannot be used where a value is needed: on the right of
+        `:=`, as an argument, or as an operand.""",
+        """
+        n := reset            -- `reset` is a procedure
+        """,
+        """
+        reset
+        n := count
+        """,
+        "Call the procedure as an instruction, then read the value from a query."),
+    "VWBE": _x(
+        """Conditions are BOOLEAN: the test of `if`/`elseif`, a loop's `until`, the assertions of
+        `require`, `ensure`, `invariant` and `check`, and the operands of `and`, `or`, `xor`,
+        `implies` and `not`. Eiffel does not treat numbers as truth values.""",
+        """
+        if count then
+            print ("some%N")
+        end
+        """,
+        """
+        if count > 0 then
+            print ("some%N")
+        end
+        """,
+        "Write the comparison you mean; a number is not a truth value."),
+    "VWOE": _x(
+        """An operator expression `a + b` calls the feature of `a`'s class that carries the alias
+        `"+"` (with one argument; a unary operator with none). If that class has no such feature,
+        the expression is invalid.""",
+        """
+        class POINT feature x, y: INTEGER end
+        print (p + q)
+        """,
+        """
+        class POINT
+        feature
+            x, y: INTEGER
+            plus alias "+" (other: POINT): POINT do ... end
+        """,
+        "Give the class a feature with that operator as its alias, or call a named feature."),
+    "VJAR": _x(
+        """In `target := source`, the type of the source must conform to the type of the target, or
+        convert to it through a `convert` clause. A detachable value cannot go into an attached
+        target, and with SCOOP a separate value cannot go into a non-separate target.""",
+        """
+        n: INTEGER;  name: STRING;  found_name: detachable STRING
+        n := "seven"
+        name := found_name
+        """,
+        """
+        n := 7
+        if attached found_name as l_name then
+            name := l_name
+        end
+        """,
+        "Assign a value of the target's type; test a detachable source with an object test first."),
+    "VJAW": _x(
+        """Only a variable can be the target of an assignment or of a creation: an attribute of the
+        current class, a local or `Result`. Formal arguments, functions, `Current`, and the locals
+        bound by object tests, `across` and separate blocks are read-only.""",
+        """
+        set_count (a_count: INTEGER)
+            do
+                a_count := 0
+            end
+        """,
+        """
+        set_count (a_count: INTEGER)
+            do
+                count := a_count
+            end
+        """,
+        "Assign to an attribute or a local; copy an argument into a local if you need to change it."),
+    "VBAC(1)": _x(
+        """`x.f := v` is a short form of a call to `f`'s assigner command (`f: T assign set_f`), so `v`
+        must conform (or convert) to the argument type of that command, as for any call.""",
+        """
+        -- value: INTEGER assign set_value
+        box.value := "ten"
+        """,
+        """
+        box.value := 10
+        """,
+        "Give the assigner a value of the type it expects."),
+    "VBAC(2)": _x(
+        """`x.f := v` and `x [i] := v` are allowed only if the query `f` (or the feature with alias
+        `"[]"`) declares an assigner command with `assign`.""",
+        """
+        -- size: INTEGER   (no assigner)
+        box.size := 3
+        """,
+        """
+        -- size: INTEGER assign set_size
+        box.size := 3
+        """,
+        "Declare an assigner (`assign set_size`) in the supplier, or call the setter procedure directly."),
+    "VUOT(1)": _x(
+        """The local introduced by `attached e as x` has a fresh name: not a feature of the class, an
+        argument, a local, nor another object-test local whose scope includes this test.""",
+        """
+        name: STRING
+        ...
+        if attached found_name as name then ... end
+        """,
+        """
+        if attached found_name as l_name then ... end
+        """,
+        "Give the object-test local a name of its own (`l_name`)."),
+    "VOIT(1)": _x(
+        """The expression after `across` must be of a type that conforms to ITERABLE [G]: arrays,
+        lists, hash tables, strings and integer intervals (`1 |..| n`) are; plain numbers and
+        ordinary classes are not.""",
+        """
+        across 10 as i loop print (i.item) end
+        """,
+        """
+        across 1 |..| 10 as i loop print (i.item) end
+        """,
+        "Iterate over a structure or an interval, not over a single value."),
+    "VOIT(2)": _x(
+        """The name bound by `across e as c` (or `is x`) is fresh: not a feature, an argument, a local,
+        nor another iteration or object-test local in scope.""",
+        """
+        total: INTEGER
+        across numbers as total loop ... end
+        """,
+        """
+        across numbers as n loop total := total + n.item end
+        """,
+        "Give the cursor a name of its own."),
+    "VAOL(1)": _x(
+        """`old e` stands for the value `e` had on entry to the routine; it may only appear in a
+        postcondition (`ensure`). In the body, keep an earlier value in a local instead.""",
+        """
+        increment
+            do
+                count := old count + 1
+            end
+        """,
+        """
+        increment
+            do
+                count := count + 1
+            ensure
+                one_more: count = old count + 1
+            end
+        """,
+        "Use `old` in the postcondition, where it checks the change the body made."),
+    "VXRT": _x(
+        """`retry` may only appear in a routine's `rescue` clause, where it starts the body again
+        after an exception.""",
+        """
+        do
+            attempts := attempts + 1
+            if attempts < 3 then retry end
+        end
+        """,
+        """
+        do
+            connect
+        rescue
+            attempts := attempts + 1
+            if attempts < 3 then retry end
+        end
+        """,
+        "Move the `retry` into the `rescue` clause."),
+    "VOMB(2)": _x(
+        """Each choice of an `inspect` is a constant of the inspected expression's type: a manifest
+        constant (`3`, `'a'`), a constant attribute (`zero: INTEGER = 0`) or an interval of such
+        constants. Variables, function calls and values of another type are not allowed.""",
+        """
+        inspect n
+        when "one" then ...
+        when limit then ...        -- `limit` is a variable
+        end
+        """,
+        """
+        inspect n
+        when 1 then ...
+        else
+            if n = limit then ... end
+        end
+        """,
+        "Use constants of the inspected type as choices, and test variables with `if`."),
+    "VOMB(3)": _x(
+        """Each value may appear in only one `when` of an `inspect`: two choices (values or intervals)
+        that overlap would make the instruction ambiguous.""",
+        """
+        inspect n
+        when 1 then ...
+        when 2, 1 then ...
+        end
+        """,
+        """
+        inspect n
+        when 1 then ...
+        when 2 then ...
+        end
+        """,
+        "List each value once; merge the branches if they should do the same thing."),
+    # --- creation ---------------------------------------------------------------------------------
+    "VGCC(1)": _x(
+        """A deferred class has features with no implementation, so no object of it can be created.
+        Create an object of an effective descendant instead.""",
+        """
+        s: SHAPE                   -- deferred class SHAPE
+        create s
+        """,
+        """
+        s: SHAPE
+        create {CIRCLE} s.make (2)  -- CIRCLE inherits SHAPE and is effective
+        """,
+        "Name an effective descendant as the creation type."),
+    "VGCC(3)": _x(
+        """In `create {T} x`, the explicit creation type T must conform to the type of the target
+        x.""",
+        """
+        pet: ANIMAL
+        create {ROCK} pet
+        """,
+        """
+        pet: ANIMAL
+        create {DOG} pet
+        """,
+        "Create an object of the target's type or of one of its descendants."),
+    "VGCC(5)": _x(
+        """When the class of the new object has a `create` clause that does not list `default_create`,
+        the creation must call one of the listed creation procedures.""",
+        """
+        -- class POINT create make ...
+        create p
+        """,
+        """
+        create p.make (0, 0)
+        """,
+        "Call one of the creation procedures the class lists."),
+    "VGCC(6)": _x(
+        """In `create x.p (...)`, `p` must be listed in the `create` clause of the class of `x`, and
+        that clause must make it available to the class doing the creation: `create {A} make` lets
+        only A and its descendants use `make`.""",
+        """
+        -- class POINT create make ... feature move (dx, dy: INTEGER)
+        create p.move (1, 2)
+        """,
+        """
+        create p.make (0, 0)
+        p.move (1, 2)
+        """,
+        "Create with a creation procedure, then call other procedures on the new object."),
+    # --- void safety ------------------------------------------------------------------------------
+    "VEVI": _x(
+        """Void safety: a variable of an attached type must hold an object before it is read. An
+        attached local or `Result` must be set on every path before its first use (and `Result`
+        before the function returns), and each creation procedure must set every attached
+        attribute.""",
+        """
+        name: STRING
+            do
+                if count > 0 then Result := "many" end
+            end
+        """,
+        """
+        name: STRING
+            do
+                if count > 0 then Result := "many" else Result := "none" end
+            end
+        """,
+        "Set the variable on every path, or declare it `detachable` and test it before use."),
+    "VUTA(2)": _x(
+        """The target of a call must be attached. A call on an expression of detachable type could
+        meet Void, so first test it with an object test, or declare the entity attached.""",
+        """
+        owner: detachable PERSON
+        print (owner.age)
+        """,
+        """
+        if attached owner as l_owner then
+            print (l_owner.age)
+        end
+        """,
+        "Call the feature on the object-test local, which is attached inside the `then` part."),
+    "VWMQ": _x(
+        """A typed manifest constant such as `{INTEGER_8} 100` must be a value its type can hold:
+        INTEGER_8 holds -128 .. 127, NATURAL_8 holds 0 .. 255, and so on.""",
+        """
+        small := {INTEGER_8} 200
+        """,
+        """
+        small := {INTEGER_16} 200
+        """,
+        "Choose a type large enough for the value, or a value within the type's range."),
+    "ONCE-KEY": _x(
+        """The key of a once routine says how often its body runs: plain `once` once per processor,
+        `once ("PROCESS")` once for the whole program, `once ("THREAD")` once per processor and
+        `once ("OBJECT")` once per object. Keys are case-insensitive; no other key is accepted.""",
+        """
+        shared_count: INTEGER
+            once ("PROGRAM")
+                Result := 42
+            end
+        """,
+        """
+        shared_count: INTEGER
+            once ("PROCESS")
+                Result := 42
+            end
+        """,
+        "Use one of the keys PROCESS, THREAD or OBJECT."),
+    # --- SCOOP ------------------------------------------------------------------------------------
+    "VUTA(3)": _x(
+        """A call on a target of separate type is allowed only when the target is controlled, that
+        is, the routine holds its processor: a formal argument of the enclosing routine, a local of
+        a `separate ... as x do ... end` block, an object-test or across local over a controlled
+        expression, or a query result on a controlled target within the same expression. Attributes,
+        ordinary locals and `Result` of separate type are not controlled.""",
+        """
+        buffer: separate BUFFER
+        ...
+        buffer.put (1)
+        """,
+        """
+        put_into (buffer, 1)
+        ...
+        put_into (b: separate BUFFER; v: INTEGER)
+            do
+                b.put (v)
+            end
+        """,
+        """Pass the separate object as an argument (or use `separate buffer as b do b.put (1) end`):
+        the call then reserves its processor for the routine."""),
+    "VUAR(3)": _x(
+        """In a call on a separate target, a non-separate reference passed as an argument would reach
+        another processor, which would take it for one of its own objects (a "traitor"). Such an
+        actual is allowed only if the formal argument's type is separate.""",
+        """
+        -- in WORKER:  take (items: LIST [INTEGER])
+        worker.take (my_list)          -- worker: separate WORKER, controlled
+        """,
+        """
+        -- in WORKER:  take (items: separate LIST [INTEGER])
+        worker.take (my_list)
+        """,
+        "Declare the formal argument `separate` in the supplier, so it treats the object as remote."),
+    "VUAR(4)": _x(
+        """In a call on a separate target, an expanded actual argument is copied to the other
+        processor. It must not contain, directly or through other expanded fields, attributes of
+        non-separate reference type: the copy would share those objects across processors.""",
+        """
+        expanded class LABELLED  feature text: STRING ... end
+        worker.store (label)           -- label: LABELLED
+        """,
+        """
+        expanded class LABELLED  feature text: separate STRING ... end
+        worker.store (label)
+        """,
+        "Make the reference fields of the expanded class separate, or pass plain values instead."),
+    "VUER": _x(
+        """A query called on a separate target returns its value to the caller's processor. If its
+        result type is expanded and contains non-separate reference attributes, those references
+        would point into the other processor's objects, so such a query cannot be called on a
+        separate target. (Reference results are fine: the caller sees them as separate.)""",
+        """
+        -- in SENSOR:  reading: LABELLED   (expanded, with a STRING field)
+        print (sensor.reading)         -- sensor: separate SENSOR
+        """,
+        """
+        -- in SENSOR:  value: REAL_64
+        print (sensor.value)
+        """,
+        "Across processors, query basic values or separate references, not expanded objects with references."),
+    "V1SE(1)": _x(
+        """The name introduced by `separate e as x` is fresh: not a feature, an argument, a local, an
+        object-test or iteration local in scope, nor another name of the same or an enclosing
+        separate block.""",
+        """
+        buffer: separate BUFFER
+        ...
+        separate buffer as buffer do buffer.put (1) end
+        """,
+        """
+        separate buffer as b do b.put (1) end
+        """,
+        "Give the separate-block local a name of its own."),
+    "V1SE(2)": _x(
+        """A separate block reserves the processors of the objects its expressions denote, so each
+        expression must be of a reference type: a value of expanded type (INTEGER, BOOLEAN, ...) has
+        no processor to reserve.""",
+        """
+        separate count as c do print (c) end      -- count: INTEGER
+        """,
+        """
+        print (count)
+        """,
+        "Use expanded values directly; reserve only separate objects."),
+    "V1SE(3)": _x(
+        """The locals of a separate block stand for the reserved objects for the whole block and are
+        read-only: they cannot be assigned to or used as a creation target.""",
+        """
+        separate buffer as b do
+            b := other_buffer
+        end
+        """,
+        """
+        separate other_buffer as b do
+            b.put (1)
+        end
+        """,
+        "Name the object you want in the block's header instead of reassigning the local."),
+    "VFFD(8)": _x(
+        """The result of a `once ("PROCESS")` function is shared by all processors, so its type must
+        be separate (or expanded): a non-separate reference would be used by several processors as
+        if each owned it.""",
+        """
+        log: LOGGER
+            once ("PROCESS")
+                create Result.make
+            end
+        """,
+        """
+        log: separate LOGGER
+            once ("PROCESS")
+                create Result.make
+            end
+        """,
+        "Declare the result `separate`; callers then use it through separate arguments or blocks."),
+    "PROCESSOR-TAG": _x(
+        """A creation may say where the new object lives with a tag in angle brackets. scoopc accepts
+        only `<NONE>`, which puts the object in a passive region whose calls run on the client's
+        thread under a lock; other processor tags are not supported.""",
+        """
+        create <p> worker.make
+        """,
+        """
+        create <NONE> worker.make      -- passive region
+        create worker.make             -- or: a new processor (worker: separate WORKER)
+        """,
+        "Use `<NONE>` for a passive region, or no tag at all for an object with its own processor."),
+}
+# VUAR(2) and VJAR also cover their SCOOP conditions (separate to non-separate); see their rule text.
+
+ALIASES: dict[str, str] = {
+    # Gobo's finer SCOOP conditions, mapped by meaning (DESIGN section 4). Gobo prints the V1SE ones
+    # as V1SE-G1 .. V1SE-G3; the spelling V1SE-1G .. V1SE-3G is accepted too.
+    "VUTA-4G": "VUTA(3)",   # call on an uncontrolled separate target
+    "VUAR-3G": "VUAR(3)",   # reference actual of a separate call needs a separate formal
+    "VUAR-4G": "VUAR(4)",   # expanded actual of a separate call holds non-separate references
+    "V1SE-G1": "V1SE(1)",   # two names of one separate block are the same
+    "V1SE-1G": "V1SE(1)",
+    "V1SE-G2": "V1SE(1)",   # a separate-block name clashes with another entity
+    "V1SE-2G": "V1SE(1)",
+    "V1SE-G3": "V1SE(2)",   # a separate-block expression is not of a separate (reference) type
+    "V1SE-3G": "V1SE(2)",
+}

@@ -1,0 +1,68 @@
+"""The semantic checker: passes over the universe of classes, in order, each a module:
+universe -> ancestors -> flatten -> signatures (+ VDRD) -> bodies (expressions, calls, agents,
+creation, instructions, contracts, onces; SCOOP rules in scoop.py; void safety via flow.py).
+
+A class that fails a pass is skipped by later passes, so one mistake gives one diagnostic.
+Output: Checked (the universe, the recorded tables, the diagnostics).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from .. import diagnostics
+from . import ancestors, body, flatten, signatures, universe as universe_module
+from .tables import Tables
+
+VOID_LEVELS = {"none": 0, "conformance": 1, "initialization": 2, "transitional": 3, "complete": 3, "all": 3}
+
+
+@dataclass
+class Checked:
+    universe: object
+    tables: Tables
+    diagnostics: list = field(default_factory=list)
+
+
+def prepare(trees, found: list, base=None):
+    """The universe of `trees` with ancestors, feature tables and signatures (no bodies checked);
+    with `base` (a prepared universe of library classes), only the new classes are prepared."""
+    universe = universe_module.build(trees, found, base)
+    fresh = [i for i in universe.classes.values() if base is None or base.classes.get(i.name) is not i]
+    order = ancestors.compute(universe, _reporter(universe, found, None), fresh)
+    for info in order:
+        flatten.flatten(universe, info, _reporter(universe, found, info))
+    for info in order:                   # a bad signature skips that feature's body, not the class
+        signatures.resolve_all(universe, info, _reporter(universe, found, None))
+    for info in order:
+        if not info.failed:
+            signatures.check_redeclarations(universe, info, _reporter(universe, found, info))
+    return universe, order
+
+
+def check(trees, void_safety=None, library_bodies: bool = True, base=None) -> Checked:
+    """`trees`: [(ClassDeclaration, from_library)]. library_bodies False skips the routine
+    bodies of library classes (already known clean, e.g. from the cache). `base`: the library's
+    prepared universe (its classes are then not in `trees`)."""
+    found: list = []
+    level = VOID_LEVELS.get((void_safety or "complete").lower(), 3)
+    if base is not None and any(base.get(tree.name.text) is not None for tree, _ in trees):
+        base = None                      # a user class replaces a library class: start afresh
+    universe, order = prepare(trees, found, base)
+    universe.void_safe = level >= 1
+    tables = Tables()
+    checked = order if base is not None else list(universe.classes.values())
+    for info in checked:
+        if info.failed or (info.from_library and not library_bodies):
+            continue
+        body.check_class(universe, info, tables, found, level)
+    unique = list({(d.code, d.span, d.message): d for d in found}.values())
+    unique.sort(key=diagnostics.sort_key)
+    return Checked(universe, tables, unique)
+
+
+def _reporter(universe, found: list, info):
+    def report(code: str, span, **arguments) -> None:
+        found.append(diagnostics.make(code, span, **arguments))
+        if info is not None:
+            info.failed = True
+    return report

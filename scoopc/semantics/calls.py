@@ -1,0 +1,258 @@
+"""Checker, calls: feature calls of every form (unqualified, qualified, bracket, static,
+Precursor, operators) with the rules VEEN, VUEX(2), VUAR(1), VUAR(2), VKCN(1), VKCN(2), VUTA(2),
+VDPR(1), VDPR(2), and the SCOOP rules through scoop.py. Records the feature of every call.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .. import syntax
+from . import scoop
+from .conformance import base_type
+from .features import member_signature
+from .types import NONE, Ty
+from .values import UNCONTROLLED, Value
+
+
+class CallChecks:
+    def unqualified_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+        name = node.name.key
+        entity = self.scopes.lookup(name)
+        if entity is not None:
+            self.tables.entities[node] = entity
+            if node.arguments:
+                value = self.entity_value(node, entity)
+                return None if value is None else self.agent_call(node, value, as_instruction)
+            if as_instruction:
+                self.report("VKCN(1)", node.span, name=node.name.text)
+            return self.entity_value(node, entity)
+        feature = self.info.features.get(name)
+        if feature is not None and node.arguments and not feature.arguments and feature.is_query:
+            value = self.call_feature(node, None, Value(self.current), feature, (), node.name.span)
+            return None if value is None else self.agent_call(node, value, as_instruction)
+        if feature is None:
+            self.report("VEEN", node.name.span, name=node.name.text, where=f"in class {self.info.name}")
+            self.evaluate(node.arguments)
+            return None
+        value = self.call_feature(node, None, Value(self.current), feature, node.arguments, node.name.span, as_instruction)
+        if value is not None and feature.kind == "attribute" and name in self.facts.attached:
+            value = Value(value.ty.with_marks(attached=True), value.handler)
+        return value
+
+    def agent_call(self, node, agent: Value, as_instruction: bool) -> Optional[Value]:
+        """`f (a, b)` where f is an agent: its "()" feature applied to the tuple [a, b]."""
+        base = base_type(self.universe, agent.ty, self.info)
+        info = self.universe.get(base.name)
+        feature = next(iter(info.aliases.get("()", ())), None) if info is not None else None
+        if feature is None:
+            self.report("VWOE", node.span, operator="()", type=str(agent.ty))
+            self.evaluate(node.arguments)
+            return None
+        if agent.ty.separate and not scoop.check_target(self, node, agent):
+            self.evaluate(node.arguments)
+            return None
+        self.tables.agent_calls.add(node)
+        self.tables.features[node] = feature
+        operands = member_signature(self.universe, base.with_marks(attached=True), feature).arguments
+        tuple_type = operands[0] if operands and operands[0] is not None else None
+        formals = tuple(g for g in tuple_type.generics) if tuple_type is not None else ()
+        self.actuals(node, node.arguments, formals, agent if agent.ty.separate else None)
+        if feature.is_query:
+            if as_instruction:
+                self.report("VKCN(1)", node.span, name=feature.text)
+            result = member_signature(self.universe, base, feature).result
+            return None if result is None else Value(result)
+        if not as_instruction:
+            self.report("VKCN(2)", node.span, name=node.name.text)
+            return None
+        return Value(NONE)
+
+    def entity_value(self, node, entity) -> Optional[Value]:
+        if entity.ty is None:
+            return None
+        self.use_entity(node, entity.name)
+        attached = entity.ty.attached or entity.name in self.facts.attached
+        return Value(entity.ty.with_marks(attached=attached), entity.handler)
+
+    def qualified_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+        target = self.expr(node.target)
+        if target is None:
+            self.evaluate(node.arguments)
+            return None
+        return self.call_on(node, node.target, target, node.name, node.arguments, as_instruction)
+
+    def call_on(self, node, target_node, target: Value, name, arguments, as_instruction=False) -> Optional[Value]:
+        ty = target.ty
+        if ty.is_none or (not ty.attached and self.void_level >= 3 and not scoop.is_expanded(self.universe, ty)):
+            self.report("VUTA(2)", target_node.span, target=scoop._text(target_node), type=str(ty))
+            if ty.is_none:
+                self.evaluate(arguments)
+                return None
+        base, feature = self._find_feature(ty, name)
+        if base.name == "TUPLE" and name is not None and name.key in base.labels and not arguments:
+            item = base.generics[base.labels.index(name.key)]
+            return scoop.adapt_result(self, node, item, target) if ty.separate else Value(item)
+        if feature is None:
+            self.report("VEEN", name.span, name=name.text, where=f"among the features of {base.name}")
+            self.evaluate(arguments)
+            return None
+        if ty.separate and not scoop.check_target(self, target_node, target):
+            self.evaluate(arguments)
+            return None                 # reported: the enclosing expression stays silent
+        return self.call_feature(node, target_node, Value(base, target.handler), feature, arguments, name.span, as_instruction)
+
+    def _find_feature(self, ty: Ty, name):
+        """The feature `name` of the class of `ty` (of one of the constraints for a formal)."""
+        from .conformance import constraint_types
+
+        bounds = constraint_types(self.universe, ty, self.info)
+        for bound in bounds:
+            info = self.universe.get(bound.name)
+            feature = info.features.get(name.key) if info is not None and name is not None else None
+            if feature is not None:
+                return bound.with_marks(attached=True), feature
+        return bounds[0].with_marks(attached=True), None
+
+    def call_feature(self, node, target_node, target: Value, feature, arguments, name_span,
+                     as_instruction: bool = False, known=None) -> Optional[Value]:
+        """Arguments, exports and result of a call of `feature` on `target` (target_node None:
+        the call is on Current, unqualified)."""
+        self.tables.features[node] = feature
+        signature = member_signature(self.universe, target.ty, feature)
+        separate = target.ty.separate and target_node is not None
+        if separate:
+            self.tables.separate_calls.add(node)
+        if target_node is not None and not self.available(feature):
+            self.report("VUEX(2)", name_span, name=feature.text, cls=target.ty.name, client=self.info.name)
+        values = self.actuals(node, arguments, signature.arguments, target if separate else None, known)
+        if separate:
+            scoop.lock_passing(self, node, values, signature.arguments)
+        if feature.is_query:
+            if as_instruction:
+                self.report("VKCN(1)", node.span, name=feature.text)
+            result = signature.result
+            if result is None:
+                return None
+            if separate:
+                return scoop.adapt_result(self, node, result, target)
+            return Value(result, UNCONTROLLED if result.separate else None)
+        if not as_instruction:
+            self.report("VKCN(2)", node.span, name=feature.text)
+            return None
+        return Value(NONE)
+
+    def actuals(self, node, arguments, formals, separate_target: Optional[Value], known=None) -> list:
+        if len(arguments) != len(formals):
+            self.report("VUAR(1)", node.span, expected=len(formals), given=len(arguments))
+            self.evaluate(arguments)
+            return []
+        values = []
+        for actual, formal in zip(arguments, formals):
+            value = known[actual] if known and actual in known else self.expr(actual, formal)
+            values.append(value)
+            if value is None or formal is None:
+                continue
+            if separate_target is not None:
+                if not scoop.check_actual(self, actual, value, formal, separate_target):
+                    continue
+                formal = formal.with_marks(separate=True)
+            self.expect(actual, value, formal, "VUAR(2)")
+        return values
+
+    def arguments_fit(self, feature, target_ty: Ty, arguments, mode: str = "convert") -> bool:
+        """Whether already-typed (node, Value) arguments meet the formals, without reporting.
+        mode "strict": by conformance alone; "manifest": conformance or a manifest constant typed
+        by the formal; "convert": also by a conversion."""
+        from .conformance import manifest_fits, why_not
+        from .values import manifest_kind
+
+        formals = member_signature(self.universe, target_ty, feature).arguments
+        if len(formals) != len(arguments):
+            return False
+        for (node, value), formal in zip(arguments, formals):
+            if value is None or formal is None:
+                return False
+            if mode == "convert":
+                fits = self.meets(node, value, formal) is None
+            else:
+                kind = manifest_kind(node) if mode == "manifest" else None
+                fits = why_not(self.universe, value.ty, formal, self.info) is None or (
+                    kind is not None and manifest_fits(kind[0], kind[1], formal))
+            if not fits:
+                return False
+        return True
+
+    def expect(self, node, value: Value, target: Ty, code: str) -> bool:
+        reason = self.meets(node, value, target)
+        if reason is None:
+            return True
+        if reason == "separate":
+            scoop.separate_mismatch(self, code, node, value.ty, target)
+        else:
+            detail = "it may be Void (detachable) and the target is attached" if reason == "detachable" else \
+                "it does not conform and no conversion applies"
+            self.report(code, node.span, source=str(value.ty), target=str(target), actual=str(value.ty),
+                        formal=str(target), reason=detail, hint=_hint(reason))
+        return False
+
+    def available(self, feature) -> bool:
+        if feature.exports is None:
+            return True
+        return any(name in self.info.ancestors for name in feature.exports)
+
+    def bracket_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+        target = self.expr(node.target)
+        if target is None:
+            self.evaluate(node.arguments)
+            return None
+        base = base_type(self.universe, target.ty, self.info)
+        info = self.universe.get(base.name)
+        feature = (info.aliases.get("[]") or [None])[0] if info is not None else None
+        if feature is None:
+            self.report("VWOE", node.span, operator="[]", type=str(target.ty))
+            self.evaluate(node.arguments)
+            return None
+        if target.ty.separate and not scoop.check_target(self, node.target, target):
+            self.evaluate(node.arguments)
+            return None
+        return self.call_feature(node, node.target, Value(base.with_marks(attached=True), target.handler), feature,
+                                 node.arguments, node.span, as_instruction)
+
+    def static_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+        ty = self.resolve_type(node.type)
+        if ty is None:
+            self.evaluate(node.arguments)
+            return None
+        info = self.universe.get(ty.name)
+        feature = info.features.get(node.name.key) if info is not None else None
+        if feature is None:
+            self.report("VEEN", node.name.span, name=node.name.text, where=f"among the features of {ty.name}")
+            self.evaluate(node.arguments)
+            return None
+        return self.call_feature(node, None, Value(ty), feature, node.arguments, node.name.span, as_instruction)
+
+    def precursor_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+        precursors = self.feature.precursors if self.feature is not None else ()
+        if node.parent is not None:
+            wanted = self.universe.canonical(node.parent.text)
+            if not any(ty.name == wanted for _, ty, _ in self.info.parents):
+                self.report("VDPR(2)", node.span, parent=node.parent.text, cls=self.info.name)
+                self.evaluate(node.arguments)
+                return None
+            precursors = tuple(p for p in precursors if p[0] == wanted)
+        effective = [p for p in precursors if not p[1].deferred]
+        if not effective:
+            self.report("VDPR(1)", node.span, name=self.feature.text if self.feature else "?")
+            self.evaluate(node.arguments)
+            return None
+        return self.call_feature(node, None, Value(self.current), effective[0][1], node.arguments, node.span, as_instruction)
+
+    def evaluate(self, nodes) -> None:
+        for n in nodes:
+            self.expr(n)
+
+
+def _hint(reason: str) -> str:
+    if reason == "detachable":
+        return "test it first: `if attached x as l_x then ... end`, or declare the target `detachable`"
+    return ""

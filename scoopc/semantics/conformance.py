@@ -1,0 +1,139 @@
+"""Checker, conformance and convertibility of types (ECMA-367 8.14, 8.15, with SCOOP's rule that
+`T` conforms to `separate T` and never the reverse).
+
+Input: the universe with ancestors computed. Output: yes/no answers and the reason for a no.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .types import NUMERICS, RANGES, STRINGS, Ty, substitute
+
+
+def ancestor(universe, ty: Ty, name: str) -> Optional[Ty]:
+    """`ty` seen as its ancestor class `name` (generics substituted), or None."""
+    info = universe.get(ty.name)
+    if info is None:
+        return None
+    found = info.ancestors.get(name)
+    return None if found is None else substitute(found, ty.generics)
+
+
+def base_type(universe, ty: Ty, context) -> Ty:
+    """For a formal generic, the (first) constraint in `context`'s class; else ty itself."""
+    if not ty.is_formal or context is None:
+        return ty
+    constraints = context.constraints[ty.formal] if ty.formal < len(context.constraints) else ()
+    bound = constraints[0] if constraints else Ty("ANY")
+    return bound.with_marks(attached=ty.attached, separate=ty.separate or bound.separate)
+
+
+def constraint_types(universe, ty: Ty, context) -> list:
+    """For a formal generic, each of its constraints (ANY when unconstrained); else [ty]."""
+    if not ty.is_formal or context is None:
+        return [ty]
+    constraints = context.constraints[ty.formal] if ty.formal < len(context.constraints) else ()
+    bounds = list(constraints) or [Ty("ANY")]
+    return [b.with_marks(attached=ty.attached, separate=ty.separate or b.separate) for b in bounds]
+
+
+def conforms(universe, source: Ty, target: Ty, context=None) -> bool:
+    return why_not(universe, source, target, context) is None
+
+
+def why_not(universe, source: Ty, target: Ty, context=None) -> Optional[str]:
+    """None when `source` conforms to `target`; else "separate", "detachable" or "type"."""
+    if source.is_none:
+        expanded = (info := universe.get(target.name)) is not None and info.is_expanded
+        return None if not expanded and (not target.attached or not universe.void_safe or target.is_formal) \
+            else ("type" if expanded else "detachable")
+    if source.separate and not target.separate:
+        return "separate" if _class_conforms(universe, source, target, context) else "type"
+    if not _class_conforms(universe, source, target, context):
+        return "type"
+    if universe.void_safe and target.attached and not source.attached and not _is_expanded(universe, source):
+        return "detachable"
+    return None
+
+
+def _is_expanded(universe, ty: Ty) -> bool:
+    info = universe.get(ty.name)
+    return info is not None and info.is_expanded and not ty.is_formal
+
+
+def _class_conforms(universe, source: Ty, target: Ty, context) -> bool:
+    if source.is_formal or target.is_formal:
+        if source.is_formal and target.is_formal and source.formal == target.formal:
+            return True
+        if target.is_formal:
+            return False
+        return _constraint_conforms(universe, source, target, context)
+    if target.name == "TUPLE" and source.name == "TUPLE":
+        return len(source.generics) >= len(target.generics) and all(
+            _generic_conforms(universe, s, t, context) for s, t in zip(source.generics, target.generics))
+    seen = ancestor(universe, source, target.name)
+    if seen is None:
+        return False
+    if not target.generics:
+        return True
+    if len(seen.generics) != len(target.generics):
+        return False
+    return all(_generic_conforms(universe, s, t, context) for s, t in zip(seen.generics, target.generics))
+
+
+def _generic_conforms(universe, source: Ty, target: Ty, context) -> bool:
+    if target.is_formal or source.is_formal:
+        return _class_conforms(universe, source, target, context)
+    if source.separate and not target.separate:
+        return False
+    return _class_conforms(universe, source, target, context)
+
+
+def _constraint_conforms(universe, source: Ty, target: Ty, context) -> bool:
+    if context is None:
+        return target.name == "ANY"
+    constraints = context.constraints[source.formal] if source.formal < len(context.constraints) else ()
+    if not constraints:
+        return target.name == "ANY" and not target.generics
+    return any(_class_conforms(universe, c, target, context) for c in constraints)
+
+
+def converts(universe, source: Ty, target: Ty) -> Optional[str]:
+    """The name of the feature that converts `source` to `target` (a `convert` clause of either
+    class), or None."""
+    if source.is_formal or target.is_formal or source.is_none:
+        return None
+    for owner, to_side in ((universe.get(source.name), True), (universe.get(target.name), False)):
+        if owner is None:
+            continue
+        for converter in owner.decl.converters:
+            if converter.creation_mode == to_side:
+                continue
+            for written in converter.types:
+                name = universe.canonical(getattr(getattr(written, "name", None), "key", "") or "")
+                other = target if to_side else source
+                if name == other.name:
+                    return converter.name.key
+    return None
+
+
+def manifest_fits(kind: str, value, target: Ty) -> bool:
+    """Whether a manifest constant of `kind` ("integer", "real", "string", "character") may take
+    the type `target` from its context, as EiffelStudio types manifest constants."""
+    name = target.name
+    if kind == "integer":
+        if name in RANGES:
+            low, high = RANGES[name]
+            return low <= value <= high
+        return name in ("REAL_32", "REAL_64")
+    if kind == "real":
+        return name in ("REAL_32", "REAL_64")
+    if kind == "string":
+        return name in STRINGS
+    if kind == "character":
+        return name in ("CHARACTER_8", "CHARACTER_32")
+    return False
+
+
+def is_numeric(ty: Ty) -> bool:
+    return ty.name in NUMERICS and not ty.is_formal

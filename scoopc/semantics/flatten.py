@@ -1,0 +1,196 @@
+"""Checker, flattening pass: the feature table of each class from its own declarations and its
+parents' tables, applying rename, export, undefine, redefine and select.
+
+Input: classes in parents-first order. Output: ClassInfo.features, .aliases, .creators.
+Rules: VMFN, VHRC(1), VDRS(1), VDRS(4), VDUS(1), VDUS(2), VMSS(1), VMRC(2), VCCH(1).
+"""
+from __future__ import annotations
+
+from dataclasses import replace
+
+from .. import syntax
+from .features import Feature
+
+
+def flatten(universe, info, report) -> None:
+    own = _own_features(universe, info, report)
+    versions: dict[str, list] = {}
+    listed: dict[str, list] = {}
+    for parent, ty, _ in info.parents:
+        parent_info = universe.get(ty.name)
+        if parent_info is None:
+            continue
+        inherited = _adapt(universe, parent, parent_info, report)
+        for name, feature in inherited.items():
+            versions.setdefault(name, []).append((parent_info.name, feature))
+        for ident in parent.redefines if parent else ():
+            listed.setdefault(ident.key, []).append(ident)
+    table = {}
+    for name, found in versions.items():
+        if name in own:
+            _redeclare(own[name], found, name in listed, report)
+        else:
+            for ident in listed.get(name, ()):
+                report("VDRS(4)", ident.span, name=ident.text)
+            chosen = _join(info, name, found, report)
+            if chosen is not None:
+                table[name] = chosen
+    table.update(own)
+    _check_selection(info, table, report)
+    info.features = table
+    info.aliases = _aliases(table)
+    info.creators = _creators(universe, info)
+    _check_effective(info, report)
+
+
+def _own_features(universe, info, report) -> dict:
+    own = {}
+    for clause in info.decl.feature_clauses:
+        exports = _clients(universe, clause.clients)
+        for decl in clause.features:
+            for fname in decl.names:
+                key = fname.name.key
+                if key in own:
+                    report("VMFN", fname.name.span, name=fname.name.text, where="twice in this class")
+                    continue
+                deferred = isinstance(decl, syntax.Routine) and isinstance(decl.body.body, syntax.DeferredBody)
+                own[key] = Feature(key, fname.name.text, decl, fname, info.name, exports, deferred,
+                                   seed=f"{info.name}.{key}")
+    return own
+
+
+def _clients(universe, names):
+    if names is None:
+        return None
+    return frozenset(universe.canonical(n.text) for n in names)
+
+
+def _adapt(universe, parent, parent_info, report) -> dict:
+    """The parent's features under their names in the heir, with the parent clause applied."""
+    table = parent_info.features
+    if parent is None:
+        return dict(table)
+    renames = {}
+    for rename in parent.renames:
+        if rename.old_name.key not in table:
+            report("VHRC(1)", rename.old_name.span, name=rename.old_name.text, parent=parent_info.name)
+        else:
+            renames[rename.old_name.key] = rename.new_name
+    inherited = {}
+    for name, feature in table.items():
+        new = renames.get(name)
+        feature = feature.renamed(new) if new is not None else feature
+        inherited[feature.name] = feature
+    _check_names(parent, parent_info, inherited, report)
+    for item in parent.exports:
+        clients = _clients(universe, item.clients)
+        names = inherited.keys() if item.features is None else [i.key for i in item.features if i.key in inherited]
+        for name in list(names):
+            inherited[name] = replace(inherited[name], exports=clients)
+    for ident in parent.undefines:
+        feature = inherited.get(ident.key)
+        if feature is not None and feature.is_routine and not feature.is_frozen:
+            inherited[ident.key] = replace(feature, deferred=True)
+    return inherited
+
+
+def _check_names(parent, parent_info, inherited, report) -> None:
+    for ident in parent.redefines:
+        if ident.key not in inherited:
+            report("VDRS(1)", ident.span, name=ident.text, parent=parent_info.name)
+    for ident in parent.undefines:
+        feature = inherited.get(ident.key)
+        if feature is None:
+            report("VDUS(1)", ident.span, name=ident.text, parent=parent_info.name)
+        elif not feature.is_routine or feature.is_frozen:
+            what = "frozen" if feature.is_frozen else f"an {feature.kind}"
+            report("VDUS(2)", ident.span, name=ident.text, what=what)
+    for ident in parent.selects:
+        if ident.key not in inherited:
+            report("VMSS(1)", ident.span, name=ident.text, parent=parent_info.name)
+
+
+def _redeclare(feature: Feature, found: list, listed: bool, report) -> None:
+    effective = [f for _, f in found if not f.deferred]
+    if effective and not listed:
+        report("VMFN", feature.fname.name.span, name=feature.text,
+               where=f"also inherited from {found[0][0]}; list it in a `redefine` clause to redeclare it")
+    feature.precursors = feature.precursors + tuple(found)
+
+
+def _join(info, name: str, found: list, report):
+    distinct = []
+    for parent, feature in found:
+        if not any(feature.decl is other.decl and feature.deferred == other.deferred for _, other in distinct):
+            distinct.append((parent, feature))
+    if len(distinct) == 1:
+        return distinct[0][1]
+    effective = [(p, f) for p, f in distinct if not f.deferred]
+    if not effective:
+        return distinct[0][1]
+    if len(effective) == 1:
+        return effective[0][1]
+    if len({f.seed for _, f in effective}) == 1 or all(f.decl is effective[0][1].decl for _, f in effective):
+        selected = _selected(info, name, effective)
+        if selected is not None:
+            return selected
+        report("VMRC(2)", info.decl.name.span, name=name,
+               versions=", ".join(f"from {p}" for p, _ in effective))
+        return effective[0][1]
+    report("VMFN", info.decl.name.span, name=name,
+           where=f"inherited from both {effective[0][0]} and {effective[1][0]}; rename or undefine one")
+    return effective[0][1]
+
+
+def _check_selection(info, table: dict, report) -> None:
+    """VMRC(2): a feature inherited repeatedly that reaches the class in two different versions
+    (under two names) needs one of them selected, for calls through the common ancestor."""
+    if len(info.parents) < 2:
+        return
+    by_seed: dict = {}
+    for feature in table.values():
+        for seed in feature.seeds():
+            by_seed.setdefault(seed, []).append(feature)
+    selected = {i.key for parent, _, _ in info.parents if parent is not None for i in parent.selects}
+    for versions in by_seed.values():
+        distinct = {id(f.decl): f for f in versions}
+        if len(distinct) > 1 and not any(f.name in selected for f in versions):
+            names = sorted(f.name for f in distinct.values())
+            report("VMRC(2)", info.decl.name.span, name=names[0], versions="as " + ", ".join(f"`{n}`" for n in names))
+            return
+
+
+def _selected(info, name: str, effective: list):
+    for parent, ty, _ in info.parents:
+        if parent is not None and any(i.key == name for i in parent.selects):
+            for owner, feature in effective:
+                if owner == ty.name:
+                    return feature
+    return None
+
+
+def _aliases(table: dict) -> dict:
+    found: dict = {}
+    for feature in table.values():
+        for alias in feature.aliases:
+            found.setdefault(alias.lower(), []).append(feature)
+    return found
+
+
+def _creators(universe, info):
+    clauses = info.decl.creation_clauses
+    if not clauses:
+        return None
+    creators = {}
+    for clause in clauses:
+        for ident in clause.procedures:
+            creators[ident.key] = _clients(universe, clause.clients)
+    return creators
+
+
+def _check_effective(info, report) -> None:
+    if info.is_deferred:
+        return
+    missing = sorted(n for n, f in info.features.items() if f.deferred)
+    if missing:
+        report("VCCH(1)", info.decl.name.span, name=info.name, features=", ".join(missing))

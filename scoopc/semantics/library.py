@@ -1,0 +1,87 @@
+"""Checker, the standard library: its syntax trees and its prepared universe (feature tables and
+signatures), parsed from stdlib/ or loaded from a cache keyed by the library's contents and the
+compiler's version (so edits invalidate it).
+
+Cache directory: $SCOOPC_CACHE_DIR, else $XDG_CACHE_HOME/scoopc, else ~/.cache/scoopc.
+"""
+from __future__ import annotations
+
+import gc
+import hashlib
+import os
+import pickle
+import sys
+from pathlib import Path
+from typing import Optional
+
+from .. import __version__
+from .universe import stdlib_files
+
+CACHE_FORMAT = 2
+
+
+def cache_dir() -> Path:
+    explicit = os.environ.get("SCOOPC_CACHE_DIR")
+    if explicit:
+        return Path(explicit)
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "scoopc"
+
+
+def _key(files: list[Path]) -> str:
+    digest = hashlib.sha256(f"{__version__}:{CACHE_FORMAT}".encode())
+    for path in files:
+        digest.update(str(path.name).encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:32]
+
+
+def load(parse_file, prepare=None, use_cache: bool = True):
+    """(units, prepared) for the stdlib: units are [(SourceFile, tree, diagnostics)] for every
+    class file; prepared is `prepare(units)` (the library's universe, ready for user classes to be
+    added), kept in the cache with the units. Without the cache, prepared is None."""
+    files = stdlib_files()
+    if not use_cache:
+        return [parse_file(path) for path in files], None
+    key = _key(files)
+    cached = _read(key)
+    if cached is not None:
+        return cached
+    units = [parse_file(path) for path in files]
+    prepared = prepare(units) if prepare is not None else None
+    _write(key, (units, prepared))
+    return units, prepared
+
+
+def _read(key: str) -> Optional[list]:
+    path = cache_dir() / f"stdlib-{key}.pickle"
+    enabled = gc.isenabled()
+    gc.disable()                # a load creates many objects and no garbage: collections only cost time
+    try:
+        with open(path, "rb") as handle:
+            return pickle.load(handle)
+    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+        return None
+    finally:
+        if enabled:
+            gc.enable()
+
+
+def _write(key: str, units) -> None:
+    directory = cache_dir()
+    try:
+        directory.mkdir(parents=True, exist_ok=True)
+        temporary = directory / f".stdlib-{key}.{os.getpid()}"
+        limit = sys.getrecursionlimit()
+        sys.setrecursionlimit(max(limit, 20000))
+        try:
+            with open(temporary, "wb") as handle:
+                pickle.dump(units, handle, protocol=pickle.HIGHEST_PROTOCOL)
+        finally:
+            sys.setrecursionlimit(limit)
+        os.replace(temporary, directory / f"stdlib-{key}.pickle")
+        for stale in directory.glob("stdlib-*.pickle"):
+            if stale.name != f"stdlib-{key}.pickle":
+                stale.unlink(missing_ok=True)
+    except OSError:
+        pass            # a read-only home: work without the cache

@@ -1,0 +1,191 @@
+"""Checker, SCOOP rules: every separateness rule in one module (EiffelStudio codes, Gobo's
+aliases in comments). The walker calls these at calls, assignments, creations and separate blocks.
+
+Controlled: a formal argument of the enclosing routine, a separate-block local, an object-test or
+across local over a controlled expression, or the result of a query on a controlled target within
+its expression (Value.handler names the controlling entity; "?" means not controlled).
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .. import syntax
+from .types import Ty
+from .values import UNCONTROLLED, Value
+
+
+def check_target(ctx, target_node, value: Value) -> bool:
+    """VUTA(3) (Gobo VUTA-4G): a call on a separate target needs the target controlled."""
+    if value.controlled:
+        return True
+    ctx.report("VUTA(3)", target_node.span, target=_text(target_node), type=str(value.ty))
+    return False
+
+
+def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> bool:
+    """The separate-argument rules at a call on a separate target (Gobo VUAR-3G/4G):
+    VUAR(4) expanded actual with non-separate references; VUAR(3) a non-separate reference
+    passed to a non-separate reference formal (it would be a traitor on the supplier's side);
+    VUAR(2) a separate actual on another processor passed to a non-separate formal."""
+    if is_expanded(ctx.universe, formal) or is_expanded(ctx.universe, actual.ty):
+        if has_non_separate_references(ctx.universe, actual.ty):
+            ctx.report("VUAR(4)", actual_node.span, type=str(actual.ty))
+            return False
+        return True
+    if formal.separate or actual.ty.is_none:
+        return True
+    if not actual.ty.separate:
+        ctx.report("VUAR(3)", actual_node.span, actual=_text(actual_node), type=str(formal))
+        return False
+    if actual.handler is not None and actual.handler != UNCONTROLLED and actual.handler == target.handler:
+        return True
+    ctx.report("VUAR(2)", actual_node.span, actual=str(actual.ty), formal=str(formal),
+               reason="it is separate and the formal is not", **SEPARATE_ACTUAL)
+    return False
+
+
+SEPARATE_ACTUAL = {"hint": "declare the formal argument `separate`, or pass a non-separate copy "
+                           "(for a STRING: `create s.make_from_separate (x)`)"}
+
+
+def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, **extra) -> None:
+    """VJAR / VUAR(2) when only separateness stops conformance: a separate value cannot become
+    non-separate (the object lives on another processor)."""
+    ctx.report(code, node.span, source=str(source), target=str(target), actual=str(source), formal=str(target),
+               reason="it is separate and the target is not", **SEPARATE_ACTUAL, **extra)
+
+
+def lock_passing(ctx, call_node, actuals: list[Value], formals) -> None:
+    """Record a separate call that hands the client's locks to the supplier: a reference actual
+    in a region the client holds (non-separate, or controlled separate)."""
+    for actual, formal in zip(actuals, formals):
+        if actual is None or formal is None or is_expanded(ctx.universe, actual.ty) or actual.ty.is_none:
+            continue
+        if not actual.ty.separate or actual.controlled:
+            ctx.tables.lock_passing.add(call_node)
+            return
+
+
+def adapt_result(ctx, call_node, result: Ty, target: Value) -> Value:
+    """Result type adaptation: a query on a separate target returns a value on the target's
+    processor (controlled within the expression when the target is); VUER for an expanded result
+    holding non-separate references."""
+    if is_expanded(ctx.universe, result):
+        if has_non_separate_references(ctx.universe, result):
+            ctx.report("VUER", call_node.span, type=str(result))
+        return Value(result)
+    if result.separate:
+        return Value(result, UNCONTROLLED)
+    return Value(result.with_marks(separate=True), target.handler)
+
+
+def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Optional[Value], clashes: bool) -> bool:
+    """V1SE(1) (Gobo V1SE-1G): the block's local must not clash with another name;
+    V1SE(2): the expression must be of a reference type."""
+    if clashes:
+        ctx.report("V1SE(1)", argument.name.span, name=argument.name.text)
+        return False
+    if value is not None and is_expanded(ctx.universe, value.ty):
+        ctx.report("V1SE(2)", argument.expression.span, type=str(value.ty))
+        return False
+    return True
+
+
+def assign_to_separate_local(ctx, target_node, name: str) -> None:
+    """V1SE(3): a separate block's local is read-only, like a formal argument."""
+    ctx.report("V1SE(3)", target_node.span, name=name)
+
+
+def check_process_once(ctx, feature, result: Optional[Ty]) -> None:
+    """VFFD(8): a `once ("PROCESS")` function is shared by all processors, so its result must be
+    separate (or expanded): a non-separate reference would be reachable from other processors."""
+    if result is None or not any(k.upper() == "PROCESS" for k in feature.once_keys):
+        return
+    if not result.separate and not is_expanded(ctx.universe, result):
+        ctx.report("VFFD(8)", feature.fname.name.span, name=feature.text, type=str(result))
+
+
+def check_processor_tag(ctx, processor: Optional[syntax.Identifier]) -> None:
+    """`create <NONE> x` makes a passive region; no other processor tag is supported."""
+    if processor is not None and processor.key != "none":
+        ctx.report("PROCESSOR-TAG", processor.span, tag=processor.text)
+
+
+def wait_arguments(ctx, clause: syntax.AssertionClause) -> tuple[str, ...]:
+    """The separate formal arguments used as call targets in a precondition clause: the runtime
+    makes the clause a wait condition when one of them was newly reserved by the call."""
+    names: set[str] = set()
+    separate_formals = {e.name for e in ctx.scopes.frames[0].values() if e.kind == "argument" and e.ty is not None and e.ty.separate}
+
+    def visit(node):
+        if isinstance(node, (syntax.QualifiedCall, syntax.BracketExpression)):
+            target = node.target
+            while isinstance(target, syntax.Parenthesized):
+                target = target.expression
+            if isinstance(target, syntax.UnqualifiedCall) and not target.arguments and target.name.key in separate_formals:
+                names.add(target.name.key)
+        for child in _children(node):
+            visit(child)
+
+    if clause.expression is not None:
+        visit(clause.expression)
+    return tuple(sorted(names))
+
+
+def _children(node):
+    for name in getattr(node, "__dataclass_fields__", ()):
+        value = getattr(node, name)
+        if isinstance(value, tuple):
+            yield from (v for v in value if hasattr(v, "__dataclass_fields__") and not isinstance(v, syntax.Identifier))
+        elif hasattr(value, "__dataclass_fields__") and not isinstance(value, (syntax.Identifier,)) \
+                and not type(value).__name__ == "Span":
+            yield value
+
+
+def is_expanded(universe, ty: Ty) -> bool:
+    info = universe.get(ty.name)
+    return info is not None and info.is_expanded and not ty.is_formal
+
+
+def has_non_separate_references(universe, ty: Ty, seen=None) -> bool:
+    """Whether an expanded type holds (directly or through expanded attributes) a non-separate
+    reference attribute."""
+    info = universe.get(ty.name)
+    if info is None or not info.is_expanded or info.from_library:
+        return False
+    seen = seen or set()
+    if info.name in seen:
+        return False
+    seen.add(info.name)
+    for feature in info.features.values():
+        if feature.kind != "attribute" or feature.signature is None or feature.signature.result is None:
+            continue
+        attr = feature.signature.result
+        if is_expanded(universe, attr):
+            if has_non_separate_references(universe, attr, seen):
+                return True
+        elif not attr.separate:
+            return True
+    return False
+
+
+def _text(node) -> str:
+    if isinstance(node, syntax.UnqualifiedCall):
+        return node.name.text
+    if isinstance(node, syntax.QualifiedCall):
+        return f"{_text(node.target)}.{node.name.text}"
+    if isinstance(node, syntax.Current):
+        return "Current"
+    if isinstance(node, syntax.Result):
+        return "Result"
+    if isinstance(node, syntax.Parenthesized):
+        return f"({_text(node.expression)})"
+    if isinstance(node, (syntax.ManifestInteger, syntax.ManifestReal)):
+        return node.text
+    if isinstance(node, syntax.ManifestString):
+        return '"' + node.value.replace("%", "%%").replace("\n", "%N")[:30] + '"'
+    if isinstance(node, syntax.CreationExpression):
+        return "create {...}"
+    if isinstance(node, syntax.BracketExpression):
+        return f"{_text(node.target)} [...]"
+    return "this expression"

@@ -1,0 +1,103 @@
+"""Checker, signatures pass: the argument and result types of every feature, resolved in the
+class that declares it; redeclarations checked against their precursors (VDRD(2)).
+
+Input: flattened classes. Output: Feature.signature for every feature.
+"""
+from __future__ import annotations
+
+from typing import Optional
+
+from .. import syntax
+from .conformance import conforms
+from .features import CURRENT, Feature, Signature, member_signature
+from .typeresolve import TypeResolver
+from .types import Ty
+
+
+def resolve_all(universe, info, report) -> None:
+    for feature in info.features.values():
+        if feature.written_in == info.name:
+            signature_of(universe, info, feature, report)
+
+
+def signature_of(universe, info, feature: Feature, report=None) -> Signature:
+    """The signature of a feature declared in `info` (computed once, reported once)."""
+    if feature.signature is not None:
+        return feature.signature
+    feature.signature = Signature((), None)          # guards against `like` cycles
+    silent = report or (lambda *a, **k: None)
+    arguments = {a.name.key: a for a in feature.arguments}
+
+    def anchor(name: str) -> Optional[Ty]:
+        if name in arguments:
+            return resolver.resolve(arguments[name].type)
+        other = info.features.get(name)
+        if other is None or not other.is_query:
+            return None
+        owner = universe.get(other.written_in) or info
+        return _in_context(universe, info, other, signature_of(universe, owner, other)).result
+
+    resolver = TypeResolver(universe, info, silent, anchor)
+    resolver.current = True
+    args = tuple(_resolve(resolver, a.type) for a in feature.arguments)
+    result = _resolve(resolver, feature.decl.type) if feature.is_query else None
+    feature.signature = Signature(args, result)
+    return feature.signature
+
+
+def _resolve(resolver, node) -> Optional[Ty]:
+    if isinstance(node, syntax.AnchoredType) and isinstance(node.anchor, syntax.Current):
+        return CURRENT.with_marks(attached=node.attachment != "detachable", separate=node.separate)
+    return resolver.resolve(node)
+
+
+def _in_context(universe, info, feature, signature) -> Signature:
+    own = info.own_type()
+    return member_signature(universe, own, feature) if feature.signature is not None else signature
+
+
+def feature_type_in(universe, base: Ty, name: str) -> Optional[Ty]:
+    info = universe.get(base.name)
+    feature = info.features.get(name) if info is not None else None
+    if feature is None or not feature.is_query:
+        return None
+    if feature.signature is None:
+        signature_of(universe, universe.get(feature.written_in) or info, feature)
+    return member_signature(universe, base, feature).result
+
+
+def check_redeclarations(universe, info, report) -> None:
+    """VDRD(2): a redeclaration keeps the number of arguments; its result and arguments conform
+    to those of the version it redeclares (EiffelStudio's covariant rule)."""
+    own = info.own_type()
+    for feature in info.features.values():
+        if feature.written_in != info.name or not feature.precursors:
+            continue
+        mine = member_signature(universe, own, feature)
+        for parent, precursor in feature.precursors:
+            theirs = member_signature(universe, own, precursor)
+            problem = _mismatch(universe, info, feature, precursor, mine, theirs)
+            if problem:
+                report("VDRD(2)", feature.fname.name.span, name=feature.text, parent=parent, reason=problem)
+                break
+
+
+def _mismatch(universe, info, feature, precursor, mine: Signature, theirs: Signature) -> str:
+    if feature.is_query != precursor.is_query:
+        return "a query and a procedure cannot redeclare each other"
+    if len(mine.arguments) != len(theirs.arguments):
+        return f"it has {len(mine.arguments)} arguments where the parent's version has {len(theirs.arguments)}"
+    if mine.result is not None and theirs.result is not None and not _loose(universe, mine.result, theirs.result, info):
+        return f"its type {mine.result} does not conform to {theirs.result}"
+    for index, (a, b) in enumerate(zip(mine.arguments, theirs.arguments), start=1):
+        if a is not None and b is not None and not _loose(universe, a, b, info):
+            return f"argument {index} has type {a}, which does not conform to {b}"
+    return ""
+
+
+def _loose(universe, source: Ty, target: Ty, info) -> bool:
+    """Conformance for redeclarations: attachment marks may be strengthened either way, as
+    EiffelStudio allows a detachable argument to become attached in a redeclaration."""
+    if source.name == CURRENT.name or target.name == CURRENT.name:
+        return True
+    return conforms(universe, source.with_marks(attached=True), target.with_marks(attached=True), info)

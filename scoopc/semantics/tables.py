@@ -1,0 +1,34 @@
+"""Checker, recorded results: the side tables codegen reads (keyed by syntax node identity).
+
+Nothing here decides validity; the passes fill these tables as they prove things.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Optional
+
+from .types import Ty
+
+
+@dataclass
+class Entity:
+    """What a name denotes inside a routine."""
+
+    name: str
+    kind: str                  # argument, local, result, object_test, across, separate, attribute, feature
+    ty: Optional[Ty]
+    span: object = None
+    handler: Optional[str] = None   # the controlling entity's name for controlled separate values
+
+
+@dataclass
+class Tables:
+    types: dict = field(default_factory=dict)          # expression -> Ty
+    features: dict = field(default_factory=dict)       # call / operator / creation -> Feature
+    entities: dict = field(default_factory=dict)       # UnqualifiedCall naming an entity -> Entity
+    separate_calls: set = field(default_factory=set)   # calls whose target is separate
+    lock_passing: set = field(default_factory=set)     # separate calls that hand the client's locks over
+    wait_args: dict = field(default_factory=dict)      # precondition AssertionClause -> separate formals used as targets
+    conversions: dict = field(default_factory=dict)    # expression -> (feature name, target Ty) of a conversion
+    controlled: set = field(default_factory=set)       # separate expressions that are controlled
+    agent_calls: set = field(default_factory=set)      # `f (a, b)` on an agent: call of its "()" feature with [a, b]

@@ -1,0 +1,148 @@
+"""Checker, types pass: syntax types to Ty in the context of a class.
+
+Input: a syntax type, the class it is written in, a way to resolve anchors. Output: Ty or None
+(None after reporting VTCT, VTUG, VTCG or VTAT; callers then stay silent about that entity).
+"""
+from __future__ import annotations
+
+from typing import Callable, Optional
+
+from .. import syntax
+from .types import Ty
+
+Report = Callable[..., None]
+
+
+class TypeResolver:
+    """Resolves types written in one class. `anchor(name)` gives the type of `like name`."""
+
+    def __init__(self, universe, info, report: Report, anchor: Optional[Callable[[str], Optional[Ty]]] = None,
+                 constraints: bool = True):
+        self.universe = universe
+        self.info = info
+        self.report = report
+        self.anchor = anchor
+        self.constraints = constraints
+
+    def resolve(self, node) -> Optional[Ty]:
+        if isinstance(node, syntax.ClassType):
+            return self._class_type(node)
+        if isinstance(node, syntax.TupleType):
+            return self._tuple_type(node)
+        return self._anchored(node)
+
+    def _marks(self, node, ty: Ty) -> Ty:
+        expanded = (info := self.universe.get(ty.name)) is not None and info.is_expanded and not ty.is_formal
+        attached = expanded or node.attachment != "detachable"
+        return ty.with_marks(attached=attached, separate=node.separate or (ty.separate and not expanded))
+
+    def _class_type(self, node: syntax.ClassType) -> Optional[Ty]:
+        key = node.name.key.upper()
+        if key in self.info.formals:
+            if node.generics:
+                self.report("VTUG(1)", node.span, type=node.name.text, expected=0, given=len(node.generics))
+                return None
+            return self._marks(node, Ty(key, formal=self.info.formals.index(key)))
+        target = self.universe.get(key)
+        if target is None:
+            self.report("VTCT", node.name.span, name=node.name.text)
+            return None
+        generics = tuple(self.resolve(g) for g in node.generics)
+        if any(g is None for g in generics):
+            return None
+        if target.name in AGENT_CLASSES:
+            generics = agent_generics(target.name, generics, self._tuple_formal)
+        if len(generics) != len(target.formals):
+            code = "VTUG(1)" if not target.formals else "VTUG(2)"
+            self.report(code, node.span, type=target.name, expected=len(target.formals), given=len(generics))
+            return None
+        ty = Ty(target.name, generics)
+        if self.constraints and not self._constraints_hold(target, ty, node):
+            return None
+        return self._marks(node, ty)
+
+    def _tuple_formal(self, ty: Ty) -> bool:
+        constraints = self.info.constraints[ty.formal] if ty.formal < len(self.info.constraints) else ()
+        return any(c.name == "TUPLE" for c in constraints)
+
+    def _constraints_hold(self, target, ty: Ty, node) -> bool:
+        from .conformance import conforms  # the conformance pass needs ancestors, built after this pass
+
+        for index, (actual, actual_node) in enumerate(zip(ty.generics, node.generics)):
+            for constraint in target.constraints[index] if index < len(target.constraints) else ():
+                bound = _instantiate(constraint, ty.generics)
+                if not conforms(self.universe, actual.with_marks(attached=True, separate=False),
+                                bound.with_marks(attached=True, separate=False), self.info):
+                    self.report("VTCG", actual_node.span, actual=str(actual), constraint=str(bound),
+                                formal=target.formals[index])
+                    return False
+        return True
+
+    def _tuple_type(self, node: syntax.TupleType) -> Optional[Ty]:
+        generics = tuple(self.resolve(g) for g in node.generics)
+        if any(g is None for g in generics):
+            return None
+        labels = tuple(label.key for label in node.labels)
+        return self._marks(node, Ty("TUPLE", generics, labels=labels))
+
+    def _anchored(self, node: syntax.AnchoredType) -> Optional[Ty]:
+        anchor = node.anchor
+        found: Optional[Ty] = None
+        if isinstance(anchor, syntax.Current):
+            from .features import CURRENT
+
+            found = CURRENT if getattr(self, "current", False) else self.info.own_type()
+        elif isinstance(anchor, syntax.UnqualifiedCall) and not anchor.arguments and self.anchor is not None:
+            found = self.anchor(anchor.name.key)
+        elif isinstance(anchor, syntax.QualifiedCall) and self.anchor is not None:
+            found = self._qualified_anchor(anchor)
+        if found is None:
+            self.report("VTAT(1)", node.span, anchor=_anchor_text(anchor))
+            return None
+        attached = found.attached if node.attachment is None else node.attachment != "detachable"
+        return found.with_marks(attached=attached, separate=found.separate or node.separate)
+
+    def _qualified_anchor(self, anchor: syntax.QualifiedCall) -> Optional[Ty]:
+        from .signatures import feature_type_in
+
+        if isinstance(anchor.target, syntax.UnqualifiedCall):
+            base = self.anchor(anchor.target.name.key) if self.anchor else None
+        elif isinstance(anchor.target, syntax.QualifiedCall):
+            base = self._qualified_anchor(anchor.target)
+        else:
+            base = None
+        return None if base is None else feature_type_in(self.universe, base, anchor.name.key)
+
+
+AGENT_CLASSES = ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
+
+
+def agent_generics(name: str, generics: tuple, tuple_formal=lambda ty: False) -> tuple:
+    """The short and the pre-17.05 spellings of agent types, as EiffelStudio accepts them:
+    `PROCEDURE` (no operands), `PROCEDURE [A, B]` (operand types), `PROCEDURE [ANY, TUPLE [A]]`
+    (base type first), `FUNCTION [A, R]`; all mean the TUPLE form."""
+    results = 1 if name == "FUNCTION" else 0
+    if len(generics) == results + 2 and generics[1].name == "TUPLE" and generics[0].name != "TUPLE":
+        generics = generics[1:]                       # old style: the base type first
+    operands, rest = generics[:len(generics) - results], generics[len(generics) - results:]
+    if len(operands) == 1 and (operands[0].name == "TUPLE" or (operands[0].is_formal and tuple_formal(operands[0]))):
+        return generics
+    if name == "FUNCTION" and not generics:
+        return generics
+    return (Ty("TUPLE", tuple(operands)),) + tuple(rest)
+
+
+def _instantiate(constraint: Ty, actuals: tuple[Ty, ...]) -> Ty:
+    from .types import substitute
+
+    return substitute(constraint, actuals)
+
+
+def _anchor_text(anchor) -> str:
+    if isinstance(anchor, syntax.Current):
+        return "Current"
+    if isinstance(anchor, syntax.UnqualifiedCall):
+        return anchor.name.text
+    if isinstance(anchor, syntax.QualifiedCall):
+        return f"{_anchor_text(anchor.target)}.{anchor.name.text}"
+    return "?"

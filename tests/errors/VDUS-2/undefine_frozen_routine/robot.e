@@ -1,0 +1,10 @@
+deferred class
+	ROBOT
+
+inherit
+	MACHINE
+		undefine
+			brand -- E: VDUS(2)
+		end
+
+end

@@ -1,0 +1,23 @@
+class
+	BOOK
+
+create
+	make -- E: VEVI
+
+feature {NONE} -- Initialization
+
+	make (a_pages: INTEGER)
+			-- Create a book of `a_pages' pages.
+		do
+			pages := a_pages
+		end
+
+feature -- Access
+
+	title: STRING
+			-- Title (never set).
+
+	pages: INTEGER
+			-- Number of pages.
+
+end

@@ -1,0 +1,28 @@
+class
+	APPLICATION
+
+create
+	make
+
+feature {NONE} -- Initialization
+
+	make
+			-- Run the example.
+		do
+			print (name)
+		end
+
+feature -- Access
+
+	count: INTEGER
+			-- Number of items.
+
+	name: STRING -- E: VEVI
+			-- A word for `count'.
+		do
+			if count > 0 then
+				Result := "many"
+			end
+		end
+
+end

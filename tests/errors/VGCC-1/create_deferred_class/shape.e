@@ -1,0 +1,11 @@
+deferred class
+	SHAPE
+
+feature -- Measurement
+
+	area: INTEGER
+			-- Surface covered.
+		deferred
+		end
+
+end

@@ -1,0 +1,12 @@
+class
+	FISH
+
+feature -- Basic operations
+
+	move
+			-- Swim.
+		do
+			print ("swimming%N")
+		end
+
+end

@@ -1,0 +1,9 @@
+class
+	FLYING_FISH -- E: VMFN
+
+inherit
+	BIRD
+
+	FISH
+
+end

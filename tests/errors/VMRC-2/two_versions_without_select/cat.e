@@ -1,0 +1,18 @@
+class
+	CAT
+
+inherit
+	ANIMAL
+		redefine
+			speak
+		end
+
+feature -- Basic operations
+
+	speak
+			-- Meow.
+		do
+			print ("Meow%N")
+		end
+
+end

@@ -1,0 +1,9 @@
+class
+	ROCK
+
+feature -- Access
+
+	weight: INTEGER
+			-- Weight in grams.
+
+end

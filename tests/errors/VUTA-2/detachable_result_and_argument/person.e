@@ -1,0 +1,9 @@
+class
+	PERSON
+
+feature -- Access
+
+	age: INTEGER
+			-- Age in years.
+
+end

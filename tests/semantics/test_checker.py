@@ -1,0 +1,218 @@
+"""The checker's recorded tables and its finer rules, on small programs written here."""
+import textwrap
+from pathlib import Path
+
+import pytest
+
+from scoopc import diagnostics, pipeline, syntax
+from scoopc.project import collect
+
+
+def check(tmp_path: Path, classes: dict, ecf: str = ""):
+    for name, text in classes.items():
+        (tmp_path / f"{name.lower()}.e").write_text(textwrap.dedent(text), encoding="utf-8")
+    if ecf:
+        (tmp_path / "app.ecf").write_text(ecf, encoding="utf-8")
+        return pipeline.check_project(collect([str(tmp_path / "app.ecf")]))
+    return pipeline.check_project(collect([str(tmp_path)]))
+
+
+def codes(checked) -> list:
+    return [(d.code, d.span.line) for d in checked.diagnostics if d.is_error]
+
+
+def nodes(checked, kind):
+    found = []
+    for unit in checked.units:
+        stack = [unit.tree]
+        while stack:
+            node = stack.pop()
+            if isinstance(node, kind):
+                found.append(node)
+            for name in getattr(node, "__dataclass_fields__", ()):
+                value = getattr(node, name)
+                values = value if isinstance(value, tuple) else (value,)
+                stack.extend(v for v in values if hasattr(v, "__dataclass_fields__"))
+    return found
+
+
+BUFFER = """\
+    class BUFFER
+    create
+        make
+    feature
+        make do create items.make (4) end
+        items: ARRAYED_LIST [INTEGER]
+        count: INTEGER do Result := items.count end
+        is_empty: BOOLEAN do Result := items.is_empty end
+        put (x: INTEGER) do items.extend (x) end
+        label: STRING do Result := "buffer" end
+    end
+"""
+
+
+def test_wait_conditions_record_the_separate_arguments_used_as_targets(tmp_path):
+    checked = check(tmp_path, {"BUFFER": BUFFER, "APP": """\
+        class APP
+        create
+            make
+        feature
+            make do end
+            take (a: separate BUFFER; b: separate BUFFER; n: INTEGER)
+                require
+                    not a.is_empty
+                    n > 0
+                    a.count + b.count > n
+                do
+                    a.put (n)
+                end
+        end
+    """})
+    assert codes(checked) == []
+    waits = checked.semantics.tables.wait_args
+    clauses = nodes(checked, syntax.AssertionClause)
+    by_line = {c.span.line: waits.get(c) for c in clauses}
+    assert by_line == {8: ("a",), 9: None, 10: ("a", "b")}
+
+
+def test_separate_calls_lock_passing_and_adapted_results_are_recorded(tmp_path):
+    checked = check(tmp_path, {"BUFFER": BUFFER, "APP": """\
+        class APP
+        create
+            make
+        feature
+            make do end
+            use (a: separate BUFFER)
+                local
+                    n: INTEGER
+                do
+                    a.put (1)
+                    n := a.label.count
+                    register (a)
+                end
+            register (b: separate BUFFER) do end
+        end
+    """})
+    assert codes(checked) == []
+    tables = checked.semantics.tables
+    calls = {c.name.text: c for c in nodes(checked, syntax.QualifiedCall) if c.span.file.endswith("app.e")}
+    assert calls["put"] in tables.separate_calls and calls["label"] in tables.separate_calls
+    assert calls["count"] in tables.separate_calls        # on the adapted (separate) result
+    assert str(tables.types[calls["label"]]) == "separate STRING_8"
+    assert calls["label"] in tables.controlled
+    assert tables.features[calls["put"]].written_in == "BUFFER"
+
+
+def test_a_separate_query_result_cannot_become_non_separate(tmp_path):
+    checked = check(tmp_path, {"BUFFER": BUFFER, "APP": """\
+        class APP
+        create
+            make
+        feature
+            make do end
+            use (a: separate BUFFER)
+                local
+                    s: STRING
+                    t: separate STRING
+                do
+                    s := a.label
+                    t := a.label
+                    print (t.count)
+                end
+        end
+    """})
+    assert codes(checked) == [("VJAR", 11), ("VUTA(3)", 13)]
+    hint = next(d for d in checked.diagnostics if d.code == "VJAR").hint
+    assert "make_from_separate" in hint
+
+
+def test_conversions_and_manifest_constants_take_their_type_from_the_context(tmp_path):
+    checked = check(tmp_path, {"APP": """\
+        class APP
+        create
+            make
+        feature
+            make
+                local
+                    r: REAL_64
+                    big: INTEGER_64
+                    small: INTEGER_8
+                    i: INTEGER
+                do
+                    i := 3
+                    r := i
+                    r := i + 0.5
+                    big := 5_000_000_000
+                    big := i
+                    small := 300
+                end
+        end
+    """})
+    assert codes(checked) == [("VJAR", 17)]
+    conversions = checked.semantics.tables.conversions
+    assert sorted(str(target) for _, target in conversions.values()) == ["INTEGER_64", "REAL_64", "REAL_64"]
+
+
+def test_void_safety_follows_the_ecf_setting(tmp_path):
+    program = {"APP": """\
+        class APP
+        create
+            make
+        feature
+            make
+                local
+                    s: detachable STRING
+                do
+                    print (s.count)
+                end
+        end
+    """}
+    ecf = """<?xml version="1.0"?>
+<system xmlns="http://www.eiffel.com/developers/xml/configuration-1-22-0" name="app">
+  <target name="app">
+    <root class="APP" feature="make"/>
+    <option void_safety="{level}"/>
+    <cluster name="app" location="."/>
+  </target>
+</system>"""
+    assert codes(check(tmp_path, program, ecf.format(level="all"))) == [("VUTA(2)", 9)]
+    assert codes(check(tmp_path, program, ecf.format(level="none"))) == []
+
+
+def test_object_tests_and_void_comparisons_make_a_target_attached(tmp_path):
+    checked = check(tmp_path, {"APP": """\
+        class APP
+        create
+            make
+        feature
+            make
+                local
+                    s: detachable STRING
+                    n: INTEGER
+                do
+                    if attached s as l_s then n := l_s.count end
+                    if s /= Void then n := s.count end
+                    if s = Void or else s.is_empty then n := 0 end
+                    n := s.count
+                end
+        end
+    """})
+    assert codes(checked) == [("VUTA(2)", 13)]
+
+
+def test_one_mistake_gives_one_diagnostic_and_a_failing_class_stops_there(tmp_path):
+    checked = check(tmp_path, {"APP": """\
+        class APP
+        create
+            make
+        feature
+            make
+                local
+                    x: UNKNOWN_CLASS
+                do
+                    x.go
+                    x.stop
+                end
+        end
+    """})
+    assert [d.code for d in checked.diagnostics] == ["VTCT"]

@@ -1,0 +1,32 @@
+"""Every class of the standard library checks cleanly, bodies included (no cache)."""
+from pathlib import Path
+
+from scoopc import diagnostics, pipeline
+from scoopc.project import Project
+from scoopc.semantics.universe import stdlib_files
+
+
+def test_every_stdlib_class_checks_without_diagnostics():
+    checked = pipeline.check_project(Project(), use_cache=False, library_bodies=True)
+    assert not checked.diagnostics, "\n".join(diagnostics.short(d) for d in checked.diagnostics)
+
+
+def test_stdlib_holds_the_kernel_classes_programs_name():
+    names = {p.stem.upper() for p in stdlib_files()}
+    wanted = {"ANY", "INTEGER_32", "REAL_64", "BOOLEAN", "CHARACTER_8", "STRING_8", "STRING_32", "ARRAY",
+              "SPECIAL", "TUPLE", "CELL", "ARRAYED_LIST", "LINKED_LIST", "ARRAYED_QUEUE", "HASH_TABLE",
+              "PROCEDURE", "FUNCTION", "PREDICATE", "EXECUTION_ENVIRONMENT", "ARGUMENTS", "RANDOM",
+              "DOUBLE_MATH", "STD_FILES", "IMMUTABLE_STRING_8", "TYPE", "EXCEPTIONS", "PLAIN_TEXT_FILE"}
+    assert wanted <= names, sorted(wanted - names)
+
+
+def test_cached_check_reports_what_a_cold_check_reports(tmp_path, monkeypatch):
+    monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path))
+    sample = Path(__file__).resolve().parents[2] / "samples" / "producer_consumer"
+    from scoopc.project import collect
+
+    cold = pipeline.check_project(collect([str(sample)]), use_cache=False, library_bodies=False)
+    pipeline.check_project(collect([str(sample)]), use_cache=True)
+    warm = pipeline.check_project(collect([str(sample)]), use_cache=True)
+    assert [diagnostics.short(d) for d in warm.diagnostics] == [diagnostics.short(d) for d in cold.diagnostics]
+    assert any(tmp_path.iterdir()), "the cache was not written"

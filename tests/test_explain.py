@@ -1,0 +1,93 @@
+"""`scoopc check --explain CODE`: every code has its rule, a wrong example and a fix; Gobo's SCOOP
+codes are aliases; the explanation table keeps up with the diagnostics and the error cases."""
+import pytest
+
+from harness import TESTS
+from scoopc import cli, messages
+from scoopc.explanations import ALIASES, EXPLANATIONS
+
+PLAN_SCOOP_CODES = ["VUTA(3)", "VUAR(2)", "VJAR", "VUAR(3)", "VUAR(4)", "VUER", "V1SE(1)", "V1SE(2)",
+                    "V1SE(3)", "VFFD(8)", "PROCESSOR-TAG"]
+
+
+def run(capsys, *argv):
+    code = cli.main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def folder_codes():
+    """The codes of tests/errors/<CODE>/ folders that hold at least one case."""
+    folders = {case.parent.name for case in (TESTS / "errors").glob("*/*") if case.is_dir()}
+    return sorted(cli._canonical(name) for name in folders)
+
+
+@pytest.mark.parametrize("code", sorted(EXPLANATIONS))
+def test_every_code_is_explained(capsys, code):
+    status, out, err = run(capsys, "check", "--explain", code)
+    assert status == cli.EXIT_OK and err == ""
+    assert out.startswith(f"{code}: ")
+    assert "\nWrong:\n" in out and "\nFix:\n" in out
+
+
+@pytest.mark.parametrize("code", sorted(EXPLANATIONS))
+def test_every_explanation_is_complete(code):
+    entry = EXPLANATIONS[code]
+    example, _, sentence = entry.fix.rpartition("\n\n")
+    assert entry.rule.strip() and entry.wrong.strip() and example.strip() and sentence.strip()
+    assert entry.wrong != example, f"{code}: the fix must differ from the wrong example"
+
+
+@pytest.mark.parametrize("code", sorted(messages.MESSAGES))
+def test_every_registered_message_has_an_explanation(code):
+    assert code in EXPLANATIONS
+
+
+@pytest.mark.parametrize("code", PLAN_SCOOP_CODES)
+def test_every_scoop_code_has_an_explanation(code):
+    assert code in EXPLANATIONS
+
+
+@pytest.mark.parametrize("code", folder_codes())
+def test_every_code_with_error_cases_has_an_explanation(code):
+    assert code in EXPLANATIONS, f"tests/errors has cases for {code}; add it to scoopc.explanations"
+
+
+def test_the_message_template_is_shown_when_registered(capsys):
+    status, out, _ = run(capsys, "check", "--explain", "SYNTAX-END")
+    assert status == 0 and f"Message: {messages.MESSAGES['SYNTAX-END'].text}" in out
+    assert f"Hint: {messages.MESSAGES['SYNTAX-END'].hint}" in out
+
+
+def test_a_code_without_a_message_is_still_explained(capsys, monkeypatch):
+    monkeypatch.delitem(messages.MESSAGES, "VEVI", raising=False)
+    status, out, _ = run(capsys, "check", "--explain", "VEVI")
+    assert status == 0 and out.startswith("VEVI: ") and "\nFix:\n" in out and "Message:" not in out
+
+
+@pytest.mark.parametrize("spelled", ["vuar-2", "VUAR(2)", "Vuar-2", " vuar(2) "])
+def test_dashes_parentheses_and_case_are_accepted(capsys, spelled):
+    status, out, _ = run(capsys, "check", "--explain", spelled)
+    assert status == 0 and out.startswith("VUAR(2): ")
+
+
+@pytest.mark.parametrize("alias", sorted(ALIASES))
+def test_gobo_aliases_resolve_to_our_code(capsys, alias):
+    ours = ALIASES[alias]
+    assert ours in EXPLANATIONS
+    for spelled in (alias, alias.lower(), alias.replace("-", "(", 1) + ")"):
+        status, out, _ = run(capsys, "check", "--explain", spelled)
+        assert status == 0 and out.startswith(f"{ours} (Gobo: {alias}): "), spelled
+        assert "\nWrong:\n" in out and "\nFix:\n" in out
+
+
+def test_the_gobo_scoop_codes_are_aliases():
+    assert ALIASES["VUTA-4G"] == "VUTA(3)"
+    assert ALIASES["VUAR-3G"] == "VUAR(3)" and ALIASES["VUAR-4G"] == "VUAR(4)"
+    assert {ALIASES[f"V1SE-G{n}"] for n in (1, 2, 3)} <= {"V1SE(1)", "V1SE(2)"}
+
+
+@pytest.mark.parametrize("unknown", ["NO-SUCH-CODE", "VUTA(99)", "VXYZ", "VUTA-9G"])
+def test_an_unknown_code_is_a_usage_error(capsys, unknown):
+    status, out, err = run(capsys, "check", "--explain", unknown)
+    assert status == cli.EXIT_USAGE and out == "" and "unknown diagnostic code" in err
