@@ -31,6 +31,8 @@ def prepare(trees, found: list, base=None):
     order = ancestors.compute(universe, _reporter(universe, found, None), fresh)
     for info in order:
         flatten.flatten(universe, info, _reporter(universe, found, info))
+        if any((parent := universe.get(ty.name)) is not None and parent.failed for _, ty, _ in info.parents):
+            info.failed = True           # an heir of a broken class would only repeat its errors
     for info in order:                   # a bad signature skips that feature's body, not the class
         signatures.resolve_all(universe, info, _reporter(universe, found, None))
     for info in order:

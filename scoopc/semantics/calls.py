@@ -142,6 +142,10 @@ class CallChecks:
         return Value(NONE)
 
     def actuals(self, node, arguments, formals, separate_target: Optional[Value], known=None) -> list:
+        if not arguments and len(formals) == 1 and _no_operands(formals[0]) and \
+                self.tables.features.get(node) is not None and self.tables.features[node].written_in in AGENT_CLASSES:
+            self.tables.agent_calls.add(node)     # `p.call` for `p.call ([])`, as EiffelStudio accepts
+            return []
         if len(arguments) != len(formals):
             self.report("VUAR(1)", node.span, expected=len(formals), given=len(arguments))
             self.evaluate(arguments)
@@ -250,6 +254,13 @@ class CallChecks:
     def evaluate(self, nodes) -> None:
         for n in nodes:
             self.expr(n)
+
+
+AGENT_CLASSES = ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
+
+
+def _no_operands(formal) -> bool:
+    return formal is not None and formal.name == "TUPLE" and not formal.generics
 
 
 def _hint(reason: str) -> str:

@@ -55,15 +55,15 @@ def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, **extra) -> 
                reason="it is separate and the target is not", **SEPARATE_ACTUAL, **extra)
 
 
-def lock_passing(ctx, call_node, actuals: list[Value], formals) -> None:
-    """Record a separate call that hands the client's locks to the supplier: a reference actual
-    in a region the client holds (non-separate, or controlled separate)."""
-    for actual, formal in zip(actuals, formals):
-        if actual is None or formal is None or is_expanded(ctx.universe, actual.ty) or actual.ty.is_none:
-            continue
-        if not actual.ty.separate or actual.controlled:
-            ctx.tables.lock_passing.add(call_node)
-            return
+def lock_passing(ctx, call_node, actuals: list, formals) -> None:
+    """Record, for a separate call, the arguments that can hand the client's locks to the
+    supplier: references in a region the client holds (non-separate, or controlled separate).
+    Whether they do is decided at run time (a Void one does not)."""
+    passing = tuple(index for index, (actual, formal) in enumerate(zip(actuals, formals))
+                    if actual is not None and formal is not None and not is_expanded(ctx.universe, actual.ty)
+                    and not actual.ty.is_none and (not actual.ty.separate or actual.controlled))
+    if passing:
+        ctx.tables.lock_passing[call_node] = passing
 
 
 def adapt_result(ctx, call_node, result: Ty, target: Value) -> Value:

@@ -27,7 +27,7 @@ class Tables:
     features: dict = field(default_factory=dict)       # call / operator / creation -> Feature
     entities: dict = field(default_factory=dict)       # UnqualifiedCall naming an entity -> Entity
     separate_calls: set = field(default_factory=set)   # calls whose target is separate
-    lock_passing: set = field(default_factory=set)     # separate calls that hand the client's locks over
+    lock_passing: dict = field(default_factory=dict)   # separate call -> indices of arguments that can pass locks
     wait_args: dict = field(default_factory=dict)      # precondition AssertionClause -> separate formals used as targets
     conversions: dict = field(default_factory=dict)    # expression -> (feature name, target Ty) of a conversion
     controlled: set = field(default_factory=set)       # separate expressions that are controlled

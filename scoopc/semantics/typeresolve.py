@@ -76,7 +76,23 @@ class TypeResolver:
                     self.report("VTCG", actual_node.span, actual=str(actual), constraint=str(bound),
                                 formal=target.formals[index])
                     return False
+            missing = self._missing_creators(target, index, actual)
+            if missing:
+                self.report("VTCG", actual_node.span, actual=str(actual), formal=target.formals[index],
+                            constraint=f"`create {', '.join(missing)} end` (not creation procedures of {actual.name})")
+                return False
         return True
+
+    def _missing_creators(self, target, index: int, actual: Ty) -> list:
+        """Creation procedures a formal's `create ... end` constraint asks of the actual's class."""
+        wanted = target.formal_creators[index] if index < len(target.formal_creators) else ()
+        if not wanted or actual.is_formal:
+            return []
+        info = self.universe.get(actual.name)
+        if info is None or info.is_expanded or not info.features:
+            return []
+        creators = info.creators if info.creators is not None else {"default_create": None}
+        return [name for name in wanted if name not in creators]
 
     def _tuple_type(self, node: syntax.TupleType) -> Optional[Ty]:
         generics = tuple(self.resolve(g) for g in node.generics)

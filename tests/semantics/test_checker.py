@@ -101,6 +101,34 @@ def test_separate_calls_lock_passing_and_adapted_results_are_recorded(tmp_path):
     assert str(tables.types[calls["label"]]) == "separate STRING_8"
     assert calls["label"] in tables.controlled
     assert tables.features[calls["put"]].written_in == "BUFFER"
+    assert calls["put"] not in tables.lock_passing            # an INTEGER argument passes no lock
+    registered = next(c for c in nodes(checked, syntax.UnqualifiedCall) if c.name.text == "register")
+    assert registered not in tables.separate_calls             # a call on Current is not separate
+
+
+def test_arguments_that_can_pass_locks_are_recorded(tmp_path):
+    checked = check(tmp_path, {"BUFFER": BUFFER, "SINK": """\
+        class SINK
+        feature
+            take (b: separate BUFFER; n: INTEGER; note_: separate STRING) do end
+        end
+    """, "APP": """\
+        class APP
+        create
+            make
+        feature
+            make do end
+            send (s: separate SINK; b: separate BUFFER; other: separate STRING)
+                do
+                    s.take (b, 3, other)
+                    s.take (b, 4, "text")
+                end
+        end
+    """})
+    assert codes(checked) == []
+    tables = checked.semantics.tables
+    takes = [c for c in nodes(checked, syntax.QualifiedCall) if c.name.text == "take"]
+    assert sorted(tables.lock_passing[c] for c in takes) == [(0, 2), (0, 2)]
 
 
 def test_a_separate_query_result_cannot_become_non_separate(tmp_path):

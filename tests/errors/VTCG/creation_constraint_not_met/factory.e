@@ -1,0 +1,12 @@
+class
+	FACTORY [G -> ANY create make end]
+
+feature -- Basic operations
+
+	produced (n: INTEGER): G
+			-- A new item made with `make'.
+		do
+			create Result.make
+		end
+
+end

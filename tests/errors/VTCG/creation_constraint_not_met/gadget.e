@@ -1,0 +1,14 @@
+class
+	GADGET
+
+create
+	make_small
+
+feature {NONE} -- Initialization
+
+	make_small
+			-- A small gadget.
+		do
+		end
+
+end
