@@ -150,7 +150,10 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.check_routine_body(body, own.result, feature.fname.name.span)
 
     def check_routine_body(self, body, result, name_span) -> None:
+        saved = (self.result_type, self.result_context)
+        self.result_type, self.result_context = None, "a precondition (it is evaluated before the body)"
         contracts.check_precondition(self, body.precondition)
+        self.result_type, self.result_context = saved
         inner = body.body
         if isinstance(inner, (syntax.InternalBody, syntax.AttributeBody)):
             self.facts = Facts(frozenset(), self._unset_at_start(body.locals, result))
