@@ -155,3 +155,14 @@ def test_malformed_ecf_is_located_at_the_xml_error(capsys, tmp_path):
     (tmp_path / "bad.ecf").write_text('<system name="x">\n\t<target name="t">\n\t\t<root class=APP/>\n')
     code, _, err = run(capsys, "check", "--format", "short", str(tmp_path / "bad.ecf"))
     assert code == cli.EXIT_SOURCE and f"{tmp_path / 'bad.ecf'}:3:15: error ECF: " in err
+
+
+def test_semantic_errors_exit_1_each_with_its_code_and_a_hint(capsys, tmp_path):
+    (tmp_path / "robot.e").write_text(
+        "class ROBOT\ncreate\n\tmake\nfeature\n\tmotor: separate ROBOT\n\tmake\n\t\tdo\n"
+        "\t\t\tcreate motor.make\n\t\t\tmotor.stop\n\t\t\tcount := \"x\"\n\t\tend\n"
+        "\tstop do end\n\tcount: INTEGER\nend\n", encoding="utf-8")
+    code, _, err = run(capsys, "check", "--format", "pretty", str(tmp_path))
+    assert code == cli.EXIT_SOURCE
+    assert "robot.e:9:4: error VUTA(3)" in err and "robot.e:10:13: error VJAR" in err
+    assert "hint: pass `motor` as an argument" in err and "2 errors" in err

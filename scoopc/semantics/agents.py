@@ -7,7 +7,7 @@ from typing import Optional
 
 from .. import syntax
 from .features import member_signature
-from .resolve import Scopes, declare_routine_entities
+from .resolve import declare_routine_entities
 from .types import Ty
 from .values import UNCONTROLLED, Value
 

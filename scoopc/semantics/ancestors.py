@@ -6,7 +6,6 @@ formal generics' constraints; the classes in an order where parents come before 
 """
 from __future__ import annotations
 
-from .. import syntax
 from .typeresolve import TypeResolver
 from .types import Ty, substitute
 

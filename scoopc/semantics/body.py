@@ -7,10 +7,9 @@ Input: a flattened class with signatures. Output: diagnostics and the recorded t
 from __future__ import annotations
 
 from contextlib import contextmanager
-from typing import Optional
 
 from .. import diagnostics, syntax
-from . import contracts, onces, scoop
+from . import contracts, onces, scoop, walk
 from .agents import AgentChecks
 from .calls import CallChecks
 from .creation import CreationChecks
@@ -266,7 +265,7 @@ def _set_by(info, feature, visiting: set) -> set:
                 next((p for _, p in feature.precursors), None)
             if callee is not None and callee.is_routine:
                 names.update(_set_by(info, callee, visiting))
-        for child in scoop._children(node):
+        for child in walk.children(node):
             visit(child)
 
     for instruction in body.instructions:

@@ -6,8 +6,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .. import syntax
-from . import scoop
+from . import scoop, walk
 from .conformance import base_type
 from .features import member_signature
 from .types import NONE, Ty
@@ -84,7 +83,7 @@ class CallChecks:
     def call_on(self, node, target_node, target: Value, name, arguments, as_instruction=False) -> Optional[Value]:
         ty = target.ty
         if ty.is_none or (not ty.attached and self.void_level >= 3 and not scoop.is_expanded(self.universe, ty)):
-            self.report("VUTA(2)", target_node.span, target=scoop._text(target_node), type=str(ty))
+            self.report("VUTA(2)", target_node.span, target=walk.describe(target_node), type=str(ty))
             if ty.is_none:
                 self.evaluate(arguments)
                 return None

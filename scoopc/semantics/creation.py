@@ -9,7 +9,7 @@ from typing import Optional
 from .. import syntax
 from .features import member_signature
 from .types import Ty
-from .values import UNCONTROLLED, Value
+from .values import Value
 
 
 class CreationChecks:

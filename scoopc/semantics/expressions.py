@@ -9,10 +9,10 @@ from __future__ import annotations
 from typing import Optional
 
 from .. import syntax
-from . import scoop
-from .conformance import ancestor, conforms, manifest_fits
+from . import scoop, walk
+from .conformance import conforms, manifest_fits
 from .tables import Entity
-from .types import BOOLEAN, CHARACTER, INTEGER, NONE, POINTER, RANGES, REAL_64, STRING, Ty
+from .types import BOOLEAN, CHARACTER, INTEGER, NONE, POINTER, REAL_64, STRING, Ty
 from .values import UNCONTROLLED, Value
 
 BOOLEAN_OPERATORS = ("and then", "or else", "implies")
@@ -73,7 +73,7 @@ class ExpressionChecks:
 
         kind = manifest_kind(node.constant)
         if kind is None or not manifest_fits(kind[0], kind[1], ty):
-            self.report("VWMQ", node.span, constant=scoop._text(node.constant), type=str(ty))
+            self.report("VWMQ", node.span, constant=walk.describe(node.constant), type=str(ty))
             return None
         self.tables.types[node.constant] = ty
         return Value(ty)
@@ -209,8 +209,6 @@ class ExpressionChecks:
         return found
 
     def _operator_targets(self, ty: Ty, converted: bool = True):
-        from .conformance import base_type
-
         from .conformance import constraint_types
 
         bounds = constraint_types(self.universe, ty, self.info)

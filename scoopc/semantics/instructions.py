@@ -7,10 +7,9 @@ from __future__ import annotations
 from contextlib import contextmanager
 
 from .. import syntax
-from . import scoop
+from . import scoop, walk
 from .flow import UNREACHABLE, join
 from .tables import Entity
-from .types import RANGES
 from .values import UNCONTROLLED, Value
 
 
@@ -323,7 +322,7 @@ def _assigned(body) -> frozenset:
         if isinstance(node, (syntax.Assignment, syntax.CreationInstruction)):
             target = node.target
             names.add("result" if isinstance(target, syntax.Result) else target.name.key)
-        for child in scoop._children(node):
+        for child in walk.children(node):
             if not isinstance(child, (syntax.InlineAgent,)):
                 visit(child)
 

@@ -12,13 +12,14 @@ from typing import Optional
 from .. import syntax
 from .types import Ty
 from .values import UNCONTROLLED, Value
+from .walk import children, describe
 
 
 def check_target(ctx, target_node, value: Value) -> bool:
     """VUTA(3) (Gobo VUTA-4G): a call on a separate target needs the target controlled."""
     if value.controlled:
         return True
-    ctx.report("VUTA(3)", target_node.span, target=_text(target_node), type=str(value.ty))
+    ctx.report("VUTA(3)", target_node.span, target=describe(target_node), type=str(value.ty))
     return False
 
 
@@ -35,7 +36,7 @@ def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> 
     if formal.separate or actual.ty.is_none:
         return True
     if not actual.ty.separate:
-        ctx.report("VUAR(3)", actual_node.span, actual=_text(actual_node), type=str(formal))
+        ctx.report("VUAR(3)", actual_node.span, actual=describe(actual_node), type=str(formal))
         return False
     if actual.handler is not None and actual.handler != UNCONTROLLED and actual.handler == target.handler:
         return True
@@ -124,22 +125,12 @@ def wait_arguments(ctx, clause: syntax.AssertionClause) -> tuple[str, ...]:
                 target = target.expression
             if isinstance(target, syntax.UnqualifiedCall) and not target.arguments and target.name.key in separate_formals:
                 names.add(target.name.key)
-        for child in _children(node):
+        for child in children(node):
             visit(child)
 
     if clause.expression is not None:
         visit(clause.expression)
     return tuple(sorted(names))
-
-
-def _children(node):
-    for name in getattr(node, "__dataclass_fields__", ()):
-        value = getattr(node, name)
-        if isinstance(value, tuple):
-            yield from (v for v in value if hasattr(v, "__dataclass_fields__") and not isinstance(v, syntax.Identifier))
-        elif hasattr(value, "__dataclass_fields__") and not isinstance(value, (syntax.Identifier,)) \
-                and not type(value).__name__ == "Span":
-            yield value
 
 
 def is_expanded(universe, ty: Ty) -> bool:
@@ -167,25 +158,3 @@ def has_non_separate_references(universe, ty: Ty, seen=None) -> bool:
         elif not attr.separate:
             return True
     return False
-
-
-def _text(node) -> str:
-    if isinstance(node, syntax.UnqualifiedCall):
-        return node.name.text
-    if isinstance(node, syntax.QualifiedCall):
-        return f"{_text(node.target)}.{node.name.text}"
-    if isinstance(node, syntax.Current):
-        return "Current"
-    if isinstance(node, syntax.Result):
-        return "Result"
-    if isinstance(node, syntax.Parenthesized):
-        return f"({_text(node.expression)})"
-    if isinstance(node, (syntax.ManifestInteger, syntax.ManifestReal)):
-        return node.text
-    if isinstance(node, syntax.ManifestString):
-        return '"' + node.value.replace("%", "%%").replace("\n", "%N")[:30] + '"'
-    if isinstance(node, syntax.CreationExpression):
-        return "create {...}"
-    if isinstance(node, syntax.BracketExpression):
-        return f"{_text(node.target)} [...]"
-    return "this expression"

@@ -37,8 +37,7 @@ def signature_of(universe, info, feature: Feature, report=None) -> Signature:
         owner = universe.get(other.written_in) or info
         return _in_context(universe, info, other, signature_of(universe, owner, other)).result
 
-    resolver = TypeResolver(universe, info, silent, anchor)
-    resolver.current = True
+    resolver = TypeResolver(universe, info, silent, anchor, current_anchor=True)
     args = tuple(_resolve(resolver, a.type) for a in feature.arguments)
     result = _resolve(resolver, feature.decl.type) if feature.is_query else None
     feature.signature = Signature(args, result)

@@ -17,12 +17,13 @@ class TypeResolver:
     """Resolves types written in one class. `anchor(name)` gives the type of `like name`."""
 
     def __init__(self, universe, info, report: Report, anchor: Optional[Callable[[str], Optional[Ty]]] = None,
-                 constraints: bool = True):
+                 constraints: bool = True, current_anchor: bool = False):
         self.universe = universe
         self.info = info
         self.report = report
         self.anchor = anchor
         self.constraints = constraints
+        self.current_anchor = current_anchor    # `like Current` stays open (features.CURRENT) for call sites
 
     def resolve(self, node) -> Optional[Ty]:
         if isinstance(node, syntax.ClassType):
@@ -107,7 +108,7 @@ class TypeResolver:
         if isinstance(anchor, syntax.Current):
             from .features import CURRENT
 
-            found = CURRENT if getattr(self, "current", False) else self.info.own_type()
+            found = CURRENT if self.current_anchor else self.info.own_type()
         elif isinstance(anchor, syntax.UnqualifiedCall) and not anchor.arguments and self.anchor is not None:
             found = self.anchor(anchor.name.key)
         elif isinstance(anchor, syntax.QualifiedCall) and self.anchor is not None:

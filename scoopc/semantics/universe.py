@@ -29,7 +29,6 @@ class ClassInfo:
     features: dict = field(default_factory=dict)      # final name -> Feature
     aliases: dict = field(default_factory=dict)       # (operator, arity) -> Feature
     creators: Optional[dict] = None                    # name -> clients (None: default_create)
-    signatures: dict = field(default_factory=dict)    # cache: feature name -> Signature
     constraints: tuple = ()                            # per formal: tuple of constraint Ty
     formal_creators: tuple = ()                        # per formal: creation procedure names
 
