@@ -967,6 +967,83 @@ EXPLANATIONS: dict[str, Explanation] = {
         end
         """,
         "Name the object you want in the block's header instead of reassigning the local."),
+    "VFFD(7)": _x(
+        """A once function computes its result once and shares it, so its type cannot depend on the
+        object it is called on: no formal generic parameter and no `like Current` in it. A
+        `once ("OBJECT")` function has one result per object and may use them.""",
+        """
+        class REGISTRY [G] feature
+            shared_item: detachable G
+                once
+                end
+        end
+        """,
+        """
+        class REGISTRY [G] feature
+            shared_item: detachable G
+                once ("OBJECT")
+                end
+        end
+        """,
+        "Make the once per object, or give the function a type that does not depend on the object."),
+    "VGCP(2)": _x(
+        """Every name in a `create` clause must be a procedure of the class: the creation procedure
+        that initialises new objects. A function, an attribute or an unknown name cannot create.""",
+        """
+        create
+            make, count
+        """,
+        """
+        create
+            make, make_with_count
+        """,
+        "List procedures only; write a procedure that sets the attribute if you need one."),
+    "VGCP(3)": _x(
+        """A creation procedure is listed once: the same name in two creation clauses (or twice in
+        one) is a mistake, usually left over from editing the export of the clause.""",
+        """
+        create
+            make
+        create {ANY}
+            make
+        """,
+        """
+        create {ANY}
+            make
+        """,
+        "Keep one clause naming the procedure, with the clients it is meant for."),
+    "VOMB(1)": _x(
+        """`inspect` compares its expression with constant values, so the expression must be of an
+        integer, natural, character or string type; reals and references cannot be inspected.""",
+        """
+        inspect speed      -- speed: REAL_64
+        when 0 then stop
+        end
+        """,
+        """
+        if speed = 0.0 then
+            stop
+        end
+        """,
+        "Use a conditional for other types, or inspect an integer computed from the value."),
+    "VAVE": _x(
+        """A loop variant proves that the loop ends: it is an INTEGER expression that stays
+        non-negative and decreases at each iteration, so it must be of an integer type.""",
+        """
+        from distance := 8.0 until distance < 1.0 loop
+            distance := distance / 2
+        variant
+            distance
+        end
+        """,
+        """
+        from steps := 3 until steps = 0 loop
+            steps := steps - 1
+        variant
+            steps
+        end
+        """,
+        "Count the remaining iterations with an integer and use that as the variant."),
     "VFFD(8)": _x(
         """The result of a `once ("PROCESS")` function is shared by all processors, so its type must
         be separate (or expanded): a non-separate reference would be used by several processors as

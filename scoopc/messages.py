@@ -167,6 +167,15 @@ MESSAGES: dict[str, Message] = {
                        "values of expanded types are copied anyway: use them directly"),
     "V1SE(3)": Message("separate block local `{name}` cannot be assigned",
                        "it stands for the reserved object; assign to a local declared in the routine instead"),
+    "VFFD(7)": Message("once function `{name}` has a type that depends on the object (a formal generic or `like Current`), "
+                       "but its one result is shared",
+                       "give it a fixed type, or make it `once (\"OBJECT\")` to have one result per object"),
+    "VGCP(2)": Message("`{name}` in the creation clause is {what}", "list procedures of this class after `create`"),
+    "VGCP(3)": Message("`{name}` is listed twice in the creation clauses", "list each creation procedure once"),
+    "VOMB(1)": Message("`inspect` needs an integer, character or string expression, this is {type}",
+                       "use `if ... elseif ...` for other types"),
+    "VAVE": Message("a loop variant must be an INTEGER expression, this is {type}",
+                    "write the variant as an integer that decreases at each iteration, e.g. `n - i`"),
     "VFFD(8)": Message("`once (\"PROCESS\")` function `{name}` has the non-separate type {type}: "
                        "all processors would share an object of one processor",
                        "declare the result `separate {type}`"),

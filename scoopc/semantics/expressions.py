@@ -277,7 +277,7 @@ class ExpressionChecks:
                 self.boolean(node.until)
             self.boolean(node.body)
             if node.variant is not None:
-                self.expr(node.variant.expression)
+                self.variant(node.variant)
         return Value(BOOLEAN)
 
     def e_OpenOperand(self, node, expected=None):

@@ -40,6 +40,7 @@ def flatten(universe, info, report) -> None:
     info.features = table
     info.aliases = _aliases(table)
     info.creators = _creators(universe, info)
+    _check_creators(info, report)
     _check_effective(info, report)
 
 
@@ -186,6 +187,21 @@ def _creators(universe, info):
         for ident in clause.procedures:
             creators[ident.key] = _clients(universe, clause.clients)
     return creators
+
+
+def _check_creators(info, report) -> None:
+    """VGCP(2): each name of a creation clause is a procedure of the class; VGCP(3): once."""
+    seen = set()
+    for clause in info.decl.creation_clauses:
+        for ident in clause.procedures:
+            feature = info.features.get(ident.key)
+            if ident.key in seen:
+                report("VGCP(3)", ident.span, name=ident.text)
+            elif feature is None or feature.is_query:
+                what = "not a feature of the class" if feature is None else \
+                    f"{'an' if feature.kind[0] in 'aeiou' else 'a'} {feature.kind}, not a procedure"
+                report("VGCP(2)", ident.span, name=ident.text, what=what)
+            seen.add(ident.key)
 
 
 def _check_effective(info, report) -> None:

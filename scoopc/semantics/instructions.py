@@ -10,6 +10,7 @@ from .. import syntax
 from . import scoop, walk
 from .flow import UNREACHABLE, join
 from .tables import Entity
+from .types import INTEGERS, NATURALS, STRINGS
 from .values import UNCONTROLLED, Value
 
 
@@ -175,6 +176,9 @@ class InstructionChecks:
 
     def i_MultiBranch(self, node) -> None:
         value = self.expr(node.expression)
+        if value is not None and not _inspectable(value.ty):
+            self.report("VOMB(1)", node.expression.span, type=str(value.ty))
+            value = None
         seen = {}
         after = UNREACHABLE
         for part in node.when_parts:
@@ -228,9 +232,15 @@ class InstructionChecks:
             when_true, when_false = self.branches(until)
         end = self.guarded(body, when_false)
         if variant is not None:
-            self.expr(variant.expression)
+            self.variant(variant)
         after = join(start, end)
         self.facts = after.with_attached(when_true[1]) if after is not UNREACHABLE else entry
+
+    def variant(self, variant) -> None:
+        """VAVE: a loop variant is an INTEGER expression (it must decrease and stay non-negative)."""
+        value = self.expr(variant.expression)
+        if value is not None and value.ty.name not in INTEGERS + NATURALS:
+            self.report("VAVE", variant.expression.span, type=str(value.ty))
 
     def i_Across(self, node) -> None:
         with self.iteration(node.iteration):
@@ -303,6 +313,12 @@ class InstructionChecks:
 
 _KINDS = {"argument": "a formal argument (arguments are read-only)", "object_test": "an object-test local",
           "across": "an iteration cursor", "result": "Result"}
+
+
+def _inspectable(ty) -> bool:
+    """VOMB(1): `inspect` works on integers, naturals, characters (and strings, as EiffelStudio 19)."""
+    return not ty.is_formal and (ty.name in INTEGERS + NATURALS or ty.name in ("CHARACTER_8", "CHARACTER_32")
+                                 or ty.name in STRINGS)
 
 
 def _constant(node):
