@@ -967,6 +967,17 @@ EXPLANATIONS: dict[str, Explanation] = {
         end
         """,
         "Name the object you want in the block's header instead of reassigning the local."),
+    "VWEQ": _x(
+        """An equality `a = b` (or `/=`, `~`, `/~`) compares two values of compatible types: one must
+        conform or convert to the other. Comparing a number with a string, say, is always false and
+        is a mistake.""",
+        """
+        if count = answer then   -- count: INTEGER; answer: STRING
+        """,
+        """
+        if count.out ~ answer then
+        """,
+        "Bring both sides to one type first (`out`, `to_integer`), then compare."),
     "VFFD(7)": _x(
         """A once function computes its result once and shares it, so its type cannot depend on the
         object it is called on: no formal generic parameter and no `like Current` in it. A

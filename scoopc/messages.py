@@ -115,6 +115,8 @@ MESSAGES: dict[str, Message] = {
     "VKCN(2)": Message("`{name}` is a procedure: it has no value to use in an expression",
                        "call it as an instruction, or use a function"),
     "VWBE": Message("a condition must be BOOLEAN, this is {type}", "compare it, for example `x /= 0` or `x > 0`"),
+    "VWEQ": Message("`{operator}` compares values of types {left} and {right}: neither conforms or converts to the other",
+                    "compare values of the same type, e.g. `n.out ~ s` or `n = s.to_integer`"),
     "VWOE": Message("no feature of {type} has the operator `{operator}`",
                     "check the types of the operands; convert one if needed"),
     "VWMQ": Message("the constant {constant} is not a value of {type}",

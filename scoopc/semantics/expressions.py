@@ -154,10 +154,25 @@ class ExpressionChecks:
             return self._boolean_right(node)
         right = self.expr(node.right)
         if op in EQUALITY:
-            return None if left is None or right is None else Value(BOOLEAN)
+            if left is None or right is None:
+                return None
+            self._comparable(node, left, right)
+            return Value(BOOLEAN)
         if left is None or right is None:
             return None
         return self.operator_call(node, node.left, left, op, [(node.right, right)], node.operator_span)
+
+    def _comparable(self, node, left: Value, right: Value) -> None:
+        """VWEQ: `=` and `~` need operands one of which conforms or converts to the other; checked
+        where a value of a basic type is involved (`count = "0"`), where it is surely a mistake."""
+        if not (scoop.is_expanded(self.universe, left.ty) or scoop.is_expanded(self.universe, right.ty)):
+            return
+        if left.ty.is_formal or right.ty.is_formal:
+            return
+        if self.meets(node.right, right, left.ty.with_marks(attached=False, separate=True)) in (None, "detachable") \
+                or self.meets(node.left, left, right.ty.with_marks(attached=False, separate=True)) in (None, "detachable"):
+            return
+        self.report("VWEQ", node.operator_span, left=str(left.ty), right=str(right.ty), operator=node.operator)
 
     def _boolean_right(self, node):
         when_true, when_false = self.branches(node.left)
