@@ -20,7 +20,7 @@ def flatten(universe, info, report) -> None:
         parent_info = universe.get(ty.name)
         if parent_info is None:
             continue
-        inherited = _adapt(universe, parent, parent_info, report)
+        inherited = _adapt(universe, info, parent, parent_info, report)
         for name, feature in inherited.items():
             versions.setdefault(name, []).append((parent_info.name, feature))
         for ident in parent.redefines if parent else ():
@@ -47,7 +47,7 @@ def flatten(universe, info, report) -> None:
 def _own_features(universe, info, report) -> dict:
     own = {}
     for clause in info.decl.feature_clauses:
-        exports = _clients(universe, clause.clients)
+        exports = _clients(universe, clause.clients, info)
         for decl in clause.features:
             for fname in decl.names:
                 key = fname.name.key
@@ -60,13 +60,13 @@ def _own_features(universe, info, report) -> dict:
     return own
 
 
-def _clients(universe, names):
+def _clients(universe, names, info=None):
     if names is None:
         return None
-    return frozenset(universe.canonical(n.text) for n in names)
+    return frozenset(universe.name_in(n.text, info) for n in names)
 
 
-def _adapt(universe, parent, parent_info, report) -> dict:
+def _adapt(universe, info, parent, parent_info, report) -> dict:
     """The parent's features under their names in the heir, with the parent clause applied."""
     table = parent_info.features
     if parent is None:
@@ -84,7 +84,7 @@ def _adapt(universe, parent, parent_info, report) -> dict:
         inherited[feature.name] = feature
     _check_names(parent, parent_info, inherited, report)
     for item in parent.exports:
-        clients = _clients(universe, item.clients)
+        clients = _clients(universe, item.clients, info)
         names = inherited.keys() if item.features is None else [i.key for i in item.features if i.key in inherited]
         for name in list(names):
             inherited[name] = replace(inherited[name], exports=clients)
@@ -185,7 +185,7 @@ def _creators(universe, info):
     creators = {}
     for clause in clauses:
         for ident in clause.procedures:
-            creators[ident.key] = _clients(universe, clause.clients)
+            creators[ident.key] = _clients(universe, clause.clients, info)
     return creators
 
 

@@ -44,7 +44,7 @@ class TypeResolver:
                 self.report("VTUG(1)", node.span, type=node.name.text, expected=0, given=len(node.generics))
                 return None
             return self._marks(node, Ty(key, formal=self.info.formals.index(key)))
-        target = self.universe.get(key)
+        target = self.universe.get(self.universe.name_in(key, self.info))
         if target is None:
             self.report("VTCT", node.name.span, name=node.name.text)
             return None

@@ -49,6 +49,7 @@ class ClassInfo:
 class Universe:
     classes: dict[str, ClassInfo] = field(default_factory=dict)
     void_safe: bool = True
+    shadowed: dict[str, str] = field(default_factory=dict)   # library class name -> its key when a user class has the name
 
     def get(self, name: str) -> Optional[ClassInfo]:
         key = name.upper()
@@ -57,6 +58,14 @@ class Universe:
     def canonical(self, name: str) -> str:
         key = name.upper()
         return ALIASES.get(key, key)
+
+    def name_in(self, name: str, info: Optional[ClassInfo]) -> str:
+        """The key of class `name` as written in `info`: library code keeps seeing its own classes
+        when a user class has the same name."""
+        key = self.canonical(name)
+        if info is not None and info.from_library:
+            return self.shadowed.get(key, key)
+        return key
 
 
 def stdlib_root() -> Path:
@@ -80,10 +89,12 @@ def build(trees: list[tuple[syntax.ClassDeclaration, bool]], found: list[Diagnos
         name = decl.name.key.upper()
         known = universe.classes.get(name)
         if known is not None and not (base is not None and name in base.classes):
-            if not from_library and not known.from_library:
+            if not from_library:
                 found.append(diagnostics.make("VSCN", decl.name.span, name=name,
                                               other=str(known.decl.name.span)))
-            continue
+                continue
+            universe.shadowed[name] = f"{name}@BASE"             # the user's class has the name
+            name = universe.shadowed[name]
         info = ClassInfo(name, decl, from_library)
         info.formals = tuple(g.name.key.upper() for g in decl.formal_generics)
         universe.classes[name] = info

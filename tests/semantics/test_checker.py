@@ -251,3 +251,32 @@ def test_every_validity_diagnostic_carries_a_hint():
 
     ours = [code for code in MESSAGES if code.startswith("V") or code in ("ONCE-KEY", "PROCESSOR-TAG")]
     assert [code for code in ours if not MESSAGES[code].hint] == []
+
+
+def test_a_user_class_named_like_a_library_class_hides_it_from_the_user_only(tmp_path):
+    checked = check(tmp_path, {"CELL": """\
+        class CELL
+        create
+            make
+        feature
+            make (v: INTEGER) do value := v end
+            value: INTEGER
+        end
+    """, "APP": """\
+        class APP
+        create
+            make
+        feature
+            make
+                local
+                    c: CELL
+                    l: LINKED_LIST [INTEGER]
+                do
+                    create c.make (3)
+                    create l.make
+                    l.extend (c.value)
+                    across ("a,b").split (',') as part loop print (part.item) end
+                end
+        end
+    """})
+    assert [diagnostics.short(d) for d in checked.diagnostics] == []
