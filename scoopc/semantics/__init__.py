@@ -29,8 +29,8 @@ def prepare(trees, found: list, base=None):
     universe = universe_module.build(trees, found, base)
     fresh = [i for i in universe.classes.values() if base is None or base.classes.get(i.name) is not i]
     order = ancestors.compute(universe, _reporter(universe, found, None), fresh)
-    for info in order:
-        flatten.flatten(universe, info, _reporter(universe, found, info))
+    for info in order:                   # after an unknown parent, its features are missing: stay silent
+        flatten.flatten(universe, info, _reporter(universe, found, info) if not info.failed else _silent)
         if any((parent := universe.get(ty.name)) is not None and parent.failed for _, ty, _ in info.parents):
             info.failed = True           # an heir of a broken class would only repeat its errors
     for info in order:                   # a bad signature skips that feature's body, not the class
@@ -60,6 +60,10 @@ def check(trees, void_safety=None, library_bodies: bool = True, base=None) -> Ch
     unique = list({(d.code, d.span, d.message): d for d in found}.values())
     unique.sort(key=diagnostics.sort_key)
     return Checked(universe, tables, unique)
+
+
+def _silent(code: str, span, **arguments) -> None:
+    pass
 
 
 def _reporter(universe, found: list, info):

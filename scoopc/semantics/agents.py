@@ -31,7 +31,12 @@ class AgentChecks:
         from .conformance import base_type
 
         base_class = base_type(self.universe, base, self.info)
+        if base_class.name == "TUPLE" and node.name.key in base_class.labels and not node.arguments:
+            item = base_class.generics[base_class.labels.index(node.name.key)]
+            return Value(routine_type(True, item, tuple(open_types)))
         info = self.universe.get(base_class.name)
+        if info is not None and info.failed:
+            return None                   # the class's own errors are reported there
         feature = info.features.get(node.name.key) if info is not None else None
         if feature is None:
             self.report("VEEN", node.name.span, name=node.name.text, where=f"among the features of {base_class.name}")

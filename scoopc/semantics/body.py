@@ -40,6 +40,9 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
     def report(self, code: str, span, **arguments) -> None:
         self.found.append(diagnostics.make(code, span, **arguments))
 
+    def warn(self, code: str, span, **arguments) -> None:
+        self.found.append(diagnostics.make(code, span, severity=diagnostics.WARNING, **arguments))
+
     # --- helpers the rule modules share -----------------------------------------------------
     def resolve_type(self, node):
         resolver = TypeResolver(self.universe, self.info, self.report, self._anchor)

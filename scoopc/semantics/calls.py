@@ -88,6 +88,9 @@ class CallChecks:
                 self.evaluate(arguments)
                 return None
         base, feature = self._find_feature(ty, name)
+        if feature is None and (owner := self.universe.get(base.name)) is not None and owner.failed:
+            self.evaluate(arguments)
+            return None                   # the class's own errors are reported there
         if base.name == "TUPLE" and name is not None and name.key in base.labels and not arguments:
             item = base.generics[base.labels.index(name.key)]
             return scoop.adapt_result(self, node, item, target) if ty.separate else Value(item)
@@ -98,7 +101,9 @@ class CallChecks:
         if ty.separate and not scoop.check_target(self, target_node, target):
             self.evaluate(arguments)
             return None                 # reported: the enclosing expression stays silent
-        return self.call_feature(node, target_node, Value(base, target.handler), feature, arguments, name.span, as_instruction)
+        current = ty.with_marks(attached=True) if ty.is_formal else None     # `like Current` is G, not its constraint
+        return self.call_feature(node, target_node, Value(base, target.handler), feature, arguments, name.span,
+                                 as_instruction, current=current)
 
     def _find_feature(self, ty: Ty, name):
         """The feature `name` of the class of `ty` (of one of the constraints for a formal)."""
@@ -113,11 +118,11 @@ class CallChecks:
         return bounds[0].with_marks(attached=True), None
 
     def call_feature(self, node, target_node, target: Value, feature, arguments, name_span,
-                     as_instruction: bool = False, known=None) -> Optional[Value]:
+                     as_instruction: bool = False, known=None, current=None) -> Optional[Value]:
         """Arguments, exports and result of a call of `feature` on `target` (target_node None:
         the call is on Current, unqualified)."""
         self.tables.features[node] = feature
-        signature = member_signature(self.universe, target.ty, feature)
+        signature = member_signature(self.universe, target.ty, feature, current)
         separate = target.ty.separate and target_node is not None
         if separate:
             self.tables.separate_calls.add(node)

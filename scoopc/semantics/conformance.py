@@ -62,6 +62,8 @@ def _is_expanded(universe, ty: Ty) -> bool:
 
 
 def _class_conforms(universe, source: Ty, target: Ty, context) -> bool:
+    if source.is_none:                  # NONE conforms to every reference type
+        return not _is_expanded(universe, target)
     if source.is_formal or target.is_formal:
         if source.is_formal and target.is_formal and source.formal == target.formal:
             return True

@@ -18,8 +18,9 @@ class CreationChecks:
             self._formal_creation(node, ty, procedure, arguments)
             return
         info = self.universe.get(ty.name)
-        if info is None:
-            return
+        if info is None or info.failed:
+            self.evaluate(arguments)
+            return                            # a broken class's errors are reported in the class
         if info.is_deferred:
             self.report("VGCC(1)", node.span, cls=info.name)
             self.evaluate(arguments)

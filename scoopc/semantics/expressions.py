@@ -164,7 +164,7 @@ class ExpressionChecks:
 
     def _comparable(self, node, left: Value, right: Value) -> None:
         """VWEQ: `=` and `~` need operands one of which conforms or converts to the other; checked
-        where a value of a basic type is involved (`count = "0"`), where it is surely a mistake."""
+        where a value of a basic type is involved (`count = "0"`). A warning, as in EiffelStudio."""
         if not (scoop.is_expanded(self.universe, left.ty) or scoop.is_expanded(self.universe, right.ty)):
             return
         if left.ty.is_formal or right.ty.is_formal:
@@ -172,7 +172,7 @@ class ExpressionChecks:
         if self.meets(node.right, right, left.ty.with_marks(attached=False, separate=True)) in (None, "detachable") \
                 or self.meets(node.left, left, right.ty.with_marks(attached=False, separate=True)) in (None, "detachable"):
             return
-        self.report("VWEQ", node.operator_span, left=str(left.ty), right=str(right.ty), operator=node.operator)
+        self.warn("VWEQ", node.operator_span, left=str(left.ty), right=str(right.ty), operator=node.operator)
 
     def _boolean_right(self, node):
         when_true, when_false = self.branches(node.left)

@@ -95,23 +95,46 @@ class Feature:
 class Signature:
     arguments: tuple[Optional[Ty], ...]
     result: Optional[Ty]
+    # For each argument then the result: (feature name, attachment mark) when the type is
+    # `like feature`, re-anchored at each call to the target class's version of that feature.
+    anchors: tuple = ()
 
     @property
     def complete(self) -> bool:
         return all(a is not None for a in self.arguments)
 
 
-def member_signature(universe, target: Ty, feature: Feature) -> Signature:
-    """The signature of `feature` at a call on `target` (a type whose class has the feature)."""
+def member_signature(universe, target: Ty, feature: Feature, current: Optional[Ty] = None,
+                     depth: int = 0) -> Signature:
+    """The signature of `feature` at a call on `target` (a type whose class has the feature);
+    `like Current` becomes `current` (default: the target; a formal generic when the target is
+    its constraint)."""
     info = universe.get(target.name)
     seen = info.all_ancestors.get(feature.written_in) if info is not None else None
     written = feature.signature or Signature((), None)
     via = seen.generics if seen is not None else ()
+    current = target if current is None else current
 
     def move(ty):
-        return None if ty is None else _at_target(substitute(substitute(ty, via), target.generics), target)
+        return None if ty is None else _at_target(substitute(substitute(ty, via), target.generics), current)
 
-    return Signature(tuple(move(a) for a in written.arguments), move(written.result))
+    types = [move(a) for a in written.arguments] + [move(written.result)]
+    for index, anchor in enumerate(written.anchors):
+        if anchor is not None and info is not None and depth < 8:
+            types[index] = _reanchored(universe, info, target, current, anchor, depth) or types[index]
+    return Signature(tuple(types[:-1]), types[-1], written.anchors)
+
+
+def _reanchored(universe, info, target: Ty, current: Ty, anchor, depth: int) -> Optional[Ty]:
+    """`like name` seen from the target's class, which may have redeclared `name`."""
+    name, mark = anchor
+    other = info.features.get(name)
+    if other is None or not other.is_query:
+        return None
+    found = member_signature(universe, target, other, current, depth + 1).result
+    if found is None or mark is None:
+        return found
+    return found.with_marks(attached=mark != "detachable")
 
 
 def _at_target(ty: Ty, target: Ty) -> Ty:

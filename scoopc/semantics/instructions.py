@@ -257,8 +257,10 @@ class InstructionChecks:
         if value is not None:
             base = base_type(self.universe, value.ty, self.info)
             iterable = ancestor(self.universe, base, "ITERABLE")
+            broken = (owner := self.universe.get(base.name)) is not None and owner.failed
             if iterable is None:
-                self.report("VOIT(1)", iteration.expression.span, type=str(value.ty))
+                if not broken:
+                    self.report("VOIT(1)", iteration.expression.span, type=str(value.ty))
             else:
                 item = iterable.generics[0] if iterable.generics else None
                 if iteration.cursor_mode:
@@ -283,6 +285,9 @@ class InstructionChecks:
         from .contracts import assertions
 
         found = assertions(self, node.assertions)
+        if any(isinstance(c.expression, syntax.ManifestBoolean) and not c.expression.value for c in node.assertions):
+            self.facts = UNREACHABLE          # `check False then end`: this point is never reached
+            return
         if node.then_part is not None:
             self.facts = self.guarded(node.then_part, found)
         elif self.facts is not UNREACHABLE:

@@ -40,8 +40,18 @@ def signature_of(universe, info, feature: Feature, report=None) -> Signature:
     resolver = TypeResolver(universe, info, silent, anchor, current_anchor=True)
     args = tuple(_resolve(resolver, a.type) for a in feature.arguments)
     result = _resolve(resolver, feature.decl.type) if feature.is_query else None
-    feature.signature = Signature(args, result)
+    declared = [a.type for a in feature.arguments] + [feature.decl.type if feature.is_query else None]
+    anchors = tuple(_feature_anchor(node, arguments) for node in declared)
+    feature.signature = Signature(args, result, anchors if any(anchors) else ())
     return feature.signature
+
+
+def _feature_anchor(node, arguments) -> Optional[tuple]:
+    """(name, attachment mark) for a type `like name` where name is a feature (not an argument)."""
+    if isinstance(node, syntax.AnchoredType) and isinstance(node.anchor, syntax.UnqualifiedCall) \
+            and not node.anchor.arguments and node.anchor.name.key not in arguments:
+        return node.anchor.name.key, node.attachment
+    return None
 
 
 def _resolve(resolver, node) -> Optional[Ty]:

@@ -44,6 +44,11 @@ class TypeResolver:
                 self.report("VTUG(1)", node.span, type=node.name.text, expected=0, given=len(node.generics))
                 return None
             return self._marks(node, Ty(key, formal=self.info.formals.index(key)))
+        if key == "NONE":
+            if node.generics:
+                self.report("VTUG(1)", node.span, type="NONE", expected=0, given=len(node.generics))
+                return None
+            return Ty("NONE", attached=node.attachment == "attached", separate=node.separate)
         target = self.universe.get(self.universe.name_in(key, self.info))
         if target is None:
             self.report("VTCT", node.name.span, name=node.name.text)
@@ -113,11 +118,28 @@ class TypeResolver:
             found = self.anchor(anchor.name.key)
         elif isinstance(anchor, syntax.QualifiedCall) and self.anchor is not None:
             found = self._qualified_anchor(anchor)
+        elif isinstance(anchor, syntax.StaticCall):
+            found = self._static_anchor(anchor)
         if found is None:
             self.report("VTAT(1)", node.span, anchor=_anchor_text(anchor))
             return None
         attached = found.attached if node.attachment is None else node.attachment != "detachable"
         return found.with_marks(attached=attached, separate=found.separate or node.separate)
+
+    def _static_anchor(self, anchor: syntax.StaticCall) -> Optional[Ty]:
+        """`like {T}.f`: the type of T's feature f."""
+        from .signatures import feature_type_in
+
+        from .conformance import constraint_types
+
+        base = self.resolve(anchor.type)
+        if base is None:
+            return None
+        for bound in constraint_types(self.universe, base.with_marks(attached=True), self.info):
+            found = feature_type_in(self.universe, bound, anchor.name.key)
+            if found is not None:
+                return found
+        return None
 
     def _qualified_anchor(self, anchor: syntax.QualifiedCall) -> Optional[Ty]:
         from .signatures import feature_type_in
@@ -139,7 +161,8 @@ def agent_generics(name: str, generics: tuple, tuple_formal=lambda ty: False) ->
     `PROCEDURE` (no operands), `PROCEDURE [A, B]` (operand types), `PROCEDURE [ANY, TUPLE [A]]`
     (base type first), `FUNCTION [A, R]`; all mean the TUPLE form."""
     results = 1 if name == "FUNCTION" else 0
-    if len(generics) == results + 2 and generics[1].name == "TUPLE" and generics[0].name != "TUPLE":
+    second_is_tuple = len(generics) > 1 and (generics[1].name == "TUPLE" or (generics[1].is_formal and tuple_formal(generics[1])))
+    if len(generics) == results + 2 and second_is_tuple and generics[0].name != "TUPLE":
         generics = generics[1:]                       # old style: the base type first
     operands, rest = generics[:len(generics) - results], generics[len(generics) - results:]
     if len(operands) == 1 and (operands[0].name == "TUPLE" or (operands[0].is_formal and tuple_formal(operands[0]))):
@@ -162,4 +185,6 @@ def _anchor_text(anchor) -> str:
         return anchor.name.text
     if isinstance(anchor, syntax.QualifiedCall):
         return f"{_anchor_text(anchor.target)}.{anchor.name.text}"
+    if isinstance(anchor, syntax.StaticCall):
+        return f"{{...}}.{anchor.name.text}"
     return "?"

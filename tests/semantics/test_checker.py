@@ -280,3 +280,162 @@ def test_a_user_class_named_like_a_library_class_hides_it_from_the_user_only(tmp
         end
     """})
     assert [diagnostics.short(d) for d in checked.diagnostics] == []
+
+
+def test_incompatible_equality_is_a_warning_as_in_eiffelstudio(tmp_path):
+    checked = check(tmp_path, {"APP": """\
+        class APP
+        create
+            make
+        feature
+            make
+                local
+                    count: INTEGER
+                    answer: STRING
+                    ratio: REAL_64
+                do
+                    answer := "3"
+                    if count = answer then print ("same") end
+                    ratio := count
+                    if ratio = count and count.out ~ answer then print ("fine") end
+                end
+        end
+    """})
+    assert codes(checked) == []
+    assert [(d.code, d.severity, d.span.line) for d in checked.diagnostics] == [("VWEQ", "warning", 12)]
+
+
+ACCEPTED = {
+    "like_anchor_follows_a_redeclaration": {"A": """\
+        class A
+        feature
+            attr: detachable ANY
+            other: like attr
+        end
+    """, "B": """\
+        class B
+        inherit
+            A
+                redefine attr end
+        feature
+            attr: detachable STRING
+            g
+                local
+                    s: detachable STRING
+                do
+                    s := other
+                end
+        end
+    """},
+    "like_current_on_a_formal_generic_target": {"BOX": """\
+        class BOX [G -> COMPARABLE]
+        feature
+            value: detachable G
+            copy_in (v: G): G
+                do
+                    Result := v.twin
+                    value := Result
+                end
+        end
+    """},
+    "none_as_a_type": {"APP": """\
+        class APP
+        feature
+            make
+                local
+                    t: TYPE [detachable ANY]
+                    n: detachable NONE
+                do
+                    t := {ARRAY [attached NONE]}
+                    n := Void
+                end
+        end
+    """},
+    "pre_17_05_agent_types_over_a_tuple_formal": {"EVENT": """\
+        class EVENT [ARGS -> TUPLE create default_create end]
+        create
+            make
+        feature
+            make do create subscribers.make (1) end
+            subscribers: ARRAYED_LIST [PROCEDURE [ANY, ARGS]]
+            subscribe (p: PROCEDURE [ANY, ARGS]) do subscribers.extend (p) end
+            publish (a: ARGS) do across subscribers as s loop s.item.call (a) end end
+        end
+    """, "APP": """\
+        class APP
+        feature
+            make
+                local
+                    e: EVENT [TUPLE [INTEGER]]
+                do
+                    create e.make
+                    e.subscribe (agent show)
+                    e.publish ([5])
+                end
+            show (i: INTEGER) do print (i) end
+        end
+    """},
+    "agent_on_a_tuple_label_and_check_false": {"APP": """\
+        class APP
+        feature
+            make
+                local
+                    f: FUNCTION [TUPLE [TUPLE [s: STRING]], STRING]
+                do
+                    f := agent {TUPLE [s: STRING]}.s
+                    print (f.item ([["abc"]]))
+                end
+            anchor: STRING
+                do
+                    check False then end
+                end
+        end
+    """},
+    "static_anchors": {"APP": """\
+        class APP
+        feature
+            make
+                local
+                    n: like {STRING}.count
+                do
+                    n := 3
+                end
+            first: like {ARRAY [STRING]}.item
+                do
+                    Result := "x"
+                end
+        end
+    """},
+}
+
+
+@pytest.mark.parametrize("case", sorted(ACCEPTED))
+def test_forms_eiffelstudio_accepts_check_clean(tmp_path, case):
+    checked = check(tmp_path, ACCEPTED[case])
+    assert [diagnostics.short(d) for d in checked.diagnostics] == []
+
+
+def test_a_missing_parent_is_reported_once_not_in_its_heirs_and_clients(tmp_path):
+    checked = check(tmp_path, {"C": """\
+        class C
+        inherit
+            UNKNOWN_PARENT
+        create
+            make
+        end
+    """, "APP": """\
+        class APP
+        create
+            make
+        feature
+            make
+                local
+                    c: C
+                do
+                    create c.make
+                    c.go
+                    across c as x loop print (x.item) end
+                end
+        end
+    """})
+    assert codes(checked) == [("VTCT", 3)]
