@@ -978,6 +978,44 @@ EXPLANATIONS: dict[str, Explanation] = {
         if count.out ~ answer then
         """,
         "Bring both sides to one type first (`out`, `to_integer`), then compare."),
+    "VFAV(1)": _x(
+        """An operator alias makes a query usable as an operator: a binary operator (`a + b`) names a
+        query with exactly one argument, a unary one (`- a`, `not a`) a query with none. Procedures
+        cannot have operator aliases.""",
+        """
+        scale alias "*" (a, b: INTEGER): VECTOR
+        """,
+        """
+        scale alias "*" (factor: INTEGER): VECTOR
+        """,
+        "Give the operator's feature one argument (binary) or none (unary), or drop the alias."),
+    "VFAV(2)": _x(
+        """A bracket alias (`alias "[]"`) lets `x [i]` call a query with the bracketed values as its
+        arguments, so it names a query with at least one argument.""",
+        """
+        value alias "[]": INTEGER
+        """,
+        """
+        item alias "[]" (i: INTEGER): INTEGER
+        """,
+        "Put the bracket alias on a query that takes the index (or key) as an argument."),
+    "VDJR": _x(
+        """When a class inherits several features with one name, at most one of them effective, they
+        are joined into one feature: their signatures (argument and result types) must then be the
+        same.""",
+        """
+        deferred class SHAPE feature area: REAL_64 deferred end end
+        deferred class TILE feature area: INTEGER deferred end end
+        deferred class SQUARE_TILE inherit SHAPE TILE end
+        """,
+        """
+        deferred class SQUARE_TILE
+        inherit
+            SHAPE
+            TILE rename area as tile_count end
+        end
+        """,
+        "Rename one of the inherited features when they mean different things."),
     "VFFD(7)": _x(
         """A once function computes its result once and shares it, so its type cannot depend on the
         object it is called on: no formal generic parameter and no `like Current` in it. A

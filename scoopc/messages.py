@@ -89,6 +89,13 @@ MESSAGES: dict[str, Message] = {
                        "implement them, or declare the class `deferred class {name}`"),
     "VDRD(2)": Message("the redeclaration of `{name}` does not match the version of {parent}: {reason}",
                        "keep the same number of arguments; argument and result types must conform to the parent's"),
+    "VDJR": Message("`{name}` is inherited from {first} and {second} with different signatures and joined into one feature",
+                    "make the signatures equal, or rename one of the inherited features"),
+    "VFAV(1)": Message("operator `{operator}` on `{name}`: an operator alias needs a query with one argument "
+                       "(binary operator) or none (unary operator)",
+                       "remove the alias, or give the feature the right number of arguments"),
+    "VFAV(2)": Message("bracket alias on `{name}`: it needs a query with at least one argument",
+                       "declare it like `item alias \"[]\" (i: INTEGER): G`"),
     "VDPR(1)": Message("`Precursor` in `{name}`, which does not redefine an effective inherited feature",
                        "use Precursor only inside a redefinition (listed in `redefine`)"),
     "VDPR(2)": Message("`Precursor {{{parent}}}`: {parent} is not a parent of {cls}",

@@ -38,6 +38,7 @@ def prepare(trees, found: list, base=None):
     for info in order:
         if not info.failed:
             signatures.check_redeclarations(universe, info, _reporter(universe, found, info))
+            signatures.check_joins(universe, info, _reporter(universe, found, info))
     return universe, order
 
 

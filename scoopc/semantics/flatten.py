@@ -14,6 +14,7 @@ from .features import Feature
 
 def flatten(universe, info, report) -> None:
     own = _own_features(universe, info, report)
+    _check_aliases(own, report)
     versions: dict[str, list] = {}
     listed: dict[str, list] = {}
     for parent, ty, _ in info.parents:
@@ -127,10 +128,9 @@ def _join(info, name: str, found: list, report):
     if len(distinct) == 1:
         return distinct[0][1]
     effective = [(p, f) for p, f in distinct if not f.deferred]
-    if not effective:
-        return distinct[0][1]
-    if len(effective) == 1:
-        return effective[0][1]
+    if len(effective) <= 1:
+        info.joins.append((name, [f for _, f in distinct]))     # signatures checked later (VDJR)
+        return effective[0][1] if effective else distinct[0][1]
     if len({f.seed for _, f in effective}) == 1 or all(f.decl is effective[0][1].decl for _, f in effective):
         selected = _selected(info, name, effective)
         if selected is not None:
@@ -187,6 +187,29 @@ def _creators(universe, info):
         for ident in clause.procedures:
             creators[ident.key] = _clients(universe, clause.clients, info)
     return creators
+
+
+UNARY_ONLY = {"not"}
+BINARY_ONLY = {"*", "/", "//", "\\\\", "^", "<", ">", "<=", ">=", "and", "or", "xor", "and then", "or else",
+               "implies", "|..|"}
+
+
+def _check_aliases(own: dict, report) -> None:
+    """VFAV(1): an operator alias names a query with one argument (binary) or none (unary);
+    VFAV(2): a bracket alias names a query with at least one argument."""
+    for feature in own.values():
+        arity = len(feature.arguments)
+        for alias in feature.fname.aliases:
+            name = alias.name.lower()
+            if name == "()":
+                continue
+            if name == "[]":
+                if not feature.is_query or arity == 0:
+                    report("VFAV(2)", alias.span, name=feature.text)
+                continue
+            fits = feature.is_query and (arity == 0 and name not in BINARY_ONLY or arity == 1 and name not in UNARY_ONLY)
+            if not fits:
+                report("VFAV(1)", alias.span, name=feature.text, operator=alias.name)
 
 
 def _check_creators(info, report) -> None:

@@ -110,3 +110,23 @@ def _loose(universe, source: Ty, target: Ty, info) -> bool:
     if source.name == CURRENT.name or target.name == CURRENT.name:
         return True
     return conforms(universe, source.with_marks(attached=True), target.with_marks(attached=True), info)
+
+
+def check_joins(universe, info, report) -> None:
+    """VDJR: inherited versions joined into one feature (deferred ones, or deferred ones with one
+    effective version) must have the same signature."""
+    own = info.own_type()
+    for name, versions in info.joins:
+        signatures = [member_signature(universe, own, f) for f in versions]
+        first = signatures[0]
+        for other, feature in zip(signatures[1:], versions[1:]):
+            if len(other.arguments) != len(first.arguments) or not _same(universe, info, first, other):
+                report("VDJR", info.decl.name.span, name=name, first=versions[0].written_in,
+                       second=feature.written_in)
+                break
+
+
+def _same(universe, info, a: Signature, b: Signature) -> bool:
+    pairs = list(zip(a.arguments, b.arguments)) + [(a.result, b.result)]
+    return all((x is None) == (y is None) and (x is None or (_loose(universe, x, y, info) and _loose(universe, y, x, info)))
+               for x, y in pairs)

@@ -1,0 +1,9 @@
+deferred class
+	SQUARE_TILE -- E: VDJR
+
+inherit
+	SHAPE
+
+	TILE
+
+end
