@@ -1,5 +1,6 @@
 """The checker never fails on a program that parses: mutants of the valid programs (lines
 deleted, swapped or with a name replaced) give diagnostics, never an exception."""
+import os
 import re
 from pathlib import Path
 
@@ -34,7 +35,11 @@ def mutate(lines: list, edit) -> None:
             lines[i] = lines[i].replace(names[j % len(names)], word, 1)
 
 
-@settings(max_examples=40)
+# Each example checks a whole program: 40 keep the default run short; the thorough profile runs 1,000.
+EXAMPLES = 1000 if os.environ.get("SCOOPC_HYPOTHESIS_PROFILE") == "thorough" else 40
+
+
+@settings(max_examples=EXAMPLES)
 @given(program=st.sampled_from(PROGRAMS), which=st.integers(0, 100), changes=edits)
 def test_a_mutated_program_gets_diagnostics_not_a_crash(tmp_path_factory, program, which, changes):
     folder = tmp_path_factory.mktemp("mutant")
