@@ -165,7 +165,8 @@ MESSAGES: dict[str, Message] = {
                        "or wrap the call in `separate {target} as x do x.f end`"),
     "VUAR(3)": Message("`{actual}` is a non-separate reference passed in a call on a separate target to a formal of "
                        "non-separate type {type}: the supplier would hold a reference into this processor (a traitor)",
-                       "declare the formal `separate`, or pass a copy made by the supplier"),
+                       "declare the formal `separate`; when the supplier needs its own copy of a STRING it "
+                       "makes one with `create s.make_from_separate (the_formal)`"),
     "VUAR(4)": Message("expanded actual of type {type} holds non-separate references and is passed to another processor",
                        "make the expanded class's reference attributes `separate`, or pass the values separately"),
     "VUER": Message("the result of type {type} holds non-separate references and would come from another processor",
