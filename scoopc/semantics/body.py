@@ -131,8 +131,8 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.feature = feature
         self.object_tests = {}
         signature = feature.signature
-        if signature is None or not signature.complete:
-            return
+        if signature is None or not signature.complete or (feature.is_query and signature.result is None):
+            return                        # its type was reported: the body would only repeat it
         own = member_signature(self.universe, self.current, feature)
         decl = feature.decl
         self.scopes, self.facts, self.reported_unset = Scopes(), Facts(), set()

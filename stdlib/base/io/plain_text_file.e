@@ -10,6 +10,7 @@ inherit
 create
 	make,
 	make_with_name,
+	make_with_path,
 	make_open_read,
 	make_open_write,
 	make_open_append,

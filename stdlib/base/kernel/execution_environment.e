@@ -49,10 +49,24 @@ feature -- Access
 			"Python"
 		end
 
+	current_working_path: PATH
+			-- The working directory, as a path.
+		do
+			create Result.make_from_string (current_working_directory)
+		end
+
 	home_directory_name: detachable STRING_8
 			-- The user's home directory, if known.
 		external
 			"Python"
+		end
+
+	home_directory_path: detachable PATH
+			-- The user's home directory, if known, as a path.
+		do
+			if attached home_directory_name as l_name then
+				create Result.make_from_string (l_name)
+			end
 		end
 
 	root_directory_name: STRING_8
@@ -93,6 +107,12 @@ feature -- Status setting
 			-- Make `path' the working directory.
 		external
 			"Python"
+		end
+
+	change_working_path (path: PATH)
+			-- Make `path' the working directory.
+		do
+			change_working_directory (path.name)
 		end
 
 feature -- Basic operations

@@ -51,6 +51,15 @@ feature -- Access
 
 feature -- Element change
 
+	share (other: STRING_8)
+			-- Make the string use the characters of `other' themselves: from now on a change
+			-- to either string is seen by both.
+		external
+			"Python"
+		ensure
+			shared_count: other.count = count
+		end
+
 	put (c: CHARACTER_8; i: INTEGER_32)
 			-- Replace the character at position `i' by `c'.
 		require

@@ -14,6 +14,12 @@ inherit
 			out
 		end
 
+	TIME_CONSTANTS
+		undefine
+			out,
+			is_equal
+		end
+
 create
 	make,
 	make_fine,
@@ -124,20 +130,22 @@ feature -- Access
 			Result := fractional_second + seconds
 		end
 
-	Seconds_in_day: INTEGER_32 = 86400
-			-- Number of seconds in a day.
+	origin: TIME
+			-- Midnight, 00:00:00.
+		do
+			create Result.make (0, 0, 0)
+		end
 
-	Seconds_in_hour: INTEGER_32 = 3600
-			-- Number of seconds in an hour.
+feature -- Measurement
 
-	Seconds_in_minute: INTEGER_32 = 60
-			-- Number of seconds in a minute.
-
-	Minutes_in_hour: INTEGER_32 = 60
-			-- Number of minutes in an hour.
-
-	Hours_in_day: INTEGER_32 = 24
-			-- Number of hours in a day.
+	duration: TIME_DURATION
+			-- Time elapsed since midnight.
+		do
+			create Result.make_fine (hour, minute, fine_second)
+		ensure
+			seconds_large_enough: Result.seconds_count >= 0
+			seconds_small_enough: Result.seconds_count < Seconds_in_day
+		end
 
 feature -- Comparison
 
@@ -205,6 +213,22 @@ feature -- Element change
 			-- Move `s' seconds forward (backward if negative), around midnight.
 		do
 			set_from_fine_seconds (fine_seconds + s)
+		end
+
+feature -- Basic operations
+
+	plus alias "+" (t: TIME_DURATION): TIME
+			-- The time `t' later (earlier if `t' is negative), around midnight.
+		do
+			Result := twin
+			Result.fine_second_add (t.fine_seconds_count)
+		end
+
+	relative_duration (other: like Current): TIME_DURATION
+			-- Time from `other' to the current time (negative if `other' is later), in canonical form.
+		do
+			create Result.make_by_fine_seconds (fine_seconds - other.fine_seconds)
+			Result := Result.to_canonical
 		end
 
 feature -- Output

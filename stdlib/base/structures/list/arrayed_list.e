@@ -343,6 +343,20 @@ feature -- Duplication
 			end
 		end
 
+	duplicate (n: INTEGER_32): like Current
+			-- <Precursor>
+		local
+			l_count: INTEGER_32
+		do
+			if after then
+				create Result.make (0)
+			else
+				l_count := n.min (count - index + 1)
+				create Result.make (l_count)
+				Result.area.copy_data (area, index - 1, 0, l_count)
+			end
+		end
+
 feature {NONE} -- Implementation
 
 	additional_space: INTEGER_32

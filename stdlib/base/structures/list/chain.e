@@ -150,6 +150,17 @@ feature -- Transformation
 			put_i_th (old_item, i)
 		end
 
+feature -- Duplication
+
+	duplicate (n: INTEGER_32): like Current
+			-- A new chain of the same type with the items from the cursor position on,
+			-- `n' of them at most.
+		require
+			not_off_unless_after: off implies after
+			valid_subchain: n >= 0
+		deferred
+		end
+
 invariant
 	non_negative_index: index >= 0
 	index_small_enough: index <= count + 1

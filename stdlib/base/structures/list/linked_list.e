@@ -364,6 +364,26 @@ feature -- Duplication
 			end
 		end
 
+	duplicate (n: INTEGER_32): like Current
+			-- <Precursor>
+		local
+			p: detachable BI_LINKABLE [G]
+			i: INTEGER_32
+		do
+			create Result.make
+			from
+				p := active
+			until
+				i = n or p = Void
+			loop
+				if attached p as pp then
+					Result.extend (pp.item)
+					p := pp.right
+				end
+				i := i + 1
+			end
+		end
+
 feature {LINKED_LIST, LINKED_LIST_ITERATION_CURSOR} -- Implementation
 
 	first_element: detachable BI_LINKABLE [G]
