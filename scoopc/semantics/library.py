@@ -11,13 +11,14 @@ import hashlib
 import os
 import pickle
 import sys
+from dataclasses import replace
 from pathlib import Path
 from typing import Optional
 
-from .. import __version__
+from .. import __version__, syntax
 from .universe import stdlib_files
 
-CACHE_FORMAT = 2
+CACHE_FORMAT = 4
 
 
 def cache_dir() -> Path:
@@ -39,7 +40,8 @@ def _key(files: list[Path]) -> str:
 def load(parse_file, prepare=None, use_cache: bool = True):
     """(units, prepared) for the stdlib: units are [(SourceFile, tree, diagnostics)] for every
     class file; prepared is `prepare(units)` (the library's universe, ready for user classes to be
-    added), kept in the cache with the units. Without the cache, prepared is None."""
+    added), kept in the cache with the units. Without the cache, prepared is None. From the cache,
+    the trees have no routine bodies and the SourceFile is None."""
     files = stdlib_files()
     if not use_cache:
         return [parse_file(path) for path in files], None
@@ -47,10 +49,29 @@ def load(parse_file, prepare=None, use_cache: bool = True):
     cached = _read(key)
     if cached is not None:
         return cached
-    units = [parse_file(path) for path in files]
+    # Kept: the declarations; not kept: the source texts (a cached library reports nothing).
+    units = [(None, declarations_only(tree), found) for _, tree, found in map(parse_file, files)]
     prepared = prepare(units) if prepare is not None else None
     _write(key, (units, prepared))
     return units, prepared
+
+
+def declarations_only(tree):
+    """The class without its routine bodies (instructions, locals, rescue clauses): what checking
+    other classes against it needs, and half the size to load."""
+    if tree is None:
+        return None
+    clauses = tuple(replace(clause, features=tuple(_without_body(f) for f in clause.features))
+                    for clause in tree.feature_clauses)
+    return replace(tree, feature_clauses=clauses)
+
+
+def _without_body(feature):
+    body = getattr(feature, "body", None)
+    if body is None or not isinstance(body.body, (syntax.InternalBody, syntax.AttributeBody)):
+        return feature
+    inner = replace(body.body, instructions=())
+    return replace(feature, body=replace(body, body=inner, locals=(), rescue=None))
 
 
 def _read(key: str) -> Optional[list]:
