@@ -222,7 +222,9 @@ def check_class(universe, info, tables, found, void_level: int) -> None:
 
 def check_attribute_initialization(universe, info, found) -> None:
     """VEVI: every attached reference attribute is set by each creation procedure (directly or by
-    routines of the class it calls), unless it has an `attribute` body that initialises it."""
+    routines of the class it calls), unless it has an `attribute` body that initialises it. A
+    routine written in another class (an inherited creation procedure, a Precursor) is trusted to
+    set that class's attributes: the class itself is checked for them."""
     if info.is_deferred or info.is_expanded or info.from_library:
         return
     required = _required_attributes(universe, info)
@@ -233,7 +235,7 @@ def check_attribute_initialization(universe, info, found) -> None:
         feature = info.features.get(name)
         if feature is None:
             continue
-        missing = sorted(required - _set_by(info, feature, set()))
+        missing = sorted(required - _set_by(universe, info, feature, set()))
         if missing:
             span = _creator_span(info, name)
             found.append(diagnostics.make("VEVI", span, name=", ".join(missing),
@@ -251,10 +253,13 @@ def _required_attributes(universe, info) -> set:
     return names
 
 
-def _set_by(info, feature, visiting: set) -> set:
-    if feature.name in visiting or not feature.is_routine:
+def _set_by(universe, info, feature, visiting: set) -> set:
+    if (feature.written_in, feature.name) in visiting or not feature.is_routine:
         return set()
-    visiting.add(feature.name)
+    visiting.add((feature.written_in, feature.name))
+    if feature.written_in != info.name:
+        owner = universe.get(feature.written_in)
+        return {n for n, f in owner.features.items() if f.kind == "attribute"} if owner is not None else set()
     names = set()
     body = feature.decl.body.body
     if not isinstance(body, syntax.InternalBody):
@@ -267,7 +272,7 @@ def _set_by(info, feature, visiting: set) -> set:
             callee = info.features.get(node.name.key) if isinstance(node, syntax.UnqualifiedCall) else \
                 next((p for _, p in feature.precursors), None)
             if callee is not None and callee.is_routine:
-                names.update(_set_by(info, callee, visiting))
+                names.update(_set_by(universe, info, callee, visiting))
         for child in walk.children(node):
             visit(child)
 

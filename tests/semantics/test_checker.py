@@ -391,6 +391,29 @@ ACCEPTED = {
                 end
         end
     """},
+    "inherited_creation_procedure_of_a_library_class": {"FOOD_BOX": """\
+        class FOOD_BOX [G -> COMPARABLE]
+        inherit
+            ARRAYED_LIST [G]
+        create
+            make
+        end
+    """, "TAGGED_BOX": """\
+        class TAGGED_BOX
+        inherit
+            ARRAYED_LIST [STRING]
+                redefine make end
+        create
+            make
+        feature
+            make (n: INTEGER)
+                do
+                    Precursor (n)
+                    tag := "box"
+                end
+            tag: STRING
+        end
+    """},
     "static_anchors": {"APP": """\
         class APP
         feature
