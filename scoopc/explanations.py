@@ -1016,6 +1016,31 @@ EXPLANATIONS: dict[str, Explanation] = {
         end
         """,
         "Rename one of the inherited features when they mean different things."),
+    "VTEC(1)": _x(
+        """A value of an expanded type is created as soon as an entity of that type exists, so the
+        class must be effective: an expanded class cannot be deferred.""",
+        """
+        deferred expanded class AMOUNT
+        """,
+        """
+        expanded class AMOUNT
+        """,
+        "Make the class effective, or make it a reference class if it is meant to be inherited."),
+    "VTEC(2)": _x(
+        """Values of an expanded type are created without arguments (when a local or an attribute of
+        that type comes into existence), so `default_create` must be one of its creation
+        procedures; a class with no creation clause has it implicitly.""",
+        """
+        expanded class POINT
+        create
+            make
+        """,
+        """
+        expanded class POINT
+        create
+            default_create, make
+        """,
+        "List `default_create` among the creation procedures (redefine it to set the fields)."),
     "VFFD(7)": _x(
         """A once function computes its result once and shares it, so its type cannot depend on the
         object it is called on: no formal generic parameter and no `like Current` in it. A

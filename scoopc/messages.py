@@ -89,6 +89,10 @@ MESSAGES: dict[str, Message] = {
                        "implement them, or declare the class `deferred class {name}`"),
     "VDRD(2)": Message("the redeclaration of `{name}` does not match the version of {parent}: {reason}",
                        "keep the same number of arguments; argument and result types must conform to the parent's"),
+    "VTEC(1)": Message("expanded class {name} cannot be deferred: its values are created directly",
+                       "remove `deferred` (and implement the deferred features), or remove `expanded`"),
+    "VTEC(2)": Message("expanded class {name} must have `default_create` as a creation procedure",
+                       "add `default_create` to the `create` clause (redefine it to initialise the fields)"),
     "VDJR": Message("`{name}` is inherited from {first} and {second} with different signatures and joined into one feature",
                     "make the signatures equal, or rename one of the inherited features"),
     "VFAV(1)": Message("operator `{operator}` on `{name}`: an operator alias needs a query with one argument "

@@ -42,6 +42,7 @@ def flatten(universe, info, report) -> None:
     info.aliases = _aliases(table)
     info.creators = _creators(universe, info)
     _check_creators(info, report)
+    _check_expanded(info, report)
     _check_effective(info, report)
 
 
@@ -225,6 +226,17 @@ def _check_creators(info, report) -> None:
                     f"{'an' if feature.kind[0] in 'aeiou' else 'a'} {feature.kind}, not a procedure"
                 report("VGCP(2)", ident.span, name=ident.text, what=what)
             seen.add(ident.key)
+
+
+def _check_expanded(info, report) -> None:
+    """VTEC(1): an expanded class is not deferred; VTEC(2): its objects are made without
+    arguments, so `default_create` is a creation procedure (or there is no creation clause)."""
+    if not info.is_expanded:
+        return
+    if info.is_deferred:
+        report("VTEC(1)", info.decl.name.span, name=info.name)
+    elif info.creators is not None and "default_create" not in info.creators:
+        report("VTEC(2)", info.decl.name.span, name=info.name)
 
 
 def _check_effective(info, report) -> None:
