@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Optional
 
-from .types import NUMERICS, RANGES, STRINGS, Ty, substitute
+from .types import RANGES, STRINGS, Ty, substitute
 
 
 def ancestor(universe, ty: Ty, name: str) -> Optional[Ty]:
@@ -135,7 +135,3 @@ def manifest_fits(kind: str, value, target: Ty) -> bool:
     if kind == "character":
         return name in ("CHARACTER_8", "CHARACTER_32")
     return False
-
-
-def is_numeric(ty: Ty) -> bool:
-    return ty.name in NUMERICS and not ty.is_formal

@@ -34,8 +34,8 @@ def signature_of(universe, info, feature: Feature, report=None) -> Signature:
         other = info.features.get(name)
         if other is None or not other.is_query:
             return None
-        owner = universe.get(other.written_in) or info
-        return _in_context(universe, info, other, signature_of(universe, owner, other)).result
+        signature_of(universe, universe.get(other.written_in) or info, other)
+        return member_signature(universe, info.own_type(), other).result
 
     resolver = TypeResolver(universe, info, silent, anchor, current_anchor=True)
     args = tuple(_resolve(resolver, a.type) for a in feature.arguments)
@@ -58,11 +58,6 @@ def _resolve(resolver, node) -> Optional[Ty]:
     if isinstance(node, syntax.AnchoredType) and isinstance(node.anchor, syntax.Current):
         return CURRENT.with_marks(attached=node.attachment != "detachable", separate=node.separate)
     return resolver.resolve(node)
-
-
-def _in_context(universe, info, feature, signature) -> Signature:
-    own = info.own_type()
-    return member_signature(universe, own, feature) if feature.signature is not None else signature
 
 
 def feature_type_in(universe, base: Ty, name: str) -> Optional[Ty]:
