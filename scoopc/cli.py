@@ -49,7 +49,7 @@ def build_parser() -> argparse.ArgumentParser:
     parse.set_defaults(handler=_command_parse)
 
     check = commands.add_parser("check", help="report all errors of a program, compile nothing",
-                                description="Check Eiffel sources and report every error found.")
+                                description="Check Eiffel sources and report every error found: syntax, Eiffel validity (types, inheritance, calls, creation, contracts, void safety) and SCOOP separateness rules, each with its EiffelStudio code.")
     check.add_argument("--explain", metavar="CODE", help="explain a diagnostic code and exit")
     _add_source_options(check)
     check.set_defaults(handler=_command_check)
