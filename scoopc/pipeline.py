@@ -127,7 +127,6 @@ def _check_project(project: Project, use_cache: bool, library_bodies: Optional[b
     result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base)
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)
-    checked.diagnostics = list({(d.code, d.span, d.message): d for d in checked.diagnostics}.values())
     checked.diagnostics.sort(key=diagnostics.sort_key)
     return checked
 

@@ -214,7 +214,7 @@ class ExpressionChecks:
     def _operator_candidates(self, ty: Ty, op: str, arity: int) -> list:
         """(type, converter or None, feature) for each type that may serve `op` on a `ty` operand
         (memoised per universe: the answer depends only on the classes)."""
-        memo = self.universe.__dict__.setdefault("operator_memo", {})
+        memo = self.universe.operator_memo
         key = (ty, op, arity, self.info.name if ty.is_formal else None)
         found = memo.get(key)
         if found is None:

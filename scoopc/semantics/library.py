@@ -81,7 +81,7 @@ def _read(key: str) -> Optional[list]:
     try:
         with open(path, "rb") as handle:
             return pickle.load(handle)
-    except (OSError, pickle.UnpicklingError, EOFError, AttributeError, ImportError):
+    except Exception:           # a damaged or foreign cache file: parse the library again
         return None
     finally:
         if enabled:

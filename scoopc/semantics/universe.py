@@ -51,6 +51,7 @@ class Universe:
     classes: dict[str, ClassInfo] = field(default_factory=dict)
     void_safe: bool = True
     shadowed: dict[str, str] = field(default_factory=dict)   # library class name -> its key when a user class has the name
+    operator_memo: dict = field(default_factory=dict)      # (type, operator, arity, context) -> candidate features
 
     def get(self, name: str) -> Optional[ClassInfo]:
         key = name.upper()

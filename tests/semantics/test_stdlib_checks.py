@@ -30,3 +30,16 @@ def test_cached_check_reports_what_a_cold_check_reports(tmp_path, monkeypatch):
     warm = pipeline.check_project(collect([str(sample)]), use_cache=True)
     assert [diagnostics.short(d) for d in warm.diagnostics] == [diagnostics.short(d) for d in cold.diagnostics]
     assert any(tmp_path.iterdir()), "the cache was not written"
+
+
+def test_a_damaged_cache_is_ignored_and_rewritten(tmp_path, monkeypatch):
+    monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path))
+    sample = Path(__file__).resolve().parents[2] / "samples" / "producer_consumer"
+    from scoopc.project import collect
+
+    pipeline.check_project(collect([str(sample)]))
+    (cache,) = tmp_path.glob("stdlib-*.pickle")
+    cache.write_bytes(b"\x80\x04not a pickle at all")
+    checked = pipeline.check_project(collect([str(sample)]))
+    assert not checked.diagnostics
+    assert cache.read_bytes()[:20] != b"\x80\x04not a pickle at all"[:20]
