@@ -53,7 +53,32 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--explain", metavar="CODE", help="explain a diagnostic code and exit")
     _add_source_options(check)
     check.set_defaults(handler=_command_check)
+    _add_compile_and_run(commands)
     return top
+
+
+def _add_compile_and_run(commands) -> None:
+    from . import commands as run_commands
+
+    compile_ = commands.add_parser("compile", help="compile a program to a Python package",
+                                   description="Check the program, then write it as readable Python: one "
+                                               "module per class, in a package runnable with `python -m`, "
+                                               "beside the compiled standard library (eiffel_base).")
+    _add_source_options(compile_)
+    compile_.add_argument("-o", "--output", default="build", metavar="DIR",
+                          help="the folder to write the packages into (default: build)")
+    run_commands.add_compile_options(compile_)
+    compile_.set_defaults(handler=run_commands.command_compile)
+
+    run = commands.add_parser("run", help="compile (cached by content) and run a program",
+                              description="Compile the program (reusing an earlier compilation of the same "
+                                          "sources) and run it. Arguments after `--` go to the program. Exit "
+                                          "status: the program's, 1 on source errors, 3 on a run-time failure "
+                                          "(contract violation, uncaught exception, deadlock).")
+    _add_source_options(run)
+    run_commands.add_compile_options(run)
+    run_commands.add_run_options(run)
+    run.set_defaults(handler=run_commands.command_run)
 
 
 def _render(found: list[diagnostics.Diagnostic], line_text, style: str) -> None:
@@ -142,8 +167,16 @@ def explain(code: str) -> Optional[str]:
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
+    program_args: list[str] = []
+    if "--" in argv:
+        split = argv.index("--")
+        argv, program_args = argv[:split], argv[split + 1:]
     args = build_parser().parse_args(argv)
+    if program_args and args.command != "run":
+        build_parser().error("arguments after `--` are for `scoopc run` only")
     try:
+        if args.command == "run":
+            return args.handler(args, program_args)
         return args.handler(args)
     except UsageError as problem:
         print(f"scoopc: error: {problem}", file=sys.stderr)

@@ -65,8 +65,10 @@ def finish(rt, root, interrupted=False):
     return status
 
 
-def run_main(root_cls, creator, args=(), **options):
-    """Run a program: `creator(root_object, *args)` on the root processor. Exit status."""
+def run_main(root_cls, creator, args=(), describe=None, **options):
+    """Run a program: `creator(root_object, *args)` on the root processor. Exit status.
+    `describe(exception, processor)`: the text reporting an uncaught exception (default: the
+    exception and the processor's innermost frame)."""
     rt, root = start(**options)
     restore = _install_dump_signal(rt)
     interrupted = False
@@ -80,14 +82,14 @@ def run_main(root_cls, creator, args=(), **options):
     except KeyboardInterrupt:
         interrupted = True
     except BaseException as e:
-        rt.fail(_uncaught(root, e), e)
+        rt.fail((describe or _uncaught)(e, root), e)
     try:
         return finish(rt, root, interrupted)
     finally:
         restore()
 
 
-def _uncaught(proc, e):
+def _uncaught(e, proc):
     where = f" in {fmt_where(proc.frames[-1])}" if proc.frames else ""
     text = "".join(traceback.format_exception_only(type(e), e)).strip()
     return f"uncaught exception on {proc!r}{where}: {text}"

@@ -61,16 +61,19 @@ class Processor(FastPaths):
         obj._region_ = self
         return obj
 
-    def new_separate(self, cls, creator, args=()):
-        """Separate creation: a new processor; `creator` is logged on it as a command."""
-        return self._create(Processor(self.rt, False, cls.__name__), cls, creator, args)
+    def new_separate(self, cls, creator, args=(), gen=None):
+        """Separate creation: a new processor; `creator` is logged on it as a command.
+        `gen`: the actual generics of a generic class (set as `_gen_` before `creator` runs)."""
+        return self._create(Processor(self.rt, False, cls.__name__), cls, creator, args, gen)
 
-    def new_passive(self, cls, creator, args=()):
+    def new_passive(self, cls, creator, args=(), gen=None):
         """`create <NONE>`: a passive region whose calls its clients run under reservation."""
-        return self._create(Processor(self.rt, True, cls.__name__), cls, creator, args)
+        return self._create(Processor(self.rt, True, cls.__name__), cls, creator, args, gen)
 
-    def _create(self, proc, cls, creator, args):
+    def _create(self, proc, cls, creator, args, gen=None):
         obj = proc.new(cls)
+        if gen is not None:
+            obj._gen_ = gen
         s = Session(self, proc)
         proc.head = s             # the new processor is ours alone: no lock needed yet
         self.held[proc] = s
@@ -473,6 +476,18 @@ class Processor(FastPaths):
         if self.rt.stopping:
             raise Shutdown()
         self.rt.out.write(self, text)
+
+    def print_error(self, text):
+        """Write `text` whole on the run's stderr (the `stderr` given to run_main), under the
+        lock of the standard output, so no output line of either stream is torn; flushed
+        at once, like C's stderr. Not tagged in trace mode."""
+        if self.rt.stopping:
+            raise Shutdown()
+        self.rt.out.write_other(self.rt.stderr, text)
+
+    def flush_output(self):
+        """Flush the run's stdout and stderr streams (IO_MEDIUM.flush on the console)."""
+        self.rt.out.flush_streams(self.rt.stderr)
 
     def sleep(self, ns, where=None):
         """Sleep `ns` nanoseconds on the runtime clock (virtual or real)."""

@@ -47,9 +47,12 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
     def resolve_type(self, node):
         resolver = TypeResolver(self.universe, self.info, self.report, self._anchor)
         if isinstance(node, syntax.AnchoredType) and isinstance(node.anchor, syntax.Current):
-            ty = self.current
-            return ty.with_marks(attached=node.attachment != "detachable", separate=node.separate)
-        return resolver.resolve(node)
+            ty = self.current.with_marks(attached=node.attachment != "detachable", separate=node.separate)
+        else:
+            ty = resolver.resolve(node)
+        if ty is not None:
+            self.tables.types[node] = ty         # the type as written: codegen's run-time types
+        return ty
 
     def resolve_quiet(self, node, info):
         return TypeResolver(self.universe, info, lambda *a, **k: None, constraints=False).resolve(node)

@@ -1,0 +1,146 @@
+"""The compile stage of the pipeline: checked program -> Python packages on disk.
+
+The standard library is compiled once into the package `eiffel_base`, cached by the contents of
+stdlib/ and of the compiler (`$SCOOPC_CACHE_DIR/base-<key>/`); a program's own classes go to a
+package of their own, which imports eiffel_base. `scoopc run` caches programs by content too.
+"""
+from __future__ import annotations
+
+import ast
+import hashlib
+import json
+import os
+import shutil
+import sys
+import tempfile
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Optional
+
+from . import __version__
+from .codegen.context import Options
+from .semantics.library import cache_dir
+from .semantics.universe import stdlib_files
+
+BASE_PACKAGE = "eiffel_base"
+
+
+def _compiler_digest() -> str:
+    digest = hashlib.sha256(__version__.encode())
+    root = Path(__file__).parent
+    for folder in ("codegen", "kernel", "kernel/ext", "semantics"):
+        for path in sorted((root / folder).glob("*.py")):
+            digest.update(path.name.encode())
+            digest.update(path.read_bytes())
+    for path in stdlib_files():
+        digest.update(path.name.encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:24]
+
+
+@dataclass
+class Compiled:
+    package: str
+    path: Path                    # the folder holding the program's package
+    base_path: Path               # the folder holding eiffel_base
+    root_key: str
+    creator: str
+
+
+def write_modules(folder: Path, modules: dict, init_doc: str, uses: tuple[str, ...] = ()) -> None:
+    """Write the modules of one package (readable Python text) and its __init__, which loads
+    them parents first (scoopc.kernel.link)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    order = [name[:-3] for name in modules]
+    (folder / "__init__.py").write_text(
+        f'"""{init_doc}"""\nfrom scoopc.kernel import link\n\n'
+        f"CLASSES_BY_NAME = link.load(__name__, {order!r}, uses={uses!r})\n")
+    lines = {}
+    for filename, (module, source) in modules.items():
+        text = ast.unparse(module) + "\n"
+        (folder / filename).write_text(text)
+        lines[filename[:-3]] = [source, line_map(module, text)]
+    (folder / "_lines.json").write_text(json.dumps(lines, separators=(",", ":")))
+
+
+def line_map(module: ast.Module, text: str) -> dict:
+    """Python line -> Eiffel line: the written text parses back to the same tree shape."""
+    found = {}
+    for original, written in zip(ast.walk(module), ast.walk(ast.parse(text))):
+        if isinstance(original, ast.stmt) and isinstance(written, ast.stmt):
+            found.setdefault(str(written.lineno), original.lineno)
+    return found
+
+
+def base_package(progress=None) -> Path:
+    """The folder that holds the compiled standard library (built on first use)."""
+    target = cache_dir() / f"base-{_compiler_digest()}"
+    if (target / BASE_PACKAGE / "__init__.py").exists():
+        return target
+    from .codegen.program import generate
+    from .pipeline import check_project
+    from .project import Project
+
+    if progress:
+        progress("compiling the standard library (once)")
+    checked = check_project(Project(), use_cache=False, library_bodies=True)
+    if checked.has_errors:
+        raise RuntimeError("the standard library does not check: " + str(checked.diagnostics[0]))
+    sem = checked.semantics
+    modules = generate(sem.universe, sem.tables, Options(package=BASE_PACKAGE), lambda info: info.from_library)
+    staging = Path(tempfile.mkdtemp(prefix="base-", dir=_ensure(cache_dir())))
+    write_modules(staging / BASE_PACKAGE, modules, "The standard library, compiled by scoopc.")
+    try:
+        staging.rename(target)
+    except OSError:                            # another process won the race: use its copy
+        shutil.rmtree(staging, ignore_errors=True)
+    return target
+
+
+def _ensure(path: Path) -> Path:
+    path.mkdir(parents=True, exist_ok=True)
+    return path
+
+
+def compile_program(checked, out_dir: Path, package: str, root_key: str, creator: str,
+                    assertions: str = "all") -> Compiled:
+    from .codegen.program import generate
+
+    sem = checked.semantics
+    options = Options(assertions=assertions, package=package)
+    modules = generate(sem.universe, sem.tables, options, lambda info: not info.from_library)
+    folder = out_dir / package
+    if folder.exists():
+        shutil.rmtree(folder)
+    write_modules(folder, modules, f"A program compiled by scoopc (root class {root_key}).", (BASE_PACKAGE,))
+    (folder / "__main__.py").write_text(_main_text(package, root_key, creator, sem.universe))
+    return Compiled(package, out_dir, base_package(), root_key, creator)
+
+
+def _main_text(package: str, root_key: str, creator: str, universe) -> str:
+    from .codegen.names import class_name, module_name
+
+    shadowed = {k: v for k, v in universe.shadowed.items()}
+    return (f'"""Run the program: python -m {package} [ARGS]."""\n'
+            f"import sys\n\n"
+            f"from scoopc.kernel import launcher\n\n"
+            f"if __name__ == '__main__':\n"
+            f"    from {package}.{module_name(root_key)} import {class_name(root_key)}\n"
+            f"    sys.exit(launcher.main({class_name(root_key)}, {creator!r}, sys.argv, shadowed={shadowed!r}))\n")
+
+
+def ensure_on_path(*folders: Optional[Path]) -> None:
+    for folder in folders:
+        if folder is not None and str(folder) not in sys.path:
+            sys.path.insert(0, str(folder))
+
+
+def program_key(sources: list[Path], extra: str) -> str:
+    digest = hashlib.sha256(_compiler_digest().encode() + extra.encode())
+    for path in sorted(sources):
+        digest.update(str(path).encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:24]
+
+
+__all__ = ["base_package", "compile_program", "ensure_on_path", "os"]

@@ -1,0 +1,273 @@
+"""Codegen, calls: feature calls (built-ins of basic types inlined, dynamic dispatch on values
+that may be basic, separate calls lowered onto the runtime), Precursor, static calls, creation,
+conversions and agents."""
+from __future__ import annotations
+
+import ast
+
+from .. import syntax
+from ..semantics.types import BASIC, Ty
+from . import pyast as P
+from .context import fail
+from .names import class_name
+
+AGENT_CLASSES = ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
+
+
+def is_external(feature, language: str) -> bool:
+    body = feature.body
+    inner = getattr(body, "body", None)
+    return isinstance(inner, syntax.ExternalBody) and inner.language.lower() == language.lower()
+
+
+def declared_name(feature) -> str:
+    """The feature's name as written in the class that declares this version."""
+    for fname in feature.decl.names:
+        if fname is feature.fname:
+            return fname.name.key
+    return feature.decl.names[0].name.key
+
+
+class Calls:
+    # --- unqualified and qualified calls ---------------------------------------------------------
+    def x_UnqualifiedCall(self, node):
+        entity = self.tables.entities.get(node)
+        if entity is not None and entity.kind != "attribute":
+            value = P.name(self.local_name(entity.name))
+            if node.arguments:
+                return self.agent_application(node, value, node)
+            return value
+        feature = self.tables.features.get(node)
+        if feature is None:
+            fail(f"unresolved call {node.name.text}", node.span)
+        if node in self.tables.agent_calls:
+            target = self.plain_call(P.name("self"), feature, [])
+            return self.agent_application(node, target, node)
+        return self.call_feature(node, None, P.name("self"), feature, node.arguments)
+
+    def x_QualifiedCall(self, node):
+        target = self.x(node.target)
+        feature = self.tables.features.get(node)
+        if feature is None:
+            label = self.tuple_label(node)
+            if label is not None:
+                return self.tuple_item(node, target, label)
+            fail(f"unresolved call {node.name.text}", node.span)
+        return self.call_feature(node, node.target, target, feature, node.arguments)
+
+    def x_BracketExpression(self, node):
+        feature = self.tables.features.get(node)
+        if feature is None:
+            fail("unresolved bracket", node.span)
+        return self.call_feature(node, node.target, self.x(node.target), feature, node.arguments)
+
+    def x_StaticCall(self, node):
+        feature = self.tables.features.get(node)
+        ty = self.type_of(node.type)
+        if feature.kind == "constant":
+            return P.attr(self.class_ref(ty.name), self.py_name(feature))
+        holder = P.call("S.static_target", [P.name("here"), self.class_ref(ty.name)])
+        return self.call_feature(node, None, holder, feature, node.arguments, static_type=ty)
+
+    def x_Precursor(self, node):
+        feature = self.tables.features.get(node)
+        if feature is None:
+            fail("unresolved Precursor", node.span)
+        owner = self.class_ref(feature.written_in)
+        args = [self.argument(a) for a in node.arguments]
+        if self.is_property(feature):
+            return P.call(P.attr(P.attr(owner, self.py_name(feature)), "fget"), [P.name("self")])
+        if feature.kind in ("attribute", "constant"):
+            return P.attr(P.name("self"), self.py_name(feature))
+        return P.call(P.attr(owner, self.py_name(feature)), [P.name("self")] + args)
+
+    def tuple_label(self, node):
+        ty = self.tables.types.get(node.target)
+        if ty is not None and ty.name == "TUPLE" and node.name.key in ty.labels:
+            return ty.labels.index(node.name.key)
+        return None
+
+    def tuple_item(self, node, target, index: int):
+        if node in self.tables.separate_calls or (self.tables.types.get(node.target) or Ty("X")).separate:
+            return P.call("here.query", [target, P.dotted("S.tuple_item"), P.tup([P.const(index)])])
+        return ast.Subscript(P.attr(target, "_items"), P.const(index), ast.Load())
+
+    # --- the call itself ---------------------------------------------------------------------------
+    def call_feature(self, node, target_node, target, feature, arguments, conversion=None, static_type=None):
+        args = [self.argument(a) for a in arguments]
+        if conversion is not None:
+            target = self.convert(target_node, target, conversion)
+            target_ty = conversion[1]
+        else:
+            target_ty = static_type or (self.tables.types.get(target_node) if target_node is not None else None)
+        if node in self.tables.separate_calls:
+            return self.separate_call(node, target, feature, args)
+        if self.is_builtin_basic(feature):
+            from ..kernel import basic
+
+            return basic.inline(feature.written_in, declared_name(feature), target, args)
+        if target_node is not None and target_ty is not None and self.may_hold_basic(target_ty) \
+                and not self.is_basic(target_ty):
+            if self.is_property(feature) or feature.kind in ("attribute", "constant"):
+                return P.call("B.query", [target, P.const(self.py_name(feature)), P.name("here")])
+            return P.call("B.call", [target, P.const(self.py_name(feature)), P.tup(args), P.name("here")])
+        return self.plain_call(target, feature, args)
+
+    def plain_call(self, target, feature, args):
+        if self.is_property(feature) or (feature.kind in ("attribute", "constant") and not args):
+            return P.attr(target, self.py_name(feature))
+        return P.call(P.attr(target, self.py_name(feature)), args)
+
+    def is_property(self, feature) -> bool:
+        return feature.is_query and not feature.arguments
+
+    def is_builtin_basic(self, feature) -> bool:
+        return feature.written_in in BASIC and is_external(feature, "built_in")
+
+    def argument(self, node):
+        return self.x(node)
+
+    # --- separate calls ---------------------------------------------------------------------------
+    def separate_call(self, node, target, feature, args):
+        name = P.const(self.py_name(feature))
+        passing = self.tables.lock_passing.get(node)
+        can_pass = P.const(bool(passing))
+        if feature.is_query:
+            return P.call("S.squery", [P.name("here"), target, name, P.tup(args), can_pass, self.where(node)])
+        return P.call("S.scall", [P.name("here"), target, name, P.tup(args), can_pass])
+
+    # --- conversions ----------------------------------------------------------------------------------
+    def convert(self, node, value, conversion):
+        converter, target_ty = conversion
+        source_ty = self.tables.types.get(node)
+        source = self.universe.get(source_ty.name) if source_ty is not None else None
+        feature = source.features.get(converter) if source is not None else None
+        if feature is not None and feature.is_query:
+            if self.is_builtin_basic(feature):
+                from ..kernel import basic
+
+                return basic.inline(feature.written_in, declared_name(feature), value, [])
+            return self.plain_call(value, feature, [])
+        target_info = self.universe.get(target_ty.name)
+        creator = target_info.features.get(converter) if target_info is not None else None
+        if creator is None:
+            fail(f"conversion {converter} not found", getattr(node, "span", None))
+        return self.new_object(target_ty, creator, [value], separate=False, passive=False)
+
+    # --- creation -------------------------------------------------------------------------------------
+    def creation_value(self, node, ty: Ty, feature, arguments, passive: bool):
+        args = [self.argument(a) for a in arguments]
+        if ty.is_formal:
+            name = self.py_name(feature) if feature is not None else "default_create"
+            return P.call("S.create_formal", [P.name("here"), self.type_desc(ty), P.const(name), P.tup(args)])
+        return self.new_object(ty, feature, args, separate=ty.separate, passive=passive)
+
+    def new_object(self, ty: Ty, feature, args, separate: bool, passive: bool):
+        info = self.universe.get(ty.name)
+        cls = self.class_ref(info.name)
+        gen = self.generics_desc(ty) if info.formals else None
+        creator = self.py_name(feature) if feature is not None else None
+        if separate or passive:
+            maker = "here.new_passive" if passive else "here.new_separate"
+            routine = P.attr(cls, creator) if creator else P.const(None)
+            extra = [gen] if gen is not None else []
+            return P.call(maker, [cls, routine, P.tup(args)] + extra)
+        invariant = self.assertions == "all" and self.program_has_invariant(info)
+        return P.call("S.create", [P.name("here"), cls, gen if gen is not None else P.const(None),
+                                   P.const(creator), P.tup(args)] + ([P.const(True)] if invariant else []))
+
+    def program_has_invariant(self, info) -> bool:
+        return bool(getattr(info, "_has_invariant", False))
+
+    # --- agents ------------------------------------------------------------------------------------
+    def agent_application(self, node, agent, call_node):
+        """`f (a, b)` on an agent: `f.call ([a, b])` / `f.item ([a, b])`."""
+        feature = self.tables.features.get(call_node)
+        items = [self.argument(a) for a in call_node.arguments]
+        operands = P.call("S.new_tuple", [P.name("here"), P.lst(items), P.tup([])])
+        ty = self.tables.types.get(call_node)
+        name = self.py_name(feature)
+        if (self.agent_type_of(node) or Ty("X")).separate:
+            helper = "S.squery" if feature.is_query else "S.scall"
+            extra = [self.where(call_node)] if feature.is_query else []
+            return P.call(helper, [P.name("here"), agent, P.const(name), P.tup([operands]), P.const(True)] + extra)
+        del ty
+        return P.call(P.attr(agent, name), [operands])
+
+    def agent_type_of(self, node):
+        entity = self.tables.entities.get(node)
+        return entity.ty if entity is not None else None
+
+    def x_Agent(self, node):
+        ty = self.type_of(node)
+        feature = self.tables.features.get(node)
+        if node.target is None:
+            target, open_target = P.name("self"), False
+        elif isinstance(node.target, syntax.ManifestType):
+            target, open_target = P.const(None), True
+        else:
+            target, open_target = self.x(node.target), False
+        slots, opened = [target], [0] if open_target else []
+        if feature is None:                       # a TUPLE label
+            fail("agents on tuple labels are not supported", node.span)
+        count = len(feature.arguments)
+        operands = node.arguments if node.arguments is not None else [None] * count
+        for index, operand in enumerate(operands, start=1):
+            if operand is None or isinstance(operand, syntax.OpenOperand):
+                slots.append(P.const(None))
+                opened.append(index)
+            else:
+                slots.append(self.argument(operand))
+        fn = P.call("S.dispatcher", [P.const(self.py_name(feature)), P.const(self.is_property(feature))])
+        return P.call("S.new_agent", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), fn,
+                                      P.lst(slots), P.tup([P.const(i) for i in opened])])
+
+    def x_InlineAgent(self, node):
+        ty = self.type_of(node)
+        fn_name = self.inline_agent_function(node)
+        count = len(node.arguments)
+        closed = [self.argument(a) for a in (node.actuals or ())]
+        slots = [P.name("self")]
+        opened = []
+        if node.actuals is None:
+            slots += [P.const(None)] * count
+            opened = list(range(1, count + 1))
+        else:
+            for index, operand in enumerate(node.actuals, start=1):
+                if isinstance(operand, syntax.OpenOperand):
+                    slots.append(P.const(None))
+                    opened.append(index)
+                else:
+                    slots.append(closed[index - 1])
+        return P.call("S.new_agent", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.name(fn_name),
+                                      P.lst(slots), P.tup([P.const(i) for i in opened])])
+
+    # --- run-time types ------------------------------------------------------------------------------
+    def type_desc(self, ty: Ty) -> ast.expr:
+        if ty.is_formal:
+            return ast.Subscript(P.attr(P.name("self"), "_gen_"), P.const(ty.formal), ast.Load())
+        if ty.name == "<Current>":
+            return P.call("T.of", [P.name("self")])
+        key = self.universe.canonical(ty.name) if self.universe.get(ty.name) is None else ty.name
+        generics = [self.type_desc(g) for g in ty.generics]
+        call = P.call("T.t", [P.const(key), P.tup(generics), P.const(bool(ty.attached))])
+        if any(isinstance(g, ast.Subscript) or (isinstance(g, ast.Call) and not _constant_desc(g)) for g in generics):
+            return call
+        return self.module.constant("T", call, key=("type", str(ty), ty.attached))
+
+    def generics_desc(self, ty: Ty) -> ast.expr:
+        return P.tup([self.type_desc(g) for g in ty.generics])
+
+    def class_ref(self, key: str):
+        return self.module.class_ref(key)
+
+
+def _constant_desc(node) -> bool:
+    return isinstance(node, ast.Name)
+
+
+def basic_class(ty) -> bool:
+    return ty is not None and not ty.is_formal and ty.name in BASIC
+
+
+__all__ = ["Calls", "class_name", "is_external", "declared_name"]

@@ -1,0 +1,85 @@
+"""Codegen, shared state: the program being compiled (universe, tables, names, layouts, options)
+and, per module, what it must import and the constants it defines at module level."""
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass, field
+from typing import Optional
+
+from . import pyast as P
+from .names import Naming, class_name, module_name
+
+
+class CodegenError(Exception):
+    """Codegen met something the checker should have rejected or recorded: an internal error."""
+
+
+@dataclass
+class Options:
+    assertions: str = "all"            # all | require | none (wait conditions always)
+    library_assertions: str = "require"
+    base_package: str = "eiffel_base"
+    package: str = "program"
+
+
+@dataclass
+class Program:
+    universe: object
+    tables: object
+    options: Options
+    naming: Naming
+    layouts: dict = field(default_factory=dict)
+    leaves: dict = field(default_factory=dict)      # id(decl) -> bool
+    sources: dict = field(default_factory=dict)     # class key -> source path
+
+    def package_of(self, key: str) -> str:
+        info = self.universe.get(key)
+        return self.options.base_package if info is not None and info.from_library else self.options.package
+
+    def assertions_for(self, info) -> str:
+        return self.options.library_assertions if info.from_library else self.options.assertions
+
+
+class ModuleContext:
+    """Imports and module-level constants of one generated module."""
+
+    def __init__(self, program: Program, info):
+        self.program = program
+        self.info = info
+        self.parents: list[str] = []          # keys imported at the top (base classes)
+        self.others: set[str] = set()         # keys imported at the bottom
+        self.constants: list[ast.stmt] = []   # module-level assignments (positions, clause tables, types)
+        self._const_names: dict = {}
+        self.counter = 0
+
+    def class_ref(self, key: str) -> ast.expr:
+        if key != self.info.name and key not in self.parents:
+            self.others.add(key)
+        return P.name(class_name(key))
+
+    def constant(self, prefix: str, value: ast.expr, key=None) -> ast.Name:
+        """A module-level constant (interned by `key` when given)."""
+        if key is not None and key in self._const_names:
+            return P.name(self._const_names[key])
+        self.counter += 1
+        ident = f"{prefix}_{self.counter}"
+        self.constants.append(P.assign(P.name(ident), value))
+        if key is not None:
+            self._const_names[key] = ident
+        return P.name(ident)
+
+    def import_lines(self, keys, top: bool) -> list[ast.stmt]:
+        out = []
+        for key in sorted(keys):
+            out.append(ast.ImportFrom(f"{self.program.package_of(key)}.{module_name(key)}",
+                                      [ast.alias(class_name(key))], 0))
+        return out
+
+
+def fail(message: str, span=None):
+    where = f" at {span.file}:{span.line}:{span.column}" if span is not None else ""
+    raise CodegenError(message + where)
+
+
+def first(items, default=None) -> Optional[object]:
+    return next(iter(items), default)

@@ -1,0 +1,197 @@
+"""Codegen, expressions: one `x_<Node>` method per expression kind, each returning a Python
+`ast.expr`. Types, features and entities come from the checker's tables only."""
+from __future__ import annotations
+
+import ast
+
+from .. import syntax
+from ..semantics.types import BASIC, Ty
+from . import pyast as P
+from .context import fail
+
+EQUALITY = {"=": ast.Is, "/=": ast.IsNot}
+INTEGER_KINDS = ("INTEGER_8", "INTEGER_16", "INTEGER_32", "INTEGER_64",
+                 "NATURAL_8", "NATURAL_16", "NATURAL_32", "NATURAL_64")
+# Classes a value of a basic type conforms to: calls on them may meet a Python int/float/str/bool.
+BASIC_ANCESTORS = frozenset({"ANY", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "NUMERIC", "DEBUG_OUTPUT"})
+
+
+class Expressions:
+    def x(self, node) -> ast.expr:
+        method = getattr(self, "x_" + type(node).__name__, None)
+        if method is None:
+            fail(f"no code for {type(node).__name__}", getattr(node, "span", None))
+        result = method(node)
+        conversion = self.tables.conversions.get(node)
+        if conversion is not None and not isinstance(node, syntax.BinaryExpression):
+            result = self.convert(node, result, conversion)
+        return P.at(result, getattr(node, "span", None))
+
+    def type_of(self, node) -> Ty:
+        ty = self.tables.types.get(node)
+        if ty is None:
+            fail("no recorded type", getattr(node, "span", None))
+        return ty
+
+    # --- manifest constants ------------------------------------------------------------------
+    def x_ManifestInteger(self, node):
+        ty = self.tables.types.get(node)
+        if ty is not None and ty.name in ("REAL_32", "REAL_64"):
+            return P.const(float(node.value))
+        return P.const(node.value)
+
+    def x_ManifestReal(self, node):
+        return P.const(float(node.value))
+
+    def x_ManifestCharacter(self, node):
+        return P.const(node.value)
+
+    def x_ManifestBoolean(self, node):
+        return P.const(bool(node.value))
+
+    def x_ManifestString(self, node):
+        ty = self.tables.types.get(node)
+        maker = "s32" if ty is not None and ty.name in ("STRING_32", "READABLE_STRING_32", "IMMUTABLE_STRING_32") else "s8"
+        if ty is not None and ty.name.startswith("IMMUTABLE_STRING"):
+            maker = "i32" if ty.name.endswith("32") else "i8"
+        if node.once:
+            key = self.module.constant("ONCE_STRING", P.call("object", []))
+            return P.call("S.once_string", [P.name("here"), key, P.const(node.value), P.dotted("KS." + maker)])
+        return P.call("KS." + maker, [P.name("here"), P.const(node.value)])
+
+    def x_TypedConstant(self, node):
+        return self.x(node.constant)
+
+    def x_Unique(self, node):
+        fail("unique constants are not supported", node.span)
+
+    def x_Address(self, node):
+        return P.const(0)
+
+    def x_ManifestType(self, node):
+        return P.call("S.type_object", [P.name("here"), self.type_desc(self.type_of(node.type))])
+
+    def x_TupleExpression(self, node):
+        ty = self.type_of(node)
+        items = [self.x(item) for item in node.items]
+        return P.call("S.new_tuple", [P.name("here"), P.lst(items), self.generics_desc(ty)])
+
+    def x_ManifestArray(self, node):
+        ty = self.type_of(node)
+        items = [self.x(item) for item in node.items]
+        return P.call("S.manifest_array", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.lst(items)])
+
+    # --- entities ------------------------------------------------------------------------------
+    def x_Current(self, node):
+        return P.name("self")
+
+    def x_Result(self, node):
+        return P.name("Result")
+
+    def x_Void(self, node):
+        return P.const(None)
+
+    def x_Parenthesized(self, node):
+        return self.x(node.expression)
+
+    def x_Old(self, node):
+        return P.name(self.olds[node])
+
+    # --- operators -----------------------------------------------------------------------------
+    def x_BinaryExpression(self, node):
+        op = node.operator
+        if op == "and then" or (op == "and" and node not in self.tables.features):
+            return P.boolop(ast.And(), [self.x(node.left), self.x(node.right)])
+        if op == "or else" or (op == "or" and node not in self.tables.features):
+            return P.boolop(ast.Or(), [self.x(node.left), self.x(node.right)])
+        if op == "implies":
+            return P.boolop(ast.Or(), [P.not_(self.x(node.left)), self.x(node.right)])
+        if op == "xor" and node not in self.tables.features:
+            return P.compare(self.x(node.left), ast.NotEq(), self.x(node.right))
+        if op in ("=", "/=", "~", "/~"):
+            return self.equality(node)
+        feature = self.tables.features.get(node)
+        if feature is None:
+            fail(f"operator {op} without a feature", node.span)
+        target = self.x(node.left)
+        conversion = self.tables.conversions.get(node.left)
+        return self.call_feature(node, node.left, target, feature, [node.right], conversion=conversion)
+
+    def equality(self, node):
+        left_ty, right_ty = self.tables.types.get(node.left), self.tables.types.get(node.right)
+        left, right = self.x(node.left), self.x(node.right)
+        negate = node.operator in ("/=", "/~")
+        if isinstance(node.right, syntax.Void) or isinstance(node.left, syntax.Void):
+            return P.compare(left, ast.IsNot() if negate else ast.Is(), right)
+        if node.operator in ("~", "/~"):
+            test = P.call("B.equal", [left, right])
+        elif self.is_basic(left_ty) or self.is_basic(right_ty):
+            return P.compare(left, ast.NotEq() if negate else ast.Eq(), right)
+        elif self.may_hold_basic(left_ty) or self.may_hold_basic(right_ty):
+            test = P.call("B.same", [left, right])
+        else:
+            return P.compare(left, ast.IsNot() if negate else ast.Is(), right)
+        return P.not_(test) if negate else test
+
+    def x_UnaryExpression(self, node):
+        if node.operator == "not" and node not in self.tables.features:
+            return P.not_(self.x(node.operand))
+        feature = self.tables.features.get(node)
+        if feature is None:
+            fail(f"operator {node.operator} without a feature", node.span)
+        return self.call_feature(node, node.operand, self.x(node.operand), feature, [],
+                                 conversion=self.tables.conversions.get(node.operand))
+
+    def is_basic(self, ty) -> bool:
+        return ty is not None and not ty.is_formal and ty.name in BASIC
+
+    def may_hold_basic(self, ty) -> bool:
+        """Could a value of static type `ty` be a Python int/float/str/bool at run time?"""
+        if ty is None:
+            return True
+        if ty.is_formal:
+            return self.formal_may_be_basic(ty)
+        return ty.name in BASIC_ANCESTORS or ty.name in BASIC
+
+    def formal_may_be_basic(self, ty) -> bool:
+        constraints = self.info.constraints[ty.formal] if ty.formal < len(self.info.constraints) else ()
+        return not constraints or any(c.name in BASIC_ANCESTORS or c.name in BASIC for c in constraints)
+
+    # --- conditionals, object tests --------------------------------------------------------------
+    def x_ConditionalExpression(self, node):
+        result = self.x(node.else_part)
+        for part in reversed(node.elseif_parts):
+            result = ast.IfExp(self.x(part.condition), self.x(part.then_part), result)
+        return ast.IfExp(self.x(node.condition), self.x(node.then_part), result)
+
+    def x_ObjectTest(self, node):
+        value = self.x(node.expression)
+        if node.local is not None:
+            value = ast.NamedExpr(P.name(self.local_name(node.local.key), store=True), value)
+        if node.type is None:
+            return P.is_not_none(value)
+        ty = self.type_of(node.type)
+        desc = self.type_desc(ty)
+        if node.local is None:
+            return P.call("S.conforms", [value, desc])
+        return P.boolop(ast.And(), [P.is_not_none(value), P.call(P.attr(desc, "accepts"), [P.name(self.local_name(node.local.key))])])
+
+    def x_AcrossExpression(self, node):
+        iteration = node.iteration
+        var = self.local_name(iteration.name.key)
+        body = self.x(node.body)
+        if node.until is not None:
+            fail("`until` in an across expression is not supported", node.span)
+        source = self.iteration_source(iteration)
+        comp = ast.GeneratorExp(body, [ast.comprehension(P.name(var, store=True), source, [], 0)])
+        return P.call("all" if node.quantifier == "all" else "any", [comp])
+
+    def iteration_source(self, iteration) -> ast.expr:
+        helper = "S.cursors" if iteration.cursor_mode else "S.items"
+        return P.call(helper, [self.x(iteration.expression)])
+
+    # --- creation expressions ------------------------------------------------------------------
+    def x_CreationExpression(self, node):
+        ty = self.type_of(node.type)
+        feature = self.tables.features.get(node)
+        return self.creation_value(node, ty, feature, node.arguments, node.processor is not None)

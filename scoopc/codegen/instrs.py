@@ -1,0 +1,171 @@
+"""Codegen, instructions: one `s_<Node>` method per instruction kind, each returning a list of
+Python statements."""
+from __future__ import annotations
+
+import ast
+
+from .. import syntax
+from . import pyast as P
+from .context import fail
+
+
+class Instructions:
+    def block(self, instructions) -> list:
+        out = []
+        for instruction in instructions:
+            method = getattr(self, "s_" + type(instruction).__name__, None)
+            if method is None:
+                fail(f"no code for {type(instruction).__name__}", instruction.span)
+            for stmt in method(instruction):
+                out.append(P.at(stmt, instruction.span))
+        return out
+
+    # --- assignment --------------------------------------------------------------------------------
+    def s_Assignment(self, node):
+        return [P.assign(self.target(node.target), self.x(node.source))]
+
+    def s_AssignmentAttempt(self, node):
+        ty = self.tables.types.get(node.target) or self.entity_type(node.target)
+        value = P.call("S.attempt", [self.x(node.source), self.type_desc(ty)])
+        return [P.assign(self.target(node.target), value)]
+
+    def entity_type(self, target):
+        entity = self.tables.entities.get(target)
+        if entity is not None:
+            return entity.ty
+        if isinstance(target, syntax.Result):
+            return self.result_type
+        feature = self.tables.features.get(target)
+        return feature.signature.result if feature is not None else None
+
+    def target(self, node):
+        if isinstance(node, syntax.Result):
+            return P.name("Result")
+        entity = self.tables.entities.get(node)
+        if entity is not None and entity.kind != "attribute":
+            return P.name(self.local_name(entity.name))
+        feature = self.tables.features.get(node)
+        if feature is None:
+            fail("unresolved assignment target", node.span)
+        return P.attr(P.name("self"), self.py_name(feature))
+
+    def s_AssignerCall(self, node):
+        assigner = self.tables.features.get(node)
+        target = node.target
+        if assigner is None:
+            if isinstance(target, syntax.QualifiedCall) and self.tuple_label(target) is not None:
+                index = self.tuple_label(target)
+                holder = self.x(target.target)
+                return [P.expr_stmt(P.call("S.tuple_put", [holder, P.const(index), self.x(node.source)]))]
+            fail("assigner call without an assigner", node.span)
+        if isinstance(target, syntax.BracketExpression):
+            owner, arguments = target.target, target.arguments
+        elif isinstance(target, syntax.QualifiedCall):
+            owner, arguments = target.target, target.arguments
+        else:
+            owner, arguments = None, target.arguments
+        receiver = self.x(owner) if owner is not None else P.name("self")
+        args = [self.x(node.source)] + [self.argument(a) for a in arguments]
+        if target in self.tables.separate_calls:
+            return [P.expr_stmt(P.call("S.scall", [P.name("here"), receiver, P.const(self.py_name(assigner)),
+                                                   P.tup(args), P.const(True)]))]
+        return [P.expr_stmt(P.call(P.attr(receiver, self.py_name(assigner)), args))]
+
+    # --- calls and creation ----------------------------------------------------------------------------
+    def s_CallInstruction(self, node):
+        return [P.expr_stmt(self.x(node.call))]
+
+    def s_CreationInstruction(self, node):
+        ty = self.tables.types.get(node)
+        if ty is None:
+            fail("creation without a type", node.span)
+        feature = self.tables.features.get(node)
+        value = self.creation_value(node, ty, feature, node.arguments, node.processor is not None)
+        return [P.assign(self.target(node.target), value)]
+
+    # --- control -------------------------------------------------------------------------------------
+    def s_Conditional(self, node):
+        orelse = self.block(node.else_part) if node.else_part else []
+        for part in reversed(node.elseif_parts):
+            orelse = [P.at(P.if_(self.x(part.condition), self.block(part.then_part), orelse), part.span)]
+        return [P.if_(self.x(node.condition), self.block(node.then_part), orelse)]
+
+    def s_MultiBranch(self, node):
+        subject = self.temp("inspect")
+        out = [P.assign(P.name(subject), self.x(node.expression))]
+        if node.else_part is not None:
+            orelse = self.block(node.else_part)
+        else:
+            orelse = [P.expr_stmt(P.call("S.bad_inspect", [P.name(subject), self.where(node)]))]
+        for part in reversed(node.when_parts):
+            tests = [self.choice(P.name(subject), c) for c in part.choices]
+            orelse = [P.at(P.if_(P.boolop(ast.Or(), tests), self.block(part.then_part), orelse), part.span)]
+        return out + orelse
+
+    def choice(self, subject, choice):
+        lower = self.x(choice.lower)
+        if choice.upper is None:
+            return P.compare(subject, ast.Eq(), lower)
+        return ast.Compare(lower, [ast.LtE(), ast.LtE()], [subject, self.x(choice.upper)])
+
+    def s_Loop(self, node):
+        out = self.block(node.initialization)
+        body = self.block(node.body)
+        checks, variant = self.loop_checks(node)
+        out += variant[0]
+        loop = ast.While(P.not_(self.x(node.until)), checks + body + variant[1], [])
+        return out + checks + [loop] + checks
+
+    def loop_checks(self, node):
+        if self.assertions != "all":
+            return [], ([], [])
+        checks = [self.assertion(c, "loop_invariant") for c in node.invariant if c.expression is not None]
+        if node.variant is None:
+            return checks, ([], [])
+        name = self.temp("variant")
+        first = [P.assign(P.name(name), P.call("S.variant_start", [self.x(node.variant.expression), self.where(node.variant)]))]
+        step = [P.assign(P.name(name), P.call("S.variant_step", [P.name(name), self.x(node.variant.expression),
+                                                                   self.where(node.variant)]))]
+        return checks, (first, step)
+
+    def s_Across(self, node):
+        iteration = node.iteration
+        var = self.local_name(iteration.name.key)
+        out = self.block(node.initialization)
+        body = self.block(node.body)
+        if node.until is not None:
+            body = [P.if_(self.x(node.until), [ast.Break()])] + body
+        checks, _ = self.loop_checks(node)
+        loop = ast.For(P.name(var, store=True), self.iteration_source(iteration), checks + body, [], None)
+        return out + [loop]
+
+    def s_Check(self, node):
+        out = []
+        if self.assertions == "all" or node.then_part is not None:
+            for clause in node.assertions:
+                if clause.expression is not None:
+                    out.append(self.assertion(clause, "check"))
+        if node.then_part is not None:
+            out += self.block(node.then_part)
+        return out
+
+    def s_Debug(self, node):
+        return []
+
+    def s_Retry(self, node):
+        return [ast.Continue()]
+
+    def s_SeparateInstruction(self, node):
+        out, names = [], []
+        for argument in node.arguments:
+            local = self.local_name(argument.name.key)
+            out.append(P.assign(P.name(local), self.x(argument.expression)))
+            names.append(P.name(local))
+        body = self.block(node.body)
+        return out + self.reserved(names, None, body, self.where(node))
+
+    # --- assertions ----------------------------------------------------------------------------------
+    def assertion(self, clause, kind: str):
+        tag = clause.tag.text if clause.tag is not None else None
+        failure = P.call("S.assertion_failed", [P.const(kind), P.const(tag), self.where(clause)])
+        return P.at(P.if_(P.not_(self.x(clause.expression)), [P.expr_stmt(failure)]), clause.span)

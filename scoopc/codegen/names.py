@@ -1,0 +1,93 @@
+"""Codegen, names: the Python name of every feature and class.
+
+A feature is reached under the original name of its seed (the feature's name in the class that
+introduced it), so that a call through any ancestor finds the version the object's class has
+(Eiffel's dynamic binding through renaming). When two different features of one class would
+get the same Python name, the seed whose class comes first (library before user, ancestor
+before heir) keeps it and the other is qualified with its class: `f__b`.
+"""
+from __future__ import annotations
+
+import keyword
+
+from ..semantics.types import ALIASES
+
+RESERVED = frozenset(keyword.kwlist) | {"self", "here", "Result", "print", "type", "super", "object"}
+
+
+def py_identifier(name: str) -> str:
+    name = name.lower()
+    return name + "_" if name in RESERVED or name.startswith("_") else name
+
+
+def class_name(key: str) -> str:
+    """The Python class of an Eiffel class key (`CELL@BASE` is the library's CELL)."""
+    return key.split("@")[0]
+
+
+def module_name(key: str) -> str:
+    return class_name(key).lower()
+
+
+def seed_class(seed: str) -> str:
+    return seed.rsplit(".", 1)[0]
+
+
+def seed_name(seed: str) -> str:
+    return seed.rsplit(".", 1)[1]
+
+
+class Naming:
+    """Python names of seeds for one universe (demotions computed over every class)."""
+
+    def __init__(self, universe):
+        self.universe = universe
+        self.demoted: dict[str, str] = {}
+        for info in universe.classes.values():
+            self._resolve_class(info)
+
+    def _rank(self, seed: str) -> tuple:
+        owner = self.universe.get(seed_class(seed))
+        library = owner is not None and owner.from_library
+        depth = len(owner.all_ancestors) if owner is not None else 0
+        return (0 if library else 1, depth, seed)
+
+    def _resolve_class(self, info) -> None:
+        by_name: dict[str, dict] = {}
+        for feature in info.features.values():
+            for seed in self.feature_seeds(info, feature):
+                by_name.setdefault(py_identifier(seed_name(seed)), {}).setdefault(id(feature.decl), set()).add(seed)
+        for name, groups in by_name.items():
+            if len(groups) < 2:
+                continue
+            ranked = sorted(groups.values(), key=lambda seeds: min(self._rank(s) for s in seeds))
+            for seeds in ranked[1:]:
+                for seed in seeds:
+                    if seed not in ranked[0]:
+                        self.demoted[seed] = f"{name}__{class_name(seed_class(seed)).lower()}"
+
+    def feature_seeds(self, info, feature) -> set:
+        seeds = set(feature.seeds())
+        for name, versions in info.joins:
+            if name == feature.name:
+                for version in versions:
+                    seeds |= version.seeds()
+        return seeds
+
+    def seed(self, seed: str) -> str:
+        return self.demoted.get(seed) or py_identifier(seed_name(seed))
+
+    def primary(self, feature) -> str:
+        """The name a feature is called by (and an attribute stored under): its oldest seed's."""
+        seeds = feature.seeds()
+        best = min(seeds, key=self._rank)
+        return self.seed(best)
+
+    def all_names(self, info, feature) -> list[str]:
+        names = {self.seed(s) for s in self.feature_seeds(info, feature)}
+        primary = self.primary(feature)
+        return [primary] + sorted(names - {primary})
+
+
+def canonical(name: str) -> str:
+    return ALIASES.get(name, name)

@@ -1,0 +1,61 @@
+"""Codegen, the program: names and layouts for the whole universe, then one module per class.
+
+Input: what the checker proved (semantics.Checked). Output: {module path: Python source} for the
+classes asked for, each also as an `ast.Module` whose statements carry Eiffel line numbers.
+"""
+from __future__ import annotations
+
+import ast
+
+from .classes import ClassGen, plan_bindings
+from .context import CodegenError, Options, Program
+from .layout import make_layout
+from .names import Naming, module_name
+
+
+def parents_first(universe) -> list:
+    order, seen = [], set()
+
+    def visit(info):
+        if info.name in seen:
+            return
+        seen.add(info.name)
+        for _, ty, _ in info.parents:
+            parent = universe.get(ty.name)
+            if parent is not None:
+                visit(parent)
+        order.append(info)
+
+    for info in universe.classes.values():
+        visit(info)
+    return order
+
+
+def prepare(universe, tables, options: Options) -> Program:
+    program = Program(universe, tables, options, Naming(universe))
+    for info in parents_first(universe):
+        program.layouts[info.name] = layout = make_layout(universe, info, program.layouts)
+        layout.plan = plan_bindings(program, info, layout)
+        info._has_invariant = bool(info.decl.invariant) or any(
+            getattr(universe.get(ty.name), "_has_invariant", False) for _, ty, _ in info.parents)
+    return program
+
+
+def generate_class(program: Program, info) -> ast.Module:
+    layout = program.layouts[info.name]
+    try:
+        return ClassGen(program, info, layout).generate(layout.plan)
+    except CodegenError:
+        raise
+    except Exception as problem:             # a surprise is a compiler bug, named with the class
+        raise CodegenError(f"class {info.name}: {type(problem).__name__}: {problem}") from problem
+
+
+def generate(universe, tables, options: Options, which) -> dict:
+    """{module file name: (ast.Module, Eiffel source path)} for the classes `which(info)` selects."""
+    program = prepare(universe, tables, options)
+    modules = {}
+    for info in parents_first(universe):
+        if which(info):
+            modules[module_name(info.name) + ".py"] = (generate_class(program, info), info.decl.span.file)
+    return modules

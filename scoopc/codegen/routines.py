@@ -1,0 +1,190 @@
+"""Codegen, routines: one Eiffel routine (or inline agent) -> Python function(s): locals and
+Result, contracts with `old`, rescue/retry, once, and the reservation of separate arguments with
+its wait conditions (a clause table, docs/RUNTIME.md section 2)."""
+from __future__ import annotations
+
+import ast
+
+from .. import syntax
+from ..semantics import scoop as scoop_rules
+from . import pyast as P
+from .calls import Calls
+from .exprs import Expressions
+from .instrs import Instructions
+from .names import class_name, py_identifier
+
+LOCAL_RESERVED = frozenset({"s", "b", "k", "t", "ks", "rt", "here", "self", "all", "any", "object",
+                            "result", "len", "range", "isinstance", "type"})
+
+
+def local_identifier(name: str) -> str:
+    name = py_identifier(name)
+    return name + "_" if name in LOCAL_RESERVED else name
+
+
+class RoutineGen(Expressions, Calls, Instructions):
+    def __init__(self, program, module, info, feature, routine_name: str):
+        self.program = program
+        self.universe = program.universe
+        self.tables = program.tables
+        self.naming = program.naming
+        self.module = module
+        self.info = info
+        self.feature = feature
+        self.routine_name = routine_name
+        self.assertions = program.assertions_for(info)
+        self.olds: dict = {}
+        self.temps = 0
+        self.result_type = feature.signature.result if feature is not None and feature.signature else None
+        self.inline_agents: list = []
+
+    # --- names ------------------------------------------------------------------------------------
+    def py_name(self, feature) -> str:
+        return self.naming.primary(feature)
+
+    def local_name(self, name: str) -> str:
+        return local_identifier(name)
+
+    def temp(self, prefix: str) -> str:
+        self.temps += 1
+        return f"_{prefix}{self.temps}"
+
+    def where(self, node) -> ast.expr:
+        span = node.span
+        value = P.tup([P.const(class_name(self.info.name)), P.const(self.routine_name),
+                       P.const(span.file), P.const(span.line)])
+        return self.module.constant("W", value, key=("where", self.routine_name, span.file, span.line))
+
+    # --- values of types ------------------------------------------------------------------------
+    def default_value(self, ty) -> ast.expr:
+        if ty is None:
+            return P.const(None)
+        if ty.is_formal:
+            return P.call(P.attr(self.type_desc(ty), "default"), [P.name("here")])
+        from ..kernel.types import _BASIC_DEFAULTS
+
+        if ty.name in _BASIC_DEFAULTS:
+            return P.const(_BASIC_DEFAULTS[ty.name])
+        info = self.universe.get(ty.name)
+        if info is not None and info.is_expanded:
+            return P.call(P.attr(self.type_desc(ty), "default"), [P.name("here")])
+        return P.const(None)
+
+    # --- a routine ----------------------------------------------------------------------------------
+    def routine_body(self, body: syntax.RoutineBody, arguments: list, result_type) -> list:
+        """The statements of a routine: entry, contracts, reservation, body, exit."""
+        out = [P.assign(P.name("here"), P.attr(P.name("self"), "_region_"))]
+        for decl in body.locals:
+            ty = self.tables.types.get(decl.type)
+            out.append(P.at(P.assign(P.name(self.local_name(decl.name.key)), self.default_value(ty)), decl.span))
+        if result_type is not None:
+            out.append(P.assign(P.name("Result"), self.default_value(result_type)))
+        separate = self.separate_arguments(arguments)
+        pre = body.precondition.clauses if body.precondition is not None else ()
+        main = self.olds_at_entry(body) + self.main_body(body)
+        main += self.postcondition(body)
+        if separate:
+            out += self.reserved([P.name(self.local_name(n)) for n, _ in separate], pre, main,
+                                 self.where(body), [n for n, _ in separate], arguments)
+        else:
+            out += self.precondition(pre) + main
+        if result_type is not None:
+            out.append(ast.Return(P.name("Result")))
+        return out
+
+    def separate_arguments(self, arguments) -> list:
+        found = []
+        for name, ty in arguments:
+            if ty is not None and ty.separate and not scoop_rules.is_expanded(self.universe, ty):
+                found.append((name, ty))
+        return found
+
+    def main_body(self, body) -> list:
+        inner = body.body
+        instructions = self.block(inner.instructions) if isinstance(inner, (syntax.InternalBody, syntax.AttributeBody)) else []
+        if body.rescue is None:
+            return instructions
+        caught = self.temp("exception")
+        rescue = [P.expr_stmt(P.call("S.caught", [P.name("here"), P.name(caught)]))]
+        rescue += self.block(body.rescue) + [ast.Raise(None, None)]
+        handler = ast.ExceptHandler(P.dotted("Exception"), caught, rescue)
+        attempt = ast.Try(instructions + [ast.Break()], [handler], [], [])
+        return [ast.While(P.const(True), [attempt], [])]
+
+    # --- contracts ----------------------------------------------------------------------------------
+    def precondition(self, clauses) -> list:
+        if self.assertions == "none":
+            return []
+        return [self.assertion(c, "precondition") for c in clauses if c.expression is not None]
+
+    def postcondition(self, body) -> list:
+        if self.assertions != "all" or body.postcondition is None:
+            return []
+        return [self.assertion(c, "postcondition") for c in body.postcondition.clauses if c.expression is not None]
+
+    def olds_at_entry(self, body) -> list:
+        if self.assertions != "all" or body.postcondition is None:
+            return []
+        out = []
+        for clause in body.postcondition.clauses:
+            for node in _walk(clause.expression):
+                if isinstance(node, syntax.Old) and node not in self.olds:
+                    name = self.temp("old")
+                    self.olds[node] = name
+                    out.append(P.at(P.assign(P.name(name), P.call("S.old", [P.lambda_([], self.x(node.expression))])), node.span))
+        return out
+
+    # --- reservations --------------------------------------------------------------------------------
+    def reserved(self, objs, clauses, body, where, formal_names=None, arguments=None) -> list:
+        """`with here.reserve(...)` around body, the precondition as a clause table."""
+        table, pre_args = self.clause_table(clauses or (), formal_names or [], arguments or [])
+        if len(objs) == 1:
+            call = P.call("here.reserve1", [objs[0], where] + ([table, pre_args] if table is not None else []))
+        else:
+            keywords = {"where": where}
+            if table is not None:
+                keywords.update(pre=table, pre_args=pre_args)
+            call = P.call("here.reserve", [P.tup(objs)], keywords)
+        return [ast.With([ast.withitem(call, None)], body or [ast.Pass()])]
+
+    def clause_table(self, clauses, formal_names, arguments):
+        kept = []
+        for clause in clauses:
+            if clause.expression is None:
+                continue
+            waits = self.tables.wait_args.get(clause, ())
+            if self.assertions == "none" and not waits:
+                continue
+            kept.append((clause, tuple(formal_names.index(w) for w in waits if w in formal_names)))
+        if not kept:
+            return None, None
+        params = ["here", "self"] + [self.local_name(n) for n, _ in arguments]
+        entries = []
+        for clause, targets in kept:
+            tag = clause.tag.text if clause.tag is not None else None
+            pred = P.lambda_(params, self.x(clause.expression))
+            entries.append(P.tup([pred, P.tup([P.const(i) for i in targets]), P.const(tag), self.where(clause)]))
+        table = self.module.constant("PRE", P.tup(entries))
+        return table, P.tup([P.name(p) for p in params])
+
+    # --- inline agents --------------------------------------------------------------------------------
+    def inline_agent_function(self, node) -> str:
+        self.module.counter += 1
+        fname = f"_agent_{self.module.counter}"
+        sub = RoutineGen(self.program, self.module, self.info, None, self.routine_name)
+        sub.result_type = self.tables.types.get(node.type) if node.type is not None else None
+        arguments = [(a.name.key, self.tables.types.get(a.type)) for a in node.arguments]
+        body = sub.routine_body(node.body, arguments, sub.result_type)
+        params = ["self"] + [sub.local_name(n) for n, _ in arguments]
+        self.module.functions.append(P.at(P.function(fname, params, body), node.span))
+        return fname
+
+
+def _walk(node):
+    if node is None:
+        return
+    yield node
+    from ..semantics import walk
+
+    for child in walk.children(node):
+        yield from _walk(child)

@@ -1,0 +1,136 @@
+"""Running a compiled program: arguments, the runtime's options, and the Eiffel-level report of a
+run-time failure (the violated assertion, then class, routine and file:line of each frame).
+
+Generated modules are mapped back to Eiffel lines through `_lines.json`, written beside them by
+the compiler: {module: [eiffel file, {python line: eiffel line}]}.
+"""
+from __future__ import annotations
+
+import json
+import sys
+import traceback
+from pathlib import Path
+
+from ..runtime import DeadlockError, DirtyRegionError, PreconditionViolation
+from . import CLASSES
+from .errors import EiffelFailure
+from .support import ContractViolation, EiffelRuntimeError
+
+_LINE_MAPS: dict = {}
+
+
+def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, strict=False,
+         virtual_clock=False, debug=False, stdout=None, stderr=None) -> int:
+    from .. import runtime as rt
+    from .ext import arguments
+
+    for name, key in (shadowed or {}).items():
+        CLASSES.setdefault(key, CLASSES.get(name))
+    arguments.set_arguments(list(argv))
+    stderr = stderr or sys.stderr
+
+    def describe(error, proc):
+        return report(error, debug)
+
+    routine = getattr(root_cls, creator, None) if creator else None
+    if creator and routine is None:
+        stderr.write(f"scoopc: the root class has no creation procedure `{creator}`\n")
+        return 2
+    return rt.run_main(root_cls, routine, (), describe=describe, trace_processors=trace_processors,
+                       strict=strict, virtual_clock=virtual_clock, stdout=stdout or sys.stdout, stderr=stderr)
+
+
+def report(error, debug: bool = False) -> str:
+    """The text of an uncaught exception: what failed, then the Eiffel call stack."""
+    lines = [describe_error(error)]
+    frames = eiffel_frames(error)
+    for index, (cls, routine, place) in enumerate(frames):
+        lines.append(f"  {'in' if index == 0 else 'called by'} {cls}.{routine} ({place})")
+    if debug:
+        lines.append("Python traceback (--debug):")
+        lines.append("".join(traceback.format_exception(type(error), error, error.__traceback__)).rstrip())
+    return "\n".join(lines)
+
+
+def describe_error(error) -> str:
+    cause = error
+    while isinstance(cause, DirtyRegionError) and cause.__cause__ is not None:
+        cause = cause.__cause__
+    if isinstance(cause, ContractViolation):
+        text = f"{cause.kind.replace('_', ' ')} violated: `{cause.tag or '(untagged)'}`"
+        return text + _at(cause.where)
+    if isinstance(cause, PreconditionViolation):
+        return f"precondition violated: `{cause.tag or '(untagged)'}`" + _at(cause.where)
+    if isinstance(cause, DeadlockError):
+        return str(cause)
+    if isinstance(cause, EiffelRuntimeError):
+        return f"{cause.kind.replace('_', ' ')}: {cause}" + _at(cause.where)
+    if isinstance(cause, EiffelFailure):
+        return "exception raised: " + _exception_text(cause.exception)
+    if isinstance(cause, AttributeError) and "'NoneType'" in str(cause):
+        return "feature call on a Void target"
+    if isinstance(cause, ZeroDivisionError):
+        return "integer division by zero"
+    if isinstance(cause, RecursionError):
+        return "stack overflow (recursion too deep)"
+    return f"{type(cause).__name__}: {cause}"
+
+
+def _exception_text(exception) -> str:
+    try:
+        from .strings import text
+
+        message = exception.message
+        tag = text(message) if message is not None else ""
+        return f"{type(exception)._key_}" + (f": {tag}" if tag else "")
+    except Exception:                        # noqa: BLE001 - a report must not fail
+        return type(exception).__name__
+
+
+def _at(where) -> str:
+    if not where:
+        return ""
+    cls, routine, path, line = where
+    return f" (in {cls}.{routine}, {Path(path).name}:{line})"
+
+
+def eiffel_frames(error) -> list:
+    """(class, routine, file:line) for each frame of generated code, innermost first."""
+    frames = []
+    for frame, lineno in traceback.walk_tb(error.__traceback__):
+        place = eiffel_place(frame.f_code.co_filename, lineno)
+        if place is None:
+            continue
+        module = frame.f_globals.get("__name__", "")
+        cls = module.rsplit(".", 1)[-1].upper()
+        routine = frame.f_code.co_name
+        for suffix in ("_once_", "_init_"):
+            routine = routine[: -len(suffix)] if routine.endswith(suffix) else routine
+        frames.append((cls, "inline agent" if routine.startswith("_agent_") else routine, place))
+    frames.reverse()
+    return frames
+
+
+def eiffel_place(filename: str, lineno: int):
+    path = Path(filename)
+    table = _line_map(path.parent)
+    entry = table.get(path.stem)
+    if entry is None:
+        return None
+    source, lines = entry
+    line = lines.get(str(lineno))
+    if line is None:
+        candidates = [int(k) for k in lines if int(k) <= lineno]
+        line = lines[str(max(candidates))] if candidates else "?"
+    return f"{Path(source).name}:{line}"
+
+
+def _line_map(folder: Path) -> dict:
+    found = _LINE_MAPS.get(folder)
+    if found is None:
+        try:
+            found = json.loads((folder / "_lines.json").read_text())
+        except (OSError, ValueError):
+            found = {}
+        _LINE_MAPS[folder] = found
+    return found

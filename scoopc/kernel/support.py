@@ -1,0 +1,328 @@
+"""Helpers that generated code calls (`S.` in generated modules): object creation, separate
+calls with dynamic binding, agents, tuples, iteration, contracts and their failures.
+
+Each helper is small and states the Eiffel rule it implements; codegen decides statically what
+it can, these handle what only the run time knows (the dynamic class of a target, lock passing).
+"""
+from __future__ import annotations
+
+from . import CLASSES, register as _register
+from . import types as T
+from .errors import EiffelFailure
+
+register = _register
+
+
+# --- failures ------------------------------------------------------------------------------------
+class ContractViolation(Exception):
+    """An assertion of the program is false: kind (precondition, postcondition, invariant,
+    check, loop_invariant, variant), tag, where = (class, routine, file, line)."""
+
+    def __init__(self, kind, tag, where):
+        self.kind, self.tag, self.where = kind, tag, where
+        super().__init__(f"{kind.replace('_', ' ')} {tag or '(untagged)'} violated")
+
+
+class EiffelRuntimeError(Exception):
+    """A run-time failure the language defines (bad inspect value, Void call target, ...)."""
+
+    def __init__(self, kind, message, where=None):
+        self.kind, self.where = kind, where
+        super().__init__(message)
+
+
+def assertion_failed(kind, tag, where):
+    raise ContractViolation(kind, tag, where)
+
+
+def bad_inspect(value, where):
+    raise EiffelRuntimeError("bad_inspect_value", f"no `when` branch matches the value {value!r}", where)
+
+
+def variant_start(value, where):
+    if value < 0:
+        raise ContractViolation("variant", None, where)
+    return value
+
+
+def variant_step(previous, value, where):
+    if value < 0 or value >= previous:
+        raise ContractViolation("variant", None, where)
+    return value
+
+
+class _OldFailure:
+    __slots__ = ("error",)
+
+    def __init__(self, error):
+        self.error = error
+
+
+def old(fn):
+    """`old e`, evaluated at routine entry; a failure surfaces only if the postcondition uses it."""
+    try:
+        return fn()
+    except Exception as error:               # noqa: BLE001 - kept and re-raised where it is used
+        return _OldFailure(error)
+
+
+_LAST = {}
+
+
+def caught(here, error):
+    """Entering a rescue clause: remember the exception (EXCEPTION_MANAGER.last_exception)."""
+    _LAST[here] = error
+
+
+def last_caught(here):
+    return _LAST.get(here)
+
+
+def missing_external(cls, name):
+    def missing(*args):
+        raise EiffelRuntimeError("external_failure", f"external feature {cls}.{name} is not available")
+    missing.__name__ = name
+    return missing
+
+
+# --- objects -------------------------------------------------------------------------------------
+def create(here, cls, gen, creator, args, invariant=False):
+    """`create x.make (args)` in the current region (non-separate)."""
+    obj = cls.__new__(cls)
+    obj._region_ = here
+    if gen is not None:
+        obj._gen_ = gen
+    if creator is not None:
+        getattr(obj, creator)(*args)
+    if invariant:
+        check_invariant(obj)
+    return obj
+
+
+def create_formal(here, desc, creator, args):
+    """`create x.make` where x's type is a formal generic: the actual type's class at run time."""
+    if desc.is_basic:
+        return desc.default()
+    return create(here, desc.pyclass, desc.generics or None, creator, args)
+
+
+def new_expanded(region, cls, gen):
+    return create(region, cls, gen or None, "default_create", ())
+
+
+def static_target(here, cls):
+    """`{T}.f`: a throwaway object of T for a routine that does not use Current."""
+    obj = cls.__new__(cls)
+    obj._region_ = here
+    return obj
+
+
+def check_invariant(obj):
+    check = getattr(obj, "_invariant_", None)
+    if check is not None:
+        check()
+
+
+def parent_invariant(cls, obj):
+    check = cls.__dict__.get("_invariant_")
+    if check is None:
+        for base in cls.__mro__[1:]:
+            check = base.__dict__.get("_invariant_")
+            if check is not None:
+                break
+    if check is not None:
+        check(obj)
+
+
+def attempt(value, desc):
+    """`x ?= e` (assignment attempt): e if it conforms to x's type, else Void."""
+    return value if value is not None and desc.accepts(value) else None
+
+
+def conforms(value, desc):
+    return value is not None and desc.accepts(value)
+
+
+class SelfInitialising:
+    """An attribute with an `attribute` body: computed by the body on the first read when unset."""
+
+    def __init__(self, init, name):
+        self.init, self.name = init, name
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        value = self.init(obj)
+        obj.__dict__[self.name] = value
+        return value
+
+
+class FormalDefault:
+    """The default of an attribute whose type is a formal generic (0 for INTEGER, Void, ...)."""
+
+    def __init__(self, index, name):
+        self.index, self.name = index, name
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        value = obj._gen_[self.index].default(obj._region_)
+        if not isinstance(value, (int, float, str, type(None))):
+            obj.__dict__[self.name] = value
+        return value
+
+
+class ExpandedDefault:
+    def __init__(self, desc, name):
+        self.desc, self.name = desc, name
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        value = obj.__dict__[self.name] = self.desc.default(obj._region_)
+        return value
+
+
+def alias_attribute(primary):
+    """Another name of an attribute (a join or rename seen through another ancestor)."""
+    return property(lambda self: getattr(self, primary))
+
+
+# --- separate calls -----------------------------------------------------------------------------
+_ROUTINES: dict = {}
+
+
+def routine_of(target, name):
+    """The function implementing feature `name` in target's class, callable as f(target, *args)."""
+    key = (type(target), name)
+    found = _ROUTINES.get(key)
+    if found is None:
+        member = getattr(type(target), name)
+        if isinstance(member, property):
+            found = member.fget
+        elif callable(member):
+            found = member
+        else:
+            def found(obj, _name=name):
+                return getattr(obj, _name)
+        _ROUTINES[key] = found
+    return found
+
+
+def scall(here, target, name, args, can_pass):
+    """A command on a controlled separate target (asynchronous, or synchronous with lock passing)."""
+    if target is None:
+        raise EiffelRuntimeError("void_target", f"call of `{name}` on a Void target")
+    routine = routine_of(target, name)
+    if not can_pass and getattr(routine, "_scoop_leaf_", False):
+        here.leaf_call(target, routine, args)
+    else:
+        here.call(target, routine, args)
+
+
+def squery(here, target, name, args, can_pass, where=None):
+    """A query on a controlled separate target: waits for the result (wait by necessity)."""
+    if target is None:
+        raise EiffelRuntimeError("void_target", f"call of `{name}` on a Void target", where)
+    routine = routine_of(target, name)
+    if not can_pass and getattr(routine, "_scoop_leaf_", False):
+        return here.leaf_query(target, routine, args, where)
+    return here.query(target, routine, args, where)
+
+
+# --- tuples, arrays, types -------------------------------------------------------------------------
+def new_tuple(here, items, gen):
+    cls = CLASSES["TUPLE"]
+    obj = cls.__new__(cls)
+    obj._region_ = here
+    obj._items = items
+    obj._gen_ = gen
+    return obj
+
+
+def tuple_item(t, index):
+    return t._items[index]
+
+
+def tuple_put(t, index, value):
+    t._items[index] = value
+
+
+def manifest_array(here, cls, gen, items):
+    """`<<a, b, c>>`: an ARRAY indexed from 1."""
+    array = create(here, cls, gen, "make_filled", (gen[0].default(here), 1, len(items)) if items else
+                   (gen[0].default(here), 1, 0))
+    for index, item in enumerate(items, start=1):
+        array.put(item, index)
+    return array
+
+
+_TYPE_OBJECTS: dict = {}
+
+
+def type_object(here, desc):
+    """`{T}` and `generating_type`: one TYPE object per type."""
+    found = _TYPE_OBJECTS.get(desc)
+    if found is None:
+        cls = CLASSES["TYPE"]
+        found = cls.__new__(cls)
+        found._region_ = here
+        found._gen_ = (desc,)
+        _TYPE_OBJECTS[desc] = found
+    return found
+
+
+# --- iteration -------------------------------------------------------------------------------------
+def cursors(iterable):
+    """`across e as c`: the cursor itself at each position (c.item is the item)."""
+    cursor = iterable.new_cursor
+    while not cursor.after:
+        yield cursor
+        cursor.forth()
+
+
+def items(iterable):
+    """`across e is x`: each item."""
+    cursor = iterable.new_cursor
+    while not cursor.after:
+        yield cursor.item
+        cursor.forth()
+
+
+# --- agents ----------------------------------------------------------------------------------------
+_DISPATCHERS: dict = {}
+
+
+def dispatcher(name, is_property):
+    """The function an agent calls: feature `name` of its target, bound dynamically."""
+    key = (name, is_property)
+    found = _DISPATCHERS.get(key)
+    if found is None:
+        if is_property:
+            def found(target, _name=name):
+                from . import basic
+                return basic.query(target, _name)
+        else:
+            def found(target, *args, _name=name):
+                from . import basic
+                return basic.call(target, _name, args)
+        _DISPATCHERS[key] = found
+    return found
+
+
+def new_agent(here, cls, gen, fn, slots, opened):
+    obj = cls.__new__(cls)
+    target = slots[0]
+    obj._region_ = getattr(target, "_region_", here) if 0 not in opened else here
+    obj._gen_ = gen
+    obj._fn = fn
+    obj._slots = slots
+    obj._open = opened
+    return obj
+
+
+def once_string(here, key, text, maker):
+    return here.once(key, maker, (here, text))
+
+
+__all__ = ["EiffelFailure", "T"]

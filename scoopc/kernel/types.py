@@ -1,0 +1,144 @@
+"""Run-time types: what generated code keeps of Eiffel types (actual generics of objects, the
+types of object tests and of `create {T}`, `generating_type`).
+
+A TypeDesc names a class by its universe key and lists its actual generics; descriptors are
+interned (`t(key, generics)` returns the same object for the same type), so building one inside
+a routine costs a dictionary lookup.
+"""
+from __future__ import annotations
+
+from . import CLASSES
+
+_BASIC_DEFAULTS = {
+    "INTEGER_8": 0, "INTEGER_16": 0, "INTEGER_32": 0, "INTEGER_64": 0,
+    "NATURAL_8": 0, "NATURAL_16": 0, "NATURAL_32": 0, "NATURAL_64": 0,
+    "REAL_32": 0.0, "REAL_64": 0.0, "BOOLEAN": False,
+    "CHARACTER_8": "\x00", "CHARACTER_32": "\x00", "POINTER": 0,
+}
+_PYTHON_TYPES = {
+    "INTEGER_8": int, "INTEGER_16": int, "INTEGER_32": int, "INTEGER_64": int,
+    "NATURAL_8": int, "NATURAL_16": int, "NATURAL_32": int, "NATURAL_64": int,
+    "REAL_32": float, "REAL_64": float, "BOOLEAN": bool,
+    "CHARACTER_8": str, "CHARACTER_32": str, "POINTER": int,
+}
+# The basic classes' conforming ancestors (a Python value's dynamic type is one of them).
+_BASIC_ANCESTORS = {
+    int: frozenset({"INTEGER_32", "NUMERIC", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "ANY"}),
+    float: frozenset({"REAL_64", "NUMERIC", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "ANY"}),
+    bool: frozenset({"BOOLEAN", "HASHABLE", "ANY"}),
+    str: frozenset({"CHARACTER_8", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "ANY"}),
+}
+_INTEGER_KINDS = frozenset(k for k, v in _PYTHON_TYPES.items() if v is int)
+_INTERNED: dict = {}
+
+
+class TypeDesc:
+    """An Eiffel type at run time: class key, actual generics, attachment mark."""
+
+    __slots__ = ("key", "generics", "attached", "expanded_class", "_name")
+
+    def __init__(self, key: str, generics: tuple, attached: bool):
+        self.key, self.generics, self.attached = key, generics, attached
+        self.expanded_class = None
+        self._name = None
+
+    @property
+    def pyclass(self):
+        return CLASSES.get(self.key)
+
+    @property
+    def is_basic(self) -> bool:
+        return self.key in _BASIC_DEFAULTS
+
+    @property
+    def is_expanded(self) -> bool:
+        if self.is_basic:
+            return True
+        cls = self.pyclass
+        return cls is not None and getattr(cls, "_expanded_", False)
+
+    def default(self, region=None):
+        """The default value of an entity of this type: 0, False, Void, or a new expanded object."""
+        value = _BASIC_DEFAULTS.get(self.key, _NOTHING)
+        if value is not _NOTHING:
+            return value
+        cls = self.pyclass
+        if cls is not None and getattr(cls, "_expanded_", False):
+            from .support import new_expanded
+            return new_expanded(region, cls, self.generics)
+        return None
+
+    @property
+    def name(self) -> str:
+        """As EiffelStudio prints a type: `ARRAY [INTEGER_32]`, `detachable STRING_8` inside generics."""
+        if self._name is None:
+            base = self.key.split("@")[0]
+            if self.generics:
+                base += " [" + ", ".join(g.inner_name for g in self.generics) + "]"
+            self._name = base
+        return self._name
+
+    @property
+    def inner_name(self) -> str:
+        return self.name if self.attached or self.is_expanded else "detachable " + self.name
+
+    def accepts(self, value) -> bool:
+        """Does `value` (not Void) conform to this type? (object tests, `attached {T} x`)"""
+        kind = _PYTHON_TYPES.get(self.key)
+        if kind is not None:
+            if kind is int:
+                return type(value) is int
+            return type(value) is kind
+        if isinstance(value, (bool, int, float, str)):
+            return self.key in _BASIC_ANCESTORS[type(value)]
+        conforms = getattr(type(value), "_conforms_", None)
+        if conforms is None or self.key not in conforms:
+            return False
+        if not self.generics:
+            return True
+        own = getattr(value, "_gen_", None)
+        if own is None or type(value)._key_ != self.key or len(own) != len(self.generics):
+            return True           # conformance through an ancestor's generics: not tracked
+        return all(mine.conforms_to(theirs) for mine, theirs in zip(own, self.generics))
+
+    def conforms_to(self, other: "TypeDesc") -> bool:
+        if other.key == "ANY" or self is other:
+            return True
+        if self.key in _INTEGER_KINDS or other.key in _INTEGER_KINDS or self.is_basic or other.is_basic:
+            return self.key == other.key
+        cls = self.pyclass
+        conforms = getattr(cls, "_conforms_", frozenset({self.key})) if cls is not None else {self.key}
+        if other.key not in conforms:
+            return False
+        if self.key == other.key and len(self.generics) == len(other.generics):
+            return all(a.conforms_to(b) for a, b in zip(self.generics, other.generics))
+        return True
+
+    def __repr__(self) -> str:
+        return self.name
+
+
+_NOTHING = object()
+
+
+def t(key: str, generics: tuple = (), attached: bool = True) -> TypeDesc:
+    """The interned descriptor of a type."""
+    k = (key, generics, attached)
+    found = _INTERNED.get(k)
+    if found is None:
+        found = _INTERNED[k] = TypeDesc(key, generics, attached)
+    return found
+
+
+def of(value) -> TypeDesc:
+    """The dynamic type of a value (for `generating_type`, `same_type`, `like Current`)."""
+    kind = type(value)
+    if kind is bool:
+        return t("BOOLEAN")
+    if kind is int:
+        return t("INTEGER_32")
+    if kind is float:
+        return t("REAL_64")
+    if kind is str:
+        return t("CHARACTER_8")
+    return t(kind._key_, getattr(value, "_gen_", ()))
