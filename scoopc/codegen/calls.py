@@ -243,15 +243,19 @@ class Calls:
                                       P.lst(slots), P.tup([P.const(i) for i in opened])])
 
     # --- run-time types ------------------------------------------------------------------------------
-    def type_desc(self, ty: Ty) -> ast.expr:
+    def type_desc(self, ty: Ty, formals=None) -> ast.expr:
+        """The run-time type: `formals(i)` gives the expression of formal generic i (default: the
+        actual generic of Current seen from the class this code is written in)."""
         if ty.is_formal:
-            return ast.Subscript(P.attr(P.name("self"), "_gen_"), P.const(ty.formal), ast.Load())
+            if formals is not None:
+                return formals(ty.formal)
+            return P.call("T.formal", [P.name("self"), P.const(self.info.name), P.const(ty.formal)])
         if ty.name == "<Current>":
             return P.call("T.of", [P.name("self")])
         key = self.universe.canonical(ty.name) if self.universe.get(ty.name) is None else ty.name
-        generics = [self.type_desc(g) for g in ty.generics]
+        generics = [self.type_desc(g, formals) for g in ty.generics]
         call = P.call("T.t", [P.const(key), P.tup(generics), P.const(bool(ty.attached))])
-        if any(isinstance(g, ast.Subscript) or (isinstance(g, ast.Call) and not _constant_desc(g)) for g in generics):
+        if formals is not None or any(not _constant_desc(g) for g in generics):
             return call
         return self.module.constant("T", call, key=("type", str(ty), ty.attached))
 

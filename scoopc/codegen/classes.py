@@ -62,6 +62,9 @@ class ClassGen:
             body.append(P.assign(P.name("_expanded_"), P.const(True)))
         if info.is_deferred:
             body.append(P.assign(P.name("_deferred_"), P.const(True)))
+        ancestry = self.ancestor_generics()
+        if ancestry is not None:
+            body.append(P.assign(P.name("_ancestor_gen_"), ancestry))
         for pyname, feature, how in plan:
             body += self.member(pyname, feature, how)
         invariant = self.invariant()
@@ -87,6 +90,20 @@ class ClassGen:
         return ast.fix_missing_locations(module)
 
     # --- members ---------------------------------------------------------------------------------------
+    def ancestor_generics(self):
+        """{ancestor: lambda g: its actual generics} for the generic ancestors, `g` being the
+        object's own actual generics: code written in an ancestor finds its formals there."""
+        gen = RoutineGen(self.program, self.module, self.info, None, "generics")
+        entries = []
+        for key, ty in sorted(self.info.all_ancestors.items()):
+            if key == self.info.name or not ty.generics:
+                continue
+            descs = [gen.type_desc(g, formals=_own_formal) for g in ty.generics]
+            entries.append((P.const(key), P.lambda_(["g"], P.tup(descs))))
+        if not entries:
+            return None
+        return ast.Dict([k for k, _ in entries], [v for _, v in entries])
+
     def member(self, pyname, feature, how) -> list:
         if how == "bind":
             owner = self.module.class_ref(feature.written_in)
@@ -115,7 +132,7 @@ class ClassGen:
             return [P.at(fn, feature.decl.span),
                     P.assign(P.name(pyname), P.call("S.SelfInitialising", [P.name(f"{pyname}_init_"), P.const(pyname)]))]
         if result is not None and result.is_formal:
-            return [P.assign(P.name(pyname), P.call("S.FormalDefault", [P.const(result.formal), P.const(pyname)]))]
+            return [P.assign(P.name(pyname), P.call("S.FormalDefault", [P.const(self.info.name), P.const(result.formal), P.const(pyname)]))]
         info = self.program.universe.get(result.name) if result is not None else None
         if info is not None and info.is_expanded and info.name not in BASIC:
             return [P.assign(P.name(pyname), P.call("S.ExpandedDefault", [gen.type_desc(result), P.const(pyname)]))]
@@ -200,6 +217,10 @@ class ClassGen:
         body += [gen.assertion(c, "invariant") for c in clauses]
         fn = P.function("_invariant_", ["self"], body)
         return P.at(fn, self.info.decl.span)
+
+
+def _own_formal(index: int):
+    return ast.Subscript(P.name("g"), P.const(index), ast.Load())
 
 
 _PY_KEYWORDS = frozenset(__import__("keyword").kwlist)

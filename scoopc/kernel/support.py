@@ -160,13 +160,13 @@ class SelfInitialising:
 class FormalDefault:
     """The default of an attribute whose type is a formal generic (0 for INTEGER, Void, ...)."""
 
-    def __init__(self, index, name):
-        self.index, self.name = index, name
+    def __init__(self, written_in, index, name):
+        self.written_in, self.index, self.name = written_in, index, name
 
     def __get__(self, obj, owner=None):
         if obj is None:
             return self
-        value = obj._gen_[self.index].default(obj._region_)
+        value = T.formal(obj, self.written_in, self.index).default(obj._region_)
         if not isinstance(value, (int, float, str, type(None))):
             obj.__dict__[self.name] = value
         return value

@@ -142,3 +142,12 @@ def of(value) -> TypeDesc:
     if kind is str:
         return t("CHARACTER_8")
     return t(kind._key_, getattr(value, "_gen_", ()))
+
+
+def formal(obj, written_in: str, index: int) -> TypeDesc:
+    """Formal generic `index` of class `written_in` (the class whose code asks) for the object
+    `obj`, whose dynamic class may be a descendant with other generics."""
+    cls = type(obj)
+    if cls._key_ == written_in:
+        return obj._gen_[index]
+    return cls._ancestor_gen_[written_in](getattr(obj, "_gen_", ()))[index]
