@@ -131,7 +131,9 @@ def _main_text(package: str, root_key: str, creator: str, universe) -> str:
 
 def ensure_on_path(*folders: Optional[Path]) -> None:
     for folder in folders:
-        if folder is not None and str(folder) not in sys.path:
+        if folder is not None:
+            if str(folder) in sys.path:
+                sys.path.remove(str(folder))
             sys.path.insert(0, str(folder))
 
 

@@ -173,8 +173,11 @@ def run_compiled(folder: Path, meta: dict, program_args: list[str], args) -> int
     from .kernel import launcher
 
     build.ensure_on_path(Path(meta["base"]), folder)
+    from .kernel import link
+
     for name in [m for m in sys.modules if m == "program" or m.startswith("program.")]:
-        del sys.modules[name]
+        del sys.modules[name]            # another program ran in this process before
+    link.forget("program")
     module = importlib.import_module(f"program.{module_name(meta['root'])}")
     root_cls = getattr(module, class_name(meta["root"]))
     argv = [meta["root"].lower()] + list(program_args)

@@ -1,5 +1,6 @@
 """Test-suite options: `--update-golden` rewrites expected outputs; hypothesis profiles."""
 import os
+import tempfile
 
 from hypothesis import HealthCheck, settings
 
@@ -7,6 +8,9 @@ settings.register_profile("ci", max_examples=200, deadline=None, suppress_health
 settings.register_profile("thorough", max_examples=5000, deadline=None,
                           suppress_health_check=[HealthCheck.too_slow])
 settings.load_profile(os.environ.get("SCOOPC_HYPOTHESIS_PROFILE", "ci"))
+
+# One compiled standard library per test session, never the user's own cache.
+os.environ.setdefault("SCOOPC_CACHE_DIR", tempfile.mkdtemp(prefix="scoopc-tests-"))
 
 
 def pytest_addoption(parser):

@@ -28,3 +28,8 @@ def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
             module.__dict__.setdefault(key, value)
     _LOADED[package] = own
     return own
+
+
+def forget(package: str) -> None:
+    """A package is to be loaded afresh (another program of the same package name)."""
+    _LOADED.pop(package, None)
