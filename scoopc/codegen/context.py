@@ -31,6 +31,7 @@ class Program:
     layouts: dict = field(default_factory=dict)
     leaves: dict = field(default_factory=dict)      # id(decl) -> bool
     sources: dict = field(default_factory=dict)     # class key -> source path
+    invariant_classes: set = field(default_factory=set)  # classes with an invariant in themselves or a descendant
 
     def package_of(self, key: str) -> str:
         info = self.universe.get(key)

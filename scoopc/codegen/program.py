@@ -38,6 +38,9 @@ def prepare(universe, tables, options: Options) -> Program:
         layout.plan = plan_bindings(program, info, layout)
         info._has_invariant = bool(info.decl.invariant) or any(
             getattr(universe.get(ty.name), "_has_invariant", False) for _, ty, _ in info.parents)
+        if info._has_invariant and not info.from_library:
+            program.invariant_classes.update(info.ancestors)
+            program.invariant_classes.add(info.name)
     return program
 
 

@@ -123,6 +123,14 @@ def check_invariant(obj):
         check()
 
 
+def call_checked(target, name, args):
+    """A qualified call followed by the target's class invariant (assertions `all`)."""
+    member = getattr(target, name)
+    result = member(*args) if callable(member) else member
+    check_invariant(target)
+    return result
+
+
 def parent_invariant(cls, obj):
     check = cls.__dict__.get("_invariant_")
     if check is None:
