@@ -15,23 +15,36 @@ feature {NONE} -- Initialization
 			buffer := a_buffer
 			id := an_id
 			count := a_count
+		ensure
+			nothing_taken: taken = 0
 		end
+
+feature -- Access
+
+	id: INTEGER
+			-- Consumer number.
+
+	count: INTEGER
+			-- Items to take.
+
+	taken: INTEGER
+			-- Items taken so far.
+
+	total: INTEGER
+			-- Sum of the items taken so far.
 
 feature -- Basic operations
 
 	live
 			-- Consume `count' items.
-		local
-			i: INTEGER
 		do
 			from
-				i := 1
 			until
-				i > count
+				taken = count
 			loop
 				consume (buffer)
-				i := i + 1
 			end
+			print ("consumer " + id.out + " took " + taken.out + " items%N")
 		end
 
 feature {NONE} -- Implementation
@@ -40,16 +53,18 @@ feature {NONE} -- Implementation
 			-- Take the oldest item of `a_buffer' as soon as there is one.
 		require
 			something_there: not a_buffer.is_empty
-		local
-			v: INTEGER
 		do
-			v := a_buffer.item
+			total := total + a_buffer.item
 			a_buffer.remove
-			print ("consumer " + id.out + " took " + v.out + "%N")
+			taken := taken + 1
+		ensure
+			one_more: taken = old taken + 1
 		end
 
 	buffer: separate BOUNDED_BUFFER [INTEGER]
-	id: INTEGER
-	count: INTEGER
+			-- Where the items come from.
+
+invariant
+	not_too_many: taken <= count
 
 end

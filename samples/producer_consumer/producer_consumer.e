@@ -10,14 +10,17 @@ create
 feature {NONE} -- Initialization
 
 	make
-			-- Start `Producer_count' producers and as many consumers on one shared buffer.
+			-- Start `Producer_count' producers and as many consumers on one shared buffer,
+			-- then add up what the consumers took.
 		local
 			buffer: separate BOUNDED_BUFFER [INTEGER]
 			producer: separate PRODUCER
 			consumer: separate CONSUMER
-			i: INTEGER
+			consumers: ARRAYED_LIST [separate CONSUMER]
+			total, i: INTEGER
 		do
 			create buffer.make (Capacity)
+			create consumers.make (Producer_count)
 			from
 				i := 1
 			until
@@ -27,7 +30,15 @@ feature {NONE} -- Initialization
 				create consumer.make (buffer, i, Items_per_producer)
 				launch_producer (producer)
 				launch_consumer (consumer)
+				consumers.extend (consumer)
 				i := i + 1
+			end
+			across consumers as c loop
+				total := total + consumed (c.item)
+			end
+			print ("consumers took items adding up to " + total.out + "%N")
+			check
+				every_item_once: total = expected_total
 			end
 		end
 
@@ -43,6 +54,27 @@ feature {NONE} -- Implementation
 			-- Let `c' consume its share of the items.
 		do
 			c.live
+		end
+
+	consumed (c: separate CONSUMER): INTEGER
+			-- Sum of the items `c' took, once it is done (the query waits for it).
+		do
+			Result := c.total
+		end
+
+	expected_total: INTEGER
+			-- Sum of every item produced: producer `p' puts `p * 100 + 1' to `p * 100 + Items_per_producer'.
+		local
+			p: INTEGER
+		do
+			from
+				p := 1
+			until
+				p > Producer_count
+			loop
+				Result := Result + p * 100 * Items_per_producer + Items_per_producer * (Items_per_producer + 1) // 2
+				p := p + 1
+			end
 		end
 
 	Capacity: INTEGER = 4

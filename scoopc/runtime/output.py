@@ -25,6 +25,24 @@ class Output:
             if tail:
                 self.partial[proc] = tail
 
+    def write_other(self, stream, text):
+        """Write `text` whole on another stream (stderr) under the same lock, and flush it."""
+        with self.lock:
+            stream.write(text)
+            try:
+                stream.flush()
+            except (OSError, ValueError):
+                pass
+
+    def flush_streams(self, *others):
+        """Flush the output stream and `others` now (unfinished traced lines stay held)."""
+        with self.lock:
+            for stream in (self.stream,) + others:
+                try:
+                    stream.flush()
+                except (OSError, ValueError):
+                    pass
+
     def flush(self):
         """At exit: write unfinished lines, then flush the stream."""
         with self.lock:

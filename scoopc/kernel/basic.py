@@ -1,0 +1,468 @@
+"""Built-in features of the basic classes (stdlib/base/kernel: INTEGER_8..64, NATURAL_8..64,
+REAL_32/64, BOOLEAN, CHARACTER_8/32, POINTER): the run-time helpers generated code calls as
+`B.name(...)` (`from scoopc.kernel import basic as B`), plus the code generator's entry points:
+
+- `inline(class_name, feature_name, current, arguments, region=None) -> ast.expr`
+  (scoopc/kernel/basic_inline.py): the Python expression of a built-in feature;
+- `call(target, name, arguments=(), region=None)`, `query(target, name, region=None)`,
+  `call_as(kind, ...)`, `query_as(kind, ...)` (scoopc/kernel/basic_dispatch.py): dynamic
+  dispatch when the static type is ANY, COMPARABLE, NUMERIC, HASHABLE, a formal generic, ...;
+- `same(a, b)` (Eiffel `=`) and `equal(a, b)` (Eiffel `~`).
+
+Semantics are EiffelStudio's (finalized C code on x86-64), with these sources:
+- `out`: Src/C/run-time/out.c (EiffelStudio 20.x): c_outi/c_outi64/c_outu/c_outu64 print "%d",
+  "%u" (decimal); c_buffero_outr64 prints "NaN", "Infinity", "-Infinity", else "%.17g";
+  c_buffero_outr32 the same with "%g"; c_outc the character; eif_out__c4_s1 (CHARACTER_32 to
+  STRING_8) the character if its code is below 0x80, else "U+" and at least 4 upper-case hex
+  digits; c_outp "0x%lX". BOOLEAN prints "True"/"False". Python's "%.17g"/"%g" give the same
+  digits as glibc's printf (both are correctly rounded).
+- REAL comparisons: Src/C/run-time/eif_helpers.h (no EIF_IEEE_BEHAVIOR): NaN is the smallest
+  value and equal to itself (`eif_is_less_real_64 (d1, d2) = d1 == d1 ? d1 < d2 : d2 == d2`,
+  ...), max/min/three_way_comparison through these; `abs` is `d > 0 ? d : -d` (so 0.0.abs is
+  -0.0), integer `abs` wraps (`i > 0 ? i : -i`).
+- ELKS library/base/elks/kernel/*_ref.e (19.05): hash codes (integers: value with the sign bit
+  cleared, `& 0x7FFFFFFF`; reals: `truncated_to_integer.hash_code`; characters: the code;
+  BOOLEAN 1/0), `sign`, `rounded = sign * (abs + 0.5).floor`, `rounded_real_32` adds
+  {REAL_32} 0.5, `to_hex_string` (upper case, all digits), `exponentiable`, `is_hashable`,
+  CHARACTER_8's ASCII-only classification table (codes 128..255 have no property).
+- Real to integer conversions are C casts (`(EIF_INTEGER_32) d`): x86-64's cvttsd2si gives the
+  smallest integer ("integer indefinite") for NaN, infinities and values out of range.
+"""
+import math
+import struct
+import unicodedata
+
+# --- Constants and builtins (templates never name a Python builtin directly) --------------
+
+NAN = math.nan
+POS_INF = math.inf
+NEG_INF = -math.inf
+HEX_DIGITS = "0123456789ABCDEF"
+chr = chr        # noqa: A001 - `B.chr`: a generated local may shadow the builtin
+ord = ord        # noqa: A001
+
+
+def seq(*values):
+    """Evaluate operands left to right and give the last (an operand a template drops)."""
+    return values[-1]
+
+
+# --- Integers ------------------------------------------------------------------------------
+
+def _sized(bits, signed):
+    mask = (1 << bits) - 1
+    half = 1 << (bits - 1)
+    if signed:
+        def wrap(x):
+            return ((x + half) & mask) - half
+
+        def idiv(a, b):
+            """C `a / b`: truncated toward zero (ZeroDivisionError for 0); MIN // -1 wraps."""
+            q = a // b
+            if q < 0 and q * b != a:
+                q += 1
+            return q if q != half else -half
+
+        def irem(a, b):
+            """C `a % b`: the sign of the dividend."""
+            r = a % b
+            if r and (a < 0) != (b < 0):
+                r -= b
+            return r
+
+        def iabs(x):
+            return x if x >= 0 else ((half - x) & mask) - half
+    else:
+        def wrap(x):
+            return x & mask
+
+        idiv = irem = iabs = None
+
+    def shift(x, n):
+        """`bit_shift`: right by `n` if `n` > 0, left by -`n` otherwise."""
+        return x >> n if n > 0 else wrap(x << -n)
+
+    def set_bit(x, b, n):
+        return wrap(x | (1 << n) if b else x & ~(1 << n))
+
+    def set_bit_mask(x, b, m):
+        return x | m if b else x & ~m
+
+    return wrap, idiv, irem, iabs, shift, set_bit, set_bit_mask
+
+
+for _bits in (8, 16, 32, 64):
+    for _signed, _p in ((True, "i"), (False, "n")):
+        _fns = _sized(_bits, _signed)
+        for _name, _fn in zip(("wrap", "idiv", "irem", "abs", "shift", "set_bit", "set_bit_mask"), _fns):
+            if _fn is not None:
+                _fn.__name__ = f"{_name}_{_p}{_bits}"
+                globals()[_fn.__name__] = _fn
+del _bits, _signed, _p, _fns, _name, _fn
+
+
+def imax(a, b):
+    """COMPARABLE's max (integers, characters): `Current >= other`."""
+    return a if a >= b else b
+
+
+def imin(a, b):
+    return a if a <= b else b
+
+
+def cmp(a, b):
+    """three_way_comparison of integers and characters."""
+    return (a > b) - (a < b)
+
+
+def isign(x):
+    return (x > 0) - (x < 0)
+
+
+def fquot(a, b):
+    """INTEGER_64/NATURAL_64 `/`: C converts both operands to double first."""
+    return float(a) / float(b)
+
+
+def hex_string(region, x, bits):
+    """`to_hex_string`: all bits/4 digits, upper case, two's complement."""
+    return s8(region, format(x & ((1 << bits) - 1), "0%dX" % (bits // 4)))
+
+
+def exponentiable(x, other):
+    """ELKS: `other >= 0 or Current /= 0` (for INTEGER_32, REAL_32 and REAL_64 `other`)."""
+    return other >= 0 or x != 0
+
+
+def interval(region, lower, upper):
+    """`lower |..| upper`: a new INTEGER_INTERVAL (`make (lower, upper)`) in `region`."""
+    from . import CLASSES
+    cls = CLASSES.get("INTEGER_INTERVAL@BASE") or CLASSES["INTEGER_INTERVAL"]
+    result = region.new(cls)
+    result.make(wrap_i32(lower), upper)
+    return result
+
+
+# --- Reals ---------------------------------------------------------------------------------
+
+_F32 = struct.Struct("f")
+_pack, _unpack = _F32.pack, _F32.unpack
+
+
+def r32(x):
+    """Round a double to single precision (IEEE nearest-even; overflow gives an infinity)."""
+    try:
+        return _unpack(_pack(x))[0]
+    except OverflowError:
+        return math.copysign(math.inf, x)
+
+
+def i2r32(x):
+    """An integer as a REAL_32, rounded once (C `(EIF_REAL_32) i`, also beyond 2^53)."""
+    if -9007199254740992 <= x <= 9007199254740992:
+        return r32(float(x))
+    a = -x if x < 0 else x
+    shift = a.bit_length() - 24
+    q, r = divmod(a, 1 << shift)
+    half = 1 << (shift - 1)
+    if r > half or (r == half and q & 1):
+        q += 1
+    return r32(float(q << shift) if x > 0 else -float(q << shift))
+
+
+def fdiv(a, b):
+    """IEEE division: x / 0.0 is an infinity (sign of x and of the zero), 0/0 and NaN/0 NaN."""
+    try:
+        return a / b
+    except ZeroDivisionError:
+        if a != a or a == 0:
+            return NAN
+        return math.copysign(math.inf, a) * math.copysign(1.0, b)
+
+
+def _odd_integer(y):
+    return math.isfinite(y) and y == math.floor(y) and abs(y) < 9007199254740992.0 and int(y) & 1 == 1
+
+
+def power(x, y):
+    """C `pow (x, y)` (REAL_64 `^`): special values instead of Python exceptions."""
+    try:
+        return math.pow(x, y)
+    except (ValueError, OverflowError):
+        x = float(x)
+        if x == 0.0:                                     # pow (±0, y < 0)
+            return math.copysign(math.inf, x) if _odd_integer(y) else math.inf
+        if x < 0.0 and y != math.floor(y):               # negative base, fractional exponent
+            return NAN
+        return -math.inf if x < 0.0 and _odd_integer(y) else math.inf    # overflow
+
+
+def trunc32(x):
+    """C `(EIF_INTEGER_32) d` on x86-64: toward zero; NaN, infinities, out of range: -2^31."""
+    if -2147483649.0 < x < 2147483648.0:
+        return int(x)
+    return -2147483648
+
+
+def trunc64(x):
+    if -9223372036854775808.0 <= x < 9223372036854775808.0:
+        return int(x)
+    return -9223372036854775808
+
+
+def fceil(x):
+    """C `ceil`: a double, keeps the sign of zero (ceil (-0.5) = -0.0)."""
+    try:
+        return math.copysign(float(math.ceil(x)), x)
+    except (OverflowError, ValueError):                  # infinities, NaN
+        return x
+
+
+def ffloor(x):
+    try:
+        return math.copysign(float(math.floor(x)), x)
+    except (OverflowError, ValueError):
+        return x
+
+
+def fabs(x):
+    """eif_abs_real64: `d > 0 ? d : -d`."""
+    return x if x > 0 else -x
+
+
+def fsign(x):
+    """REAL `sign` through ISE's comparisons: NaN is below zero, so its sign is -1."""
+    return 1 if x > 0 else (-1 if x < 0 or x != x else 0)
+
+
+def rounded(x):
+    """REAL_32/REAL_64 `rounded`: sign * (abs + 0.5).floor (in double precision)."""
+    return wrap_i32(fsign(x) * trunc32(ffloor(fabs(x) + 0.5)))
+
+
+def rounded_real(x):
+    """REAL_64 `rounded_real_64`: sign * (abs + 0.5).floor_real_64 (-0.3 gives -0.0)."""
+    return fsign(x) * ffloor(fabs(x) + 0.5)
+
+
+def rounded_real_32(x):
+    """REAL_32 `rounded_real_32`: the sum is a REAL_32 (abs + {REAL_32} 0.5)."""
+    return fsign(x) * ffloor(r32(fabs(x) + 0.5))
+
+
+def isnan(x):
+    return x != x
+
+
+def feq(a, b):
+    """REAL `=`/is_equal (eif_is_equal_real_64): NaN equals NaN, 0.0 equals -0.0."""
+    return a == b or (a != a and b != b)
+
+
+def flt(a, b):
+    """eif_is_less_real_64: NaN is less than every number."""
+    return a < b or (a != a and b == b)
+
+
+def fle(a, b):
+    return a <= b or a != a
+
+
+def fgt(a, b):
+    return a > b or (b != b and a == a)
+
+
+def fge(a, b):
+    return a >= b or b != b
+
+
+def fmax(a, b):
+    return a if a >= b or b != b else b
+
+
+def fmin(a, b):
+    return a if a <= b or a != a else b
+
+
+def fcmp(a, b):
+    return -1 if flt(a, b) else (1 if flt(b, a) else 0)
+
+
+# --- Characters ----------------------------------------------------------------------------
+
+def _c8_set(*ranges):
+    return frozenset(chr(c) for lo, hi in ranges for c in range(lo, hi + 1))
+
+
+# ELKS CHARACTER_8_REF.internal_character_types: ASCII only (128..255 have no property).
+C8_UPPER = _c8_set((65, 90))
+C8_LOWER = _c8_set((97, 122))
+C8_ALPHA = C8_UPPER | C8_LOWER
+C8_DIGIT = _c8_set((48, 57))
+C8_HEXA = C8_DIGIT | _c8_set((65, 70), (97, 102))
+C8_SPACE = _c8_set((9, 13), (32, 32))
+C8_PUNCTUATION = _c8_set((33, 47), (58, 64), (91, 96), (123, 126))
+C8_ALPHA_NUMERIC = C8_ALPHA | C8_DIGIT
+C8_GRAPH = C8_ALPHA_NUMERIC | C8_PUNCTUATION
+C8_PRINTABLE = C8_GRAPH | {" "}
+C8_CONTROL = _c8_set((0, 31), (127, 127))
+UPPER8 = {chr(c): chr(c - 32) if 97 <= c <= 122 else chr(c) for c in range(256)}
+LOWER8 = {chr(c): chr(c + 32) if 65 <= c <= 90 else chr(c) for c in range(256)}
+
+_category = unicodedata.category
+_NOT_PRINTABLE = frozenset({"Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp"})
+_NOT_GRAPH = _NOT_PRINTABLE | {"Zs"}
+
+
+def hexa_value(c):
+    """`to_hexa_digit`: 0..15."""
+    return int(c, 16)
+
+
+def upper32(c):
+    """CHARACTER_32 `as_upper` (Unicode; a character whose upper case is several is kept)."""
+    u = c.upper()
+    return u if len(u) == 1 else c
+
+
+def lower32(c):
+    u = c.lower()
+    return u if len(u) == 1 else c
+
+
+def is_alpha32(c):
+    return c.isalpha()
+
+
+def is_upper32(c):
+    return _category(c) == "Lu"
+
+
+def is_lower32(c):
+    return _category(c) == "Ll"
+
+
+def is_space32(c):
+    return c in "\t\n\x0b\x0c\r\x85" or _category(c) in ("Zs", "Zl", "Zp")
+
+
+def is_punctuation32(c):
+    return _category(c)[0] == "P"
+
+
+def is_alpha_numeric32(c):
+    return c.isalpha() or _category(c) == "Nd"
+
+
+def is_printable32(c):
+    return _category(c) not in _NOT_PRINTABLE
+
+
+def is_graph32(c):
+    return _category(c) not in _NOT_GRAPH
+
+
+def is_control32(c):
+    return _category(c) == "Cc"
+
+
+# --- Output --------------------------------------------------------------------------------
+
+_S8 = [None]        # scoopc.kernel.strings.new_string_8, imported on first use (tests set it)
+
+
+def s8(region, text):
+    """A new STRING_8 holding `text`, in `region`."""
+    make = _S8[0]
+    if make is None:
+        from .strings import new_string_8 as make
+        _S8[0] = make
+    return make(region, text)
+
+
+def r64_text(x):
+    if x != x:
+        return "NaN"
+    if x == POS_INF:
+        return "Infinity"
+    if x == NEG_INF:
+        return "-Infinity"
+    return "%.17g" % x
+
+
+def r32_text(x):
+    if x != x:
+        return "NaN"
+    if x == POS_INF:
+        return "Infinity"
+    if x == NEG_INF:
+        return "-Infinity"
+    return "%g" % x
+
+
+def c32_text(c):
+    return c if c < "\x80" else "U+%04X" % ord(c)
+
+
+def pointer_text(p):
+    return "0x%X" % (p & 0xFFFFFFFFFFFFFFFF)
+
+
+def out_int(region, x):
+    return s8(region, str(x))
+
+
+def out_r64(region, x):
+    return s8(region, r64_text(x))
+
+
+def out_r32(region, x):
+    return s8(region, r32_text(x))
+
+
+def out_bool(region, x):
+    return s8(region, "True" if x else "False")
+
+
+def out_c8(region, c):
+    return s8(region, c)
+
+
+def out_c32(region, c):
+    return s8(region, c32_text(c))
+
+
+def out_pointer(region, p):
+    return s8(region, pointer_text(p))
+
+
+def out_text(value):
+    """The text of `value.out` for a Python value (int: INTEGER_32, float: REAL_64, ...)."""
+    kind = type(value)
+    if kind is bool:
+        return "True" if value else "False"
+    if kind is int:
+        return str(value)
+    if kind is float:
+        return r64_text(value)
+    if kind is str:
+        return value if value <= "\xff" else c32_text(value)
+    raise TypeError(f"not a basic value: {value!r}")
+
+
+# --- ANY for Python values -----------------------------------------------------------------
+
+GENERATING_TYPE = None      # hook set by the code generator's support: fn(region, TypeDesc) -> TYPE
+
+
+def generating_type(region, value):
+    if GENERATING_TYPE is None:
+        raise NotImplementedError("generating_type of a basic value: scoopc.kernel.basic.GENERATING_TYPE is unset")
+    from .types import of
+    return GENERATING_TYPE(region, of(value))
+
+
+from .basic_dispatch import call, call_as, equal, query, query_as, same  # noqa: E402
+from .basic_inline import inline, specs  # noqa: E402
+
+__all__ = ["inline", "specs", "call", "call_as", "query", "query_as", "same", "equal"]

@@ -1,0 +1,8 @@
+"""IMMUTABLE_STRING_32's `external "Python"` features (stdlib/base/string/immutable_string_32.e).
+
+Its other externals are READABLE_STRING_GENERAL's and READABLE_STRING_32's.
+"""
+
+
+def item(current, i):
+    return current._s[i - 1]

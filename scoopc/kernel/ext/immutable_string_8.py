@@ -1,0 +1,9 @@
+"""IMMUTABLE_STRING_8's `external "Python"` features (stdlib/base/string/immutable_string_8.e).
+
+Its other externals are READABLE_STRING_GENERAL's and READABLE_STRING_8's; operations that build
+a string (`plus`, `substring`, `as_lower`, `mirrored`) give a new IMMUTABLE_STRING_8 there.
+"""
+
+
+def item(current, i):
+    return current._s[i - 1]
