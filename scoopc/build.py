@@ -103,7 +103,7 @@ def _ensure(path: Path) -> Path:
 
 
 def compile_program(checked, out_dir: Path, package: str, root_key: str, creator: str,
-                    assertions: str = "all") -> Compiled:
+                    assertions: str = "all", progress=None) -> Compiled:
     from .codegen.program import generate
 
     sem = checked.semantics
@@ -114,7 +114,7 @@ def compile_program(checked, out_dir: Path, package: str, root_key: str, creator
         shutil.rmtree(folder)
     write_modules(folder, modules, f"A program compiled by scoopc (root class {root_key}).", (BASE_PACKAGE,))
     (folder / "__main__.py").write_text(_main_text(package, root_key, creator, sem.universe))
-    return Compiled(package, out_dir, base_package(), root_key, creator)
+    return Compiled(package, out_dir, base_package(progress), root_key, creator)
 
 
 def _main_text(package: str, root_key: str, creator: str, universe) -> str:

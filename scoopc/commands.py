@@ -118,7 +118,8 @@ def command_compile(args) -> int:
     root = choose_root(project, checked, args.root, args.paths)
     out = Path(args.output)
     package = root.key.lower()
-    compiled = build.compile_program(checked, out, package, root.key, root.creator, _assertions(args, project))
+    compiled = build.compile_program(checked, out, package, root.key, root.creator, _assertions(args, project),
+                                     progress=_progress())
     target = out / build.BASE_PACKAGE
     if target.exists():
         shutil.rmtree(target)
@@ -149,7 +150,7 @@ def command_run(args, program_args: list[str]) -> int:
         if staging.exists():
             shutil.rmtree(staging)
         compiled = build.compile_program(checked, staging, "program", root.key, root.creator,
-                                         _assertions(args, project))
+                                         _assertions(args, project), progress=_progress())
         meta = {"root": root.key, "creator": root.creator, "base": str(compiled.base_path),
                 "shadowed": checked.semantics.universe.shadowed}
         (staging / "program.json").write_text(json.dumps(meta))
@@ -157,6 +158,13 @@ def command_run(args, program_args: list[str]) -> int:
             shutil.rmtree(folder)
         staging.rename(folder)
     return run_compiled(folder, meta, program_args, args)
+
+
+def _progress():
+    """Progress lines on stderr for long steps, on a terminal only (stderr stays clean otherwise)."""
+    if not sys.stderr.isatty():
+        return None
+    return lambda message: print(f"scoopc: {message}", file=sys.stderr, flush=True)
 
 
 def _read_meta(path: Path):

@@ -128,7 +128,7 @@ class Calls:
         return feature.written_in in BASIC and is_external(feature, "built_in")
 
     def argument(self, node):
-        return self.x(node)
+        return self.copied(node, self.x(node))
 
     # --- separate calls ---------------------------------------------------------------------------
     def separate_call(self, node, target, feature, args):

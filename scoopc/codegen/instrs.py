@@ -6,6 +6,7 @@ import ast
 
 from .. import syntax
 from . import pyast as P
+from ..semantics.types import BASIC
 from .context import fail
 
 
@@ -22,7 +23,17 @@ class Instructions:
 
     # --- assignment --------------------------------------------------------------------------------
     def s_Assignment(self, node):
-        return [P.assign(self.target(node.target), self.x(node.source))]
+        return [P.assign(self.target(node.target), self.copied(node.source, self.x(node.source)))]
+
+    def copied(self, node, value):
+        """A value of a user-defined expanded type is copied when attached to another entity."""
+        ty = self.tables.types.get(node)
+        if ty is None or ty.is_formal or ty.name in BASIC:
+            return value
+        info = self.universe.get(ty.name)
+        if info is not None and info.is_expanded:
+            return P.call("S.copy_expanded", [value])
+        return value
 
     def s_AssignmentAttempt(self, node):
         ty = self.tables.types.get(node.target) or self.entity_type(node.target)

@@ -110,6 +110,13 @@ def new_expanded(region, cls, gen):
     return create(region, cls, gen or None, "default_create", ())
 
 
+def copy_expanded(value):
+    """Expanded semantics: attaching a value of an expanded class copies it."""
+    if value is None or not hasattr(value, "_region_"):
+        return value
+    return value.twin
+
+
 def static_target(here, cls):
     """`{T}.f`: a throwaway object of T for a routine that does not use Current."""
     obj = cls.__new__(cls)
