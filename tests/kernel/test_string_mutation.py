@@ -199,3 +199,16 @@ def test_codegen_style_binding():
     s.append(K.s8(R, "d"))
     assert (s.item(1), s.count, s.capacity) == ("X", 4, 9)
     assert s.is_equal(K.s8(R, "Xbcd")) and s.hash_code == ise_hash_reference("Xbcd")
+
+
+def test_a_string_appended_or_inserted_into_itself():
+    s = K.s8(R, "ab")
+    string_8.append(s, s)
+    assert s._s == "abab"
+    string_8.prepend(s, s)
+    assert s._s == "abababab"
+    string_8.insert_string(s, K.s8(R, "|"), 5)
+    string_8.append_substring(s, s, 1, 2)
+    assert s._s == "abab|ababab"
+    sg.append(s, s)
+    assert s._s == "abab|ababab" * 2
