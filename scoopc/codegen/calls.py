@@ -229,7 +229,6 @@ class Calls:
         ty = self.type_of(node)
         fn_name = self.inline_agent_function(node)
         count = len(node.arguments)
-        closed = [self.argument(a) for a in (node.actuals or ())]
         slots = [P.name("self")]
         opened = []
         if node.actuals is None:
@@ -241,7 +240,7 @@ class Calls:
                     slots.append(P.const(None))
                     opened.append(index)
                 else:
-                    slots.append(closed[index - 1])
+                    slots.append(self.argument(operand))
         return P.call("S.new_agent", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.name(fn_name),
                                       P.lst(slots), P.tup([P.const(i) for i in opened])])
 

@@ -12,6 +12,7 @@ from .context import fail
 EQUALITY = {"=": ast.Is, "/=": ast.IsNot}
 INTEGER_KINDS = ("INTEGER_8", "INTEGER_16", "INTEGER_32", "INTEGER_64",
                  "NATURAL_8", "NATURAL_16", "NATURAL_32", "NATURAL_64")
+INTEGER_BITS = {name: int(name.rsplit("_", 1)[1]) for name in INTEGER_KINDS}
 # Classes a value of a basic type conforms to: calls on them may meet a Python int/float/str/bool.
 BASIC_ANCESTORS = frozenset({"ANY", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "NUMERIC", "DEBUG_OUTPUT"})
 
@@ -37,11 +38,19 @@ class Expressions:
     def x_ManifestInteger(self, node):
         ty = self.tables.types.get(node)
         if ty is not None and ty.name in ("REAL_32", "REAL_64"):
-            return P.const(float(node.value))
+            return self.real_constant(float(node.value), ty)
         return P.const(node.value)
 
     def x_ManifestReal(self, node):
-        return P.const(float(node.value))
+        return self.real_constant(float(node.value), self.tables.types.get(node))
+
+    def real_constant(self, value: float, ty):
+        """A manifest real: a REAL_32 constant is rounded to single precision at compile time."""
+        if ty is not None and ty.name == "REAL_32":
+            from ..kernel.basic import r32
+
+            value = r32(value)
+        return P.const(value)
 
     def x_ManifestCharacter(self, node):
         return P.const(node.value)
@@ -136,11 +145,31 @@ class Expressions:
     def x_UnaryExpression(self, node):
         if node.operator == "not" and node not in self.tables.features:
             return P.not_(self.x(node.operand))
+        folded = self.negative_constant(node)
+        if folded is not None:
+            return folded
         feature = self.tables.features.get(node)
         if feature is None:
             fail(f"operator {node.operator} without a feature", node.span)
         return self.call_feature(node, node.operand, self.x(node.operand), feature, [],
                                  conversion=self.tables.conversions.get(node.operand))
+
+    def negative_constant(self, node):
+        """`-5`, `-2.5`: a manifest constant, when its value fits the type (no wrap needed)."""
+        operand = node.operand
+        if node.operator != "-" or not isinstance(operand, (syntax.ManifestInteger, syntax.ManifestReal)) \
+                or self.tables.conversions.get(operand) is not None:
+            return None
+        ty = self.tables.types.get(node)
+        value = self.x(operand).value
+        if ty is None or not isinstance(value, (int, float)):
+            return None
+        if ty.name in ("REAL_32", "REAL_64"):
+            return P.const(-float(value)) if value else None
+        bits = INTEGER_BITS.get(ty.name)
+        if bits is None or not ty.name.startswith("INTEGER") or -value < -(1 << (bits - 1)):
+            return None
+        return P.const(-value)
 
     def is_basic(self, ty) -> bool:
         return ty is not None and not ty.is_formal and ty.name in BASIC

@@ -27,6 +27,14 @@ Semantics are EiffelStudio's (finalized C code on x86-64), with these sources:
   CHARACTER_8's ASCII-only classification table (codes 128..255 have no property).
 - Real to integer conversions are C casts (`(EIF_INTEGER_32) d`): x86-64's cvttsd2si gives the
   smallest integer ("integer indefinite") for NaN, infinities and values out of range.
+- Integer `//` and `\\` truncate toward zero (C); a zero divisor raises ZeroDivisionError (also
+  for integer `/`). REAL `/` is IEEE (x / 0.0 is an infinity or NaN, as in EiffelStudio).
+- Shifts by the whole width (allowed by the preconditions, undefined in C) shift every bit out.
+
+Signed integer arithmetic in inline expressions tests the range of a temporary `_t` set by an
+assignment expression (`(_t if -2147483648 <= (_t := a + b) <= 2147483647 else
+B.wrap_i32(_t))`): the enclosing function gets a local `_t`, and such an expression cannot be
+the iterable of a comprehension.
 """
 import math
 import struct
@@ -38,8 +46,8 @@ NAN = math.nan
 POS_INF = math.inf
 NEG_INF = -math.inf
 HEX_DIGITS = "0123456789ABCDEF"
-chr = chr        # noqa: A001 - `B.chr`: a generated local may shadow the builtin
-ord = ord        # noqa: A001
+chr = chr        # `B.chr`, `B.ord`: a generated local may shadow the builtins
+ord = ord
 
 
 def seq(*values):
@@ -91,14 +99,14 @@ def _sized(bits, signed):
     return wrap, idiv, irem, iabs, shift, set_bit, set_bit_mask
 
 
-for _bits in (8, 16, 32, 64):
-    for _signed, _p in ((True, "i"), (False, "n")):
-        _fns = _sized(_bits, _signed)
-        for _name, _fn in zip(("wrap", "idiv", "irem", "abs", "shift", "set_bit", "set_bit_mask"), _fns):
-            if _fn is not None:
-                _fn.__name__ = f"{_name}_{_p}{_bits}"
-                globals()[_fn.__name__] = _fn
-del _bits, _signed, _p, _fns, _name, _fn
+wrap_i8, idiv_i8, irem_i8, abs_i8, shift_i8, set_bit_i8, set_bit_mask_i8 = _sized(8, True)
+wrap_i16, idiv_i16, irem_i16, abs_i16, shift_i16, set_bit_i16, set_bit_mask_i16 = _sized(16, True)
+wrap_i32, idiv_i32, irem_i32, abs_i32, shift_i32, set_bit_i32, set_bit_mask_i32 = _sized(32, True)
+wrap_i64, idiv_i64, irem_i64, abs_i64, shift_i64, set_bit_i64, set_bit_mask_i64 = _sized(64, True)
+wrap_n8, _, _, _, shift_n8, set_bit_n8, set_bit_mask_n8 = _sized(8, False)
+wrap_n16, _, _, _, shift_n16, set_bit_n16, set_bit_mask_n16 = _sized(16, False)
+wrap_n32, _, _, _, shift_n32, set_bit_n32, set_bit_mask_n32 = _sized(32, False)
+wrap_n64, _, _, _, shift_n64, set_bit_n64, set_bit_mask_n64 = _sized(64, False)
 
 
 def imax(a, b):

@@ -70,8 +70,48 @@ _LAST = {}
 
 
 def caught(here, error):
-    """Entering a rescue clause: remember the exception (EXCEPTION_MANAGER.last_exception)."""
-    _LAST[here] = error
+    """Entering a rescue clause: remember the exception (EXCEPTION_MANAGER.last_exception) as
+    an Eiffel EXCEPTION object when the failure is one the language defines."""
+    _LAST[here] = exception_object(here, error)
+
+
+_CONTRACT_CLASSES = {"precondition": "PRECONDITION_VIOLATION", "postcondition": "POSTCONDITION_VIOLATION",
+                     "invariant": "INVARIANT_VIOLATION", "check": "CHECK_VIOLATION",
+                     "loop_invariant": "LOOP_INVARIANT_VIOLATION", "variant": "VARIANT_VIOLATION"}
+_RUNTIME_CLASSES = {"bad_inspect_value": "BAD_INSPECT_VALUE", "void_target": "VOID_TARGET",
+                    "external_failure": "EXTERNAL_FAILURE"}
+
+
+def exception_object(here, error):
+    """The EXCEPTION object EiffelStudio's runtime would make for `error` (a Python exception
+    raised by generated code or the runtime), its description the assertion tag; the error
+    itself when no class fits."""
+    if isinstance(error, EiffelFailure):
+        return error
+    from ..runtime import DirtyRegionError, PreconditionViolation
+    while isinstance(error, DirtyRegionError) and error.__cause__ is not None:
+        error = error.__cause__
+    tag = None
+    if isinstance(error, ContractViolation):
+        name, tag = _CONTRACT_CLASSES.get(error.kind), error.tag
+    elif isinstance(error, PreconditionViolation):
+        name, tag = "PRECONDITION_VIOLATION", error.tag
+    elif isinstance(error, EiffelRuntimeError):
+        name = _RUNTIME_CLASSES.get(error.kind)
+    elif isinstance(error, (AttributeError, TypeError)) and "NoneType" in str(error):
+        name = "VOID_TARGET"
+    elif isinstance(error, ZeroDivisionError):
+        name = "FLOATING_POINT_FAILURE"
+    else:
+        name = None
+    cls = CLASSES.get(name) if name else None
+    if cls is None:
+        return error
+    exception = create(here, cls, None, None, ())
+    if tag:
+        from .strings import new_string_32
+        exception.description = new_string_32(here, tag)
+    return EiffelFailure(exception)
 
 
 def last_caught(here):

@@ -108,10 +108,23 @@ def _loose(universe, source: Ty, target: Ty, info) -> bool:
 
 
 def check_joins(universe, info, report) -> None:
-    """VDJR: inherited versions joined into one feature (deferred ones, or deferred ones with one
-    effective version) must have the same signature."""
+    """VDJR: deferred versions joined into one feature must have the same signature. An effective
+    version joined with deferred ones effects them: as EiffelStudio, its signature need only
+    conform to theirs, like a redeclaration's (VDRD(2))."""
     own = info.own_type()
     for name, versions in info.joins:
+        effective = [f for f in versions if not f.deferred]
+        if effective:
+            mine = member_signature(universe, own, effective[0])
+            for feature in versions:
+                if feature.deferred:
+                    theirs = member_signature(universe, own, feature)
+                    problem = _mismatch(universe, info, effective[0], feature, mine, theirs)
+                    if problem:
+                        report("VDRD(2)", info.decl.name.span, name=name, parent=feature.written_in,
+                               reason=problem)
+                        break
+            continue
         signatures = [member_signature(universe, own, f) for f in versions]
         first = signatures[0]
         for other, feature in zip(signatures[1:], versions[1:]):

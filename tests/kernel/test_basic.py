@@ -283,3 +283,23 @@ def test_interval_creates_an_integer_interval(monkeypatch):
     r = ev("INTEGER_8", "interval", -3, 4, region=region)
     assert (type(r), r.lower, r.upper, r._region_) == (Interval, -3, 4, region)
     assert ev("INTEGER_64", "interval", 2 ** 32 + 5, 9, region=region).lower == 5
+
+
+@given(st.lists(st.integers(-2 ** 31, 2 ** 31 - 1), min_size=4, max_size=4))
+def test_nested_signed_arithmetic_shares_its_temporary_safely(v):
+    """(a + b) * (c - d) + -a: every `_t` is read right after it is set."""
+    def node(i):
+        return ast.Name(f"v{i}", ast.Load())
+    left = B.inline("INTEGER_32", "plus", node(0), [node(1)])
+    right = B.inline("INTEGER_32", "minus", node(2), [node(3)])
+    expr = B.inline("INTEGER_32", "plus", B.inline("INTEGER_32", "product", left, [right]),
+                    [B.inline("INTEGER_32", "opposite", node(0), [])])
+    tree = ast.fix_missing_locations(ast.Expression(ast.Lambda(
+        ast.arguments(posonlyargs=[], args=[ast.arg(f"v{i}") for i in range(4)], vararg=None, kwonlyargs=[],
+                      kw_defaults=[], kwarg=None, defaults=[]), expr)))
+    fn = eval(compile(tree, "<t>", "eval"), {"B": B})
+    a, b, c, d = v
+    assert fn(a, b, c, d) == ref_wrap((a + b) * (c - d) - a, 32, True)
+    assert ev("INTEGER_64", "plus", 2 ** 63 - 1, 1) == -2 ** 63
+    assert ev("INTEGER_16", "minus", -32768, 1, form="const") == 32767
+    assert ev("INTEGER_8", "plus", -128, -1, form="const") == 127

@@ -414,6 +414,30 @@ ACCEPTED = {
             tag: STRING
         end
     """},
+    "effective_version_joined_with_deferred_ones_needs_only_a_conforming_signature": {"BASE": """\
+        deferred class BASE
+        feature
+            put (x: separate ANY) deferred end
+        end
+    """, "LEFT": """\
+        deferred class LEFT
+        inherit
+            BASE
+        feature
+            put (x: STRING) do print (x) end
+        end
+    """, "RIGHT": """\
+        deferred class RIGHT
+        inherit
+            BASE
+        end
+    """, "BOTH": """\
+        class BOTH
+        inherit
+            LEFT
+            RIGHT
+        end
+    """},
     "static_anchors": {"APP": """\
         class APP
         feature
