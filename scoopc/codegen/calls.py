@@ -95,6 +95,8 @@ class Calls:
     # --- the call itself ---------------------------------------------------------------------------
     def call_feature(self, node, target_node, target, feature, arguments, conversion=None, static_type=None):
         args = [self.argument(a) for a in arguments]
+        if not args and feature.arguments and node in self.tables.agent_calls:
+            args = [P.const(None)]                # `p.call` for `p.call ([])`: no open operands
         if conversion is not None:
             target = self.convert(target_node, target, conversion)
             target_ty = conversion[1]
@@ -102,6 +104,8 @@ class Calls:
             target_ty = static_type or (self.tables.types.get(target_node) if target_node is not None else None)
         if node in self.tables.separate_calls:
             return self.separate_call(node, target, feature, args)
+        owner = self.info.name if target_node is None else \
+            (target_ty.name if target_ty is not None and not target_ty.is_formal else None)
         if self.is_builtin_basic(feature):
             from ..kernel import basic
 
@@ -113,13 +117,14 @@ class Calls:
             return P.call("B.call", [target, P.const(self.py_name(feature)), P.tup(args), P.name("here")])
         if target_node is not None and self.assertions == "all" and target_ty is not None \
                 and target_ty.name in self.program.invariant_classes and not feature.kind in ("attribute", "constant"):
-            return P.call("S.call_checked", [target, P.const(self.py_name(feature)), P.tup(args)])
-        return self.plain_call(target, feature, args)
+            return P.call("S.call_checked", [target, P.const(self.py_name(feature, owner)), P.tup(args)])
+        return self.plain_call(target, feature, args, owner)
 
-    def plain_call(self, target, feature, args):
+    def plain_call(self, target, feature, args, owner=None):
+        name = self.py_name(feature, owner)
         if self.is_property(feature) or (feature.kind in ("attribute", "constant") and not args):
-            return P.attr(target, self.py_name(feature))
-        return P.call(P.attr(target, self.py_name(feature)), args)
+            return P.attr(target, name)
+        return P.call(P.attr(target, name), args)
 
     def is_property(self, feature) -> bool:
         return feature.is_query and not feature.arguments
@@ -132,12 +137,11 @@ class Calls:
 
     # --- separate calls ---------------------------------------------------------------------------
     def separate_call(self, node, target, feature, args):
-        name = P.const(self.py_name(feature))
-        passing = self.tables.lock_passing.get(node)
-        can_pass = P.const(bool(passing))
-        if feature.is_query:
-            return P.call("S.squery", [P.name("here"), target, name, P.tup(args), can_pass, self.where(node)])
-        return P.call("S.scall", [P.name("here"), target, name, P.tup(args), can_pass])
+        """A call on a controlled separate target: the runtime entry point its static facts
+        allow (scoop_calls.separate_call)."""
+        from .scoop_calls import separate_call
+
+        return separate_call(self, node, target, feature, args)
 
     # --- conversions ----------------------------------------------------------------------------------
     def convert(self, node, value, conversion):
@@ -161,9 +165,21 @@ class Calls:
     def creation_value(self, node, ty: Ty, feature, arguments, passive: bool):
         args = [self.argument(a) for a in arguments]
         if ty.is_formal:
+            if feature is None and getattr(node, "procedure", None) is not None:
+                feature = self.constraint_creator(ty, node.procedure.key)
             name = self.py_name(feature) if feature is not None else "default_create"
             return P.call("S.create_formal", [P.name("here"), self.type_desc(ty), P.const(name), P.tup(args)])
         return self.new_object(ty, feature, args, separate=ty.separate, passive=passive)
+
+    def constraint_creator(self, ty: Ty, name: str):
+        """`create x.make` on a formal generic: `make` of the constraint (its seed names it)."""
+        constraints = self.info.constraints[ty.formal] if ty.formal < len(self.info.constraints) else ()
+        for constraint in constraints:
+            owner = self.universe.get(constraint.name)
+            found = owner.features.get(name) if owner is not None else None
+            if found is not None:
+                return found
+        return None
 
     def new_object(self, ty: Ty, feature, args, separate: bool, passive: bool):
         info = self.universe.get(ty.name)
