@@ -192,3 +192,13 @@ def scoop(creatures, meetings):
     out = {}
     run_program(Root, (creatures, meetings, out))
     check_counts("chameneos scoop", [c.count for c in out["team"]], meetings)
+
+
+# --- the dialect version (benchmarks/chameneos/*.e), compiled by scoopc --------------
+
+def program_args(creatures, meetings):
+    return [str(meetings), str(creatures)]
+
+
+def program_output(creatures, meetings):
+    return f"chameneos: creatures={creatures} meetings={meetings} seen={2 * meetings}\n"

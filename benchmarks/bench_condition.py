@@ -106,3 +106,13 @@ def scoop(workers, iters):
     out = {}
     run_program(Root, (workers, iters, out))
     check("condition scoop value", out["shared"].value, workers * iters)
+
+
+# --- the dialect version (benchmarks/condition/*.e), compiled by scoopc --------------
+
+def program_args(workers, iters):
+    return [str(iters), str(workers)]
+
+
+def program_output(workers, iters):
+    return f"condition: workers={workers} iterations={iters} value={workers * iters}\n"

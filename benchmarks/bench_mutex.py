@@ -91,3 +91,13 @@ def scoop(workers, iters):
     out = {}
     run_program(Root, (workers, iters, out))
     check("mutex scoop count", out["counter"].value, workers * iters)
+
+
+# --- the dialect version (benchmarks/mutex/*.e), compiled by scoopc ----------------
+
+def program_args(workers, iters):
+    return [str(iters), str(workers)]
+
+
+def program_output(workers, iters):
+    return f"mutex: workers={workers} iterations={iters} count={workers * iters}\n"

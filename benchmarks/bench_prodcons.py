@@ -149,3 +149,15 @@ def scoop(producers, consumers, items):
     run_program(Root, (producers, consumers, items, out))
     total = sum(c.total for c in out["consumers"])
     check("prodcons scoop sum", total, _expected_sum(producers, items))
+
+
+# --- the dialect version (benchmarks/prodcons/*.e), compiled by scoopc ---------------
+
+def program_args(producers, consumers, items):
+    _check_split(producers, consumers, items)
+    return [str(items), str(producers), str(consumers)]
+
+
+def program_output(producers, consumers, items):
+    return (f"prodcons: producers={producers} consumers={consumers} items={items}"
+            f" sum={_expected_sum(producers, items)}\n")

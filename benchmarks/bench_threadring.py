@@ -126,3 +126,13 @@ def scoop(nodes, hops):
     out = {}
     run_program(Root, (nodes, hops, out))
     check("threadring scoop winner", out["result"].winner, expected_winner(nodes, hops))
+
+
+# --- the dialect version (benchmarks/threadring/*.e), compiled by scoopc -------------
+
+def program_args(nodes, hops):
+    return [str(hops), str(nodes)]
+
+
+def program_output(nodes, hops):
+    return f"threadring: nodes={nodes} hops={hops} winner={expected_winner(nodes, hops)}\n"

@@ -1,9 +1,21 @@
-"""Helpers shared by the benchmark modules: result checks, thread utilities, running a program.
+"""Helpers shared by the benchmark modules: result checks, thread utilities, running a program,
+compiling and running the dialect versions.
 
 A benchmark module defines SIZES, ops(**params), baseline(**params) and scoop(**params);
-each variant checks its own result and raises CheckFailed when it is wrong.
+each variant checks its own result and raises CheckFailed when it is wrong. For the compiled
+variant (benchmarks/<name>/*.e, compiled by scoopc) it also defines program_args(**params),
+the program's command-line arguments, and program_output(**params), the exact output of a
+correct run.
 """
+import io
+import json
+import os
+import sys
 import threading
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(HERE)
 
 
 class CheckFailed(AssertionError):
@@ -40,3 +52,64 @@ def run_program(root_cls, args):
     status = rt.run_main(root_cls, root_cls.make, args=args)
     if status != 0:
         raise CheckFailed(f"run_main returned status {status}")
+
+
+# --- the dialect versions, compiled by scoopc -----------------------------------
+
+class CompileFailed(Exception):
+    """scoopc rejected or could not compile a benchmark's dialect version."""
+
+
+def compile_benchmark(name, out_dir, assertions="none"):
+    """Compile benchmarks/<name>/ with scoopc's API (parse, check, codegen; the standard library
+    comes from scoopc's cache) into `out_dir`; write and return what a child needs to run it."""
+    if ROOT not in sys.path:
+        sys.path.insert(0, ROOT)
+    from pathlib import Path
+
+    from scoopc import build, pipeline
+    from scoopc.commands import choose_root
+    from scoopc.project import collect
+
+    source = os.path.join(HERE, name)
+    start = time.perf_counter()
+    project = collect([source])
+    checked = pipeline.check_project(project)
+    errors = [d for d in checked.diagnostics if d.is_error]
+    if errors:
+        raise CompileFailed(f"{name}: {errors[0]}")
+    root = choose_root(project, checked, None, [source])
+    package = "compiled_" + name
+    compiled = build.compile_program(checked, Path(out_dir), package, root.key, root.creator, assertions)
+    info = {"path": str(compiled.path), "base": str(compiled.base_path), "package": package,
+            "root": root.key, "creator": root.creator, "assertions": assertions,
+            "seconds": time.perf_counter() - start}
+    with open(os.path.join(out_dir, name + ".json"), "w") as f:
+        json.dump(info, f)
+    return info
+
+
+def run_compiled(build_dir, name, module, params):
+    """Run the compiled dialect version of benchmark `name` once in this process (as
+    `scoopc run` does: the launcher, then rt.run_main); check its output; return its times."""
+    with open(os.path.join(build_dir, name + ".json")) as f:
+        info = json.load(f)
+    for path in (info["base"], info["path"]):
+        if path not in sys.path:
+            sys.path.insert(0, path)
+    import importlib
+
+    from scoopc.codegen.names import class_name, module_name
+    from scoopc.kernel import launcher
+
+    root = importlib.import_module(f"{info['package']}.{module_name(info['root'])}")
+    root_cls = getattr(root, class_name(info["root"]))
+    argv = [info["root"].lower()] + module.program_args(**params)
+    out = io.StringIO()
+    start, cpu = time.perf_counter(), time.process_time()
+    status = launcher.main(root_cls, info["creator"], argv, stdout=out)
+    seconds, cpu = time.perf_counter() - start, time.process_time() - cpu
+    if status != 0:
+        raise CheckFailed(f"{name} compiled: exit status {status}")
+    check(f"{name} compiled output", out.getvalue(), module.program_output(**params))
+    return {"seconds": seconds, "cpu": cpu}

@@ -1,6 +1,10 @@
 """scoopc benchmark suite (DESIGN section 9): SCOOP/Qs programs on the runtime vs threading.
 
-`python benchmarks/run.py --help`. Each run is a fresh subprocess; best (or median) of R runs.
+Three variants of each benchmark: `scoop` (hand-written Python calling the runtime API as
+generated code does), `compiled` (the dialect version benchmarks/<name>/*.e, compiled once per
+run by scoopc into a temporary folder, run by the launcher as `scoopc run` does) and `baseline`
+(hand-written threading). `python benchmarks/run.py --help`. Each run is a fresh subprocess;
+best (or median) of R runs.
 """
 import argparse
 import importlib
@@ -11,12 +15,14 @@ import platform
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 BENCHMARKS = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
-VARIANTS = ("baseline", "scoop")
+VARIANTS = ("baseline", "scoop", "compiled")
+API_VARIANTS = ("baseline", "scoop")
 REPEATS = {"full": 3, "quick": 3, "smoke": 1}
 TIMEOUTS = {"full": 120, "quick": 30, "smoke": 10}
 STATS = {"best": min, "median": statistics.median}
@@ -29,8 +35,9 @@ class RunFailed(Exception):
 def parse_args(argv):
     parser = argparse.ArgumentParser(
         description="Run the SCOOP/Qs concurrency benchmarks and micro costs: each benchmark "
-        "against the scoopc runtime (as generated code calls it) and as hand-written threading, "
-        "with the time ratio scoop/baseline, then micro costs of separate calls. Each run is "
+        "against the scoopc runtime (hand-written as generated code calls it), as its dialect "
+        "version compiled by scoopc, and as hand-written threading, with the time ratios "
+        "scoop/baseline and compiled/scoop, then micro costs of separate calls. Each run is "
         "a fresh subprocess, pinned to one CPU unless --unpinned; the best (or, with --stat "
         "median, the median) of several runs is reported.")
     size = parser.add_mutually_exclusive_group()
@@ -43,8 +50,15 @@ def parse_args(argv):
     parser.add_argument("--repeat", type=int, metavar="R", help="runs per measurement")
     parser.add_argument("--stat", choices=sorted(STATS), default="best",
                         help="how runs are summarised (default: best, the least disturbed)")
+    parser.add_argument("--assertions", choices=("none", "require", "all"), default="none",
+                        help="contracts the compiled versions check (default: none, as in a "
+                        "finalized build; wait conditions are always evaluated and the standard "
+                        "library keeps its preconditions)")
+    parser.add_argument("--no-compiled", action="store_true",
+                        help="skip the compiled dialect versions")
     parser.add_argument("--child", nargs=3, metavar=("NAME", "VARIANT", "SIZE"),
                         help=argparse.SUPPRESS)
+    parser.add_argument("--build", metavar="DIR", help=argparse.SUPPRESS)
     return parser.parse_args(argv)
 
 
@@ -61,12 +75,15 @@ def load(name):
     return importlib.import_module("micro" if name == "micro" else "bench_" + name)
 
 
-def child_main(name, variant, size):
+def child_main(name, variant, size, build=None):
     """Run one variant once; print its result as one JSON line on stdout."""
     module = load(name)
     params = module.SIZES[size]
     if name == "micro":
         result = getattr(module, variant)(**params)
+    elif variant == "compiled":
+        from common import run_compiled
+        result = run_compiled(build, name, module, params)
     else:
         start, cpu = time.perf_counter(), time.process_time()
         getattr(module, variant)(**params)
@@ -93,8 +110,10 @@ def failure_line(stderr):
     return (ours or lines)[-1]
 
 
-def run_child(name, variant, size):
+def run_child(name, variant, size, build=None):
     command = [sys.executable, os.path.abspath(__file__), "--child", name, variant, size]
+    if build is not None:
+        command += ["--build", build]
     try:
         done = subprocess.run(command, capture_output=True, text=True, timeout=TIMEOUTS[size])
     except subprocess.TimeoutExpired:
@@ -110,12 +129,12 @@ def summarise(runs, stat):
             for variant, keys in runs.items()}
 
 
-def measure(name, size, repeats, stat):
-    """Run both variants `repeats` times, alternating them against drift; summarise."""
-    runs = {variant: {} for variant in VARIANTS}
+def measure(name, size, repeats, stat, variants=API_VARIANTS, build=None):
+    """Run the variants `repeats` times, alternating them against drift; summarise."""
+    runs = {variant: {} for variant in variants}
     for _ in range(repeats):
-        for variant in VARIANTS:
-            for key, value in run_child(name, variant, size).items():
+        for variant in variants:
+            for key, value in run_child(name, variant, size, build).items():
                 runs[variant].setdefault(key, []).append(value)
     return summarise(runs, stat)
 
@@ -124,31 +143,68 @@ def describe(params):
     return " ".join(f"{key}={value}" for key, value in params.items())
 
 
-def report_benchmark(name, size, repeats, stat):
-    """Print one benchmark line; return its ratio, or None when it failed."""
+def report_benchmark(name, size, repeats, stat, build=None):
+    """Print one benchmark line; return (scoop/baseline, compiled/scoop or None without a
+    build), or None when it failed. `build`: the compiled versions' folder, or None, or the
+    RunFailed that says why the dialect version could not be compiled."""
     module = load(name)
     params = module.SIZES[size]
+    variants = VARIANTS if build is not None else API_VARIANTS
     try:
-        summary = measure(name, size, repeats, stat)
+        if isinstance(build, RunFailed):
+            raise build
+        summary = measure(name, size, repeats, stat, variants, build)
     except RunFailed as failure:
         print(f"{name} {describe(params)} FAILED {failure}", flush=True)
         return None
-    best = {variant: summary[variant]["seconds"] for variant in VARIANTS}
+    best = {variant: summary[variant]["seconds"] for variant in variants}
+    cpu = {variant: summary[variant]["cpu"] for variant in variants}
+    shown = [v for v in ("scoop", "compiled", "baseline") if v in variants]
+    times = " ".join(f"{v}_s={best[v]:.3f}" for v in shown)
+    per_op = "/".join(f"{1e6 * best[v] / module.ops(**params):.2f}" for v in shown)
     ratio = best["scoop"] / best["baseline"]
-    per_op = [1e6 * best[v] / module.ops(**params) for v in ("scoop", "baseline")]
-    cpu_ratio = summary["scoop"]["cpu"] / max(summary["baseline"]["cpu"], 1e-9)
-    print(f"{name} {describe(params)} scoop_s={best['scoop']:.3f} baseline_s={best['baseline']:.3f}"
-          f" ratio={ratio:.2f} us_per_op={per_op[0]:.2f}/{per_op[1]:.2f}"
-          f" cpu_ratio={cpu_ratio:.2f}", flush=True)
-    return ratio
+    line = f"{name} {describe(params)} {times} ratio={ratio:.2f}"
+    compiled = None
+    if build is not None:
+        compiled = best["compiled"] / best["scoop"]
+        line += f" compiled_ratio={best['compiled'] / best['baseline']:.2f} compiled_vs_api={compiled:.2f}"
+    line += f" us_per_op={per_op} cpu_ratio={cpu['scoop'] / max(cpu['baseline'], 1e-9):.2f}"
+    print(line, flush=True)
+    return ratio, compiled
+
+
+def geomean(values):
+    return math.exp(sum(math.log(v) for v in values) / len(values))
 
 
 def report_geomean(ratios, failed):
+    """ratios: [(scoop/baseline, compiled/scoop or None)] of the benchmarks that ran."""
     if failed or not ratios:
         print(f"geomean_ratio=nan failed={','.join(failed) or 'none run'}")
         return
-    geomean = math.exp(sum(math.log(r) for r in ratios) / len(ratios))
-    print(f"geomean_ratio={geomean:.2f}")
+    line = f"geomean_ratio={geomean([r for r, _ in ratios]):.2f}"
+    compiled = [c for _, c in ratios if c is not None]
+    if compiled:
+        line += f" compiled_vs_api_geomean={geomean(compiled):.2f} compiled_vs_api_max={max(compiled):.2f}"
+    print(line)
+
+
+def compile_all(names, folder, assertions):
+    """Compile each benchmark's dialect version once for this run: {name: the build folder, or
+    the RunFailed that says why not}."""
+    from common import compile_benchmark
+    builds, total = {}, 0.0
+    for name in names:
+        try:
+            total += compile_benchmark(name, folder, assertions)["seconds"]
+        except Exception as problem:          # noqa: BLE001 - reported on the benchmark's line
+            builds[name] = RunFailed(f"{name} compiled: {type(problem).__name__}: {problem}")
+            continue
+        builds[name] = folder
+    done = sum(not isinstance(b, RunFailed) for b in builds.values())
+    print(f"# compiled {done} dialect versions with scoopc in {total:.2f} s "
+          f"(assertions={assertions}; the standard library from scoopc's cache)", flush=True)
+    return builds
 
 
 def report_micro(size, repeats, stat):
@@ -182,17 +238,20 @@ def print_header(size, repeats, stat, pinning):
 def main(argv=None):
     args = parse_args(argv)
     if args.child:
-        child_main(*args.child)
+        child_main(*args.child, build=args.build)
         return 0
     size = size_of(args)
     repeats = args.repeat or REPEATS[size]
     print_header(size, repeats, args.stat, pin(args.unpinned))
     selected = args.only or BENCHMARKS + ["micro"]
+    names = [n for n in BENCHMARKS if n in selected]
     ratios, failed = [], []
-    for name in (n for n in BENCHMARKS if n in selected):
-        ratio = report_benchmark(name, size, repeats, args.stat)
-        ratios.append(ratio) if ratio is not None else failed.append(name)
-    if any(n in selected for n in BENCHMARKS):
+    with tempfile.TemporaryDirectory(prefix="scoopc-bench-") as folder:
+        builds = {} if args.no_compiled or not names else compile_all(names, folder, args.assertions)
+        for name in names:
+            ratio = report_benchmark(name, size, repeats, args.stat, builds.get(name))
+            ratios.append(ratio) if ratio is not None else failed.append(name)
+    if names:
         report_geomean(ratios, failed)
     if "micro" in selected and not report_micro(size, repeats, args.stat):
         failed.append("micro")

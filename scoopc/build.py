@@ -87,9 +87,13 @@ def base_package(progress=None) -> Path:
     if checked.has_errors:
         raise RuntimeError("the standard library does not check: " + str(checked.diagnostics[0]))
     sem = checked.semantics
-    modules = generate(sem.universe, sem.tables, Options(package=BASE_PACKAGE), lambda info: info.from_library)
+    options = Options(package=BASE_PACKAGE)
+    modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library)
     staging = Path(tempfile.mkdtemp(prefix="base-", dir=_ensure(cache_dir())))
     write_modules(staging / BASE_PACKAGE, modules, "The standard library, compiled by scoopc.")
+    from .codegen.scoop import write_library_facts       # what programs' leaf analysis needs
+
+    write_library_facts(staging / BASE_PACKAGE, sem.universe, sem.tables, options)
     try:
         staging.rename(target)
     except OSError:                            # another process won the race: use its copy

@@ -2,8 +2,8 @@ note
 	description: "[
 		SCOOP/Qs chameneos benchmark (chameneos-redux): Creature_count creatures, each its own
 		processor, meet in pairs at a mall and take complementary colours, N meetings in all.
-		N is the first argument (default 300000). Prints the number of meetings the creatures
-		saw, which must be 2 * N.
+		N is the first argument (default 300000), Creature_count the second (default 10).
+		Prints the number of meetings the creatures saw, which must be 2 * N.
 	]"
 
 class
@@ -31,9 +31,13 @@ feature {NONE} -- Initialization
 			if argument_count >= 1 then
 				l_meetings := argument (1).to_integer
 			end
-			create l_mall.make (l_meetings, Creature_count)
-			create l_team.make (Creature_count)
-			across 1 |..| Creature_count as i loop
+			creature_count := Default_creatures
+			if argument_count >= 2 then
+				creature_count := argument (2).to_integer
+			end
+			create l_mall.make (l_meetings, creature_count)
+			create l_team.make (creature_count)
+			across 1 |..| creature_count as i loop
 				create l_creature.make (i.item, start_colour (i.item), l_mall)
 				l_team.extend (l_creature)
 			end
@@ -43,7 +47,7 @@ feature {NONE} -- Initialization
 			across l_team as c loop
 				l_seen := l_seen + meetings_of (c.item)
 			end
-			print ("chameneos: creatures=" + Creature_count.out + " meetings=" + l_meetings.out + " seen=" + l_seen.out + "%N")
+			print ("chameneos: creatures=" + creature_count.out + " meetings=" + l_meetings.out + " seen=" + l_seen.out + "%N")
 		end
 
 feature {NONE} -- Implementation
@@ -76,8 +80,11 @@ feature {NONE} -- Implementation
 			Result := <<Blue, Red, Yellow, Red, Yellow, Blue, Red, Yellow, Red, Blue>>
 		end
 
-	Creature_count: INTEGER = 10
+	creature_count: INTEGER
 			-- Number of creatures.
+
+	Default_creatures: INTEGER = 10
+			-- Number of creatures when no second argument is given.
 
 	Default_meetings: INTEGER = 300_000
 			-- Meetings when no argument is given.

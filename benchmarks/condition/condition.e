@@ -2,8 +2,9 @@ note
 	description: "[
 		SCOOP/Qs condition benchmark: Worker_count workers, half wanting the shared variable
 		even and half odd, each wait for their parity and increment it, N times each (so the
-		two groups strictly alternate). N is the first argument (default 100000). Prints the
-		final value, which must be Worker_count * N.
+		two groups strictly alternate). N is the first argument (default 100000), Worker_count
+		the second (default 4, an even number). Prints the final value, which must be
+		Worker_count * N.
 	]"
 
 class
@@ -29,12 +30,16 @@ feature {NONE} -- Initialization
 			if argument_count >= 1 then
 				l_iterations := argument (1).to_integer
 			end
+			worker_count := Default_workers
+			if argument_count >= 2 then
+				worker_count := argument (2).to_integer
+			end
 			create l_shared.make
-			create l_workers.make (Worker_count)
+			create l_workers.make (worker_count)
 			from
 				i := 0
 			until
-				i = Worker_count
+				i = worker_count
 			loop
 				create l_worker.make (l_shared, i \\ 2, l_iterations)
 				l_workers.extend (l_worker)
@@ -65,11 +70,14 @@ feature {NONE} -- Implementation
 	report (s: separate SHARED; an_iterations: INTEGER)
 			-- Print the value of `s'.
 		do
-			print ("condition: workers=" + Worker_count.out + " iterations=" + an_iterations.out + " value=" + s.value.out + "%N")
+			print ("condition: workers=" + worker_count.out + " iterations=" + an_iterations.out + " value=" + s.value.out + "%N")
 		end
 
-	Worker_count: INTEGER = 4
+	worker_count: INTEGER
 			-- Number of workers (an even number: as many want even values as odd ones).
+
+	Default_workers: INTEGER = 4
+			-- Number of workers when no second argument is given.
 
 	Default_iterations: INTEGER = 100_000
 			-- Increments per worker when no argument is given.

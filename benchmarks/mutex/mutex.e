@@ -1,8 +1,8 @@
 note
 	description: "[
 		SCOOP/Qs mutex benchmark: Worker_count workers each reserve a shared counter N times
-		and increment it. N is the first argument (default 100000). Prints the final count,
-		which must be Worker_count * N.
+		and increment it. N is the first argument (default 100000), Worker_count the second
+		(default 32). Prints the final count, which must be Worker_count * N.
 	]"
 
 class
@@ -28,9 +28,13 @@ feature {NONE} -- Initialization
 			if argument_count >= 1 then
 				l_iterations := argument (1).to_integer
 			end
+			worker_count := Default_workers
+			if argument_count >= 2 then
+				worker_count := argument (2).to_integer
+			end
 			create l_counter.make
-			create l_workers.make (Worker_count)
-			across 1 |..| Worker_count as i loop
+			create l_workers.make (worker_count)
+			across 1 |..| worker_count as i loop
 				create l_worker.make (l_counter, l_iterations)
 				l_workers.extend (l_worker)
 				launch (l_worker)
@@ -59,11 +63,14 @@ feature {NONE} -- Implementation
 	report (c: separate COUNTER; an_iterations: INTEGER)
 			-- Print the count of `c'.
 		do
-			print ("mutex: workers=" + Worker_count.out + " iterations=" + an_iterations.out + " count=" + c.value.out + "%N")
+			print ("mutex: workers=" + worker_count.out + " iterations=" + an_iterations.out + " count=" + c.value.out + "%N")
 		end
 
-	Worker_count: INTEGER = 32
+	worker_count: INTEGER
 			-- Number of workers.
+
+	Default_workers: INTEGER = 32
+			-- Number of workers when no second argument is given.
 
 	Default_iterations: INTEGER = 100_000
 			-- Increments per worker when no argument is given.

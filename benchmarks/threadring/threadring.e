@@ -2,8 +2,9 @@ note
 	description: "[
 		SCOOP/Qs threadring benchmark (from the benchmarks game): Node_count nodes in a ring,
 		each its own processor; node 1 gets the token N, each node passes the token minus one
-		to the next, and the node that gets 0 wins. N is the first argument (default 300000).
-		Prints the winner, which must be N \\ Node_count + 1.
+		to the next, and the node that gets 0 wins. N is the first argument (default 300000),
+		Node_count the second (default 503). Prints the winner, which must be
+		N \\ Node_count + 1.
 	]"
 
 class
@@ -28,11 +29,15 @@ feature {NONE} -- Initialization
 			if argument_count >= 1 then
 				l_hops := argument (1).to_integer
 			end
+			node_count := Default_nodes
+			if argument_count >= 2 then
+				node_count := argument (2).to_integer
+			end
 			create l_winner.make
-			create l_last.make (Node_count, l_winner, Void)
+			create l_last.make (node_count, l_winner, Void)
 			from
 				l_next := l_last
-				i := Node_count - 1
+				i := node_count - 1
 			until
 				i = 0
 			loop
@@ -67,11 +72,14 @@ feature {NONE} -- Implementation
 		require
 			known: r.is_set
 		do
-			print ("threadring: nodes=" + Node_count.out + " hops=" + a_hops.out + " winner=" + r.id.out + "%N")
+			print ("threadring: nodes=" + node_count.out + " hops=" + a_hops.out + " winner=" + r.id.out + "%N")
 		end
 
-	Node_count: INTEGER = 503
+	node_count: INTEGER
 			-- Nodes in the ring.
+
+	Default_nodes: INTEGER = 503
+			-- Nodes in the ring when no second argument is given.
 
 	Default_hops: INTEGER = 300_000
 			-- Token passes when no argument is given.

@@ -132,8 +132,8 @@ class Expressions:
         negate = node.operator in ("/=", "/~")
         if isinstance(node.right, syntax.Void) or isinstance(node.left, syntax.Void):
             return P.compare(left, ast.IsNot() if negate else ast.Is(), right)
-        if node.operator in ("~", "/~"):
-            test = P.call("B.equal", [left, right])
+        if node.operator in ("~", "/~") or self.is_user_expanded(left_ty) or self.is_user_expanded(right_ty):
+            test = P.call("B.equal", [left, right])       # `=` on expanded values compares them
         elif self.is_basic(left_ty) or self.is_basic(right_ty):
             return P.compare(left, ast.NotEq() if negate else ast.Eq(), right)
         elif self.may_hold_basic(left_ty) or self.may_hold_basic(right_ty):
@@ -170,6 +170,12 @@ class Expressions:
         if bits is None or not ty.name.startswith("INTEGER") or -value < -(1 << (bits - 1)):
             return None
         return P.const(-value)
+
+    def is_user_expanded(self, ty) -> bool:
+        if ty is None or ty.is_formal or ty.name in BASIC:
+            return False
+        info = self.universe.get(ty.name)
+        return info is not None and info.is_expanded
 
     def is_basic(self, ty) -> bool:
         return ty is not None and not ty.is_formal and ty.name in BASIC

@@ -134,12 +134,19 @@ class Instructions:
         if node.variant is None:
             return checks, ([], [])
         name = self.temp("variant")
-        first = [P.assign(P.name(name), P.call("S.variant_start", [self.x(node.variant.expression), self.where(node.variant)]))]
-        step = [P.assign(P.name(name), P.call("S.variant_step", [P.name(name), self.x(node.variant.expression),
-                                                                   self.where(node.variant)]))]
+        variant = node.variant
+        tag = [P.const(variant.tag.text)] if variant.tag is not None else []
+        first = [P.assign(P.name(name), P.call("S.variant_start", [self.x(variant.expression), self.where(variant)] + tag))]
+        step = [P.assign(P.name(name), P.call("S.variant_step", [P.name(name), self.x(variant.expression),
+                                                                   self.where(variant)] + tag))]
         return checks, (first, step)
 
     def s_Across(self, node):
+        from .scoop_calls import interval_across
+
+        fast = interval_across(self, node)             # `across a |..| b`: a Python range
+        if fast is not None:
+            return fast
         iteration = node.iteration
         var = self.local_name(iteration.name.key)
         out = self.block(node.initialization)

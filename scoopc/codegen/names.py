@@ -43,8 +43,12 @@ class Naming:
     def __init__(self, universe):
         self.universe = universe
         self.demoted: dict[str, str] = {}
+        self.replicas: dict[str, dict[str, str]] = {}      # class key -> {final name: Python name}
         for info in universe.classes.values():
             self._resolve_class(info)
+        done: set = set()
+        for info in universe.classes.values():
+            self._find_replicas(info, done)
 
     def _rank(self, seed: str) -> tuple:
         owner = self.universe.get(seed_class(seed))
@@ -66,6 +70,49 @@ class Naming:
                     if seed not in ranked[0]:
                         self.demoted[seed] = f"{name}__{class_name(seed_class(seed)).lower()}"
 
+    def _find_replicas(self, info, done: set) -> None:
+        """Repeated inheritance: two features of `info` with a common seed (`speed` inherited as
+        `road_speed` and as `water_speed`). The selected one keeps the seed's name (calls through
+        the common ancestor reach it); the others get a name of their own in this class and its
+        descendants."""
+        if info.name in done:
+            return
+        done.add(info.name)
+        parents = [(clause, self.universe.get(ty.name)) for clause, ty, _ in info.parents]
+        found: dict = {}
+        for _, parent in parents:
+            if parent is None:
+                continue
+            self._find_replicas(parent, done)
+            for pname, pyname in self.replicas.get(parent.name, {}).items():
+                inherited = parent.features.get(pname)
+                for feature in info.features.values():
+                    if inherited is not None and feature.decl is inherited.decl and feature.shared is inherited.shared:
+                        found.setdefault(feature.name, pyname)
+        selected = {i.key for clause, _ in parents if clause is not None for i in clause.selects}
+        if selected:
+            by_seed: dict = {}
+            for feature in info.features.values():
+                if feature.name not in found:
+                    for seed in feature.seeds():
+                        by_seed.setdefault(seed, []).append(feature)
+            for versions in by_seed.values():
+                if len(versions) > 1 and any(f.name in selected for f in versions):
+                    for feature in versions:
+                        if feature.name not in selected:
+                            found[feature.name] = f"{py_identifier(feature.name)}__{class_name(info.name).lower()}"
+        if found:
+            self.replicas[info.name] = found
+
+    def name_in(self, class_key, feature) -> str:
+        """The Python name of `feature` reached through an entity whose type's class is `class_key`."""
+        table = self.replicas.get(class_key) if class_key is not None else None
+        if table:
+            found = table.get(feature.name)
+            if found is not None:
+                return found
+        return self.primary(feature)
+
     def feature_seeds(self, info, feature) -> set:
         seeds = set(feature.seeds())
         for name, versions in info.joins:
@@ -84,6 +131,9 @@ class Naming:
         return self.seed(best)
 
     def all_names(self, info, feature) -> list[str]:
+        replica = self.replicas.get(info.name, {}).get(feature.name)
+        if replica is not None:
+            return [replica]
         names = {self.seed(s) for s in self.feature_seeds(info, feature)}
         primary = self.primary(feature)
         return [primary] + sorted(names - {primary})

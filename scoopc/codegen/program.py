@@ -11,6 +11,7 @@ from .classes import ClassGen, plan_bindings
 from .context import CodegenError, Options, Program
 from .layout import make_layout
 from .names import Naming, module_name
+from .scoop_calls import finish_module
 
 
 def parents_first(universe) -> list:
@@ -47,7 +48,9 @@ def prepare(universe, tables, options: Options) -> Program:
 def generate_class(program: Program, info) -> ast.Module:
     layout = program.layouts[info.name]
     try:
-        return ClassGen(program, info, layout).generate(layout.plan)
+        module = ClassGen(program, info, layout).generate(layout.plan)
+        finish_module(program, info, module)
+        return module
     except CodegenError:
         raise
     except Exception as problem:             # a surprise is a compiler bug, named with the class

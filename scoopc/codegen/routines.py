@@ -39,8 +39,9 @@ class RoutineGen(Expressions, Calls, Instructions):
         self.inline_agents: list = []
 
     # --- names ------------------------------------------------------------------------------------
-    def py_name(self, feature) -> str:
-        return self.naming.primary(feature)
+    def py_name(self, feature, owner=None) -> str:
+        """The Python name of `feature` called on a target whose static class is `owner`."""
+        return self.naming.name_in(owner, feature) if owner is not None else self.naming.primary(feature)
 
     def local_name(self, name: str) -> str:
         return local_identifier(name)
@@ -137,15 +138,10 @@ class RoutineGen(Expressions, Calls, Instructions):
     # --- reservations --------------------------------------------------------------------------------
     def reserved(self, objs, clauses, body, where, formal_names=None, arguments=None) -> list:
         """`with here.reserve(...)` around body, the precondition as a clause table."""
+        from .scoop_calls import reserved
+
         table, pre_args = self.clause_table(clauses or (), formal_names or [], arguments or [])
-        if len(objs) == 1:
-            call = P.call("here.reserve1", [objs[0], where] + ([table, pre_args] if table is not None else []))
-        else:
-            keywords = {"where": where}
-            if table is not None:
-                keywords.update(pre=table, pre_args=pre_args)
-            call = P.call("here.reserve", [P.tup(objs)], keywords)
-        return [ast.With([ast.withitem(call, None)], body or [ast.Pass()])]
+        return reserved(self, objs, table, pre_args, body, where, formal_names)
 
     def clause_table(self, clauses, formal_names, arguments):
         kept = []

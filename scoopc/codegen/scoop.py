@@ -118,8 +118,13 @@ class Analysis:
         table = self._by_seed.get(cls)
         if table is None:
             table = self._by_seed[cls] = {}
-            for feature in self.universe.classes[cls].features.values():
-                for seed in feature.seeds():
+            info = self.universe.classes[cls]
+            joined: dict = {}
+            for name, versions in info.joins:     # inherited versions joined into one feature
+                for version in versions:
+                    joined.setdefault(name, set()).update(version.seeds())
+            for feature in info.features.values():
+                for seed in feature.seeds() | joined.get(feature.name, set()):
                     table.setdefault(seed, []).append(feature)
         return table
 
@@ -215,7 +220,8 @@ def local_facts(analysis: Analysis, info, feature):
     if not isinstance(inner, syntax.InternalBody) or inner.once:
         return False, []
     signature = feature.signature
-    return _walk_body(analysis, info, body, signature.arguments if signature is not None else (None,))
+    types = signature.arguments if signature is not None else (None,) * len(decl.arguments)
+    return _walk_body(analysis, info, body, list(zip((a.name.key for a in decl.arguments), types)))
 
 
 def _external_ok(info, feature, inner) -> bool:
@@ -229,8 +235,10 @@ def _external_ok(info, feature, inner) -> bool:
 def _walk_body(analysis: Analysis, info, body, arguments):
     walker = _Walker(analysis, info)
     try:
-        for ty in arguments:
-            if ty is None or (ty.separate and not _expanded(analysis.universe, ty)):
+        for name, ty in arguments:
+            if ty is None:
+                raise NotLeaf("unknown argument type")
+            if ty.separate and not _expanded(analysis.universe, ty) and not only_stored(analysis, body, name):
                 raise NotLeaf("separate argument: a reservation")
         if body.rescue is not None:
             raise NotLeaf("rescue")
@@ -243,6 +251,30 @@ def _walk_body(analysis: Analysis, info, body, arguments):
     except NotLeaf:
         return False, []
     return True, walker.callees
+
+
+def only_stored(analysis: Analysis, body, name: str) -> bool:
+    """Whether argument `name` only ever appears as `attribute := name` (then it is not
+    reserved: scoop_calls.reserved drops it by the same rule)."""
+    entities, features = analysis.tables.entities, analysis.tables.features
+    uses, stored = 0, 0
+    pending = [body.precondition, body.postcondition, body.body] + list(body.rescue or ())
+    while pending:
+        node = pending.pop()
+        if node is None:
+            continue
+        if isinstance(node, syntax.UnqualifiedCall) and node.name.key == name:
+            entity = entities.get(node)
+            if entity is not None and entity.kind == "argument":
+                uses += 1
+        elif isinstance(node, syntax.Assignment) and isinstance(node.source, syntax.UnqualifiedCall) \
+                and node.source.name.key == name and not node.source.arguments \
+                and node.source not in analysis.tables.conversions:
+            target = entities.get(node.target)
+            if (target is None or target.kind == "attribute") and features.get(node.target) is not None:
+                stored += 1
+        pending.extend(children(node))
+    return uses == stored
 
 
 def _expanded(universe, ty) -> bool:
@@ -286,19 +318,21 @@ class _Walker:
             self.visit(child)
 
     # --- calls ---------------------------------------------------------------------------------------
-    def dynamic(self, ty, feature) -> None:
-        """A call of `feature` on a target of static type `ty` (None: Current)."""
+    def dynamic(self, ty, feature, current=False) -> None:
+        """A call of `feature` on a target of static type `ty`, or on Current."""
         if feature is None:
             raise NotLeaf("unresolved call")
-        for cls in self.classes_of(ty):
+        for cls in self.classes_of(ty, current):
             self.add(("d", cls, frozenset(feature.seeds())))
 
     def exact(self, feature) -> None:
         self.add(("v", feature.written_in, feature.decl.names[0].name.key))
 
-    def classes_of(self, ty) -> list:
-        if ty is None or ty.name == "<Current>":
+    def classes_of(self, ty, current=False) -> list:
+        if current or (ty is not None and ty.name == "<Current>"):
             return [self.info.name]
+        if ty is None:
+            raise NotLeaf("unknown target type")
         if ty.is_formal:
             constraints = self.info.constraints[ty.formal] if ty.formal < len(self.info.constraints) else ()
             return [c.name for c in constraints] or ["ANY"]
@@ -314,7 +348,7 @@ class _Walker:
         if node in self.tables.agent_calls:
             raise NotLeaf("agent call")
         if entity is None or entity.kind == "attribute":
-            self.dynamic(None, self.tables.features.get(node))
+            self.dynamic(None, self.tables.features.get(node), current=True)
         elif node.arguments:
             raise NotLeaf("agent call")
         self.visit_children(node)
@@ -372,7 +406,10 @@ class _Walker:
         target = node.target
         if assigner is not None:
             owner = getattr(target, "target", None)
-            self.dynamic(self.tables.types.get(owner) if owner is not None else None, assigner)
+            if owner is None:
+                self.dynamic(None, assigner, current=True)
+            else:
+                self.dynamic(self.tables.types.get(owner), assigner)
         self.visit_children(node)
 
     def _any_feature(self, name: str):
@@ -435,8 +472,11 @@ class _Walker:
 
 
 # --- the standard library's facts, kept beside its compiled package --------------------------------
-def library_facts(universe, tables, assertions_for) -> dict:
+def library_facts(universe, tables, options) -> dict:
     """{version key: [ok, callees]} for every routine version written in a library class."""
+    def assertions_for(info):
+        return options.library_assertions if info.from_library else options.assertions
+
     analysis = Analysis(universe, tables, assertions_for, library_facts=True)
     facts = {}
     for info in universe.classes.values():
@@ -452,8 +492,8 @@ def library_facts(universe, tables, assertions_for) -> dict:
     return facts
 
 
-def write_library_facts(folder: Path, universe, tables, assertions_for) -> None:
-    facts = library_facts(universe, tables, assertions_for)
+def write_library_facts(folder: Path, universe, tables, options) -> None:
+    facts = library_facts(universe, tables, options)
     (folder / FACTS_FILE).write_text(json.dumps({"format": FACTS_FORMAT, "facts": facts}, separators=(",", ":")))
 
 

@@ -106,6 +106,8 @@ def eiffel_frames(error) -> list:
         routine = frame.f_code.co_name
         for suffix in ("_once_", "_init_"):
             routine = routine[: -len(suffix)] if routine.endswith(suffix) else routine
+        if routine == "_invariant_":
+            routine = "invariant"
         frames.append((cls, "inline agent" if routine.startswith("_agent_") else routine, place))
     frames.reverse()
     return frames

@@ -39,15 +39,15 @@ def bad_inspect(value, where):
     raise EiffelRuntimeError("bad_inspect_value", f"no `when` branch matches the value {value!r}", where)
 
 
-def variant_start(value, where):
+def variant_start(value, where, tag=None):
     if value < 0:
-        raise ContractViolation("variant", None, where)
+        raise ContractViolation("variant", tag, where)
     return value
 
 
-def variant_step(previous, value, where):
+def variant_step(previous, value, where, tag=None):
     if value < 0 or value >= previous:
-        raise ContractViolation("variant", None, where)
+        raise ContractViolation("variant", tag, where)
     return value
 
 
@@ -261,6 +261,24 @@ def routine_of(target, name):
             def found(obj, _name=name):
                 return getattr(obj, _name)
         _ROUTINES[key] = found
+    return found
+
+
+_GETTERS: dict = {}
+
+
+def getter(name):
+    """The reader of attribute (or constant) `name`, as a leaf routine: f(target) -> value
+    (a statically bound separate query of an attribute)."""
+    found = _GETTERS.get(name)
+    if found is None:
+        if not name.isidentifier():
+            raise ValueError(f"not an attribute name: {name!r}")
+        scope: dict = {}
+        exec(f"def get_{name}(obj):\n    return obj.{name}\n", scope)   # noqa: S102 - an identifier
+        found = scope[f"get_{name}"]
+        found._scoop_leaf_ = True
+        _GETTERS[name] = found
     return found
 
 

@@ -96,10 +96,10 @@ class TypeDesc:
             return False
         if not self.generics:
             return True
-        own = getattr(value, "_gen_", None)
-        if own is None or type(value)._key_ != self.key or len(own) != len(self.generics):
-            return True           # conformance through an ancestor's generics: not tracked
-        return all(mine.conforms_to(theirs) for mine, theirs in zip(own, self.generics))
+        actual = ancestor_generics(type(value), getattr(value, "_gen_", ()), self.key)
+        if actual is None or len(actual) != len(self.generics):
+            return True           # generics not known at run time
+        return all(mine.conforms_to(theirs) for mine, theirs in zip(actual, self.generics))
 
     def conforms_to(self, other: "TypeDesc") -> bool:
         if other.key == "ANY" or self is other:
@@ -110,9 +110,12 @@ class TypeDesc:
         conforms = getattr(cls, "_conforms_", frozenset({self.key})) if cls is not None else {self.key}
         if other.key not in conforms:
             return False
-        if self.key == other.key and len(self.generics) == len(other.generics):
-            return all(a.conforms_to(b) for a, b in zip(self.generics, other.generics))
-        return True
+        if not other.generics:
+            return True
+        actual = ancestor_generics(cls, self.generics, other.key) if cls is not None else None
+        if actual is None or len(actual) != len(other.generics):
+            return True
+        return all(a.conforms_to(b) for a, b in zip(actual, other.generics))
 
     def __repr__(self) -> str:
         return self.name
@@ -142,6 +145,16 @@ def of(value) -> TypeDesc:
     if kind is str:
         return t("CHARACTER_8")
     return t(kind._key_, getattr(value, "_gen_", ()))
+
+
+def ancestor_generics(cls, generics: tuple, ancestor: str):
+    """The actual generics of `ancestor` for an object of class `cls` with actual generics
+    `generics` (`ARRAYED_LIST [DOG]` seen as a `LIST` has `(DOG,)`); None when unknown."""
+    if cls._key_ == ancestor:
+        return generics
+    table = getattr(cls, "_ancestor_gen_", None)
+    found = table.get(ancestor) if table else None
+    return found(generics) if found is not None else None
 
 
 def formal(obj, written_in: str, index: int) -> TypeDesc:

@@ -1,4 +1,5 @@
-"""Smoke test of benchmarks/run.py: tiny sizes, output format and result checks (never timings)."""
+"""Smoke test of benchmarks/run.py: tiny sizes, output format and result checks (never timings),
+for the hand-written variants and the dialect versions compiled by scoopc."""
 import os
 import re
 import subprocess
@@ -10,8 +11,13 @@ import pytest
 RUN = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "run.py")
 NAMES = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
 NUMBER = r"\d+\.\d+"
-BENCH_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) baseline_s=({NUMBER}) "
-                        rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER} cpu_ratio={NUMBER}$")
+BENCH_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) compiled_s=({NUMBER}) "
+                        rf"baseline_s=({NUMBER}) ratio=({NUMBER}) compiled_ratio={NUMBER} "
+                        rf"compiled_vs_api=({NUMBER}) us_per_op={NUMBER}/{NUMBER}/{NUMBER} cpu_ratio={NUMBER}$")
+API_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) baseline_s=({NUMBER}) "
+                      rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER} cpu_ratio={NUMBER}$")
+COMPILED_LINE = re.compile(rf"^# compiled (\d+) dialect versions with scoopc in {NUMBER} s \(assertions=none; .+\)$")
+GEOMEAN_LINE = re.compile(rf"geomean_ratio={NUMBER} compiled_vs_api_geomean={NUMBER} compiled_vs_api_max={NUMBER}")
 MICRO_LINE = re.compile(
     rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
 MICRO_KEYS = ["async_command", "async_command_queued", "sync_query", "reserve_1_wait_condition",
@@ -35,18 +41,23 @@ def test_header_states_parameters(smoke):
     assert "pinned to cpu" in smoke[0] and "size=smoke" in smoke[0]
 
 
+def test_every_dialect_version_is_compiled_once(smoke):
+    match = COMPILED_LINE.match(smoke[1])
+    assert match and match.group(1) == "5", smoke
+
+
 def test_one_line_per_benchmark_in_order(smoke):
-    matches = [BENCH_LINE.match(line) for line in smoke[1:6]]
+    matches = [BENCH_LINE.match(line) for line in smoke[2:7]]
     assert all(matches), smoke
     assert [m.group(1) for m in matches] == NAMES
 
 
 def test_geomean_line(smoke):
-    assert re.fullmatch(rf"geomean_ratio={NUMBER}", smoke[6])
+    assert GEOMEAN_LINE.fullmatch(smoke[7]), smoke
 
 
 def test_micro_lines(smoke):
-    micro = [MICRO_LINE.match(line) for line in smoke[7:]]
+    micro = [MICRO_LINE.match(line) for line in smoke[8:]]
     assert all(micro), smoke
     assert [m.group(1) for m in micro] == MICRO_KEYS
 
@@ -56,8 +67,17 @@ def test_only_and_unpinned_select():
     assert done.returncode == 0, done.stderr
     lines = done.stdout.splitlines()
     assert "unpinned" in lines[0]
-    assert BENCH_LINE.match(lines[1]).group(1) == "mutex"
-    assert lines[2].startswith("geomean_ratio=") and len(lines) == 3
+    assert COMPILED_LINE.match(lines[1]).group(1) == "1"
+    assert BENCH_LINE.match(lines[2]).group(1) == "mutex"
+    assert GEOMEAN_LINE.fullmatch(lines[3]) and len(lines) == 4
+
+
+def test_no_compiled_keeps_the_hand_written_variants_only():
+    done = run("--smoke", "--no-compiled", "--only", "threadring")
+    assert done.returncode == 0, done.stderr
+    lines = done.stdout.splitlines()
+    assert API_LINE.match(lines[1]).group(1) == "threadring"
+    assert re.fullmatch(rf"geomean_ratio={NUMBER}", lines[2]) and len(lines) == 3
 
 
 def test_unknown_benchmark_is_a_usage_error():
@@ -80,6 +100,34 @@ def test_each_variant_checks_its_result(name, variant, monkeypatch):
     if hasattr(module, "check_counts"):
         monkeypatch.setattr(module, "check_counts", lambda *a: wrong("counts", 0, 1))
     raised = run_with_timeout(lambda: getattr(module, variant)(**module.SIZES["smoke"]))
+    assert isinstance(raised, CheckFailed), raised
+
+
+@pytest.fixture(scope="module")
+def builds(tmp_path_factory):
+    """Every dialect version, compiled once with scoopc's API (as run.py does)."""
+    folder = tmp_path_factory.mktemp("compiled")
+    sys.path.insert(0, os.path.dirname(RUN))
+    from common import compile_benchmark
+
+    for name in NAMES:
+        compile_benchmark(name, str(folder))
+    return str(folder)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_each_compiled_version_runs_and_checks_its_output(name, builds, monkeypatch):
+    """The compiled program prints the expected line at a tiny size; a wrong expected output
+    raises, so a broken compiled run can never print a fast time."""
+    monkeypatch.syspath_prepend(os.path.dirname(RUN))
+    module = __import__("bench_" + name)
+    from common import CheckFailed, run_compiled
+
+    params = module.SIZES["smoke"]
+    result = run_with_timeout(lambda: run_compiled(builds, name, module, params))
+    assert result is None
+    monkeypatch.setattr(module, "program_output", lambda **p: "something else\n")
+    raised = run_with_timeout(lambda: run_compiled(builds, name, module, params))
     assert isinstance(raised, CheckFailed), raised
 
 
@@ -109,11 +157,11 @@ def test_a_failing_run_is_reported_and_fails_the_command(monkeypatch, capsys):
     with pytest.raises(harness.RunFailed):
         harness.run_child("nosuch", "scoop", "smoke")      # a crashing child: non-zero exit
 
-    def broken(name, variant, size):
+    def broken(name, variant, size, build=None):
         raise harness.RunFailed(f"{name} {variant}: exit 1: CheckFailed: count")
 
     monkeypatch.setattr(harness, "run_child", broken)
     assert harness.main(["--smoke", "--unpinned", "--only", "mutex"]) == 1
     out = capsys.readouterr().out.splitlines()
-    assert out[1].startswith("mutex workers=") and "FAILED" in out[1]
-    assert out[2] == "geomean_ratio=nan failed=mutex"
+    assert out[2].startswith("mutex workers=") and "FAILED" in out[2]
+    assert out[3] == "geomean_ratio=nan failed=mutex"

@@ -1,0 +1,13 @@
+class
+	PLAIN
+
+feature -- Access
+
+	value: INTEGER
+
+	set_value (v: INTEGER)
+		do
+			value := v
+		end
+
+end

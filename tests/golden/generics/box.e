@@ -1,0 +1,44 @@
+class
+	BOX [G]
+
+create
+	make,
+	make_empty
+
+feature {NONE} -- Initialization
+
+	make (v: G)
+		do
+			item := v
+			has_item := True
+		end
+
+	make_empty
+		do
+		end
+
+feature -- Access
+
+	item: G
+
+	has_item: BOOLEAN
+
+	mapped (f: FUNCTION [G, G]): BOX [G]
+		do
+			create Result.make (f (item))
+		end
+
+	replaced (v: G): like Current
+		do
+			Result := twin
+			Result.set (v)
+		end
+
+feature -- Change
+
+	set (v: G)
+		do
+			item := v
+		end
+
+end

@@ -1,0 +1,148 @@
+"""Compiling and running golden programs in this process (shared by test_golden.py and
+test_samples.py).
+
+A program is checked and compiled with the compiler's API (scoopc/build.py) into a package of its
+own (named like its root class, as `scoopc compile` names it), then run by the kernel's launcher
+with the output captured. Expected outputs are compared exactly, per processor (each
+processor's lines in order, from `--trace-processors` prefixes) or as sorted lines.
+
+case.toml (optional, a small subset of TOML: `key = value`, one per line, values are strings,
+integers, booleans or lists of strings):
+  compare = "exact" | "per_processor" | "sorted"    (default "exact")
+  args = ["a", "b"]                                  the program's arguments (`-- a b`)
+  stdin = "text"                                     its standard input
+  exit = 3                                           its expected exit status (default 0)
+  virtual_clock = true, strict = true, assertions = "require"
+  stderr_lines = 2                                   lines of expected.err compared (default: all)
+"""
+from __future__ import annotations
+
+import ast
+import importlib
+import io
+import re
+import sys
+import threading
+from dataclasses import dataclass, field
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[2]
+TRACE = re.compile(r"^\[P(\d+)\] ?(.*)$")
+
+
+@dataclass
+class Config:
+    compare: str = "exact"
+    args: list = field(default_factory=list)
+    stdin: str | None = None
+    exit: int = 0
+    virtual_clock: bool = False
+    strict: bool = False
+    assertions: str = "all"
+
+    @property
+    def trace(self) -> bool:
+        return self.compare == "per_processor"
+
+
+def read_config(folder: Path) -> Config:
+    path = folder / "case.toml"
+    config = Config()
+    if not path.exists():
+        return config
+    for number, line in enumerate(path.read_text().splitlines(), start=1):
+        line = line.strip()
+        if not line or line.startswith("#"):
+            continue
+        key, sep, value = line.partition("=")
+        if not sep or not hasattr(config, key.strip()):
+            raise ValueError(f"{path}:{number}: expected `key = value` with a known key")
+        text = value.strip().replace("true", "True").replace("false", "False")
+        setattr(config, key.strip(), ast.literal_eval(text))
+    if config.compare not in ("exact", "per_processor", "sorted"):
+        raise ValueError(f"{path}: compare must be exact, per_processor or sorted")
+    return config
+
+
+_COMPILED: dict = {}
+_LOCK = threading.Lock()
+
+
+def relative_text(text: str) -> str:
+    """Generated text with absolute paths of this checkout made relative to the repository."""
+    return text.replace(str(REPO) + "/", "")
+
+
+def compile_program(folder: Path, out_dir: Path, assertions: str = "all"):
+    """Check and compile the program in `folder` (root: the class named like the folder).
+    Returns (compiled, {module file name: text}); raises AssertionError on source errors."""
+    from scoopc import build, pipeline
+    from scoopc.commands import choose_root
+    from scoopc.project import collect
+
+    paths = [str(folder.resolve())]
+    project = collect(paths)
+    checked = pipeline.check_project(project)
+    if checked.has_errors:
+        errors = "\n".join(f"{d.span}: {d.code}: {d.message}" for d in checked.diagnostics if d.is_error)
+        raise AssertionError(f"{folder.name} does not compile:\n{errors}")
+    root = choose_root(project, checked, None, paths)
+    package = root.key.lower()
+    compiled = build.compile_program(checked, out_dir, package, root.key, root.creator, assertions)
+    texts = {p.name: relative_text(p.read_text()) for p in sorted((out_dir / package).glob("*.py"))
+             if not p.name.startswith("__")}
+    return compiled, texts
+
+
+@dataclass
+class Outcome:
+    status: int
+    out: str
+    err: str
+
+
+def run_program(compiled, config: Config) -> Outcome:
+    """Run a compiled program in this process (its package imported fresh)."""
+    from scoopc import build
+    from scoopc.codegen.names import class_name, module_name
+    from scoopc.kernel import launcher
+
+    build.ensure_on_path(compiled.base_path, compiled.path)
+    package = compiled.package
+    for name in [m for m in sys.modules if m == package or m.startswith(package + ".")]:
+        del sys.modules[name]
+    from scoopc.kernel import link
+    link._LOADED.pop(package, None)
+    importlib.invalidate_caches()
+    module = importlib.import_module(f"{package}.{module_name(compiled.root_key)}")
+    root_cls = getattr(module, class_name(compiled.root_key))
+    out, err = io.StringIO(), io.StringIO()
+    saved_stdin = sys.stdin
+    sys.stdin = io.StringIO(config.stdin or "")
+    try:
+        status = launcher.main(root_cls, compiled.creator, [compiled.root_key.lower()] + list(config.args),
+                               trace_processors=config.trace, strict=config.strict,
+                               virtual_clock=config.virtual_clock, stdout=out, stderr=err)
+    finally:
+        sys.stdin = saved_stdin
+        sys.path.remove(str(compiled.path))
+    return Outcome(status, out.getvalue(), relative_text(err.getvalue()))
+
+
+def per_processor(text: str) -> dict:
+    """{processor id: its lines in order}; untagged lines under None."""
+    found: dict = {}
+    for line in text.splitlines():
+        match = TRACE.match(line)
+        key, rest = (int(match.group(1)), match.group(2)) if match else (None, line)
+        found.setdefault(key, []).append(rest)
+    return found
+
+
+def assert_output(config: Config, expected: str, actual: str, where: str) -> None:
+    if config.compare == "exact":
+        assert actual == expected, f"{where}: output differs"
+    elif config.compare == "sorted":
+        assert sorted(actual.splitlines()) == sorted(expected.splitlines()), f"{where}: output lines differ"
+    else:
+        assert per_processor(actual) == per_processor(expected), f"{where}: output differs per processor"

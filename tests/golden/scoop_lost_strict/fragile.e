@@ -1,0 +1,13 @@
+class
+	FRAGILE
+
+feature -- Change
+
+	explode
+		do
+			check
+				never: False
+			end
+		end
+
+end

@@ -1,0 +1,60 @@
+"""Golden compile-and-run cases (tests/golden/README.md): for each tests/golden/<case>/, the
+generated Python of the case's own classes equals expected/*.py and the run's output equals
+expected.out (exactly, per processor or sorted, as case.toml says); the exit status and the first
+lines of stderr (expected.err) are checked too. `pytest --update-golden` rewrites expected/ and
+the outputs from the current compiler: review the diff, the outputs are EiffelStudio's."""
+from __future__ import annotations
+
+import shutil
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).parent))
+from golden_support import assert_output, compile_program, read_config, run_program  # noqa: E402
+
+GOLDEN = Path(__file__).parent
+CASES = sorted(p for p in GOLDEN.iterdir() if p.is_dir() and any(p.glob("*.e")))
+
+
+def test_case_names_are_safe():
+    """A case is imported as a package named like it: it must not shadow a Python module."""
+    for case in CASES:
+        assert case.name not in sys.stdlib_module_names, f"{case.name} shadows a standard module"
+        assert (case / f"{case.name}.e").exists(), f"{case.name}: the root class file is missing"
+
+
+@pytest.mark.parametrize("case", CASES, ids=[c.name for c in CASES])
+def test_golden(case: Path, tmp_path: Path, request):
+    update = request.config.getoption("--update-golden")
+    config = read_config(case)
+    compiled, texts = compile_program(case, tmp_path, config.assertions)
+    expected_dir = case / "expected"
+    if update:
+        if expected_dir.exists():
+            shutil.rmtree(expected_dir)
+        expected_dir.mkdir()
+        for name, text in texts.items():
+            (expected_dir / name).write_text(text)
+    else:
+        written = sorted(p.name for p in expected_dir.glob("*.py"))
+        assert written == sorted(texts), f"{case.name}: generated modules differ: {sorted(texts)}"
+        for name, text in texts.items():
+            assert text == (expected_dir / name).read_text(), f"{case.name}: generated {name} differs"
+    outcome = run_program(compiled, config)
+    out_path, err_path = case / "expected.out", case / "expected.err"
+    if update:
+        out_path.write_text(outcome.out)
+        if outcome.err:
+            kept = len(err_path.read_text().splitlines()) if err_path.exists() else 1
+            err_path.write_text("\n".join(outcome.err.splitlines()[:kept]) + "\n")
+        elif err_path.exists():
+            err_path.unlink()
+    assert outcome.status == config.exit, f"{case.name}: exit status {outcome.status}\n{outcome.err}"
+    assert_output(config, out_path.read_text(), outcome.out, case.name)
+    if err_path.exists():
+        expected = err_path.read_text().splitlines()
+        assert outcome.err.splitlines()[:len(expected)] == expected, f"{case.name}: stderr differs"
+    else:
+        assert outcome.err == "", f"{case.name}: unexpected stderr:\n{outcome.err}"
