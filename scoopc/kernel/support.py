@@ -371,14 +371,22 @@ def dispatcher(name, is_property):
     key = (name, is_property)
     found = _DISPATCHERS.get(key)
     if found is None:
+        from . import basic
+
         if is_property:
             def found(target, _name=name):
-                from . import basic
-                return basic.query(target, _name)
+                result = basic.query(target, _name)
+                check = getattr(target, "_invariant_", None)
+                if check is not None:             # an agent call is a qualified call
+                    check()
+                return result
         else:
             def found(target, *args, _name=name):
-                from . import basic
-                return basic.call(target, _name, args)
+                result = basic.call(target, _name, args)
+                check = getattr(target, "_invariant_", None)
+                if check is not None:
+                    check()
+                return result
         _DISPATCHERS[key] = found
     return found
 
