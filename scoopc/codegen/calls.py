@@ -6,12 +6,18 @@ from __future__ import annotations
 import ast
 
 from .. import syntax
+from ..semantics.features import member_signature
 from ..semantics.types import BASIC, Ty
 from . import pyast as P
 from .context import fail
 from .names import class_name
 
 AGENT_CLASSES = ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
+# Queries whose answer depends on the basic class of a value (asked of a formal-typed target).
+KIND_QUERIES = frozenset({"out", "generator", "generating_type", "tagged_out"})
+# Basic classes whose values are boxed when reattached to a reference type.
+BOXED = frozenset({"REAL_32", "CHARACTER_32", "INTEGER_8", "INTEGER_16", "INTEGER_64",
+                   "NATURAL_8", "NATURAL_16", "NATURAL_32", "NATURAL_64"})
 
 
 def is_external(feature, language: str) -> bool:
@@ -102,6 +108,7 @@ class Calls:
             target_ty = conversion[1]
         else:
             target_ty = static_type or (self.tables.types.get(target_node) if target_node is not None else None)
+        args = self.boxed_arguments(arguments, args, feature, target_ty)
         if node in self.tables.separate_calls:
             return self.separate_call(node, target, feature, args)
         owner = self.info.name if target_node is None else \
@@ -113,6 +120,9 @@ class Calls:
         if target_node is not None and target_ty is not None and self.may_hold_basic(target_ty) \
                 and not self.is_basic(target_ty):
             if self.is_property(feature) or feature.kind in ("attribute", "constant"):
+                if target_ty.is_formal and feature.name in KIND_QUERIES:
+                    return P.call("S.formal_query", [target, P.const(self.py_name(feature)), P.name("here"),
+                                                     self.type_desc(target_ty)])
                 return P.call("B.query", [target, P.const(self.py_name(feature)), P.name("here")])
             return P.call("B.call", [target, P.const(self.py_name(feature)), P.tup(args), P.name("here")])
         if target_node is not None and self.assertions == "all" and target_ty is not None \
@@ -134,6 +144,38 @@ class Calls:
 
     def argument(self, node):
         return self.copied(node, self.x(node))
+
+    # --- basic values reattached to reference types (scoopc/kernel/boxes.py) -----------------------
+    def value_type(self, node):
+        conversion = self.tables.conversions.get(node)
+        return conversion[1] if conversion is not None else self.tables.types.get(node)
+
+    def reattached(self, node, value, target_ty):
+        """`value` (the code of `node`) attached to an entity of type `target_ty`: a basic value
+        of a class other than INTEGER_32, REAL_64, BOOLEAN, CHARACTER_8 going to a reference
+        type is boxed, so it keeps its class (`print (r)` with r: REAL_32 prints as a REAL_32)."""
+        source = self.value_type(node)
+        if source is None or target_ty is None or target_ty.is_formal or target_ty.name in BASIC:
+            return value
+        if not (source.name in BOXED or (source.is_formal and self.formal_may_be_basic(source))):
+            return value
+        info = self.universe.get(target_ty.name)
+        if info is None or info.is_expanded:
+            return value
+        if source.is_formal:                      # the actual generic says (at run time)
+            return P.call("S.box_formal", [value, self.type_desc(source)])
+        return P.call("S.box", [P.const(source.name), value])
+
+    def boxed_arguments(self, arguments, args, feature, target_ty):
+        if feature is None or not any((t := self.value_type(a)) is not None and (t.name in BOXED or t.is_formal)
+                                      for a in arguments):
+            return args
+        signature = feature.signature
+        if target_ty is not None and not target_ty.is_formal and self.universe.get(target_ty.name) is not None:
+            signature = member_signature(self.universe, target_ty, feature)
+        formals = signature.arguments if signature is not None else ()
+        return [self.reattached(node, value, formals[i] if i < len(formals) else None)
+                for i, (node, value) in enumerate(zip(arguments, args))]
 
     # --- separate calls ---------------------------------------------------------------------------
     def separate_call(self, node, target, feature, args):
@@ -163,7 +205,7 @@ class Calls:
 
     # --- creation -------------------------------------------------------------------------------------
     def creation_value(self, node, ty: Ty, feature, arguments, passive: bool):
-        args = [self.argument(a) for a in arguments]
+        args = self.boxed_arguments(arguments, [self.argument(a) for a in arguments], feature, ty)
         if ty.is_formal:
             if feature is None and getattr(node, "procedure", None) is not None:
                 feature = self.constraint_creator(ty, node.procedure.key)

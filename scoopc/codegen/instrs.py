@@ -23,7 +23,9 @@ class Instructions:
 
     # --- assignment --------------------------------------------------------------------------------
     def s_Assignment(self, node):
-        return [P.assign(self.target(node.target), self.copied(node.source, self.x(node.source)))]
+        value = self.copied(node.source, self.x(node.source))
+        value = self.reattached(node.source, value, self.tables.types.get(node.target) or self.entity_type(node.target))
+        return [P.assign(self.target(node.target), value)]
 
     def copied(self, node, value):
         """A value of a user-defined expanded type is copied when attached to another entity."""

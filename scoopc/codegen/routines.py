@@ -8,6 +8,7 @@ import ast
 from .. import syntax
 from ..semantics import scoop as scoop_rules
 from . import pyast as P
+from .assertions import InheritedAssertions
 from .calls import Calls
 from .exprs import Expressions
 from .instrs import Instructions
@@ -22,7 +23,7 @@ def local_identifier(name: str) -> str:
     return name + "_" if name in LOCAL_RESERVED else name
 
 
-class RoutineGen(Expressions, Calls, Instructions):
+class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
     def __init__(self, program, module, info, feature, routine_name: str):
         self.program = program
         self.universe = program.universe
@@ -44,7 +45,7 @@ class RoutineGen(Expressions, Calls, Instructions):
         return self.naming.name_in(owner, feature) if owner is not None else self.naming.primary(feature)
 
     def local_name(self, name: str) -> str:
-        return local_identifier(name)
+        return local_identifier(self.renames.get(name, name))
 
     def temp(self, prefix: str) -> str:
         self.temps += 1
@@ -116,18 +117,32 @@ class RoutineGen(Expressions, Calls, Instructions):
     def precondition(self, clauses) -> list:
         if self.assertions == "none":
             return []
-        return [self.assertion(c, "precondition") for c in clauses if c.expression is not None]
+        return self.full_precondition(clauses)
+
+    def postcondition_groups(self, body) -> list:
+        """[(context, clauses)]: inherited postconditions (ensure then), then this routine's."""
+        if self.assertions != "all":
+            return []
+        groups = self.inherited_postconditions()
+        if body.postcondition is not None:
+            groups.append((None, [c for c in body.postcondition.clauses if c.expression is not None]))
+        return groups
 
     def postcondition(self, body) -> list:
-        if self.assertions != "all" or body.postcondition is None:
-            return []
-        return [self.assertion(c, "postcondition") for c in body.postcondition.clauses if c.expression is not None]
+        out = []
+        for context, clauses in self.postcondition_groups(body):
+            out += self.in_context(context, lambda cs=clauses: [self.assertion(c, "postcondition") for c in cs])
+        return out
 
     def olds_at_entry(self, body) -> list:
-        if self.assertions != "all" or body.postcondition is None:
-            return []
         out = []
-        for clause in body.postcondition.clauses:
+        for context, clauses in self.postcondition_groups(body):
+            out += self.in_context(context, lambda cs=clauses: self.olds_of(cs))
+        return out
+
+    def olds_of(self, clauses) -> list:
+        out = []
+        for clause in clauses:
             for node in _walk(clause.expression):
                 if isinstance(node, syntax.Old) and node not in self.olds:
                     name = self.temp("old")

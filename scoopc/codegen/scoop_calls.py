@@ -76,6 +76,8 @@ def separate_call(gen, node, target, feature, args) -> ast.expr:
     if attached and not gen.info.from_library:          # the library is compiled in an open world
         known = gen.universe.get(ty.name)
         version = facts.single(known.name, feature) if known is not None else None
+        if version is not None and "@" in version.written_in:
+            version = None                    # a library class whose name a program class took
     if version is None:
         passing = P.const(bool(gen.tables.lock_passing.get(node)))
         name = P.const(gen.py_name(feature))

@@ -129,7 +129,7 @@ def isign(x):
 
 def fquot(a, b):
     """INTEGER_64/NATURAL_64 `/`: C converts both operands to double first."""
-    return float(a) / float(b)
+    return fdiv(float(a), float(b))
 
 
 def hex_string(region, x, bits):

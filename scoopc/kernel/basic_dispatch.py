@@ -11,8 +11,10 @@ import ast
 
 from . import basic as B
 from .basic_inline import specs
+from .boxes import KINDS as BOXES
 
 _KINDS = {bool: "BOOLEAN", int: "INTEGER_32", float: "REAL_64", str: "CHARACTER_8"}
+_KINDS.update(BOXES)                      # values boxed on reattachment (scoopc/kernel/boxes.py)
 _TABLES = {}        # basic class name -> {seed name: function (region, current, *arguments)}
 
 
@@ -71,7 +73,7 @@ def same(a, b):
         return True
     ta, tb = type(a), type(b)
     if ta is tb:
-        if ta is float:
+        if ta is float or ta in BOXES:
             return a == b or (a != a and b != b)
         if ta in _VALUES:
             return a == b
@@ -90,7 +92,7 @@ def equal(a, b):
     ta = type(a)
     if ta is not type(b):
         return False
-    if ta is float:
+    if ta is float or ta in BOXES:
         return a == b or (a != a and b != b)
     if ta in _VALUES:
         return a == b

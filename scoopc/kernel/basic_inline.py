@@ -181,7 +181,8 @@ def _integer(name, bits, signed):
         "plus": [(_y_nonnegative, wrap("X + Y", "high")), (_y_negative, wrap("X + Y", "low")), (None, wrap("X + Y"))],
         "minus": [(_y_nonnegative, wrap("X - Y", "low")), (_y_negative, wrap("X - Y", "high")), (None, wrap("X - Y"))],
         "product": wrap("X * Y"),
-        "quotient": "X / Y" if bits < 64 else "B.fquot(X, Y)",
+        "quotient": [(_y_nonzero, "X / Y"), (_y_name, "(X / Y if Y else B.fdiv(X, Y))"), (None, "B.fdiv(X, Y)")]
+        if bits < 64 else "B.fquot(X, Y)",                       # x / 0 is an infinity, as in C
         "identity": "X",
         "power": "B.power(X, Y)",
         "interval": "B.interval(R, X, Y)",

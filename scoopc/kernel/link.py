@@ -33,3 +33,13 @@ def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
 def forget(package: str) -> None:
     """A package is to be loaded afresh (another program of the same package name)."""
     _LOADED.pop(package, None)
+
+
+def register_again(package: str) -> None:
+    """Register a loaded package's classes again (a caller may have reset the registry: tests)."""
+    from . import register
+
+    for cls in _LOADED.get(package, {}).values():
+        key = getattr(cls, "_key_", None)
+        if key is not None:
+            register(key, cls)

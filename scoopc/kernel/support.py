@@ -8,6 +8,7 @@ from __future__ import annotations
 
 from . import CLASSES, register as _register
 from . import types as T
+from .boxes import BY_KIND as _BOX_KINDS, box
 from .errors import EiffelFailure
 
 register = _register
@@ -402,8 +403,27 @@ def new_agent(here, cls, gen, fn, slots, opened):
     return obj
 
 
+def box_formal(value, desc):
+    """A value of a formal generic type attached to a reference type: boxed when the actual
+    generic is a basic class a bare Python value does not say (REAL_32, INTEGER_64, ...)."""
+    key = desc.key
+    if key in _BOX_KINDS and value is not None:
+        return box(key, value)
+    return value
+
+
+def formal_query(target, name, here, desc):
+    """`x.out` (`generator`, ...) with x of a formal generic type: answered for the actual
+    generic's basic class when x is a bare basic value."""
+    from . import basic
+
+    if desc.key in _BOX_KINDS and type(target) in (int, float, str):
+        return basic.query_as(desc.key, target, name, here)
+    return basic.query(target, name, here)
+
+
 def once_string(here, key, text, maker):
     return here.once(key, maker, (here, text))
 
 
-__all__ = ["EiffelFailure", "T"]
+__all__ = ["EiffelFailure", "T", "box"]

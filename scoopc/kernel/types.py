@@ -8,6 +8,7 @@ a routine costs a dictionary lookup.
 from __future__ import annotations
 
 from . import CLASSES
+from .boxes import KINDS as BOXES
 
 _BASIC_DEFAULTS = {
     "INTEGER_8": 0, "INTEGER_16": 0, "INTEGER_32": 0, "INTEGER_64": 0,
@@ -83,14 +84,17 @@ class TypeDesc:
         return self.name if self.attached or self.is_expanded else "detachable " + self.name
 
     def accepts(self, value) -> bool:
-        """Does `value` (not Void) conform to this type? (object tests, `attached {T} x`)"""
+        """Does `value` (not Void) conform to this type? (object tests, `attached {T} x`)
+        A bare int/float/str is taken for any basic class of its Python type; a boxed one
+        (scoopc/kernel/boxes.py) for its own class only."""
+        boxed = BOXES.get(type(value))
         kind = _PYTHON_TYPES.get(self.key)
         if kind is not None:
-            if kind is int:
-                return type(value) is int
+            if boxed is not None:
+                return boxed == self.key
             return type(value) is kind
         if isinstance(value, (bool, int, float, str)):
-            return self.key in _BASIC_ANCESTORS[type(value)]
+            return self.key in _BASIC_ANCESTORS[type(value).__mro__[-2] if boxed else type(value)]
         conforms = getattr(type(value), "_conforms_", None)
         if conforms is None or self.key not in conforms:
             return False
@@ -136,6 +140,9 @@ def t(key: str, generics: tuple = (), attached: bool = True) -> TypeDesc:
 def of(value) -> TypeDesc:
     """The dynamic type of a value (for `generating_type`, `same_type`, `like Current`)."""
     kind = type(value)
+    boxed = BOXES.get(kind)
+    if boxed is not None:
+        return t(boxed)
     if kind is bool:
         return t("BOOLEAN")
     if kind is int:

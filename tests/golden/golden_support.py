@@ -101,8 +101,39 @@ class Outcome:
     err: str
 
 
+_REGISTRY: dict = {}      # the class registry as the compiled programs left it
+
+
 def run_program(compiled, config: Config) -> Outcome:
-    """Run a compiled program in this process (its package imported fresh)."""
+    """Run a compiled program in this process (its package imported fresh). The kernel's class
+    registry is swapped in and out around the run, so other tests see it as they left it."""
+    from scoopc import kernel
+
+    saved = dict(kernel.CLASSES)
+    kernel.CLASSES.clear()
+    kernel.CLASSES.update(_REGISTRY or _library_classes())
+    try:
+        return _run_program(compiled, config)
+    finally:
+        _REGISTRY.clear()
+        _REGISTRY.update(kernel.CLASSES)
+        kernel.CLASSES.clear()
+        kernel.CLASSES.update(saved)
+
+
+def _library_classes() -> dict:
+    """The compiled standard library's classes, when an earlier test imported it already (its
+    modules registered them then, and will not again)."""
+    found = {}
+    for name, module in list(sys.modules.items()):
+        if name.startswith("eiffel_base.") and module is not None:
+            for value in vars(module).values():
+                if isinstance(value, type) and value.__module__ == name and hasattr(value, "_key_"):
+                    found[value._key_] = value
+    return found
+
+
+def _run_program(compiled, config: Config) -> Outcome:
     from scoopc import build
     from scoopc.codegen.names import class_name, module_name
     from scoopc.kernel import launcher

@@ -182,9 +182,13 @@ def test_division_truncates_toward_zero(cls, form):
     for a, b, q, r in SIGNS:
         assert ev(cls, "integer_quotient", a, b, form=form) == q, (a, b)
         assert ev(cls, "integer_remainder", a, b, form=form) == r, (a, b)
-    for feature in ("integer_quotient", "integer_remainder", "quotient"):
+    for feature in ("integer_quotient", "integer_remainder"):
         with pytest.raises(ZeroDivisionError):
             ev(cls, feature, 5, 0, form=form)
+    # `/` converts both operands to REAL_64 (C: (double) a / (double) b): IEEE, no trap.
+    assert ev(cls, "quotient", 5, 0, form=form) == math.inf
+    assert ev(cls, "quotient", -5, 0, form=form) == -math.inf
+    assert math.isnan(ev(cls, "quotient", 0, 0, form=form))
 
 
 @pytest.mark.parametrize("cls", list(INTEGER_CLASSES))

@@ -23,6 +23,16 @@ feature -- Access
 
 	has_item: BOOLEAN
 
+	image: STRING
+			-- `item' printed as its own class prints it, and that class.
+		do
+			if attached item as i then
+				Result := i.out + " " + i.generator
+			else
+				Result := "Void"
+			end
+		end
+
 	mapped (f: FUNCTION [G, G]): BOX [G]
 		do
 			create Result.make (f (item))

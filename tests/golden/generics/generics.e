@@ -18,6 +18,7 @@ feature {NONE} -- Initialization
 			q: ORDERED_PAIR [STRING]
 			f: FACTORY [COUNTER]
 			rb: BOX [INTEGER]
+			real_box: BOX [REAL]
 		do
 			create ib.make_empty
 			create sb.make_empty
@@ -37,6 +38,8 @@ feature {NONE} -- Initialization
 			create f
 			print ("created on formal: " + f.new_default.value.out + " " + f.new_at (5).value.out + "%N")
 			print ("generating types: " + ib.generating_type.name + "%N")
+			create real_box.make (0.1)
+			print ("images: " + real_box.image + ", " + ib.image + ", " + sb.image + ", " + q.low + "%N")
 		end
 
 end

@@ -51,7 +51,7 @@ feature {NONE} -- Initialization
 			print (" ")
 			print (n64)
 			print ("%N")
-			print (r.out)
+			print (r)
 			print (" ")
 			print (d)
 			print (" ")

@@ -15,6 +15,8 @@ feature {NONE} -- Initialization
 			f, g: REAL_32
 			i: INTEGER
 			m: DOUBLE_MATH
+			zero: REAL_64
+			none: INTEGER
 		do
 			r := 0.1
 			s := 0.2
@@ -63,6 +65,7 @@ feature {NONE} -- Initialization
 			show ("1e16 + 1", (1.0e16 + 1).out)
 			show ("0.000123", (0.000123).out)
 			show ("123456789012.0", (123456789012.0).out)
+			show ("division by zero", (1.0 / zero).out + " " + (-1.0 / zero).out + " " + (zero / zero).is_nan.out + " " + (7 / none).out)
 		end
 
 	show (label: STRING; value: STRING)

@@ -19,6 +19,16 @@ class BOX(ANY):
     item = S.FormalDefault('BOX', 0, 'item')
     has_item = False
 
+    @property
+    def image(self):
+        here = self._region_
+        Result = None
+        if (i := self.item) is not None:
+            Result = S.formal_query(i, 'out', here, T.formal(self, 'BOX', 0)).plus(KS.s8(here, ' ')).plus(S.formal_query(i, 'generator', here, T.formal(self, 'BOX', 0)))
+        else:
+            Result = KS.s8(here, 'Void')
+        return Result
+
     def mapped(self, f):
         here = self._region_
         Result = None

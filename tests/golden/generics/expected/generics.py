@@ -7,6 +7,7 @@ T_2 = T.t('STRING_8', (), True)
 T_4 = T.t('TUPLE', (T_1,), True)
 T_5 = T.t('LABELED_BOX', (T_1,), True)
 T_6 = T.t('COUNTER', (), True)
+T_7 = T.t('REAL_32', (), True)
 
 class GENERICS(ANY):
     """Eiffel class GENERICS (tests/golden/generics/generics.e)."""
@@ -22,6 +23,7 @@ class GENERICS(ANY):
         q = None
         f = None
         rb = None
+        real_box = None
         ib = S.create(here, BOX, (T_1,), 'make_empty', ())
         sb = S.create(here, BOX, (T_2,), 'make_empty', ())
         self.print_(KS.s8(here, 'defaults: ').plus(B.out_int(here, ib.item)).plus(KS.s8(here, ' ')).plus(B.out_bool(here, sb.item is None)).plus(KS.s8(here, '\n')))
@@ -39,6 +41,8 @@ class GENERICS(ANY):
         f = S.create(here, FACTORY, (T_6,), 'default_create', ())
         self.print_(KS.s8(here, 'created on formal: ').plus(B.out_int(here, f.new_default.value)).plus(KS.s8(here, ' ')).plus(B.out_int(here, f.new_at(5).value)).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'generating types: ').plus(ib.generating_type.name).plus(KS.s8(here, '\n')))
+        real_box = S.create(here, BOX, (T_7,), 'make', (0.10000000149011612,))
+        self.print_(KS.s8(here, 'images: ').plus(real_box.image).plus(KS.s8(here, ', ')).plus(ib.image).plus(KS.s8(here, ', ')).plus(sb.image).plus(KS.s8(here, ', ')).plus(q.low).plus(KS.s8(here, '\n')))
 
 def _agent_3(self, x):
     Result = 0

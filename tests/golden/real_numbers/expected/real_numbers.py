@@ -16,6 +16,8 @@ class REAL_NUMBERS(ANY):
         g = 0.0
         i = 0
         m = None
+        zero = 0.0
+        none = 0
         r = 0.1
         s_ = 0.2
         self.show(KS.s8(here, '0.1 + 0.2'), B.out_r64(here, r + s_))
@@ -59,6 +61,7 @@ class REAL_NUMBERS(ANY):
         self.show(KS.s8(here, '1e16 + 1'), B.out_r64(here, 1e+16 + 1.0))
         self.show(KS.s8(here, '0.000123'), B.out_r64(here, 0.000123))
         self.show(KS.s8(here, '123456789012.0'), B.out_r64(here, 123456789012.0))
+        self.show(KS.s8(here, 'division by zero'), B.out_r64(here, 1.0 / zero if zero else B.fdiv(1.0, zero)).plus(KS.s8(here, ' ')).plus(B.out_r64(here, -1.0 / zero if zero else B.fdiv(-1.0, zero))).plus(KS.s8(here, ' ')).plus(B.out_bool(here, B.isnan(zero / zero if zero else B.fdiv(zero, zero)))).plus(KS.s8(here, ' ')).plus(B.out_r64(here, 7 / none if none else B.fdiv(7, none))))
 
     def show(self, label, value):
         here = self._region_
