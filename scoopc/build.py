@@ -66,10 +66,21 @@ def write_modules(folder: Path, modules: dict, init_doc: str, uses: tuple[str, .
 def line_map(module: ast.Module, text: str) -> dict:
     """Python line -> Eiffel line: the written text parses back to the same tree shape."""
     found = {}
-    for original, written in zip(ast.walk(module), ast.walk(ast.parse(text))):
-        if isinstance(original, ast.stmt) and isinstance(written, ast.stmt):
-            found.setdefault(str(written.lineno), original.lineno)
+    for original, written in zip(_statements(module), _statements(ast.parse(text))):
+        line = getattr(original, "lineno", None)
+        if line is not None:
+            found.setdefault(str(written.lineno), line)
     return found
+
+
+def _statements(node):
+    """Every statement below `node`, in order, without visiting expressions."""
+    for field in ("body", "handlers", "orelse", "finalbody"):
+        for child in getattr(node, field, None) or ():
+            if isinstance(child, (ast.stmt, ast.excepthandler)):
+                if isinstance(child, ast.stmt):
+                    yield child
+                yield from _statements(child)
 
 
 def base_package(progress=None) -> Path:

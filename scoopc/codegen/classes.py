@@ -87,7 +87,8 @@ class ClassGen:
         stmts += self.module.functions
         stmts.append(P.expr_stmt(P.call("S.register", [P.const(self.info.name), P.name(class_name(self.info.name))])))
         module = ast.Module(stmts, [])
-        return ast.fix_missing_locations(module)
+        _stamp_statements(module, 1)
+        return module
 
     # --- members ---------------------------------------------------------------------------------------
     def ancestor_generics(self):
@@ -217,6 +218,16 @@ class ClassGen:
         body += [gen.assertion(c, "invariant") for c in clauses]
         fn = P.function("_invariant_", ["self"], body)
         return P.at(fn, self.info.decl.span)
+
+
+def _stamp_statements(node, line: int) -> None:
+    """Give every statement a line (its parent's when it has none): ast.unparse reads them.
+    Expressions keep whatever they have; they are never compiled from this tree."""
+    for field in ("body", "handlers", "orelse", "finalbody"):
+        for child in getattr(node, field, None) or ():
+            if getattr(child, "lineno", None) is None:
+                child.lineno = line
+            _stamp_statements(child, child.lineno)
 
 
 def _own_formal(index: int):

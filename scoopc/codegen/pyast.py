@@ -103,8 +103,14 @@ def at(node, span):
     """Stamp `node` (and its children without a position) with an Eiffel span's line."""
     if span is None:
         return node
-    for child in ast.walk(node):
-        if "lineno" in child._attributes and getattr(child, "lineno", None) is None:
-            child.lineno, child.col_offset = span.line, max(span.column - 1, 0)
-            child.end_lineno, child.end_col_offset = span.line, max(span.column - 1, 0)
+    line, column = span.line, max(span.column - 1, 0)
+    pending = [node]
+    while pending:
+        child = pending.pop()
+        if "lineno" in child._attributes:
+            if getattr(child, "lineno", None) is not None:
+                continue              # stamped already, and so is everything below it
+            child.lineno, child.col_offset = line, column
+            child.end_lineno, child.end_col_offset = line, column
+        pending.extend(ast.iter_child_nodes(child))
     return node

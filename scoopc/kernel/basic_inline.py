@@ -9,7 +9,6 @@ does not use is still evaluated (`B.seq (x, result)`) unless it is a name or a c
 The nodes returned have no positions: run `ast.fix_missing_locations` on the module.
 """
 import ast
-import copy
 
 _PLACES = ("X", "Y", "Z")
 
@@ -33,10 +32,10 @@ class Spec:
                 continue
             if any(counts.get(k, 0) > 1 and not _trivial(v) for k, v in nodes.items()):
                 continue
-            result = _Substitute(nodes).visit(copy.deepcopy(tree))
+            result = _instantiate(tree, nodes)
             dropped = [nodes[k] for k in _PLACES if k in nodes and not counts.get(k) and not _trivial(nodes[k])]
             if dropped:
-                result = ast.Call(_b("seq"), [copy.deepcopy(d) for d in dropped] + [result], [])
+                result = ast.Call(_b("seq"), [_clone(d) for d in dropped] + [result], [])
             return result
         raise AssertionError("no template applies")
 
@@ -50,13 +49,33 @@ def _parse(text):
     return tree, counts
 
 
-class _Substitute(ast.NodeTransformer):
-    def __init__(self, nodes):
-        self.nodes = nodes
+def _instantiate(node, nodes):
+    """A fresh copy of template `node` with the place names X, Y, Z, R replaced by copies of
+    the given expressions (copying by hand: copy.deepcopy costs ten times more)."""
+    if isinstance(node, ast.Name) and node.id in nodes and nodes[node.id] is not None:
+        return _clone(nodes[node.id])
+    if isinstance(node, ast.AST):
+        new = node.__class__.__new__(node.__class__)
+        for field in node._fields:
+            setattr(new, field, _instantiate(getattr(node, field, None), nodes))
+        return new
+    if isinstance(node, list):
+        return [_instantiate(item, nodes) for item in node]
+    return node
 
-    def visit_Name(self, node):
-        found = self.nodes.get(node.id)
-        return copy.deepcopy(found) if found is not None else node
+
+def _clone(node):
+    if isinstance(node, ast.AST):
+        new = node.__class__.__new__(node.__class__)
+        for field in node._fields:
+            setattr(new, field, _clone(getattr(node, field, None)))
+        for attribute in node._attributes:
+            if hasattr(node, attribute):
+                setattr(new, attribute, getattr(node, attribute))
+        return new
+    if isinstance(node, list):
+        return [_clone(item) for item in node]
+    return node
 
 
 def _b(name):

@@ -19,6 +19,7 @@ from .. import __version__, syntax
 from .universe import stdlib_files
 
 CACHE_FORMAT = 4
+_PARSED: dict = {}     # the full trees of the last cold parse, by library key (one use)
 
 
 def cache_dir() -> Path:
@@ -43,14 +44,18 @@ def load(parse_file, prepare=None, use_cache: bool = True):
     added), kept in the cache with the units. Without the cache, prepared is None. From the cache,
     the trees have no routine bodies and the SourceFile is None."""
     files = stdlib_files()
-    if not use_cache:
-        return [parse_file(path) for path in files], None
     key = _key(files)
+    if not use_cache:
+        full = _PARSED.pop(key, None)        # parsed moments ago to fill the cache: not again
+        return (full if full is not None else [parse_file(path) for path in files]), None
     cached = _read(key)
     if cached is not None:
         return cached
+    parsed = [parse_file(path) for path in files]
+    _PARSED.clear()
+    _PARSED[key] = parsed                    # compiling the library next needs the bodies too
     # Kept: the declarations; not kept: the source texts (a cached library reports nothing).
-    units = [(None, declarations_only(tree), found) for _, tree, found in map(parse_file, files)]
+    units = [(None, declarations_only(tree), found) for _, tree, found in parsed]
     prepared = prepare(units) if prepare is not None else None
     _write(key, (units, prepared))
     return units, prepared
