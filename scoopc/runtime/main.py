@@ -70,6 +70,7 @@ def run_main(root_cls, creator, args=(), describe=None, **options):
     `describe(exception, processor)`: the text reporting an uncaught exception (default: the
     exception and the processor's innermost frame)."""
     rt, root = start(**options)
+    rt.describe = describe
     restore = _install_dump_signal(rt)
     interrupted = False
     try:

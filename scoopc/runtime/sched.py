@@ -103,6 +103,7 @@ class Runtime:
         from .output import Output
         from .permits import Permits
         self.glock = threading.Lock()
+        self.describe = None             # describe(exception, processor) -> text, set by run_main
         self.permits = Permits(self)
         self.runnable = deque()          # [g] processors in state SCHEDULED, FIFO
         self.runnable_since = 0.0        # [g] monotonic time the runnable queue's head was queued
@@ -341,11 +342,11 @@ class Runtime:
     def report_lost(self, proc, s):
         """[proc.lock held] An asynchronous call failed and no client ever saw it."""
         e = s.dirty
+        detail = self.describe(e, proc) if self.describe is not None else f"{type(e).__name__}: {e}"
         self.stderr.write(f"scoopc: exception lost in an asynchronous call on {proc!r} "
-                          f"(client {s.client!r}, reservation at {fmt_where(s.where)}): "
-                          f"{type(e).__name__}: {e}\n")
+                          f"(client {s.client!r}, reservation at {fmt_where(s.where)}): {detail}\n")
         if self.strict:
-            self.fail(f"lost exception on {proc!r}: {type(e).__name__}: {e}", e)
+            self.fail(f"lost exception on {proc!r}: {detail}", e)
 
     def stop(self):
         """Stop every processor at its next runtime call and wake every blocked thread."""
