@@ -191,6 +191,21 @@ def run_compiled(folder: Path, meta: dict, program_args: list[str], args) -> int
     root_cls = getattr(module, class_name(meta["root"]))
     argv = [meta["root"].lower()] + list(program_args)
     sys.stdout.flush()
-    return launcher.main(root_cls, meta["creator"], argv, shadowed=meta.get("shadowed"),
-                         trace_processors=args.trace_processors, strict=args.strict,
-                         virtual_clock=args.virtual_clock, debug=args.debug)
+    status = launcher.main(root_cls, meta["creator"], argv, shadowed=meta.get("shadowed"),
+                           trace_processors=args.trace_processors, strict=args.strict,
+                           virtual_clock=args.virtual_clock, debug=args.debug)
+    _quiet_if_reader_gone()
+    return status
+
+
+def _quiet_if_reader_gone() -> None:
+    """Output piped into a reader that stopped (`| head`): no complaint at interpreter exit."""
+    import os
+
+    try:
+        sys.stdout.flush()
+    except BrokenPipeError:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass

@@ -9,11 +9,12 @@ class Output:
         self.trace = trace
         self.lock = threading.Lock()
         self.partial = {}     # [lock] processor -> unfinished line (trace mode only)
+        self.broken = False   # [lock] the reader of the stream has gone
 
     def write(self, proc, text):
         if not self.trace:
             with self.lock:
-                self.stream.write(text)
+                self._emit(text)
             return
         with self.lock:
             text = self.partial.pop(proc, "") + text
@@ -21,9 +22,19 @@ class Output:
             tail = lines.pop()
             if lines:
                 tag = f"[P{proc.id}] "
-                self.stream.write("".join(tag + line + "\n" for line in lines))
+                self._emit("".join(tag + line + "\n" for line in lines))
             if tail:
                 self.partial[proc] = tail
+
+    def _emit(self, text):
+        """[lock] Write to the stream; once its reader has gone (a pipe into `head`), output is
+        dropped instead of failing the program's routines."""
+        if self.broken:
+            return
+        try:
+            self.stream.write(text)
+        except BrokenPipeError:
+            self.broken = True
 
     def write_other(self, stream, text):
         """Write `text` whole on another stream (stderr) under the same lock, and flush it."""
@@ -47,7 +58,7 @@ class Output:
         """At exit: write unfinished lines, then flush the stream."""
         with self.lock:
             for proc, tail in sorted(self.partial.items(), key=lambda kv: kv[0].id):
-                self.stream.write(f"[P{proc.id}] {tail}\n")
+                self._emit(f"[P{proc.id}] {tail}\n")
             self.partial.clear()
             try:
                 self.stream.flush()
