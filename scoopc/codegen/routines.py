@@ -79,7 +79,7 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         for decl in body.locals:
             ty = self.tables.types.get(decl.type)
             out.append(P.at(P.assign(P.name(self.local_name(decl.name.key)), self.default_value(ty)), decl.span))
-        if result_type is not None:
+        if result_type is not None and not _sets_result_first(body):
             out.append(P.assign(P.name("Result"), self.default_value(result_type)))
         separate = self.separate_arguments(arguments)
         pre = body.precondition.clauses if body.precondition is not None else ()
@@ -189,6 +189,18 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         params = ["self"] + [sub.local_name(n) for n, _ in arguments]
         self.module.functions.append(P.at(P.function(fname, params, body), node.span))
         return fname
+
+
+def _sets_result_first(body) -> bool:
+    """Does the body start with `Result := e`, e not using Result (so no default is needed)?
+    Not with a rescue clause (a retry may read Result)."""
+    inner = body.body
+    if body.rescue is not None or not isinstance(inner, syntax.InternalBody) or not inner.instructions:
+        return False
+    first = inner.instructions[0]
+    if not isinstance(first, syntax.Assignment) or not isinstance(first.target, syntax.Result):
+        return False
+    return not any(isinstance(node, syntax.Result) for node in _walk(first.source))
 
 
 def _walk(node):

@@ -71,19 +71,16 @@ class AGENTS(ANY):
 
     @rt.leaf
     def add(self, a, b_):
-        Result = 0
         Result = _t if -2147483648 <= (_t := (a + b_)) <= 2147483647 else B.wrap_i32(_t)
         return Result
 
     @rt.leaf
     def double(self, x):
-        Result = 0
         Result = _t if -2147483648 <= (_t := (2 * x)) <= 2147483647 else B.wrap_i32(_t)
         return Result
 
     def twice(self, fn, x):
         here = self._region_
-        Result = 0
         Result = fn.item(S.new_tuple(here, [fn.item(S.new_tuple(here, [x], ()))], ()))
         return Result
 
@@ -108,12 +105,10 @@ class AGENTS(ANY):
         self.print_(label.plus(KS.s8(here, ': ')).plus(value).plus(KS.s8(here, '\n')))
 
 def _agent_7(self, x):
-    Result = False
     Result = (x % 2 if x >= 0 else -(-x % 2)) == 0
     return Result
 
 def _agent_8(self, x):
-    Result = 0
     Result = _t if -2147483648 <= (_t := (x + self.counter)) <= 2147483647 else B.wrap_i32(_t)
     return Result
 
@@ -122,7 +117,6 @@ def _agent_9(self, x):
     self.print_(B.out_int(here, x).plus(KS.s8(here, ' ')))
 
 def _agent_10(self, a, b_):
-    Result = 0
     Result = _t if -2147483648 <= (_t := (a * b_)) <= 2147483647 else B.wrap_i32(_t)
     return Result
 S.register('AGENTS', AGENTS)

@@ -58,7 +58,6 @@ class ARRAYS(ANY):
 
     def image(self, a):
         here = self._region_
-        Result = None
         Result = KS.s8(here, '[')
         for x in S.items(a):
             if Result.count > 1:
@@ -72,7 +71,6 @@ class ARRAYS(ANY):
         self.print_(label.plus(KS.s8(here, ': ')).plus(value).plus(KS.s8(here, '\n')))
 
 def _agent_3(self, x):
-    Result = False
     Result = x == 4
     return Result
 S.register('ARRAYS', ARRAYS)

@@ -49,7 +49,6 @@ class CONTAINERS_MORE(ANY):
 
     def image(self, l):
         here = self._region_
-        Result = None
         Result = KS.s8(here, '')
         l.start()
         while not l.after:

@@ -43,7 +43,6 @@ class BASE_ACCOUNT(ANY):
     @property
     @rt.leaf
     def fee(self):
-        Result = 0
         Result = 1
         if not Result <= 5:
             S.assertion_failed('postcondition', 'small', W_6)

@@ -44,7 +44,6 @@ class CREDIT_ACCOUNT(BASE_ACCOUNT):
     @property
     @rt.leaf
     def fee(self):
-        Result = 0
         Result = _t if (_t := (BASE_ACCOUNT.fee.fget(self) + 5)) <= 2147483647 else B.wrap_i32(_t)
         if not Result <= 5:
             S.assertion_failed('postcondition', 'small', W_6)

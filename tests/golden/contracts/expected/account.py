@@ -70,7 +70,6 @@ class ACCOUNT(ANY):
     @property
     @rt.leaf
     def doubled(self):
-        Result = 0
         Result = _t if -2147483648 <= (_t := (2 * self.balance)) <= 2147483647 else B.wrap_i32(_t)
         if not Result == (_t if -2147483648 <= (_t := (self.balance * 2)) <= 2147483647 else B.wrap_i32(_t)):
             S.assertion_failed('postcondition', 'twice', W_11)

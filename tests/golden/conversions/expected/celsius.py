@@ -20,7 +20,6 @@ class CELSIUS(ANY):
     @property
     @rt.leaf
     def to_kelvin(self):
-        Result = 0.0
         Result = self.degrees + 273.15
         return Result
 
@@ -28,7 +27,6 @@ class CELSIUS(ANY):
     @rt.leaf
     def out(self):
         here = self._region_
-        Result = None
         Result = B.out_r64(here, self.degrees).plus(KS.s8(here, ' C'))
         return Result
 S.register('CELSIUS', CELSIUS)

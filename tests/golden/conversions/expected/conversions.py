@@ -41,7 +41,6 @@ class CONVERSIONS(ANY):
 
     @rt.leaf
     def kelvin(self, k_):
-        Result = 0.0
         Result = k_
         return Result
 S.register('CONVERSIONS', CONVERSIONS)

@@ -28,7 +28,6 @@ class NODE(ANY):
 
     @rt.leaf
     def is_equal(self, other):
-        Result = False
         Result = self.value == other.value
         return Result
 

@@ -12,7 +12,6 @@ class COUNTER_SENSOR(SENSOR):
     @rt.leaf
     def name(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'counter')
         return Result
 
@@ -28,7 +27,6 @@ class COUNTER_SENSOR(SENSOR):
     @property
     @rt.leaf
     def is_calibrated(self):
-        Result = False
         Result = self.count > 1
         return Result
 S.register('COUNTER_SENSOR', COUNTER_SENSOR)

@@ -13,14 +13,12 @@ class SENSOR(ANY):
     @rt.leaf
     def reading(self):
         here = self._region_
-        Result = None
         Result = self.name.plus(KS.s8(here, ' reads ')).plus(B.out_int(here, _t if -2147483648 <= (_t := (self.raw * self.scale)) <= 2147483647 else B.wrap_i32(_t)))
         return Result
 
     @property
     @rt.leaf
     def scale(self):
-        Result = 0
         Result = 1
         return Result
 S.register('SENSOR', SENSOR)

@@ -22,7 +22,6 @@ class THERMOMETER(SENSOR):
     @property
     @rt.leaf
     def scale(self):
-        Result = 0
         Result = 10
         return Result
     is_calibrated = False

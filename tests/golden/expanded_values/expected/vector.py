@@ -14,7 +14,6 @@ class VECTOR(ANY):
     @property
     def out(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, '<').plus(B.out_int(here, self.x)).plus(KS.s8(here, ',')).plus(B.out_int(here, self.y)).plus(KS.s8(here, '>'))
         return Result
 

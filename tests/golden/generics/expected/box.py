@@ -36,7 +36,6 @@ class BOX(ANY):
         return Result
 
     def replaced(self, v):
-        Result = None
         Result = self.twin
         Result.set(v)
         return Result

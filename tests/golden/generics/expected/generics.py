@@ -45,7 +45,6 @@ class GENERICS(ANY):
         self.print_(KS.s8(here, 'images: ').plus(real_box.image).plus(KS.s8(here, ', ')).plus(ib.image).plus(KS.s8(here, ', ')).plus(sb.image).plus(KS.s8(here, ', ')).plus(q.low).plus(KS.s8(here, '\n')))
 
 def _agent_3(self, x):
-    Result = 0
     Result = _t if -2147483648 <= (_t := (x * 2)) <= 2147483647 else B.wrap_i32(_t)
     return Result
 S.register('GENERICS', GENERICS)

@@ -21,7 +21,6 @@ class ORDERED_PAIR(ANY):
 
     def contains(self, v):
         here = self._region_
-        Result = False
         Result = B.call(self.low, 'is_less_equal', (v,), here) and B.call(v, 'is_less_equal', (self.high,), here)
         return Result
 S.register('ORDERED_PAIR', ORDERED_PAIR)

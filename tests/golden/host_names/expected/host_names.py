@@ -85,7 +85,6 @@ class HOST_NAMES(ANY):
 
     @rt.leaf
     def del_(self, x):
-        Result = 0
         Result = _t if -2147483648 <= (_t := (x * 2)) <= 2147483647 else B.wrap_i32(_t)
         return Result
     try_ = 't'
@@ -100,7 +99,6 @@ class HOST_NAMES(ANY):
     @rt.leaf
     def def_(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'def')
         return Result
 
@@ -112,7 +110,6 @@ class HOST_NAMES(ANY):
     @property
     @rt.leaf
     def object_count(self):
-        Result = 0
         Result = 42
         return Result
 S.register('HOST_NAMES', HOST_NAMES)

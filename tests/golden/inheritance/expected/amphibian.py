@@ -14,7 +14,6 @@ class AMPHIBIAN(CAR, BOAT):
     @rt.leaf
     def both(self):
         here = self._region_
-        Result = None
         Result = B.out_int(here, self.speed).plus(KS.s8(here, '/')).plus(B.out_int(here, self.water_speed__amphibian))
         return Result
 S.register('AMPHIBIAN', AMPHIBIAN)

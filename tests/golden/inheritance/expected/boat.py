@@ -11,7 +11,6 @@ class BOAT(VEHICLE):
     @property
     @rt.leaf
     def speed(self):
-        Result = 0
         Result = _t if -2147483648 <= (_t := (VEHICLE.speed.fget(self) * 3)) <= 2147483647 else B.wrap_i32(_t)
         return Result
     speed__boat = speed

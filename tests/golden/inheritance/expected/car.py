@@ -11,7 +11,6 @@ class CAR(VEHICLE):
     @property
     @rt.leaf
     def speed(self):
-        Result = 0
         Result = 100
         return Result
 S.register('CAR', CAR)

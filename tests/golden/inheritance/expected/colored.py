@@ -19,7 +19,6 @@ class COLORED(ANY):
     @rt.leaf
     def name(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'colored thing')
         return Result
 
@@ -27,7 +26,6 @@ class COLORED(ANY):
     @rt.leaf
     def describe(self):
         here = self._region_
-        Result = None
         Result = self.color.plus(KS.s8(here, ' ')).plus(self.name)
         return Result
 

@@ -18,7 +18,6 @@ class COLORED_SQUARE(SQUARE, COLORED):
     @rt.leaf
     def describe__shape(self):
         here = self._region_
-        Result = None
         Result = SHAPE.describe__shape.fget(self).plus(KS.s8(here, ', ')).plus(self.describe)
         return Result
     describe__colored_square = describe__shape

@@ -18,7 +18,6 @@ class RECTANGLE(SHAPE):
     @property
     @rt.leaf
     def area(self):
-        Result = 0.0
         Result = self.width * self.height
         return Result
 
@@ -26,7 +25,6 @@ class RECTANGLE(SHAPE):
     @rt.leaf
     def name(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'rectangle')
         return Result
 S.register('RECTANGLE', RECTANGLE)

@@ -13,7 +13,6 @@ class SHAPE(ANY):
     @rt.leaf
     def describe__shape(self):
         here = self._region_
-        Result = None
         Result = self.name.plus(KS.s8(here, ' of area ')).plus(B.out_r64(here, self.area))
         return Result
 S.register('SHAPE', SHAPE)

@@ -16,7 +16,6 @@ class SQUARE(RECTANGLE):
     @rt.leaf
     def name(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'square')
         return Result
 S.register('SQUARE', SQUARE)

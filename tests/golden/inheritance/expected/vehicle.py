@@ -11,7 +11,6 @@ class VEHICLE(ANY):
     @property
     @rt.leaf
     def speed(self):
-        Result = 0
         Result = 10
         return Result
 
@@ -19,7 +18,6 @@ class VEHICLE(ANY):
     @rt.leaf
     def describe(self):
         here = self._region_
-        Result = None
         Result = self.generator.as_lower.plus(KS.s8(here, ' at ')).plus(B.out_int(here, self.speed))
         return Result
 S.register('VEHICLE', VEHICLE)

@@ -91,7 +91,6 @@ class LISTS_CURSORS(ANY):
 
     def image(self, l):
         here = self._region_
-        Result = None
         Result = KS.s8(here, '')
         for c in S.cursors(l):
             if not Result.is_empty:
@@ -104,12 +103,10 @@ class LISTS_CURSORS(ANY):
         self.print_(label.plus(KS.s8(here, ': ')).plus(value).plus(KS.s8(here, '\n')))
 
 def _agent_3(self, x):
-    Result = False
     Result = x > 10
     return Result
 
 def _agent_5(self, x):
-    Result = False
     Result = x == 30
     return Result
 

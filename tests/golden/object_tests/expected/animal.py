@@ -13,7 +13,6 @@ class ANIMAL(ANY):
     @rt.leaf
     def describe(self):
         here = self._region_
-        Result = None
         Result = self.name.plus(KS.s8(here, ' says ')).plus(self.sound)
         return Result
 S.register('ANIMAL', ANIMAL)

@@ -12,7 +12,6 @@ class CAT(ANIMAL):
     @rt.leaf
     def name(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'Tom')
         return Result
 
@@ -20,7 +19,6 @@ class CAT(ANIMAL):
     @rt.leaf
     def sound(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'meow')
         return Result
 S.register('CAT', CAT)

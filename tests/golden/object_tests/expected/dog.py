@@ -17,7 +17,6 @@ class DOG(ANIMAL):
     @rt.leaf
     def sound(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'woof')
         return Result
 
@@ -25,7 +24,6 @@ class DOG(ANIMAL):
     @rt.leaf
     def fetch(self):
         here = self._region_
-        Result = None
         Result = self.name.plus(KS.s8(here, ' fetches'))
         return Result
 S.register('DOG', DOG)

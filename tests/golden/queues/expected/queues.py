@@ -51,7 +51,6 @@ class QUEUES(ANY):
 
     def image(self, items):
         here = self._region_
-        Result = None
         Result = KS.s8(here, '')
         items.start()
         while not items.after:

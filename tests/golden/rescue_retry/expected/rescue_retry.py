@@ -84,7 +84,6 @@ class RESCUE_RETRY(EXCEPTION_MANAGER_FACTORY):
     @property
     @rt.leaf
     def broken_promise(self):
-        Result = 0
         Result = 1
         if not Result == 0:
             S.assertion_failed('postcondition', 'zero', W_2)

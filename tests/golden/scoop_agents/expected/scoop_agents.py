@@ -38,7 +38,6 @@ class SCOOP_AGENTS(ANY):
 
     def greeting_agent(self, g):
         here = self._region_
-        Result = None
         with here.reserve1(g, W_3):
             Result = S.new_agent(here, PROCEDURE, (T_2,), S.dispatcher('greet', False), [g, None], (1,))
         return Result
@@ -50,14 +49,12 @@ class SCOOP_AGENTS(ANY):
 
     def count(self, g):
         here = self._region_
-        Result = 0
         with here.reserve1(g, W_7):
             Result = here.leaf_query(g, G_5, (), W_6)
         return Result
 
     def spawn(self, g):
         here = self._region_
-        Result = None
         with here.reserve1(g, W_9):
             Result = here.query(g, GREETER.new_greeter.fget, (), W_8)
         return Result

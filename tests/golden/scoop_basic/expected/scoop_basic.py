@@ -46,7 +46,6 @@ class SCOOP_BASIC(ANY):
 
     def total(self, acc):
         here = self._region_
-        Result = 0
         with here.reserve1(acc, W_6):
             Result = here.leaf_query(acc, G_1, (), W_5)
         return Result

@@ -30,7 +30,6 @@ class SCOOP_CALLBACK(ANY):
     @property
     @rt.leaf
     def count(self):
-        Result = 0
         Result = self.log.count
         return Result
     log = None

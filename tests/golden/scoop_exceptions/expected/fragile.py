@@ -14,7 +14,6 @@ class FRAGILE(ANY):
     @property
     @rt.leaf
     def checked_value(self):
-        Result = 0
         if not self.value > 0:
             S.assertion_failed('precondition', 'positive', W_1)
         Result = self.value

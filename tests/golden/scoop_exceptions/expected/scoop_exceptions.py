@@ -39,7 +39,6 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
 
     def value(self, f):
         here = self._region_
-        Result = 0
         with here.reserve1(f, W_5):
             Result = here.leaf_query(f, G_3, (), W_4)
         return Result

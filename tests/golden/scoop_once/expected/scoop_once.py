@@ -40,21 +40,18 @@ class SCOOP_ONCE(ANY):
 
     def count(self, s_):
         here = self._region_
-        Result = 0
         with here.reserve1(s_, W_3):
             Result = here.leaf_query(here.query(s_, STAMPER.stamps.fget, (), W_2), ARRAYED_LIST.count.fget, (), W_2)
         return Result
 
     def region_tag(self, s_, t_):
         here = self._region_
-        Result = 0
         with here.reserve1(s_, W_5):
             Result = here.query(s_, STAMPER.region_tag, (t_,), W_4)
         return Result
 
     def process_tag(self, s_, t_):
         here = self._region_
-        Result = 0
         with here.reserve1(s_, W_7):
             Result = here.query(s_, STAMPER.process_tag, (t_,), W_6)
         return Result

@@ -20,7 +20,6 @@ class STAMPER(ANY):
         return self._region_.once('STAMPER.stamps', STAMPER.stamps_once_, (self,))
 
     def region_tag_once_(self, t_):
-        Result = 0
         Result = t_
         return Result
 
@@ -28,7 +27,6 @@ class STAMPER(ANY):
         return self._region_.once('STAMPER.region_tag', STAMPER.region_tag_once_, (self, t_))
 
     def process_tag_once_(self, t_):
-        Result = 0
         Result = t_
         return Result
 

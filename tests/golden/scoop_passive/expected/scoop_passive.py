@@ -32,7 +32,6 @@ class SCOOP_PASSIVE(ANY):
 
     def final_value(self, t_):
         here = self._region_
-        Result = 0
         with here.reserve1(t_, W_4, PRE_6, (here, self, t_)):
             Result = here.leaf_query(t_, G_2, (), W_3)
         return Result

@@ -22,7 +22,6 @@ class BUFFER(ANY):
     @property
     @rt.leaf
     def count(self):
-        Result = 0
         Result = self.items.count
         return Result
     largest_count = 0
@@ -30,7 +29,6 @@ class BUFFER(ANY):
     @property
     @rt.leaf
     def item(self):
-        Result = 0
         if self.is_empty:
             S.assertion_failed('precondition', 'not_empty', W_2)
         Result = self.items.item
@@ -39,14 +37,12 @@ class BUFFER(ANY):
     @property
     @rt.leaf
     def is_empty(self):
-        Result = False
         Result = self.items.is_empty
         return Result
 
     @property
     @rt.leaf
     def is_full(self):
-        Result = False
         Result = self.count == self.capacity
         return Result
 

@@ -24,7 +24,6 @@ class CONSUMER(ANY):
     @property
     @rt.leaf
     def is_done(self):
-        Result = False
         Result = self.taken == self.count
         return Result
 

@@ -42,14 +42,12 @@ class SCOOP_WAIT(ANY):
 
     def total_of(self, c):
         here = self._region_
-        Result = 0
         with here.reserve1(c, W_5, PRE_7, (here, self, c)):
             Result = here.leaf_query(c, G_3, (), W_4)
         return Result
 
     def respected(self, b_):
         here = self._region_
-        Result = False
         with here.reserve1(b_, W_11):
             Result = here.leaf_query(b_, G_8, (), W_9) <= here.leaf_query(b_, G_10, (), W_9) and here.leaf_query(b_, G_8, (), W_9) >= 1
         return Result

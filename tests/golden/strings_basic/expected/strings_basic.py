@@ -103,7 +103,6 @@ class STRINGS_BASIC(ANY):
     @rt.leaf
     def tag(self):
         here = self._region_
-        Result = None
         Result = S.once_string(here, ONCE_STRING_1, 'tag', KS.s8)
         return Result
 
@@ -111,7 +110,6 @@ class STRINGS_BASIC(ANY):
     @rt.leaf
     def fresh(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, 'fresh')
         return Result
 

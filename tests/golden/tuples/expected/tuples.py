@@ -46,7 +46,6 @@ class TUPLES(ANY):
     @rt.leaf
     def divmod(self, a, b_):
         here = self._region_
-        Result = None
         Result = S.new_tuple(here, [B.idiv_i32(a, b_), B.irem_i32(a, b_)], (T_2, T_2))
         return Result
 
@@ -54,7 +53,6 @@ class TUPLES(ANY):
     @rt.leaf
     def nested(self):
         here = self._region_
-        Result = None
         Result = S.new_tuple(here, [1, S.new_tuple(here, [KS.s8(here, 'inner')], (T_1,))], (T_2, T_5))
         return Result
 

@@ -18,7 +18,6 @@ class MATRIX(ANY):
 
     @rt.leaf
     def item(self, i, j):
-        Result = 0
         Result = self.cells.item(_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (i - 1)) else B.wrap_i32(_t)) * self.size)) <= 2147483647 else B.wrap_i32(_t)) + j)) <= 2147483647 else B.wrap_i32(_t))
         return Result
 

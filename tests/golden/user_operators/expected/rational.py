@@ -32,7 +32,6 @@ class RATIONAL(ANY):
 
     @rt.leaf
     def is_equal(self, o):
-        Result = False
         Result = self.num == o.num and self.den == o.den
         return Result
 
@@ -40,7 +39,6 @@ class RATIONAL(ANY):
     @rt.leaf
     def out(self):
         here = self._region_
-        Result = None
         Result = B.out_int(here, self.num).plus(KS.s8(here, '/')).plus(B.out_int(here, self.den))
         return Result
 S.register('RATIONAL', RATIONAL)

@@ -39,13 +39,11 @@ class VEC(COMPARABLE):
 
     @rt.leaf
     def dot(self, o):
-        Result = 0
         Result = _t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (self.x * o.x)) <= 2147483647 else B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (self.y * o.y)) <= 2147483647 else B.wrap_i32(_t)))) <= 2147483647 else B.wrap_i32(_t)
         return Result
 
     @rt.leaf
     def is_less(self, o):
-        Result = False
         Result = (_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (self.x * self.x)) <= 2147483647 else B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (self.y * self.y)) <= 2147483647 else B.wrap_i32(_t)))) <= 2147483647 else B.wrap_i32(_t)) < (_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (o.x * o.x)) <= 2147483647 else B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (o.y * o.y)) <= 2147483647 else B.wrap_i32(_t)))) <= 2147483647 else B.wrap_i32(_t))
         return Result
 
@@ -53,7 +51,6 @@ class VEC(COMPARABLE):
     @rt.leaf
     def out(self):
         here = self._region_
-        Result = None
         Result = KS.s8(here, '(').plus(B.out_int(here, self.x)).plus(KS.s8(here, ',')).plus(B.out_int(here, self.y)).plus(KS.s8(here, ')'))
         return Result
 S.register('VEC', VEC)
