@@ -238,7 +238,9 @@ class Calls:
                                    P.const(creator), P.tup(args)] + ([P.const(True)] if invariant else []))
 
     def program_has_invariant(self, info) -> bool:
-        return bool(getattr(info, "_has_invariant", False))
+        """Is there an invariant to check after creating an `info` object? (The library runs
+        with preconditions only: its invariants are not compiled.)"""
+        return bool(getattr(info, "_has_invariant", False)) and not info.from_library
 
     # --- agents ------------------------------------------------------------------------------------
     def agent_application(self, node, agent, call_node):

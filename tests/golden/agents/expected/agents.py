@@ -49,7 +49,7 @@ class AGENTS(ANY):
         even = S.new_agent(here, PREDICATE, (T_3,), _agent_7, [self, None], (1,))
         self.show(KS.s8(here, 'predicate'), B.out_bool(here, even.item(S.new_tuple(here, [4], ()))).plus(KS.s8(here, ' ')).plus(B.out_bool(here, even.item(S.new_tuple(here, [7], ())))))
         self.show(KS.s8(here, 'as argument'), B.out_int(here, self.twice(S.new_agent(here, FUNCTION, (T_3, T_1), S.dispatcher('double', False), [self, None], (1,)), 3)).plus(KS.s8(here, ' ')).plus(B.out_int(here, self.twice(S.new_agent(here, FUNCTION, (T_3, T_1), _agent_8, [self, None], (1,)), 1))))
-        list = S.create(here, ARRAYED_LIST, (T_1,), 'make', (5,), True)
+        list = S.create(here, ARRAYED_LIST, (T_1,), 'make', (5,))
         list.extend(3)
         list.extend(8)
         list.extend(6)

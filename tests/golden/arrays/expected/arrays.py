@@ -17,7 +17,7 @@ class ARRAYS(ANY):
         b_ = None
         names = None
         i = 0
-        a = S.create(here, ARRAY, (T_1,), 'make_filled', (0, -2, 2), True)
+        a = S.create(here, ARRAY, (T_1,), 'make_filled', (0, -2, 2))
         a.put(10, -2)
         a.put(20, 0)
         a.put(_t if -2147483648 <= (_t := (a.item(-2) + a.item(0))) <= 2147483647 else B.wrap_i32(_t), 2)
@@ -42,15 +42,15 @@ class ARRAYS(ANY):
         self.show(KS.s8(here, 'subarray'), self.image(b_.subarray(2, 4)).plus(KS.s8(here, ' lower ')).plus(B.out_int(here, b_.subarray(2, 4).lower)))
         b_.rebase(0)
         self.show(KS.s8(here, 'rebase'), B.out_int(here, b_.lower).plus(KS.s8(here, ' ')).plus(B.out_int(here, b_.upper)).plus(KS.s8(here, ' ')).plus(B.out_int(here, b_.item(0))))
-        names = S.create(here, ARRAY, (T_2,), 'make_empty', (), True)
+        names = S.create(here, ARRAY, (T_2,), 'make_empty', ())
         self.show(KS.s8(here, 'empty'), B.out_int(here, names.count).plus(KS.s8(here, ' ')).plus(B.out_bool(here, names.is_empty)).plus(KS.s8(here, ' ')).plus(B.out_int(here, names.lower)).plus(KS.s8(here, ' ')).plus(B.out_int(here, names.upper)))
         names.force(KS.s8(here, 'first'), 1)
         names.force(KS.s8(here, 'second'), 2)
         for n in S.cursors(names):
             self.print_(n.item.plus(KS.s8(here, ' at ')).plus(B.out_int(here, n.cursor_index)).plus(KS.s8(here, '\n')))
-        names = S.create(here, ARRAY, (T_2,), 'make_filled', (KS.s8(here, ''), 1, 2), True)
+        names = S.create(here, ARRAY, (T_2,), 'make_filled', (KS.s8(here, ''), 1, 2))
         self.show(KS.s8(here, 'make_filled strings'), B.out_bool(here, names.item(1) is names.item(2)))
-        a = S.create(here, ARRAY, (T_1,), 'make', (1, 3), True)
+        a = S.create(here, ARRAY, (T_1,), 'make', (1, 3))
         self.show(KS.s8(here, 'make'), self.image(a))
         a.fill_with(4)
         self.show(KS.s8(here, 'fill_with'), self.image(a))

@@ -12,7 +12,7 @@ class REGISTRY(ANY):
     def shared_list_once_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,), True)
+        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
         return Result
 
     @property
@@ -22,7 +22,7 @@ class REGISTRY(ANY):
     def own_list_once_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,), True)
+        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
         return Result
 
     @property

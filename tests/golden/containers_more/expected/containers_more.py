@@ -17,18 +17,18 @@ class CONTAINERS_MORE(ANY):
         pq = None
         sorted = None
         set = None
-        s_ = S.create(here, ARRAYED_STACK, (T_1,), 'make', (2,), True)
+        s_ = S.create(here, ARRAYED_STACK, (T_1,), 'make', (2,))
         s_.put(1)
         s_.put(2)
         s_.extend(3)
         self.print_(KS.s8(here, 'stack top ').plus(B.out_int(here, s_.item)).plus(KS.s8(here, ' count ')).plus(B.out_int(here, s_.count)).plus(KS.s8(here, '\n')))
         s_.remove()
         self.print_(KS.s8(here, 'after remove ').plus(B.out_int(here, s_.item)).plus(KS.s8(here, ': ')).plus(self.image(s_.linear_representation)).plus(KS.s8(here, '\n')))
-        ls = S.create(here, LINKED_STACK, (T_2,), 'make', (), True)
+        ls = S.create(here, LINKED_STACK, (T_2,), 'make', ())
         ls.put(KS.s8(here, 'a'))
         ls.put(KS.s8(here, 'b'))
         self.print_(KS.s8(here, 'linked stack top ').plus(ls.item).plus(KS.s8(here, ' count ')).plus(B.out_int(here, ls.count)).plus(KS.s8(here, '\n')))
-        pq = S.create(here, HEAP_PRIORITY_QUEUE, (T_1,), 'make', (10,), True)
+        pq = S.create(here, HEAP_PRIORITY_QUEUE, (T_1,), 'make', (10,))
         for x in S.items(S.manifest_array(here, ARRAY, (T_1,), [5, 1, 9, 3, 7])):
             pq.put(x)
         self.print_(KS.s8(here, 'priority queue:'))
@@ -36,11 +36,11 @@ class CONTAINERS_MORE(ANY):
             self.print_(KS.s8(here, ' ').plus(B.out_int(here, pq.item)))
             pq.remove()
         self.print_(KS.s8(here, '\n'))
-        sorted = S.create(here, SORTED_TWO_WAY_LIST, (T_1,), 'make', (), True)
+        sorted = S.create(here, SORTED_TWO_WAY_LIST, (T_1,), 'make', ())
         for x in S.items(S.manifest_array(here, ARRAY, (T_1,), [5, 2, 8, 2, 6])):
             sorted.extend(x)
         self.print_(KS.s8(here, 'sorted: ').plus(self.image(sorted)).plus(KS.s8(here, ' min ')).plus(B.out_int(here, sorted.min)).plus(KS.s8(here, ' max ')).plus(B.out_int(here, sorted.max)).plus(KS.s8(here, '\n')))
-        set = S.create(here, ARRAYED_SET, (T_2,), 'make', (4,), True)
+        set = S.create(here, ARRAYED_SET, (T_2,), 'make', (4,))
         set.compare_objects()
         set.extend(KS.s8(here, 'a'))
         set.extend(KS.s8(here, 'b'))

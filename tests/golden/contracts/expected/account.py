@@ -33,7 +33,7 @@ class ACCOUNT(ANY):
     def history_init_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, ARRAYED_LIST, (T_3,), 'make', (4,), True)
+        Result = S.create(here, ARRAYED_LIST, (T_3,), 'make', (4,))
         return Result
     history = S.SelfInitialising(history_init_, 'history')
 

@@ -13,7 +13,7 @@ class NODE(ANY):
         here = self._region_
         self.value = v
         self.label = l
-        self.children = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,), True)
+        self.children = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,))
     value = 0
     label = None
     children = None

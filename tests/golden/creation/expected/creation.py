@@ -29,7 +29,7 @@ class CREATION(ANY):
         thing = S.create(here, PLAIN, None, 'default_create', ())
         thing.set_value(9)
         self.print_(KS.s8(here, 'no create clause: ').plus(B.out_int(here, thing.value)).plus(KS.s8(here, '\n')))
-        list = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,), True)
+        list = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,))
         list.extend(KS.s8(here, 'generic'))
         self.print_(KS.s8(here, 'create {ARRAYED_LIST [STRING]}: ').plus(list.first).plus(KS.s8(here, ' ')).plus(list.generator).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'each creation is new: ').plus(B.out_bool(here, S.create(here, POINT, None, 'make', (1, 1)) is S.create(here, POINT, None, 'make', (1, 1)))).plus(KS.s8(here, '\n')))

@@ -29,7 +29,7 @@ class EXPANDED_VALUES(ANY):
         p.move(S.copy_expanded(a))
         p.move(S.copy_expanded(a))
         self.print_(KS.s8(here, 'argument copies: ').plus(p.position.out).plus(KS.s8(here, ' ')).plus(a.out).plus(KS.s8(here, '\n')))
-        list = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,), True)
+        list = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,))
         list.extend(S.copy_expanded(a))
         a.scale(5)
         self.print_(KS.s8(here, 'container copies: ').plus(list.first.out).plus(KS.s8(here, ' ')).plus(a.out).plus(KS.s8(here, '\n')))

@@ -17,7 +17,7 @@ class INHERITANCE(ANY):
         v = None
         b_ = None
         amphibian = None
-        shapes = S.create(here, ARRAYED_LIST, (T_1,), 'make', (3,), True)
+        shapes = S.create(here, ARRAYED_LIST, (T_1,), 'make', (3,))
         shapes.extend(S.create(here, RECTANGLE, None, 'make', (2.0, 3.0)))
         shapes.extend(S.create(here, SQUARE, None, 'make__square', (4.0,)))
         cs = S.create(here, COLORED_SQUARE, None, 'make_colored', (1.5, KS.s8(here, 'red')))

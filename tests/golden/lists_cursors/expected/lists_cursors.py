@@ -16,13 +16,13 @@ class LISTS_CURSORS(ANY):
         a = None
         k_ = None
         words = None
-        a = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,), True)
+        a = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,))
         self.print_(KS.s8(here, 'ARRAYED_LIST\n'))
         self.exercise(a)
-        k_ = S.create(here, LINKED_LIST, (T_1,), 'make', (), True)
+        k_ = S.create(here, LINKED_LIST, (T_1,), 'make', ())
         self.print_(KS.s8(here, 'LINKED_LIST\n'))
         self.exercise(k_)
-        words = S.create(here, LINKED_LIST, (T_2,), 'make', (), True)
+        words = S.create(here, LINKED_LIST, (T_2,), 'make', ())
         words.extend(KS.s8(here, 'alpha'))
         words.extend(KS.s8(here, 'beta'))
         self.show(KS.s8(here, 'has by reference'), B.out_bool(here, words.has(KS.s8(here, 'beta'))))

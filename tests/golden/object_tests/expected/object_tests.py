@@ -49,7 +49,7 @@ class OBJECT_TESTS(ANY):
         s_ = KS.s8(here, 'here')
         if (t_ := s_) is not None and t_.count == 4:
             self.print_(KS.s8(here, 'attached local: ').plus(t_).plus(KS.s8(here, '\n')))
-        zoo = S.create(here, ARRAYED_LIST, (T_5,), 'make', (3,), True)
+        zoo = S.create(here, ARRAYED_LIST, (T_5,), 'make', (3,))
         zoo.extend(a)
         zoo.extend(S.create(here, CAT, None, 'default_create', ()))
         zoo.extend(S.create(here, DOG, None, 'default_create', ()))

@@ -14,7 +14,7 @@ class SCOOP_CALLBACK(ANY):
     def make(self):
         here = self._region_
         h = None
-        self.log = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,), True)
+        self.log = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
         h = here.new_separate(HELPER, HELPER.default_create, ())
         self.delegate(h)
         self.print_(KS.s8(here, 'log has ').plus(B.out_int(here, self.count)).plus(KS.s8(here, ' entries\n')))

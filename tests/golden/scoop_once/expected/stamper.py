@@ -12,7 +12,7 @@ class STAMPER(ANY):
     def stamps_once_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,), True)
+        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
         return Result
 
     @property

@@ -16,7 +16,7 @@ class BUFFER(ANY):
     def make(self, n):
         here = self._region_
         self.capacity = n
-        self.items = S.create(here, ARRAYED_QUEUE, (T_1,), 'make', (n,), True)
+        self.items = S.create(here, ARRAYED_QUEUE, (T_1,), 'make', (n,))
     capacity = 0
 
     @property

@@ -11,7 +11,7 @@ class MATRIX(ANY):
 
     def make(self, n):
         here = self._region_
-        self.cells = S.create(here, ARRAY, (T_1,), 'make_filled', (0, 1, _t if -2147483648 <= (_t := (n * n)) <= 2147483647 else B.wrap_i32(_t)), True)
+        self.cells = S.create(here, ARRAY, (T_1,), 'make_filled', (0, 1, _t if -2147483648 <= (_t := (n * n)) <= 2147483647 else B.wrap_i32(_t)))
         self.size = n
     size = 0
     cells = None
