@@ -60,6 +60,18 @@ class CompileFailed(Exception):
     """scoopc rejected or could not compile a benchmark's dialect version."""
 
 
+def compiled_library():
+    """Seconds to get scoopc's compiled standard library (compiled once per compiler version,
+    then taken from scoopc's cache)."""
+    if ROOT not in sys.path:
+        sys.path.insert(0, ROOT)
+    from scoopc import build
+
+    start = time.perf_counter()
+    build.base_package()
+    return time.perf_counter() - start
+
+
 def compile_benchmark(name, out_dir, assertions="none"):
     """Compile benchmarks/<name>/ with scoopc's API (parse, check, codegen; the standard library
     comes from scoopc's cache) into `out_dir`; write and return what a child needs to run it."""

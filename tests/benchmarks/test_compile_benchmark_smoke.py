@@ -1,4 +1,5 @@
-"""Smoke test of benchmarks/compile.py: a tiny generated program, the output's format (never timings)."""
+"""Smoke test of benchmarks/compile.py: a tiny generated program, the output's format (never timings),
+including the full cold compile and the cached start-up of a sample."""
 import os
 import re
 import subprocess
@@ -17,3 +18,9 @@ def test_compile_benchmark_reports_cold_and_cached_times_with_ratios():
     assert re.search(r"^cold parse\+check: \d+\.\d+ s  ratio=\d+\.\d+  target < 2 s: (met|MISSED)$", done.stdout, re.M)
     assert re.search(r"^cached parse\+check: \d+\.\d+ s  ratio=\d+\.\d+  target < 0\.5 s: (met|MISSED)$",
                      done.stdout, re.M)
+    assert re.search(r"^full cold compile of the stdlib and producer_consumer \(scoopc compile, no caches\): "
+                     r"\d+\.\d+ s  target < 3 s: (met|MISSED)$", done.stdout, re.M)
+    assert re.search(r"^cached scoopc run producer_consumer: start-up to the first output line \d+\.\d+ s  "
+                     r"target < 0\.5 s: (met|MISSED)$", done.stdout, re.M)
+    assert re.search(r"^cached scoopc run of a trivial program \(whole run\): \d+\.\d+ s  "
+                     r"target < 0\.5 s: (met|MISSED)$", done.stdout, re.M)
