@@ -186,7 +186,6 @@ def run_compiled(folder: Path, meta: dict, program_args: list[str], args) -> int
     for name in [m for m in sys.modules if m == "program" or m.startswith("program.")]:
         del sys.modules[name]            # another program ran in this process before
     link.forget("program")
-    link.register_again(build.BASE_PACKAGE)
     module = importlib.import_module(f"program.{module_name(meta['root'])}")
     root_cls = getattr(module, class_name(meta["root"]))
     argv = [meta["root"].lower()] + list(program_args)

@@ -93,8 +93,26 @@ class Instructions:
         if ty is None:
             fail("creation without a type", node.span)
         feature = self.tables.features.get(node)
+        target = self.target(node.target)
+        if isinstance(target, ast.Name) and not ty.is_formal and not ty.separate and node.processor is None:
+            return self.local_creation(target, ty, feature, node.arguments)
         value = self.creation_value(node, ty, feature, node.arguments, node.processor is not None)
-        return [P.assign(self.target(node.target), value)]
+        return [P.assign(target, value)]
+
+    def local_creation(self, target, ty, feature, arguments):
+        """`create x.make (a)` into a local or Result, spelled out: `x = here.new(C)`, then
+        `x.make(a)` (the common case, and the cheapest: no helper call)."""
+        info = self.universe.get(ty.name)
+        args = [self.argument(a) for a in arguments]
+        out = [P.assign(target, P.call("here.new", [self.class_ref(info.name)]))]
+        if info.formals:
+            out.append(P.assign(P.attr(P.name(target.id), "_gen_"), self.generics_desc(ty)))
+        creator = self.py_name(feature) if feature is not None else None
+        if creator is not None:
+            out.append(P.expr_stmt(P.call(P.attr(P.name(target.id), creator), args)))
+        if self.assertions == "all" and self.program_has_invariant(info):
+            out.append(P.expr_stmt(P.call("S.check_invariant", [P.name(target.id)])))
+        return out
 
     # --- control -------------------------------------------------------------------------------------
     def s_Conditional(self, node):

@@ -24,6 +24,10 @@ def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, st
     from .. import runtime as rt
     from .ext import arguments
 
+    from . import link
+
+    link.register_again("eiffel_base")                       # the registry may have been reset
+    link.register_again(root_cls.__module__.rpartition(".")[0])
     for name, key in (shadowed or {}).items():
         CLASSES.setdefault(key, CLASSES.get(name))
     arguments.set_arguments(list(argv))

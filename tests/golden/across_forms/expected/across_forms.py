@@ -26,7 +26,9 @@ class ACROSS_FORMS(ANY):
             self.print_(KS.s8(here, 'never ').plus(B.out_int(here, i)))
         for i in S.cursors(B.interval(here, -2, 2)):
             self.print_(B.out_int(here, i.item).plus(KS.s8(here, '\n') if i.is_last else KS.s8(here, ',')))
-        list = S.create(here, LINKED_LIST, (T_1,), 'make', ())
+        list = here.new(LINKED_LIST)
+        list._gen_ = (T_1,)
+        list.make()
         for x in S.items(S.manifest_array(here, ARRAY, (T_1,), [4, 8, 15, 16, 23, 42])):
             list.extend(x)
         list.start()
@@ -45,7 +47,9 @@ class ACROSS_FORMS(ANY):
                 break
             self.print_(B.out_int(here, c.item).plus(KS.s8(here, ' ')))
         self.print_(KS.s8(here, '\n'))
-        table = S.create(here, HASH_TABLE, (T_2, T_2), 'make', (3,))
+        table = here.new(HASH_TABLE)
+        table._gen_ = (T_2, T_2)
+        table.make(3)
         table.put(KS.s8(here, 'uno'), KS.s8(here, 'one'))
         table.put(KS.s8(here, 'dos'), KS.s8(here, 'two'))
         table.put(KS.s8(here, 'tres'), KS.s8(here, 'three'))

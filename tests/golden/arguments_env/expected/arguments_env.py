@@ -23,7 +23,8 @@ class ARGUMENTS_ENV(ARGUMENTS):
             self.print_(KS.s8(here, 'name ').plus(n).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'number + 1 = ').plus(B.out_int(here, _t if (_t := (self.argument(4).to_integer + 1)) <= 2147483647 else B.wrap_i32(_t))).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'argument_array ').plus(B.out_int(here, self.argument_array.lower)).plus(KS.s8(here, '..')).plus(B.out_int(here, self.argument_array.upper)).plus(KS.s8(here, '\n')))
-        env = S.create(here, EXECUTION_ENVIRONMENT, None, 'default_create', ())
+        env = here.new(EXECUTION_ENVIRONMENT)
+        env.default_create()
         env.put(KS.s8(here, 'golden'), KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))
         if (v := env.item(KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))) is not None:
             self.print_(KS.s8(here, 'environment ').plus(v).plus(KS.s8(here, '\n')))

@@ -12,7 +12,9 @@ class REGISTRY(ANY):
     def shared_list_once_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
+        Result = here.new(ARRAYED_LIST)
+        Result._gen_ = (T_1,)
+        Result.make(4)
         return Result
 
     @property
@@ -22,7 +24,9 @@ class REGISTRY(ANY):
     def own_list_once_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
+        Result = here.new(ARRAYED_LIST)
+        Result._gen_ = (T_1,)
+        Result.make(4)
         return Result
 
     @property

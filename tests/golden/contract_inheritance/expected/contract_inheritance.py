@@ -14,7 +14,9 @@ class CONTRACT_INHERITANCE(EXCEPTION_MANAGER_FACTORY):
         here = self._region_
         acc = None
         base = None
-        acc = S.create(here, CREDIT_ACCOUNT, None, 'make', (50,), True)
+        acc = here.new(CREDIT_ACCOUNT)
+        acc.make(50)
+        S.check_invariant(acc)
         S.call_checked(acc, 'withdraw', (120,))
         self.print_(KS.s8(here, 'credit withdrawal: ').plus(B.out_int(here, acc.balance)).plus(KS.s8(here, ' after ')).plus(B.out_int(here, acc.withdrawals)).plus(KS.s8(here, '\n')))
         S.call_checked(acc, 'deposit', (60,))

@@ -33,7 +33,9 @@ class ACCOUNT(ANY):
     def history_init_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, ARRAYED_LIST, (T_3,), 'make', (4,))
+        Result = here.new(ARRAYED_LIST)
+        Result._gen_ = (T_3,)
+        Result.make(4)
         return Result
     history = S.SelfInitialising(history_init_, 'history')
 

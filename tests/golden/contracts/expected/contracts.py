@@ -11,7 +11,9 @@ class CONTRACTS(EXCEPTION_MANAGER_FACTORY):
     def make(self):
         here = self._region_
         acc = None
-        acc = S.create(here, ACCOUNT, None, 'make', (100,), True)
+        acc = here.new(ACCOUNT)
+        acc.make(100)
+        S.check_invariant(acc)
         S.call_checked(acc, 'deposit', (50,))
         S.call_checked(acc, 'withdraw', (30,))
         self.print_(KS.s8(here, 'balance ').plus(B.out_int(here, acc.balance)).plus(KS.s8(here, ' doubled ')).plus(B.out_int(here, S.call_checked(acc, 'doubled', ()))).plus(KS.s8(here, ' history ')).plus(B.out_int(here, acc.history.count)).plus(KS.s8(here, '\n')))
@@ -35,7 +37,9 @@ class CONTRACTS(EXCEPTION_MANAGER_FACTORY):
                     elif B.equal(what, KS.s8(here, 'faulty deposit')):
                         S.call_checked(acc, 'faulty_deposit', (10,))
                     else:
-                        other = S.create(here, ACCOUNT, None, 'make', (-5,), True)
+                        other = here.new(ACCOUNT)
+                        other.make(-5)
+                        S.check_invariant(other)
                     self.print_(what.plus(KS.s8(here, ': accepted\n')))
                 break
             except Exception as _exception1:

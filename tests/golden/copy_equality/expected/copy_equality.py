@@ -13,13 +13,15 @@ class COPY_EQUALITY(ANY):
         a = None
         b_ = None
         c = None
-        a = S.create(here, NODE, None, 'make', (1, KS.s8(here, 'a')))
+        a = here.new(NODE)
+        a.make(1, KS.s8(here, 'a'))
         a.add(S.create(here, NODE, None, 'make', (2, KS.s8(here, 'child'))))
         b_ = a.twin
         self.print_(KS.s8(here, 'twin: ').plus(B.out_bool(here, a is b_)).plus(KS.s8(here, ' ')).plus(B.out_bool(here, B.equal(a, b_))).plus(KS.s8(here, ' copies ')).plus(B.out_int(here, b_.copies)).plus(KS.s8(here, ' shares children ')).plus(B.out_bool(here, a.children is b_.children)).plus(KS.s8(here, '\n')))
         c = a.deep_twin
         self.print_(KS.s8(here, 'deep_twin: ').plus(B.out_bool(here, a.children is c.children)).plus(KS.s8(here, ' ')).plus(B.out_bool(here, a.children.first is c.children.first)).plus(KS.s8(here, ' ')).plus(B.out_bool(here, B.equal(a.children.first.label, c.children.first.label))).plus(KS.s8(here, ' ')).plus(B.out_bool(here, a.is_deep_equal(c))).plus(KS.s8(here, '\n')))
-        c = S.create(here, NODE, None, 'make', (1, KS.s8(here, 'other')))
+        c = here.new(NODE)
+        c.make(1, KS.s8(here, 'other'))
         self.print_(KS.s8(here, 'is_equal redefined: ').plus(B.out_bool(here, B.equal(a, c))).plus(KS.s8(here, ' ')).plus(B.out_bool(here, a.is_equal(c))).plus(KS.s8(here, ' standard ')).plus(B.out_bool(here, a.standard_is_equal(c))).plus(KS.s8(here, '\n')))
         c.set_value(5)
         self.print_(KS.s8(here, 'assigner: ').plus(B.out_int(here, c.value)).plus(KS.s8(here, ' ')).plus(B.out_bool(here, B.equal(a, c))).plus(KS.s8(here, '\n')))

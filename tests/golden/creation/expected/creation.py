@@ -15,21 +15,28 @@ class CREATION(ANY):
         a = None
         thing = None
         list = None
-        p = S.create(here, POINT, None, 'make', (1, 2))
+        p = here.new(POINT)
+        p.make(1, 2)
         self.print_(KS.s8(here, 'make: ').plus(p.out).plus(KS.s8(here, '\n')))
-        p = S.create(here, POINT, None, 'make_origin', ())
+        p = here.new(POINT)
+        p.make_origin()
         self.print_(KS.s8(here, 'make_origin: ').plus(p.out).plus(KS.s8(here, '\n')))
-        p = S.create(here, POINT, None, 'default_create', ())
+        p = here.new(POINT)
+        p.default_create()
         self.print_(KS.s8(here, 'default_create: ').plus(p.out).plus(KS.s8(here, '\n')))
         p = S.create(here, POINT, None, 'make', (3, 4))
         self.print_(KS.s8(here, 'creation expression: ').plus(p.out).plus(KS.s8(here, '\n')))
-        a = S.create(here, POINT, None, 'make', (5, 6))
+        a = here.new(POINT)
+        a.make(5, 6)
         self.print_(KS.s8(here, 'create {T}: ').plus(B.query(a, 'out', here)).plus(KS.s8(here, ' ')).plus(B.query(a, 'generator', here)).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'inline: ').plus(B.out_int(here, S.create(here, POINT, None, 'make', (7, 8)).x)).plus(KS.s8(here, '\n')))
-        thing = S.create(here, PLAIN, None, 'default_create', ())
+        thing = here.new(PLAIN)
+        thing.default_create()
         thing.set_value(9)
         self.print_(KS.s8(here, 'no create clause: ').plus(B.out_int(here, thing.value)).plus(KS.s8(here, '\n')))
-        list = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,))
+        list = here.new(ARRAYED_LIST)
+        list._gen_ = (T_1,)
+        list.make(2)
         list.extend(KS.s8(here, 'generic'))
         self.print_(KS.s8(here, 'create {ARRAYED_LIST [STRING]}: ').plus(list.first).plus(KS.s8(here, ' ')).plus(list.generator).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'each creation is new: ').plus(B.out_bool(here, S.create(here, POINT, None, 'make', (1, 1)) is S.create(here, POINT, None, 'make', (1, 1)))).plus(KS.s8(here, '\n')))
@@ -38,7 +45,8 @@ class CREATION(ANY):
     def point_init_(self):
         here = self._region_
         Result = None
-        Result = S.create(here, POINT, None, 'make', (10, 20))
+        Result = here.new(POINT)
+        Result.make(10, 20)
         return Result
     point = S.SelfInitialising(point_init_, 'point')
 S.register('CREATION', CREATION)

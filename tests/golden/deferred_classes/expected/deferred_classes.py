@@ -13,7 +13,8 @@ class DEFERRED_CLASSES(ANY):
         here = self._region_
         sensors = None
         c = None
-        c = S.create(here, COUNTER_SENSOR, None, 'default_create', ())
+        c = here.new(COUNTER_SENSOR)
+        c.default_create()
         sensors = S.manifest_array(here, ARRAY, (T_1,), [S.create(here, THERMOMETER, None, 'make', (21,)), c])
         for s_ in S.items(sensors):
             self.print_(s_.reading.plus(KS.s8(here, ' calibrated: ')).plus(B.out_bool(here, s_.is_calibrated)).plus(KS.s8(here, '\n')))

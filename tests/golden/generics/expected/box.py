@@ -32,7 +32,9 @@ class BOX(ANY):
     def mapped(self, f):
         here = self._region_
         Result = None
-        Result = S.create(here, BOX, (T.formal(self, 'BOX', 0),), 'make', (f.item(S.new_tuple(here, [self.item], ())),))
+        Result = here.new(BOX)
+        Result._gen_ = (T.formal(self, 'BOX', 0),)
+        Result.make(f.item(S.new_tuple(here, [self.item], ())))
         return Result
 
     def replaced(self, v):

@@ -15,7 +15,9 @@ class HASH_TABLES(ANY):
         t_ = None
         n = None
         keys = None
-        t_ = S.create(here, HASH_TABLE, (T_1, T_2), 'make', (3,))
+        t_ = here.new(HASH_TABLE)
+        t_._gen_ = (T_1, T_2)
+        t_.make(3)
         t_.put(1, KS.s8(here, 'one'))
         t_.put(2, KS.s8(here, 'two'))
         t_.put(3, KS.s8(here, 'three'))
@@ -54,7 +56,9 @@ class HASH_TABLES(ANY):
             self.print_(t_.key_for_iteration.plus(KS.s8(here, ':')).plus(B.out_int(here, t_.item_for_iteration)).plus(KS.s8(here, ' ')))
             t_.forth()
         self.print_(KS.s8(here, '\n'))
-        n = S.create(here, HASH_TABLE, (T_2, T_1), 'make', (10,))
+        n = here.new(HASH_TABLE)
+        n._gen_ = (T_2, T_1)
+        n.make(10)
         for k_ in S.items(S.manifest_array(here, ARRAY, (T_1,), [10, 3, 0, 25, 100003, 7])):
             n.put(KS.s8(here, 'v').plus(B.out_int(here, k_)), k_)
         n.remove(3)

@@ -17,21 +17,27 @@ class INHERITANCE(ANY):
         v = None
         b_ = None
         amphibian = None
-        shapes = S.create(here, ARRAYED_LIST, (T_1,), 'make', (3,))
+        shapes = here.new(ARRAYED_LIST)
+        shapes._gen_ = (T_1,)
+        shapes.make(3)
         shapes.extend(S.create(here, RECTANGLE, None, 'make', (2.0, 3.0)))
         shapes.extend(S.create(here, SQUARE, None, 'make__square', (4.0,)))
-        cs = S.create(here, COLORED_SQUARE, None, 'make_colored', (1.5, KS.s8(here, 'red')))
+        cs = here.new(COLORED_SQUARE)
+        cs.make_colored(1.5, KS.s8(here, 'red'))
         shapes.extend(cs)
         for s_ in S.items(shapes):
             self.print_(s_.describe__shape.plus(KS.s8(here, '\n')))
         c = cs
         self.print_(KS.s8(here, 'as COLORED: ').plus(c.describe).plus(KS.s8(here, ' / ')).plus(c.name).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'color_description: ').plus(cs.describe).plus(KS.s8(here, '\n')))
-        v = S.create(here, CAR, None, 'default_create', ())
+        v = here.new(CAR)
+        v.default_create()
         self.print_(v.describe.plus(KS.s8(here, '\n')))
-        v = S.create(here, BOAT, None, 'default_create', ())
+        v = here.new(BOAT)
+        v.default_create()
         self.print_(v.describe.plus(KS.s8(here, '\n')))
-        amphibian = S.create(here, AMPHIBIAN, None, 'default_create', ())
+        amphibian = here.new(AMPHIBIAN)
+        amphibian.default_create()
         v = amphibian
         b_ = amphibian
         self.print_(KS.s8(here, 'amphibian as VEHICLE: ').plus(B.out_int(here, v.speed)).plus(KS.s8(here, ', ')).plus(v.describe).plus(KS.s8(here, '\n')))

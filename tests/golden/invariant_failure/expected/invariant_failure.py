@@ -11,7 +11,9 @@ class INVARIANT_FAILURE(ANY):
     def make(self):
         here = self._region_
         acc = None
-        acc = S.create(here, ACCOUNT, None, 'make', (100,), True)
+        acc = here.new(ACCOUNT)
+        acc.make(100)
+        S.check_invariant(acc)
         S.call_checked(acc, 'withdraw', (30,))
         self.print_(KS.s8(here, 'balance ').plus(B.out_int(here, acc.balance)).plus(KS.s8(here, '\n')))
         S.call_checked(acc, 'withdraw', (100,))

@@ -16,13 +16,19 @@ class LISTS_CURSORS(ANY):
         a = None
         k_ = None
         words = None
-        a = S.create(here, ARRAYED_LIST, (T_1,), 'make', (2,))
+        a = here.new(ARRAYED_LIST)
+        a._gen_ = (T_1,)
+        a.make(2)
         self.print_(KS.s8(here, 'ARRAYED_LIST\n'))
         self.exercise(a)
-        k_ = S.create(here, LINKED_LIST, (T_1,), 'make', ())
+        k_ = here.new(LINKED_LIST)
+        k_._gen_ = (T_1,)
+        k_.make()
         self.print_(KS.s8(here, 'LINKED_LIST\n'))
         self.exercise(k_)
-        words = S.create(here, LINKED_LIST, (T_2,), 'make', ())
+        words = here.new(LINKED_LIST)
+        words._gen_ = (T_2,)
+        words.make()
         words.extend(KS.s8(here, 'alpha'))
         words.extend(KS.s8(here, 'beta'))
         self.show(KS.s8(here, 'has by reference'), B.out_bool(here, words.has(KS.s8(here, 'beta'))))

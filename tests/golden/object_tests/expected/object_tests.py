@@ -26,7 +26,8 @@ class OBJECT_TESTS(ANY):
         zoo = None
         n = None
         dogs = 0
-        a = S.create(here, DOG, None, 'default_create', ())
+        a = here.new(DOG)
+        a.default_create()
         if (d := a) is not None and T_1.accepts(d):
             self.print_(KS.s8(here, 'a dog: ').plus(d.fetch).plus(KS.s8(here, '\n')))
         if (c := a) is not None and T_2.accepts(c):
@@ -49,7 +50,9 @@ class OBJECT_TESTS(ANY):
         s_ = KS.s8(here, 'here')
         if (t_ := s_) is not None and t_.count == 4:
             self.print_(KS.s8(here, 'attached local: ').plus(t_).plus(KS.s8(here, '\n')))
-        zoo = S.create(here, ARRAYED_LIST, (T_5,), 'make', (3,))
+        zoo = here.new(ARRAYED_LIST)
+        zoo._gen_ = (T_5,)
+        zoo.make(3)
         zoo.extend(a)
         zoo.extend(S.create(here, CAT, None, 'default_create', ()))
         zoo.extend(S.create(here, DOG, None, 'default_create', ()))

@@ -15,7 +15,9 @@ class QUEUES(ANY):
         l = None
         a = None
         i = 0
-        l = S.create(here, LINKED_QUEUE, (T_1,), 'make', ())
+        l = here.new(LINKED_QUEUE)
+        l._gen_ = (T_1,)
+        l.make()
         self.show(KS.s8(here, 'empty'), B.out_bool(here, l.is_empty).plus(KS.s8(here, ' ')).plus(B.out_int(here, l.count)))
         l.put(KS.s8(here, 'first'))
         l.extend(KS.s8(here, 'second'))
@@ -31,7 +33,9 @@ class QUEUES(ANY):
         self.show(KS.s8(here, 'replace'), l.item)
         l.wipe_out()
         self.show(KS.s8(here, 'wipe_out'), B.out_bool(here, l.is_empty))
-        a = S.create(here, ARRAYED_QUEUE, (T_2,), 'make', (2,))
+        a = here.new(ARRAYED_QUEUE)
+        a._gen_ = (T_2,)
+        a.make(2)
         a.put(1)
         a.put(2)
         a.remove()

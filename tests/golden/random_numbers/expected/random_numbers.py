@@ -13,7 +13,8 @@ class RANDOM_NUMBERS(ANY):
         r = None
         i = 0
         dice = None
-        r = S.create(here, RANDOM, None, 'make', ())
+        r = here.new(RANDOM)
+        r.make()
         self.print_(KS.s8(here, 'seed ').plus(B.out_int(here, r.seed)).plus(KS.s8(here, ' index ')).plus(B.out_int(here, r.index)).plus(KS.s8(here, '\n')))
         i = 1
         while not i > 5:
@@ -24,7 +25,8 @@ class RANDOM_NUMBERS(ANY):
         self.print_(KS.s8(here, 'real_item ').plus(B.out_r32(here, r.real_item)).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'i_th (10) ').plus(B.out_int(here, r.i_th(10))).plus(KS.s8(here, ' i_th (1) ')).plus(B.out_int(here, r.i_th(1))).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'next_random (1) ').plus(B.out_int(here, r.next_random(1))).plus(KS.s8(here, '\n')))
-        r = S.create(here, RANDOM, None, 'set_seed', (42,))
+        r = here.new(RANDOM)
+        r.set_seed(42)
         self.print_(KS.s8(here, 'set_seed 42: index ').plus(B.out_int(here, r.index)).plus(KS.s8(here, ' item ')).plus(B.out_int(here, r.item)).plus(KS.s8(here, '\n')))
         r.forth()
         self.print_(KS.s8(here, 'then ').plus(B.out_int(here, r.item)).plus(KS.s8(here, '\n')))

@@ -43,7 +43,8 @@ class RESCUE_RETRY(EXCEPTION_MANAGER_FACTORY):
     def raise_developer(self, text):
         here = self._region_
         e = None
-        e = S.create(here, DEVELOPER_EXCEPTION, None, 'default_create', ())
+        e = here.new(DEVELOPER_EXCEPTION)
+        e.default_create()
         e.set_description(text)
         e.raise_()
 

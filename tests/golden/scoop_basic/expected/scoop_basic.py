@@ -54,6 +54,7 @@ class SCOOP_BASIC(ANY):
         here = self._region_
         Result = None
         with here.reserve1(acc, W_9):
-            Result = S.create(here, STRING_8, None, 'make_from_separate', (here.leaf_query(acc, G_7, (), W_8),))
+            Result = here.new(STRING_8)
+            Result.make_from_separate(here.leaf_query(acc, G_7, (), W_8))
         return Result
 S.register('SCOOP_BASIC', SCOOP_BASIC)

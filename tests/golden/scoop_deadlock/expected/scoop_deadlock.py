@@ -25,6 +25,7 @@ class SCOOP_DEADLOCK(ANY):
         here = self._region_
         Result = None
         with here.reserve1(box, W_3, PRE_6, (here, self, box)):
-            Result = S.create(here, STRING_8, None, 'make_from_separate', (here.leaf_query(box, G_1, (), W_2),))
+            Result = here.new(STRING_8)
+            Result.make_from_separate(here.leaf_query(box, G_1, (), W_2))
         return Result
 S.register('SCOOP_DEADLOCK', SCOOP_DEADLOCK)

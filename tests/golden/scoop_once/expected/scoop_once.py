@@ -23,8 +23,10 @@ class SCOOP_ONCE(ANY):
         s4 = None
         s1 = here.new_separate(STAMPER, STAMPER.default_create, ())
         s2 = here.new_separate(STAMPER, STAMPER.default_create, ())
-        s3 = S.create(here, STAMPER, None, 'default_create', ())
-        s4 = S.create(here, STAMPER, None, 'default_create', ())
+        s3 = here.new(STAMPER)
+        s3.default_create()
+        s4 = here.new(STAMPER)
+        s4.default_create()
         self.stamp(s1, 1)
         self.stamp(s1, 2)
         self.stamp(s2, 3)

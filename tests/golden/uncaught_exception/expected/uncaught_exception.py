@@ -20,7 +20,8 @@ class UNCAUGHT_EXCEPTION(ANY):
     def level_two(self, n):
         here = self._region_
         e = None
-        e = S.create(here, DEVELOPER_EXCEPTION, None, 'default_create', ())
+        e = here.new(DEVELOPER_EXCEPTION)
+        e.default_create()
         e.set_description(KS.s8(here, 'gave up at level ').plus(B.out_int(here, n)))
         e.raise_()
 S.register('UNCAUGHT_EXCEPTION', UNCAUGHT_EXCEPTION)

@@ -27,7 +27,8 @@ class RATIONAL(ANY):
     def plus(self, o):
         here = self._region_
         Result = None
-        Result = S.create(here, RATIONAL, None, 'make', (_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (self.num * o.den)) <= 2147483647 else B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (o.num * self.den)) <= 2147483647 else B.wrap_i32(_t)))) <= 2147483647 else B.wrap_i32(_t), _t if -2147483648 <= (_t := (self.den * o.den)) <= 2147483647 else B.wrap_i32(_t)))
+        Result = here.new(RATIONAL)
+        Result.make(_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (self.num * o.den)) <= 2147483647 else B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (o.num * self.den)) <= 2147483647 else B.wrap_i32(_t)))) <= 2147483647 else B.wrap_i32(_t), _t if -2147483648 <= (_t := (self.den * o.den)) <= 2147483647 else B.wrap_i32(_t))
         return Result
 
     @rt.leaf

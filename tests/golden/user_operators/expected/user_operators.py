@@ -15,15 +15,19 @@ class USER_OPERATORS(ANY):
         c = None
         m = None
         r = None
-        a = S.create(here, VEC, None, 'make', (1, 2))
-        b_ = S.create(here, VEC, None, 'make', (3, 4))
+        a = here.new(VEC)
+        a.make(1, 2)
+        b_ = here.new(VEC)
+        b_.make(3, 4)
         c = a.plus(b_)
         self.print_(c.out.plus(KS.s8(here, ' ')).plus(a.opposite.out).plus(KS.s8(here, ' ')).plus(a.scaled(3).out).plus(KS.s8(here, ' ')).plus(B.out_int(here, a.dot(b_))).plus(KS.s8(here, ' ')).plus(B.out_bool(here, a.is_less(b_))).plus(KS.s8(here, ' ')).plus(b_.max(a).out).plus(KS.s8(here, '\n')))
-        m = S.create(here, MATRIX, None, 'make', (2,))
+        m = here.new(MATRIX)
+        m.make(2)
         m.put(5, 1, 2)
         m.put(7, 2, 1)
         self.print_(B.out_int(here, m.item(1, 2)).plus(KS.s8(here, ' ')).plus(B.out_int(here, m.item(2, 1))).plus(KS.s8(here, ' ')).plus(B.out_int(here, m.item(2, 2))).plus(KS.s8(here, '\n')))
-        r = S.create(here, RATIONAL, None, 'make', (1, 3))
+        r = here.new(RATIONAL)
+        r.make(1, 3)
         r = r.plus(S.create(here, RATIONAL, None, 'make', (1, 6)))
         self.print_(r.out.plus(KS.s8(here, ' ')).plus(B.out_bool(here, B.equal(r, S.create(here, RATIONAL, None, 'make', (1, 2))))).plus(KS.s8(here, '\n')))
 S.register('USER_OPERATORS', USER_OPERATORS)

@@ -19,7 +19,8 @@ class VEC(COMPARABLE):
     def plus(self, o):
         here = self._region_
         Result = None
-        Result = S.create(here, VEC, None, 'make', (_t if -2147483648 <= (_t := (self.x + o.x)) <= 2147483647 else B.wrap_i32(_t), _t if -2147483648 <= (_t := (self.y + o.y)) <= 2147483647 else B.wrap_i32(_t)))
+        Result = here.new(VEC)
+        Result.make(_t if -2147483648 <= (_t := (self.x + o.x)) <= 2147483647 else B.wrap_i32(_t), _t if -2147483648 <= (_t := (self.y + o.y)) <= 2147483647 else B.wrap_i32(_t))
         return Result
 
     @property
@@ -27,14 +28,16 @@ class VEC(COMPARABLE):
     def opposite(self):
         here = self._region_
         Result = None
-        Result = S.create(here, VEC, None, 'make', (_t if (_t := (-self.x)) <= 2147483647 else B.wrap_i32(_t), _t if (_t := (-self.y)) <= 2147483647 else B.wrap_i32(_t)))
+        Result = here.new(VEC)
+        Result.make(_t if (_t := (-self.x)) <= 2147483647 else B.wrap_i32(_t), _t if (_t := (-self.y)) <= 2147483647 else B.wrap_i32(_t))
         return Result
 
     @rt.leaf
     def scaled(self, k_):
         here = self._region_
         Result = None
-        Result = S.create(here, VEC, None, 'make', (_t if -2147483648 <= (_t := (k_ * self.x)) <= 2147483647 else B.wrap_i32(_t), _t if -2147483648 <= (_t := (k_ * self.y)) <= 2147483647 else B.wrap_i32(_t)))
+        Result = here.new(VEC)
+        Result.make(_t if -2147483648 <= (_t := (k_ * self.x)) <= 2147483647 else B.wrap_i32(_t), _t if -2147483648 <= (_t := (k_ * self.y)) <= 2147483647 else B.wrap_i32(_t))
         return Result
 
     @rt.leaf
