@@ -144,7 +144,7 @@ class Instructions:
         body = self.block(node.body)
         checks, variant = self.loop_checks(node)
         out += variant[0]
-        loop = ast.While(P.not_(self.x(node.until)), checks + body + variant[1], [])
+        loop = ast.While(P.not_(self.x(node.until)), checks + body + variant[1] or [ast.Pass()], [])
         return out + checks + [loop] + checks
 
     def loop_checks(self, node):
@@ -174,7 +174,7 @@ class Instructions:
         if node.until is not None:
             body = [P.if_(self.x(node.until), [ast.Break()])] + body
         checks, _ = self.loop_checks(node)
-        loop = ast.For(P.name(var, store=True), self.iteration_source(iteration), checks + body, [], None)
+        loop = ast.For(P.name(var, store=True), self.iteration_source(iteration), checks + body or [ast.Pass()], [], None)
         return out + [loop]
 
     def s_Check(self, node):

@@ -246,7 +246,7 @@ def interval_across(gen, node):
     else:
         upper = ast.BinOp(gen.x(expr.right), ast.Add(), P.const(1))
         source = P.call("range", [gen.x(expr.left), upper])
-    return out + [ast.For(P.name(var, store=True), source, body, [], None)]
+    return out + [ast.For(P.name(var, store=True), source, body or [ast.Pass()], [], None)]
 
 
 def _items_only(body, var: str) -> bool:
