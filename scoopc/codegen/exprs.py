@@ -219,9 +219,10 @@ class Expressions:
         iteration = node.iteration
         var = self.local_name(iteration.name.key)
         body = self.x(node.body)
-        if node.until is not None:
-            fail("`until` in an across expression is not supported", node.span)
         source = self.iteration_source(iteration)
+        if node.until is not None:            # stop before the first position where `until` holds
+            stop = P.lambda_([var], P.not_(self.x(node.until)))
+            source = P.call("S.take_while", [stop, source])
         comp = ast.GeneratorExp(body, [ast.comprehension(P.name(var, store=True), source, [], 0)])
         return P.call("all" if node.quantifier == "all" else "any", [comp])
 

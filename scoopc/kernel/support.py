@@ -355,6 +355,14 @@ def cursors(iterable):
         cursor.forth()
 
 
+def take_while(test, positions):
+    """`across ... until e`: the positions before the first one where `e` holds."""
+    for position in positions:
+        if not test(position):
+            return
+        yield position
+
+
 def items(iterable):
     """`across e is x`: each item."""
     cursor = iterable.new_cursor

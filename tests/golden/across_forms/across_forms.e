@@ -74,6 +74,9 @@ feature {NONE} -- Initialization
 				print (" ")
 			end
 			print ("%N")
+				-- `until` stops before the first position where it holds.
+			print ((across <<1, 2, 3, -4, 5>> as c until c.item < 0 all c.item > 0 end).out + "%N")
+			print ((across 1 |..| 10 is i until i > 2 some i = 3 end).out + "%N")
 		end
 
 end

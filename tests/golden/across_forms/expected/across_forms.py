@@ -68,4 +68,6 @@ class ACROSS_FORMS(ANY):
                 self.print_(c.item)
             self.print_(KS.s8(here, ' '))
         self.print_(KS.s8(here, '\n'))
+        self.print_(B.out_bool(here, all((c.item > 0 for c in S.take_while(lambda c: not c.item < 0, S.cursors(S.manifest_array(here, ARRAY, (T_1,), [1, 2, 3, -4, 5])))))).plus(KS.s8(here, '\n')))
+        self.print_(B.out_bool(here, any((i == 3 for i in S.take_while(lambda i: not i > 2, S.items(B.interval(here, 1, 10)))))).plus(KS.s8(here, '\n')))
 S.register('ACROSS_FORMS', ACROSS_FORMS)
