@@ -241,19 +241,18 @@ feature {NONE} -- Implementation
 
 	grow (n: INTEGER_32)
 			-- Make room for `n' items, keeping them in order from index 0.
+			-- (Two block copies, no loop: `extend' stays a short routine that a client may run.)
 		local
 			new_area: SPECIAL [G]
-			i, j: INTEGER_32
+			first: INTEGER_32
 		do
 			create new_area.make_empty (n.max (count))
-			from
-				i := out_index
-			until
-				j >= count
-			loop
-				new_area.extend (area.item (i))
-				i := next_position (i)
-				j := j + 1
+			first := (area.count - out_index).min (count)
+			if first > 0 then
+				new_area.copy_data (area, out_index, 0, first)
+			end
+			if count > first then
+				new_area.copy_data (area, 0, first, count - first)
 			end
 			area := new_area
 			out_index := 0
