@@ -46,6 +46,7 @@ class BUFFER(ANY):
         Result = self.count == self.capacity
         return Result
 
+    @rt.leaf
     def put(self, v):
         if self.is_full:
             S.assertion_failed('precondition', 'not_full', W_3)

@@ -29,6 +29,6 @@ class PRODUCER(ANY):
     def store(self, b_, v):
         here = self._region_
         with here.reserve1(b_, W_2, PRE_4, (here, self, b_, v)):
-            here.call(b_, BUFFER.put, (v,))
+            here.leaf_call(b_, BUFFER.put, (v,))
             self.print_(KS.s8(here, 'put ').plus(B.out_int(here, v)).plus(KS.s8(here, '\n')))
 S.register('PRODUCER', PRODUCER)
