@@ -142,6 +142,9 @@ class ClassGen:
     def constant(self, pyname, feature) -> list:
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
         value = feature.decl.value
+        if isinstance(value, syntax.Unique):
+            return [P.at(P.assign(P.name(pyname), P.const(_unique_values(self.info.decl)[feature.fname.name.key])),
+                         feature.decl.span)]
         if isinstance(value, syntax.ManifestString) or (isinstance(value, syntax.TypedConstant)
                                                         and isinstance(value.constant, syntax.ManifestString)):
             fn = P.function(pyname, ["self"], [P.assign(P.name("here"), P.attr(P.name("self"), "_region_")),
@@ -218,6 +221,17 @@ class ClassGen:
         body += [gen.assertion(c, "invariant") for c in clauses]
         fn = P.function("_invariant_", ["self"], body)
         return P.at(fn, self.info.decl.span)
+
+
+def _unique_values(decl) -> dict:
+    """`a, b: INTEGER unique`: 1, 2, ... in the order the class declares them (as EiffelStudio)."""
+    values = {}
+    for clause in decl.feature_clauses:
+        for feature in clause.features:
+            if isinstance(feature, syntax.Constant) and isinstance(feature.value, syntax.Unique):
+                for fname in feature.names:
+                    values[fname.name.key] = len(values) + 1
+    return values
 
 
 def _stamp_statements(node, line: int) -> None:

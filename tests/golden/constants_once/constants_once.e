@@ -27,6 +27,7 @@ feature {NONE} -- Initialization
 			print ("shared: " + r1.shared_list.count.out + " " + (r1.shared_list = r2.shared_list).out + "%N")
 			print ("per object: " + r1.own_list.count.out + " " + r2.own_list.count.out + " " + (r1.own_list = r2.own_list).out + "%N")
 			print ("failing once: " + guarded_once.out + " " + guarded_once.out + "%N")
+			print ("unique: " + Red.out + " " + Green.out + " " + Blue.out + "%N")
 		end
 
 feature {NONE} -- Constants
@@ -41,6 +42,9 @@ feature {NONE} -- Constants
 	Hex: INTEGER = 0x1F
 	Negative: INTEGER = -7
 	Tiny: REAL_32 = 0.5
+	Red, Green: INTEGER = unique
+			-- Distinct values, numbered in the order the class declares them.
+	Blue: INTEGER = unique
 
 feature {NONE} -- Once routines
 

@@ -2,7 +2,7 @@
 import scoopc.runtime as rt
 from scoopc.kernel import basic as B, strings as KS, support as S, types as T
 from eiffel_base.any import ANY
-W_1 = ('CONSTANTS_ONCE', 'failing', 'tests/golden/constants_once/constants_once.e', 69)
+W_1 = ('CONSTANTS_ONCE', 'failing', 'tests/golden/constants_once/constants_once.e', 73)
 
 class CONSTANTS_ONCE(ANY):
     """Eiffel class CONSTANTS_ONCE (tests/golden/constants_once/constants_once.e)."""
@@ -29,6 +29,7 @@ class CONSTANTS_ONCE(ANY):
         self.print_(KS.s8(here, 'shared: ').plus(B.out_int(here, r1.shared_list.count)).plus(KS.s8(here, ' ')).plus(B.out_bool(here, r1.shared_list is r2.shared_list)).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'per object: ').plus(B.out_int(here, r1.own_list.count)).plus(KS.s8(here, ' ')).plus(B.out_int(here, r2.own_list.count)).plus(KS.s8(here, ' ')).plus(B.out_bool(here, r1.own_list is r2.own_list)).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'failing once: ').plus(self.guarded_once.out).plus(KS.s8(here, ' ')).plus(self.guarded_once.out).plus(KS.s8(here, '\n')))
+        self.print_(KS.s8(here, 'unique: ').plus(B.out_int(here, self.red)).plus(KS.s8(here, ' ')).plus(B.out_int(here, self.green)).plus(KS.s8(here, ' ')).plus(B.out_int(here, self.blue)).plus(KS.s8(here, '\n')))
     max = 10
     big = 5000000000
     small = 255
@@ -43,6 +44,9 @@ class CONSTANTS_ONCE(ANY):
     hex = 31
     negative = -7
     tiny = 0.5
+    red = 1
+    green = 2
+    blue = 3
     evaluations = 0
     setups = 0
 
