@@ -80,6 +80,17 @@ def _add_compile_and_run(commands) -> None:
     run_commands.add_run_options(run)
     run.set_defaults(handler=run_commands.command_run)
 
+    msg = commands.add_parser("msg", help="generate Eiffel classes for a ROS 2 message type",
+                              description="Write one Eiffel class per message type: the given ROS 2 type "
+                                          "(pkg/msg/Name, from the ROS 2 Humble type store or --file) and, "
+                                          "recursively, the message types its fields use.")
+    msg.add_argument("typename", nargs="?", metavar="TYPE", help="e.g. geometry_msgs/msg/Twist")
+    msg.add_argument("--file", metavar="MSG", help="a .msg definition of the type (needs --type)")
+    msg.add_argument("--type", metavar="TYPE", help="the type name the --file defines (pkg/msg/Name)")
+    msg.add_argument("-o", "--output", default=".", metavar="DIR", help="where to write the .e files (default: .)")
+    msg.set_defaults(handler=lambda args: __import__("scoopc.robots.eiffel_messages",
+                                                     fromlist=["command_msg"]).command_msg(args))
+
 
 def _render(found: list[diagnostics.Diagnostic], line_text, style: str) -> None:
     pretty = style == "pretty" or (style == "auto" and sys.stderr.isatty())

@@ -1,0 +1,1 @@
+"""Roboscoop: robot library support (message model, transports, simulator)."""

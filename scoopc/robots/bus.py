@@ -1,0 +1,78 @@
+"""In-process publish/subscribe bus: synchronous delivery to subscribers, in subscription order.
+
+Topic names are full names including the namespace ("/robot1/cmd_vel" or "/cmd_vel"). A message
+is whatever the publisher passes (by convention an instance of the rosbags type store's dataclass,
+scoopc.robots.messages); the bus neither copies nor converts it. `publish` runs every callback on
+the publisher's thread, in subscription order; a callback subscribed or closed during a delivery
+takes effect from the next `publish`. A callback that raises does not stop the others: the first
+exception is re-raised to the publisher once every subscriber has had the message.
+"""
+import threading
+
+
+class Subscription:
+    """A subscription to one topic; `close()` stops deliveries (idempotent)."""
+
+    def __init__(self, bus, topic, callback):
+        self.bus = bus
+        self.topic = topic
+        self.callback = callback
+        self.closed = False
+
+    def close(self):
+        if not self.closed:
+            self.closed = True
+            self.bus._remove(self)
+
+    def __repr__(self):
+        return f"<Subscription {self.topic!r}{' closed' if self.closed else ''}>"
+
+
+class Bus:
+    """Topic -> subscribers; `publish` calls each open subscriber's callback with the message."""
+
+    def __init__(self):
+        self._lock = threading.Condition(threading.Lock())
+        self._subs = {}              # [_lock] topic -> list of Subscription (subscription order)
+
+    def subscribe(self, topic, callback):
+        sub = Subscription(self, topic, callback)
+        with self._lock:
+            self._subs.setdefault(topic, []).append(sub)
+            self._lock.notify_all()
+        return sub
+
+    def _remove(self, sub):
+        with self._lock:
+            subs = self._subs.get(sub.topic, [])
+            if sub in subs:
+                subs.remove(sub)
+            if not subs:
+                self._subs.pop(sub.topic, None)
+
+    def publish(self, topic, msg):
+        with self._lock:
+            subs = tuple(self._subs.get(topic, ()))
+        error = None
+        for sub in subs:
+            if not sub.closed:
+                try:
+                    sub.callback(msg)
+                except Exception as e:         # the other subscribers still get the message
+                    error = error or e
+        if error is not None:
+            raise error
+
+    def subscriber_count(self, topic):
+        with self._lock:
+            return len(self._subs.get(topic, ()))
+
+    def topics(self):
+        """The topics that have at least one subscriber, sorted."""
+        with self._lock:
+            return sorted(self._subs)
+
+    def wait_for_subscriber(self, topic, timeout=None):
+        """Block until `topic` has a subscriber (True) or `timeout` seconds pass (False)."""
+        with self._lock:
+            return self._lock.wait_for(lambda: bool(self._subs.get(topic)), timeout)

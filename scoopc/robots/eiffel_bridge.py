@@ -1,0 +1,98 @@
+"""The one generic bridge between Eiffel objects of `scoopc msg` classes and type-store messages.
+
+`to_message(obj)` reads the Eiffel object's attributes by field name (the naming scheme of
+`eiffel_messages`) and builds the rosbags message; `from_message(msg, region)` makes the Eiffel object
+(its class must be part of the compiled program: registered in `scoopc.kernel.CLASSES`) in `region`.
+Values follow the codegen object model (/work/plan/codegen_spec.md): basic types are Python ints,
+floats and bools, STRING is a kernel string (`_s`), ARRAY [T] has `area` (a SPECIAL with `_items`),
+`lower` and `upper`.
+"""
+from __future__ import annotations
+
+import keyword
+from typing import Any
+
+import numpy as np
+
+from . import messages
+from .eiffel_messages import attribute_name, class_name, eiffel_type
+from .messages import BASE, DTYPES, NAME
+
+
+def python_name(field: str) -> str:
+    """The Python attribute of a message field in generated code (a `_` after Python keywords)."""
+    name = attribute_name(field)
+    return name + "_" if keyword.iskeyword(name) else name
+
+
+
+
+def typename_of_class(name: str, store=None) -> str:
+    """The ROS type name of a generated class (GEOMETRY_MSGS_TWIST -> geometry_msgs/msg/Twist)."""
+    store = messages.typestore() if store is None else store
+    for typename in store.fielddefs:
+        if class_name(typename) == name.split("@")[0]:
+            return typename
+    raise KeyError(f"{name} is not the class of a known ROS 2 message type")
+
+
+def _host(desc: tuple, value: Any, store) -> Any:
+    kind, detail = desc
+    if kind == BASE:
+        if detail[0] in messages.STRING_TYPES:
+            from ..kernel import strings
+            return strings.text(value)
+        return value
+    if kind == NAME:
+        return to_message(value, detail, store)
+    element = detail[0]
+    items = list(value.area._items[: value.upper - value.lower + 1]) if value is not None else []
+    converted = [_host(element, item, store) for item in items]
+    if messages.is_numeric(element):
+        return np.array(converted, dtype=DTYPES[element[1][0]])
+    return converted
+
+
+def to_message(obj: Any, typename: str | None = None, store=None) -> Any:
+    """The type-store message with the field values of an Eiffel object of a generated class."""
+    typename = typename or typename_of_class(type(obj).__name__, store)
+    values = {field: _host(desc, getattr(obj, python_name(field)), store)
+              for field, desc in messages.fields(typename, store)}
+    return messages.new(typename, store, **values)
+
+
+def _type_desc(type_name: str):
+    from ..kernel import types
+    return types.t("STRING_8" if type_name == "STRING" else type_name)
+
+
+def _eiffel(desc: tuple, value: Any, region, store) -> Any:
+    from .. import kernel
+    kind, detail = desc
+    if kind == BASE:
+        if detail[0] in messages.STRING_TYPES:
+            from ..kernel import strings
+            return strings.new_string_8(region, value)
+        if detail[0] == "bool":
+            return bool(value)
+        return float(value) if detail[0].startswith("float") else int(value)
+    if kind == NAME:
+        return from_message(value, region, store)
+    element = detail[0]
+    items = [_eiffel(element, item, region, store) for item in value]
+    generic = (_type_desc(eiffel_type(element)),)
+    special = region.new(kernel.cls("SPECIAL"))
+    special._gen_, special._items, special._cap = generic, items, len(items)
+    array = region.new(kernel.cls("ARRAY"))
+    array._gen_, array.area, array.lower, array.upper = generic, special, 1, len(items)
+    return array
+
+
+def from_message(msg: Any, region, store=None) -> Any:
+    """A new Eiffel object (in `region`) of the generated class of `msg`'s type, with its values."""
+    from .. import kernel
+    typename = messages.typename_of(msg)
+    obj = region.new(kernel.cls(class_name(typename)))
+    for field, desc in messages.fields(typename, store):
+        setattr(obj, python_name(field), _eiffel(desc, getattr(msg, field), region, store))
+    return obj

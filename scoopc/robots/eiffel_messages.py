@@ -1,0 +1,170 @@
+"""`scoopc msg`: Eiffel classes for ROS 2 message types (from rosbags' type store or a .msg file).
+
+Naming scheme (documented in docs/ROBOTS.md, "ROS 2 messages"):
+* class: package and message name in upper case, CamelCase split at lower-to-upper changes:
+  geometry_msgs/msg/Twist -> GEOMETRY_MSGS_TWIST, sensor_msgs/msg/LaserScan -> SENSOR_MSGS_LASER_SCAN;
+  file: the class name in lower case + ".e";
+* attributes: the field names; an Eiffel keyword or a feature name of ANY (or of the generated class
+  itself: make, ros_type) gets `_value` appended (`class` -> `class_value`);
+* constants: `Ros_type: STRING` (the ROS type name) and the message's constants, first letter
+  upper case (`Status_no_fix: INTEGER_8 = -1`); a constant clashing with an attribute gets `_constant`;
+* `make` gives ROS 2 default values; `set_<attribute> (a_value)` per field.
+"""
+from __future__ import annotations
+
+import os
+import re
+
+from . import messages
+from .messages import ARRAY, BASE, NAME
+
+BASIC = {"bool": "BOOLEAN", "byte": "INTEGER_8", "char": "NATURAL_8", "int8": "INTEGER_8",
+         "uint8": "NATURAL_8", "int16": "INTEGER_16", "uint16": "NATURAL_16", "int32": "INTEGER_32",
+         "uint32": "NATURAL_32", "int64": "INTEGER_64", "uint64": "NATURAL_64", "float32": "REAL_32",
+         "float64": "REAL_64", "string": "STRING", "wstring": "STRING"}
+DEFAULTS = {"BOOLEAN": "False", "REAL_32": "{REAL_32} 0.0", "REAL_64": "0.0"}
+KEYWORDS = set("""across agent alias all and as assign attached attribute check class convert create current
+debug deferred detachable do else elseif end ensure expanded export external false feature from frozen if
+implies inherit inspect invariant like local loop not note obsolete old once only or precursor redefine
+rename require rescue result retry select separate some then true tuple undefine until variant void when
+xor""".split())
+ANY_FEATURES = set("""generator generating_type conforms_to same_type consistent is_equal standard_is_equal
+equal standard_equal deep_equal is_deep_equal copy standard_copy twin standard_twin deep_twin deep_copy
+setup default default_pointer default_create default_rescue do_nothing out tagged_out print io
+operating_environment frozen_type conforms_to""".split())
+RESERVED = KEYWORDS | ANY_FEATURES | {"make", "ros_type", "i"}
+
+
+def class_name(typename: str) -> str:
+    """geometry_msgs/msg/LaserScan -> GEOMETRY_MSGS_LASER_SCAN."""
+    package, _, name = typename.split("/")
+    words = re.sub(r"(?<=[a-z0-9])(?=[A-Z])", "_", name)
+    return f"{package}_{words}".upper()
+
+
+def attribute_name(field: str) -> str:
+    return f"{field}_value" if field.lower() in RESERVED else field.lower()
+
+
+def _constant_name(name: str, taken: set[str]) -> str:
+    lower = name.lower()
+    if lower in RESERVED or lower in taken:
+        lower += "_constant"
+    return lower[0].upper() + lower[1:]
+
+
+def eiffel_type(desc: tuple) -> str:
+    kind, detail = desc
+    if kind == BASE:
+        return BASIC[detail[0]]
+    if kind == NAME:
+        return class_name(detail)
+    return f"ARRAY [{eiffel_type(detail[0])}]"
+
+
+def _default(type_: str) -> str:
+    if type_ in DEFAULTS:
+        return DEFAULTS[type_]
+    if type_.startswith(("INTEGER", "NATURAL")):
+        return f"{{{type_}}} 0"
+    return f"create {{{type_}}}.make" if type_ != "STRING" else 'create {STRING}.make_empty'
+
+
+def _manifest(base: str, value) -> str | None:
+    type_ = BASIC.get(base)
+    if type_ == "BOOLEAN":
+        return "True" if value else "False"
+    if type_ == "STRING":
+        return '"' + str(value).replace("%", "%%").replace('"', '%"') + '"'
+    if type_ in ("REAL_32", "REAL_64"):
+        text = repr(float(value))
+        return text if "inf" not in text and "nan" not in text else None
+    return str(int(value)) if type_ else None
+
+
+def generate_class(typename: str, store=None) -> str:
+    """The text of the Eiffel class for one message type."""
+    name = class_name(typename)
+    fields = [(attribute_name(f), desc) for f, desc in messages.fields(typename, store)]
+    attrs = {a for a, _ in fields}
+    body_make, needs_index = [], False
+    for attr, desc in fields:
+        type_ = eiffel_type(desc)
+        if desc[0] == BASE:
+            if type_ == "STRING":
+                body_make.append(f"\t\t\tcreate {attr}.make_empty")
+        elif desc[0] == NAME:
+            body_make.append(f"\t\t\tcreate {attr}.make")
+        else:
+            element = eiffel_type(desc[1][0])
+            if desc[0] == ARRAY:
+                size = desc[1][1]
+                body_make.append(f"\t\t\tcreate {attr}.make_filled ({_default(element)}, 1, {size})")
+                if desc[1][0][0] == NAME or element == "STRING":
+                    needs_index = True
+                    body_make.append(f"\t\t\tfrom i := 1 until i > {size} loop\n"
+                                     f"\t\t\t\t{attr}.put ({_default(element)}, i)\n"
+                                     f"\t\t\t\ti := i + 1\n\t\t\tend")
+            else:
+                body_make.append(f"\t\t\tcreate {attr}.make_empty")
+    lines = ["note", f'\tdescription: "ROS 2 message {typename} (generated by `scoopc msg`)."',
+             f'\tros_type: "{typename}"', "", "class", f"\t{name}", "", "create", "\tmake", "",
+             "feature {NONE} -- Initialization", "", "\tmake", "\t\t\t-- ROS 2 default values."]
+    if needs_index:
+        lines += ["\t\tlocal", "\t\t\ti: INTEGER"]
+    lines += ["\t\tdo"] + (body_make or ["\t\t\t-- nothing to create"]) + ["\t\tend", "",
+                                                                          "feature -- Constants", "",
+                                                                          f'\tRos_type: STRING = "{typename}"',
+                                                                          "\t\t\t-- The ROS 2 type name."]
+    for const, base, value in messages.constants(typename, store):
+        manifest = _manifest(base, value)
+        if manifest is not None:
+            lines += ["", f"\t{_constant_name(const, attrs)}: {BASIC[base]} = {manifest}"]
+    lines += ["", "feature -- Access"]
+    for (attr, desc), (field, _) in zip(fields, messages.fields(typename, store)):
+        lines += ["", f"\t{attr}: {eiffel_type(desc)}", f"\t\t\t-- Field `{field}'."]
+    lines += ["", "feature -- Element change"]
+    for attr, desc in fields:
+        lines += ["", f"\tset_{attr} (a_value: {eiffel_type(desc)})", f"\t\t\t-- Set `{attr}' to `a_value'.",
+                  "\t\tdo", f"\t\t\t{attr} := a_value", "\t\tensure", f"\t\t\t{attr}_set: {attr} = a_value",
+                  "\t\tend"]
+    return "\n".join(lines + ["", "end", ""])
+
+
+def generate(typename: str, output: str, store=None) -> list[str]:
+    """Write the classes of `typename` and of every message type it uses into `output`; the paths."""
+    os.makedirs(output, exist_ok=True)
+    written = []
+    for each in messages.nested_types(typename, store):
+        path = os.path.join(output, class_name(each).lower() + ".e")
+        with open(path, "w", encoding="utf-8") as out:
+            out.write(generate_class(each, store))
+        written.append(path)
+    return written
+
+
+def command_msg(args) -> int:
+    """`scoopc msg TYPE [-o DIR]` / `scoopc msg --file X.msg --type pkg/msg/X [-o DIR]`."""
+    from ..project import UsageError
+
+    store = None
+    typename = args.type or args.typename
+    if not typename:
+        raise UsageError("`scoopc msg` needs a type name (pkg/msg/Name), or --file with --type")
+    if not re.fullmatch(r"\w+/msg/\w+", typename):
+        raise UsageError(f"`{typename}` is not a ROS 2 message type name (pkg/msg/Name)")
+    if args.file:
+        try:
+            with open(args.file, encoding="utf-8") as source:
+                text = source.read()
+        except OSError as problem:
+            raise UsageError(f"cannot read {args.file}: {problem.strerror}") from None
+        try:
+            store = messages.store_with({typename: text})
+        except Exception as problem:  # rosbags' parser errors
+            raise UsageError(f"{args.file}: not a valid .msg definition: {problem}") from None
+    if not messages.has_type(typename, store):
+        raise UsageError(f"unknown ROS 2 message type `{typename}` (give its definition with --file)")
+    for path in generate(typename, args.output, store):
+        print(path)
+    return 0
