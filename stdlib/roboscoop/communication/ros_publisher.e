@@ -1,0 +1,78 @@
+note
+	description: "[
+		Publishes messages on one topic of the robot's transport. The message is built from
+		plain values on the Python side (rosbags' ROS 2 types); Eiffel code never sees it.
+	]"
+
+class
+	ROS_PUBLISHER
+
+create
+	make, make_stamped
+
+feature {NONE} -- Initialization
+
+	make (a_topic: separate STRING)
+			-- Publisher on `a_topic' (a full name: "/cmd_vel", "/robot1/cmd_vel").
+		do
+			create topic.make_from_separate (a_topic)
+		ensure
+			not_stamped: not is_stamped
+		end
+
+	make_stamped (a_topic: separate STRING)
+			-- Publisher on `a_topic' whose velocity commands are TwistStamped.
+		do
+			make (a_topic)
+			is_stamped := True
+		ensure
+			stamped: is_stamped
+		end
+
+feature -- Access
+
+	topic: STRING
+			-- Full topic name.
+
+	is_stamped: BOOLEAN
+			-- Are velocity commands sent as geometry_msgs/TwistStamped?
+
+	published_count: INTEGER
+			-- Messages published so far.
+
+feature -- Basic operations
+
+	publish_velocity (a_linear, a_angular: REAL_64)
+			-- Publish a geometry_msgs/Twist (or TwistStamped) with linear.x = `a_linear'
+			-- and angular.z = `a_angular'.
+		do
+			publish_twist (a_linear, a_angular)
+			published_count := published_count + 1
+		ensure
+			counted: published_count = old published_count + 1
+		end
+
+	publish_real (a_value: REAL_64)
+			-- Publish a std_msgs/Float64.
+		do
+			publish_float64 (a_value)
+			published_count := published_count + 1
+		ensure
+			counted: published_count = old published_count + 1
+		end
+
+feature {NONE} -- Transport
+
+	publish_twist (a_linear_x, a_angular_z: REAL_64)
+			-- Put the Twist on the transport.
+		external
+			"Python"
+		end
+
+	publish_float64 (a_value: REAL_64)
+			-- Put the Float64 on the transport.
+		external
+			"Python"
+		end
+
+end

@@ -1,0 +1,66 @@
+note
+	description: "[
+		Subscribes to one topic of the robot's transport on behalf of a listener in the same
+		region. Each incoming message becomes an asynchronous call of the listener's
+		`on_...' routine on the listener's processor, with plain values; messages are
+		coalesced: a slow listener gets the newest one, no queue grows.
+	]"
+
+class
+	ROS_SUBSCRIBER
+
+create
+	make
+
+feature {NONE} -- Initialization
+
+	make (a_topic: separate STRING)
+			-- Subscriber on `a_topic' (a full name: "/odom", "/robot1/odom").
+		do
+			create topic.make_from_separate (a_topic)
+		end
+
+feature -- Access
+
+	topic: STRING
+			-- Full topic name.
+
+	received_count: INTEGER
+			-- Messages seen on the transport so far.
+		external
+			"Python"
+		end
+
+	logged_count: INTEGER
+			-- Calls logged on listeners so far (at most one per message; fewer when coalesced).
+		external
+			"Python"
+		end
+
+feature -- Basic operations
+
+	listen_odometry (a_listener: ODOMETRY_LISTENER)
+			-- Deliver nav_msgs/Odometry messages to `a_listener'.
+		external
+			"Python"
+		end
+
+	listen_range (a_listener: RANGE_LISTENER; a_sensor: INTEGER)
+			-- Deliver sensor_msgs/Range messages to `a_listener' as readings of `a_sensor'.
+		external
+			"Python"
+		end
+
+	listen_battery (a_listener: BATTERY_LISTENER)
+			-- Deliver sensor_msgs/BatteryState messages to `a_listener'.
+		external
+			"Python"
+		end
+
+	close
+			-- Stop every delivery of this subscriber.
+		external
+			"Python"
+		end
+
+end
