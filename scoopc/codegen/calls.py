@@ -248,13 +248,11 @@ class Calls:
         feature = self.tables.features.get(call_node)
         items = [self.argument(a) for a in call_node.arguments]
         operands = P.call("S.new_tuple", [P.name("here"), P.lst(items), P.tup([])])
-        ty = self.tables.types.get(call_node)
         name = self.py_name(feature)
         if (self.agent_type_of(node) or Ty("X")).separate:
             helper = "S.squery" if feature.is_query else "S.scall"
             extra = [self.where(call_node)] if feature.is_query else []
             return P.call(helper, [P.name("here"), agent, P.const(name), P.tup([operands]), P.const(True)] + extra)
-        del ty
         return P.call(P.attr(agent, name), [operands])
 
     def agent_type_of(self, node):
