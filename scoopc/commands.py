@@ -35,6 +35,47 @@ def add_run_options(command: argparse.ArgumentParser) -> None:
                          help="run `sleep` and timers on a virtual clock that jumps ahead when every "
                               "processor waits (fast runs of programs that sleep)")
     command.add_argument("--no-cache", action="store_true", help="compile again even if cached")
+    robot = command.add_argument_group(
+        "robots", "A program that uses Roboscoop (stdlib/roboscoop) runs on the in-process simulator unless "
+                  "`--robot ros2` is given (docs/ROBOTS.md).")
+    robot.add_argument("--robot", choices=("sim", "ros2", "none"), default=None,
+                       help="sim: the built-in simulator (default for Roboscoop programs); ros2: a ROS 2 robot "
+                            "(rclpy when installed, else DDS with cyclonedds; SCOOPC_ROS2_BACKEND forces one); "
+                            "none: no robot transport")
+    robot.add_argument("--world", metavar="WORLD.yaml",
+                       help="the simulator's world (default: world.yaml beside the program, else a built-in "
+                            "5 x 5 m arena with one Thymio)")
+    robot.add_argument("--namespace", metavar="NS",
+                       help="the robot's namespace: which robot of the world is the program's (default: the "
+                            "first), or the prefix of a ROS 2 robot's topics (default: none)")
+    robot.add_argument("--realtime", action="store_true",
+                       help="pace the simulator to the wall clock (default: simulated time as fast as possible)")
+    robot.add_argument("--duration", type=_non_negative, metavar="SECONDS",
+                       help="simulated seconds to run (default: the world's duration)")
+    robot.add_argument("--goal", type=_point, metavar="X,Y", help="the goal the program is told (default: the world's)")
+    robot.add_argument("--png", metavar="FILE", help="where to draw the trajectory (default: <program>.png)")
+    robot.add_argument("--no-png", action="store_true", help="draw no trajectory")
+    robot.add_argument("--gif", metavar="FILE", help="also write an animation of the run")
+    robot.add_argument("--record", metavar="FILE.mcap",
+                       help="record every topic of the run in an MCAP file (ROS 2 schemas; opens in Foxglove)")
+
+
+def _non_negative(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
+    if value < 0 or value != value:
+        raise argparse.ArgumentTypeError(f"a duration must not be negative: {text!r}")
+    return value
+
+
+def _point(text: str) -> tuple:
+    try:
+        x, y = (float(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"a point is X,Y (metres), not {text!r}") from None
+    return (x, y)
 
 
 class Root:
@@ -130,6 +171,16 @@ def command_compile(args) -> int:
 
 
 def command_run(args, program_args: list[str]) -> int:
+    compiled = compiled_program(args)
+    if isinstance(compiled, int):
+        return compiled
+    folder, meta = compiled
+    outcome = run_compiled(folder, meta, program_args, args)
+    return outcome if isinstance(outcome, int) else outcome.status
+
+
+def compiled_program(args):
+    """(folder, meta) of the program's compilation (cached by content), or an exit status."""
     from . import build
 
     if not args.paths:
@@ -152,12 +203,56 @@ def command_run(args, program_args: list[str]) -> int:
         compiled = build.compile_program(checked, staging, "program", root.key, root.creator,
                                          _assertions(args, project), progress=_progress())
         meta = {"root": root.key, "creator": root.creator, "base": str(compiled.base_path),
-                "shadowed": checked.semantics.universe.shadowed}
+                "shadowed": checked.semantics.universe.shadowed,
+                "roboscoop": uses_roboscoop(project.files)}
         (staging / "program.json").write_text(json.dumps(meta))
         if folder.exists():
             shutil.rmtree(folder)
         staging.rename(folder)
-    return run_compiled(folder, meta, program_args, args)
+    return folder, meta
+
+
+def uses_roboscoop(files) -> bool:
+    """Does a user class name a class of stdlib/roboscoop? (Comments do not count.)"""
+    import re
+
+    from .semantics.universe import stdlib_root
+
+    library = stdlib_root()
+    names = {p.stem.upper() for p in (library / "roboscoop").rglob("*.e")}
+    for name in files:
+        path = Path(name).resolve()
+        if library in path.parents:
+            continue
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        code = re.sub(r"--[^\n]*", "", text)
+        if names.intersection(re.findall(r"\b[A-Z][A-Z0-9_]*\b", code)):
+            return True
+    return False
+
+
+def run_program(paths: list[str], program_args: list[str], **robot_options):
+    """`scoopc run PATHS` from Python (tests and tools): the RunResult of a robot run, or the exit
+    status. `robot_options` are the robot arguments of `scoopc run` (robot=, world=, duration=, ...),
+    plus stdout= and stderr=; `world` may also be a dict or a World."""
+    from .cli import build_parser
+
+    args = build_parser().parse_args(["run", *paths])
+    streams = {k: robot_options.pop(k, None) for k in ("stdout", "stderr")}
+    for name, value in robot_options.items():
+        if not hasattr(args, name):
+            raise TypeError(f"unknown run option {name!r}")
+        if value is not None:
+            setattr(args, name, value)
+    args.no_png = not robot_options.get("png")
+    compiled = compiled_program(args)
+    if isinstance(compiled, int):
+        return compiled
+    folder, meta = compiled
+    return run_compiled(folder, meta, program_args, args, **streams)
 
 
 def _progress():
@@ -172,10 +267,11 @@ def _read_meta(path: Path):
         meta = json.loads(path.read_text())
     except (OSError, ValueError):
         return None
-    return meta if Path(meta["base"]).exists() else None
+    return meta if "roboscoop" in meta and Path(meta["base"]).exists() else None
 
 
-def run_compiled(folder: Path, meta: dict, program_args: list[str], args) -> int:
+def run_compiled(folder: Path, meta: dict, program_args: list[str], args, stdout=None, stderr=None):
+    """Run a compiled program: its exit status, or the RunResult of a run with a robot."""
     from . import build
     from .codegen.names import class_name, module_name
     from .kernel import launcher
@@ -190,9 +286,20 @@ def run_compiled(folder: Path, meta: dict, program_args: list[str], args) -> int
     root_cls = getattr(module, class_name(meta["root"]))
     argv = [meta["root"].lower()] + list(program_args)
     sys.stdout.flush()
-    status = launcher.main(root_cls, meta["creator"], argv, shadowed=meta.get("shadowed"),
-                           trace_processors=args.trace_processors, strict=args.strict,
-                           virtual_clock=args.virtual_clock, debug=args.debug)
+    robot = getattr(args, "robot", None) or ("sim" if meta.get("roboscoop") else "none")
+
+    def launch(on_start=None, virtual_clock=args.virtual_clock):
+        return launcher.main(root_cls, meta["creator"], argv, shadowed=meta.get("shadowed"),
+                             trace_processors=args.trace_processors, strict=args.strict,
+                             virtual_clock=virtual_clock, debug=args.debug, on_start=on_start,
+                             stdout=stdout, stderr=stderr)
+
+    if robot == "none":
+        status = launch()
+    else:
+        from .robots import runner
+
+        status = runner.run(robot, launch, args, meta, stderr=stderr)
     _quiet_if_reader_gone()
     return status
 

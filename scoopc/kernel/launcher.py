@@ -20,7 +20,7 @@ _LINE_MAPS: dict = {}
 
 
 def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, strict=False,
-         virtual_clock=False, debug=False, stdout=None, stderr=None) -> int:
+         virtual_clock=False, debug=False, stdout=None, stderr=None, on_start=None) -> int:
     from .. import runtime as rt
     from .ext import arguments
 
@@ -44,7 +44,7 @@ def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, st
     try:
         return rt.run_main(root_cls, routine, (), describe=describe, trace_processors=trace_processors,
                            strict=strict, virtual_clock=virtual_clock, stdout=stdout or sys.stdout,
-                           stderr=stderr)
+                           stderr=stderr, on_start=on_start)
     finally:
         restore()
 

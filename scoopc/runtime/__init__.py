@@ -19,13 +19,14 @@ def now_ns():
     return current().clock.now_ns()
 
 
-def call_later(delay_ns, target, routine, args=(), period_ns=None):
+def call_later(delay_ns, target, routine, args=(), period_ns=None, phase=1):
     """Log `routine(target, *args)` on target's processor after `delay_ns` (then every
-    `period_ns`); returns a Timer with `cancel()`."""
+    `period_ns`); returns a Timer with `cancel()`. `phase=0`: on the virtual clock, fire before
+    the sleepers and timers due at the same instant (a simulator's step)."""
     from .clock import Timer
     rt = current()
     src = _timer_source(rt)
-    return rt.clock.add_timer(Timer(delay_ns, target, routine, args, period_ns, src))
+    return rt.clock.add_timer(Timer(delay_ns, target, routine, args, period_ns, src, phase))
 
 
 def _timer_source(rt):

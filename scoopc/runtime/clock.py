@@ -1,6 +1,11 @@
 """The runtime clock behind `sleep` and timers: real (monotonic) by default, or virtual,
 jumping to the next deadline when every thread running processor code waits.
 
+With the virtual clock, deadlines that fall on the same instant are served in phases: timers of
+phase 0 (a simulator's step) fire first, and sleepers and ordinary timers (phase 1) wake only once
+everything the first ones caused is over. A controller waking at the instant of a simulator step
+therefore always sees that step's sensor data.
+
 Timers fire on the clock thread (owned and joined by the runtime), which logs the timer's
 command on its target processor like an outside client would.
 """
@@ -13,10 +18,11 @@ from .sched import Block
 
 
 class Timer:
-    __slots__ = ("deadline", "target", "routine", "args", "period", "cancelled", "source")
+    __slots__ = ("deadline", "target", "routine", "args", "period", "cancelled", "source", "phase")
 
-    def __init__(self, deadline, target, routine, args, period, source):
+    def __init__(self, deadline, target, routine, args, period, source, phase=1):
         self.deadline = deadline
+        self.phase = phase
         self.target, self.routine, self.args = target, routine, args
         self.period = period
         self.cancelled = False   # [rt.glock]
@@ -36,7 +42,7 @@ class Clock:
         self.rt = rt
         self.virtual = virtual
         self.vnow = 0                 # [g] virtual time, ns
-        self.heap = []                # [g] (deadline, seq, Timer or Block)
+        self.heap = []                # [g] (deadline, phase, seq, Timer or Block)
         self.seq = itertools.count()  # [g]
         self.due = []                 # [g] timers handed to the clock thread
         self.cv = threading.Condition(rt.glock)
@@ -57,7 +63,7 @@ class Clock:
             deadline = (self.vnow if self.virtual else time.monotonic_ns()) + max(ns, 0)
             blk = Block("sleep", proc, None, where, lk, deadline)
             if self.virtual:
-                heapq.heappush(self.heap, (deadline, next(self.seq), blk))
+                heapq.heappush(self.heap, (deadline, 1, next(self.seq), blk))
         rt.block(proc.exec, blk)
 
     def real_wait(self, blk):
@@ -72,7 +78,7 @@ class Clock:
         start = None
         with rt.glock:
             timer.deadline += self.vnow if self.virtual else time.monotonic_ns()
-            heapq.heappush(self.heap, (timer.deadline, next(self.seq), timer))
+            heapq.heappush(self.heap, (timer.deadline, timer.phase, next(self.seq), timer))
             if self.thread is None and not self.stopped:
                 start = self.thread = threading.Thread(target=self._run, name="scoop-clock",
                                                        daemon=True)
@@ -83,18 +89,20 @@ class Clock:
 
     def pending_locked(self):
         """[g] Is a timer still to fire (keeps the program alive)?"""
-        return bool(self.due) or any(isinstance(e[2], Timer) and not e[2].cancelled
+        return bool(self.due) or any(isinstance(e[-1], Timer) and not e[-1].cancelled
                                      for e in self.heap)
 
     def advance_locked(self):
-        """[g] Virtual clock, every processor thread waiting: jump to the next deadline."""
-        while self.heap and getattr(self.heap[0][2], "cancelled", False):
+        """[g] Virtual clock, every processor thread waiting: jump to the next deadline and
+        serve its first phase."""
+        while self.heap and getattr(self.heap[0][-1], "cancelled", False):
             heapq.heappop(self.heap)
         if not self.heap or self.due:
             return
         now = self.vnow = max(self.vnow, self.heap[0][0])
-        while self.heap and self.heap[0][0] <= now:
-            item = heapq.heappop(self.heap)[2]
+        phase = self.heap[0][1]
+        while self.heap and self.heap[0][0] <= now and self.heap[0][1] == phase:
+            item = heapq.heappop(self.heap)[-1]
             if isinstance(item, Timer):
                 if not item.cancelled:
                     self.due.append(item)
@@ -128,7 +136,7 @@ class Clock:
 
     def _collect_real(self):
         """[g] Real clock: wait for the earliest timer and move the due ones to `due`."""
-        while self.heap and self.heap[0][2].cancelled:
+        while self.heap and self.heap[0][-1].cancelled:
             heapq.heappop(self.heap)
         if not self.heap:
             self.cv.wait()
@@ -137,7 +145,7 @@ class Clock:
         if left > 0:
             self.cv.wait(left / 1e9)
             return
-        t = heapq.heappop(self.heap)[2]
+        t = heapq.heappop(self.heap)[-1]
         self.due.append(t)
 
     def _fire(self, t):
@@ -151,7 +159,7 @@ class Clock:
             with self.rt.glock:
                 if not t.cancelled:
                     t.deadline += t.period
-                    heapq.heappush(self.heap, (t.deadline, next(self.seq), t))
+                    heapq.heappush(self.heap, (t.deadline, t.phase, next(self.seq), t))
 
     def stop(self):
         with self.rt.glock:

@@ -65,15 +65,18 @@ def finish(rt, root, interrupted=False):
     return status
 
 
-def run_main(root_cls, creator, args=(), describe=None, **options):
+def run_main(root_cls, creator, args=(), describe=None, on_start=None, **options):
     """Run a program: `creator(root_object, *args)` on the root processor. Exit status.
     `describe(exception, processor)`: the text reporting an uncaught exception (default: the
-    exception and the processor's innermost frame)."""
+    exception and the processor's innermost frame). `on_start(rt)`: called on the root's thread
+    once the runtime exists, before the root object is created (to attach a simulator, say)."""
     rt, root = start(**options)
     rt.describe = describe
     restore = _install_dump_signal(rt)
     interrupted = False
     try:
+        if on_start is not None:
+            on_start(rt)
         obj = root.new(root_cls)
         root.name = root_cls.__name__
         if creator is not None:

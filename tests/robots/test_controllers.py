@@ -21,7 +21,7 @@ def bus():
 
 
 def run(capsys, name):
-    code = cli.main(["run", str(PROGRAMS / name), "--virtual-clock"])
+    code = cli.main(["run", str(PROGRAMS / name), "--virtual-clock", "--robot", "none"])
     out, err = capsys.readouterr()
     return code, out, err
 

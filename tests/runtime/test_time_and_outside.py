@@ -104,3 +104,35 @@ def test_outside_client_logs_in_order_without_blocking(h):
     src.close()
     assert h.finish() == 0
     assert c.log == list(range(1000))
+
+
+class Stepper:
+    """Like a simulator's step: hands data to another processor through an outside client."""
+
+    def make(self, sink):
+        self.sink = sink
+        self.source = rt.outside_client("stepper")
+
+    def step(self):
+        import time
+        time.sleep(0.05)                   # real time: a sleeper woken too early would get ahead
+        self.source.call(self.sink, Cell.add, ("data",))
+
+
+def test_phase_zero_timers_settle_before_sleepers_wake(harness):
+    """With the virtual clock, what a phase-0 timer causes (here: a command it logs elsewhere)
+    is over before a sleeper due at the same instant wakes."""
+    h = harness(virtual_clock=True)
+    root = h.root
+    sink = root.new_separate(Cell, Cell.make)
+    stepper = root.new_separate(Stepper, Stepper.make, (sink,))
+    timer = rt.call_later(SECOND, stepper, Stepper.step, period_ns=SECOND, phase=0)
+    seen = []
+    for _ in range(3):
+        root.sleep(SECOND)
+        with root.reserve((sink,)):
+            seen.append((rt.now_ns(), root.query(sink, Cell.items)))
+    timer.cancel()
+    stepper.source.close()
+    assert h.finish() == 0
+    assert seen == [(k * SECOND, ["data"] * k) for k in (1, 2, 3)]

@@ -1,0 +1,87 @@
+"""ROBOT_ENVIRONMENT's `external "Python"` features (stdlib/roboscoop/util/robot_environment.e):
+the settings `scoopc run` gave this run (scoopc.robots.runner.SETTINGS)."""
+from scoopc.robots import runner
+
+
+def _settings():
+    return runner.SETTINGS
+
+
+def _namespaces():
+    return _settings().namespaces or [""]
+
+
+def namespace_of(current, i):
+    from scoopc.kernel import strings
+    return strings.new_string_8(current._region_, _namespaces()[i - 1])
+
+
+def robot_count(current):
+    return len(_namespaces())
+
+
+def main_robot(current):
+    return _settings().main + 1
+
+
+def _limit(i, which):
+    limits = _settings().limits
+    return float(limits[i - 1][which]) if i - 1 < len(limits) else runner.ROS2_LIMITS[which]
+
+
+def max_linear_of(current, i):
+    return _limit(i, 0)
+
+
+def max_angular_of(current, i):
+    return _limit(i, 1)
+
+
+def _goal(k):
+    goal = _settings().goal
+    return float(goal[k]) if goal is not None else 0.0
+
+
+def goal_x(current):
+    return _goal(0)
+
+
+def goal_y(current):
+    return _goal(1)
+
+
+def _station(k):
+    station = _settings().station
+    return float(station[k]) if station is not None else 0.0
+
+
+def station_x(current):
+    return _station(0)
+
+
+def station_y(current):
+    return _station(1)
+
+
+def station_radius(current):
+    return _station(2)
+
+
+def duration(current):
+    return float(_settings().duration)
+
+
+def is_simulated(current):
+    return _settings().mode == "sim"
+
+
+def is_ros2(current):
+    return _settings().mode == "ros2"
+
+
+def has_goal(current):
+    return _settings().goal is not None
+
+
+def has_charging_station(current):
+    return _settings().station is not None

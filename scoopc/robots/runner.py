@@ -1,0 +1,403 @@
+"""Running a compiled program against a robot: the in-process simulator (the default for programs
+that use Roboscoop) or a ROS 2 robot (`--robot ros2`).
+
+On the simulator, the world steps on the runtime's clock: a dedicated processor (SIMULATOR) gets
+a periodic timer of one world step. With the virtual clock (the default) simulated time jumps to
+the next step only when every processor waits, so a program's reaction to the sensor messages of
+one step is over before the next step; `realtime` paces the steps to the wall clock instead. The
+run ends at the world's duration (the program is stopped) or as soon as the program is over:
+every processor idle and no timer pending but the simulator's.
+
+Safety: whatever ends the run (normal end, uncaught exception, deadlock, Ctrl-C, the duration),
+every cmd_vel topic the program published on gets a zero velocity before the run returns.
+"""
+from __future__ import annotations
+
+import math
+import sys
+import threading
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from . import transport
+
+DEFAULT_WORLD = {
+    "name": "arena",
+    "size": [5.0, 5.0],
+    "duration": 120,
+    "goal": [4.3, 4.3],
+    "charging_station": {"position": [0.5, 4.5], "radius": 0.25},
+    "boxes": [{"center": [2.5, 2.5], "size": [0.6, 0.6]}],
+    "robots": [{"name": "robot1", "kind": "thymio", "start": [0.6, 0.6, 0.0]}],
+}
+
+_TWISTS = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
+
+
+class RobotError(Exception):
+    """A robot run that cannot start (bad world, unknown namespace, no ROS 2 transport)."""
+
+
+@dataclass
+class RobotSettings:
+    """What ROBOT_ENVIRONMENT tells the program (stdlib/roboscoop/util/robot_environment.e)."""
+    mode: str = "none"                  # "none", "sim" or "ros2"
+    namespaces: list = field(default_factory=list)     # topic prefixes: "/robot1" or ""
+    limits: list = field(default_factory=list)         # (max_linear, max_angular) per robot
+    main: int = 0                       # index of "the" robot (`namespace`)
+    goal: tuple | None = None
+    station: tuple | None = None        # (x, y, radius)
+    duration: float = -1.0
+
+
+SETTINGS = RobotSettings()
+ROS2_LIMITS = (0.2, 1.0)                # speed limits reported for a ROS 2 robot (m/s, rad/s)
+
+
+class SafetyBus:
+    """The program's view of a bus: remembers the topics velocity commands went to, so that the
+    robot can be stopped whatever ends the run. Everything else goes to the bus it wraps."""
+
+    def __init__(self, bus):
+        self.bus = bus
+        self.command_topics = {}        # topic -> stamped?
+        self._lock = threading.Lock()
+
+    def publish(self, topic, msg):
+        typename = getattr(type(msg), "__msgtype__", "")
+        if typename in _TWISTS:
+            with self._lock:
+                self.command_topics[topic] = typename == _TWISTS[1]
+        return self.bus.publish(topic, msg)
+
+    def __getattr__(self, name):
+        return getattr(self.bus, name)
+
+    def stop_robots(self):
+        """A zero velocity on every cmd_vel topic used (Twist or TwistStamped as the program sent)."""
+        from scoopc.kernel.ext.ros_publisher import twist, twist_stamped
+        with self._lock:
+            topics = dict(self.command_topics)
+        for topic, stamped in topics.items():
+            try:
+                self.bus.publish(topic, twist_stamped(0.0, 0.0) if stamped else twist(0.0, 0.0))
+            except Exception as e:                     # noqa: BLE001 - keep stopping the others
+                print(f"scoopc: could not stop the robot on {topic}: {e}", file=sys.stderr)
+        return sorted(topics)
+
+
+# ---- the simulator on the runtime's clock ------------------------------------------------------
+
+class _Driver:
+    """Lives on the SIMULATOR processor; its periodic timer steps the world."""
+
+
+class SimDriver:
+    def __init__(self, sim, duration, progress=None):
+        self.sim = sim
+        self.end_ns = int(round(duration * 1e9)) if duration is not None and duration >= 0 else None
+        self.progress = progress
+        self.stopped_by = None          # "duration" or "program", once the simulation is over
+        self.timer = None
+        self.rt = None
+        self._next_report = 0.0
+        self._wall0 = time.monotonic()
+
+    def attach(self, rt):
+        """Called on the root's thread once the runtime exists, before the root is created."""
+        import scoopc.runtime as srt
+        self.rt = rt
+        proc = srt.Processor(rt, False, "SIMULATOR")
+        self.holder = proc.new(_Driver)
+        self.holder.driver = self
+        dt = self.sim.dt_ns
+        self.timer = srt.call_later(dt, self.holder, _tick, period_ns=dt, phase=0)
+
+    def tick(self):
+        if self.stopped_by is not None:
+            return
+        if self.end_ns is not None and self.sim.time_ns >= self.end_ns:
+            self._finish("duration")
+        elif self._program_over():
+            self._finish("program")
+        else:
+            self.sim.step()
+            if self.progress is not None:
+                self._report()
+
+    def _program_over(self):
+        """Is every processor but SIMULATOR idle, with no timer pending but ours?"""
+        from scoopc.runtime.clock import Timer
+        rt = self.rt
+        with rt.glock:
+            if rt.n_running != 1 or rt.runnable or rt.clock.due:
+                return False
+            return not any(isinstance(e[-1], Timer) and e[-1] is not self.timer and not e[-1].cancelled
+                           for e in rt.clock.heap)
+
+    def _finish(self, reason):
+        self.stopped_by = reason
+        self.timer.cancel()
+        if reason == "duration":
+            self.rt.stop()
+
+    def _report(self):
+        wall = time.monotonic() - self._wall0
+        if wall < self._next_report:
+            return
+        self._next_report = wall + 1.0
+        end = f" of {self.end_ns / 1e9:.0f}" if self.end_ns is not None else ""
+        self.progress(f"simulated {self.sim.time:.1f} s{end} ({wall:.0f} s)")
+
+
+def _tick(holder):
+    holder.driver.tick()
+
+
+# ---- choosing the world and the settings -------------------------------------------------------
+
+def find_world(program_paths, world=None):
+    """The world to simulate: `world` (path, dict or World), else world.yaml beside the program,
+    else the built-in arena. Returns (World, where it came from)."""
+    from .sim.world import World, WorldError
+    if isinstance(world, World):
+        return world, world.name
+    if isinstance(world, dict):
+        return _load(lambda: World.from_dict(world), "the given world"), "the given world"
+    if world is None:
+        for p in program_paths or ():
+            folder = Path(p) if Path(p).is_dir() else Path(p).parent
+            if (folder / "world.yaml").is_file():
+                world = folder / "world.yaml"
+                break
+    if world is None:
+        return World.from_dict(DEFAULT_WORLD), "the built-in arena"
+    path = Path(world)
+    if not path.is_file():
+        raise RobotError(f"no world file {path}")
+    try:
+        return _load(lambda: World.load(str(path)), str(path)), str(path)
+    except WorldError:
+        raise
+    except (OSError, ValueError, TypeError, KeyError) as e:
+        raise RobotError(f"{path}: not a valid world: {e}") from None
+
+
+def _load(make, where):
+    from .sim.world import WorldError
+    try:
+        return make()
+    except WorldError as e:
+        raise RobotError(f"{where}: {e}") from None
+
+
+def _prefix(namespace):
+    namespace = (namespace or "").strip("/")
+    return f"/{namespace}" if namespace else ""
+
+
+def sim_settings(world, namespace=None, goal=None, duration=None):
+    namespaces = [_prefix(r.namespace) for r in world.robots]
+    main = 0
+    if namespace is not None:
+        wanted = _prefix(namespace)
+        if wanted not in namespaces:
+            raise RobotError(f"the world has no robot with namespace {wanted or '/'!r} "
+                             f"(it has {', '.join(namespaces)})")
+        main = namespaces.index(wanted)
+    station = (*world.station, world.station_radius) if world.station is not None else None
+    return RobotSettings(mode="sim", namespaces=namespaces, main=main,
+                         limits=[(r.max_linear, r.max_angular) for r in world.robots],
+                         goal=tuple(goal) if goal is not None else world.goal, station=station,
+                         duration=world.duration if duration is None else duration)
+
+
+def ros2_settings(namespace=None, goal=None, duration=None):
+    return RobotSettings(mode="ros2", namespaces=[_prefix(namespace)], limits=[ROS2_LIMITS],
+                         goal=tuple(goal) if goal is not None else None,
+                         duration=-1.0 if duration is None else duration)
+
+
+# ---- runs --------------------------------------------------------------------------------------
+
+@dataclass
+class RunResult:
+    status: int
+    sim: object = None
+    stopped_by: str | None = None       # "duration", "program" or None (not simulated)
+    png: str | None = None
+    gif: str | None = None
+    record: str | None = None
+    stopped_topics: list = field(default_factory=list)
+
+
+def run_with_robot(launch, settings, bus, *, sim=None, duration=None, record=None, png=None, gif=None,
+                   progress=None, stderr=None):
+    """Run `launch(on_start)` (which runs the program and returns its exit status) with `bus` as the
+    transport and, when `sim` is given, the simulator stepped on the runtime's clock."""
+    global SETTINGS
+    stderr = stderr or sys.stderr
+    safety = SafetyBus(bus)
+    previous_bus, previous_settings = transport.use(safety), SETTINGS
+    SETTINGS = settings
+    recorder = _recorder(bus, record) if record else None
+    driver = SimDriver(sim, duration if duration is not None else settings.duration, progress) \
+        if sim is not None else None
+    result = RunResult(status=0, sim=sim)
+    try:
+        result.status = launch(driver.attach if driver is not None else None)
+    finally:
+        result.stopped_topics = safety.stop_robots()
+        if recorder is not None:
+            recorder.close()
+            result.record = str(record)
+        transport.use(previous_bus)
+        SETTINGS = previous_settings
+    if driver is not None:
+        result.stopped_by = driver.stopped_by or "program"
+        result.png = _render(sim, png, "render_png", stderr)
+        result.gif = _render(sim, gif, "render_gif", stderr)
+    return result
+
+
+def _recorder(bus, path):
+    from .record import Recorder
+    return Recorder(bus, str(path))
+
+
+def _render(sim, path, how, stderr):
+    if not path:
+        return None
+    try:
+        if how == "render_png":
+            sim.render_png(str(path))
+        else:
+            from .sim.render import render_gif
+            render_gif(sim, str(path))
+    except Exception as e:                         # noqa: BLE001 - the run itself succeeded
+        stderr.write(f"scoopc: could not write {path}: {e}\n")
+        return None
+    return str(path)
+
+
+def describe_end(result, wall) -> str:
+    """One line for stderr after a simulated run."""
+    sim = result.sim
+    why = {"duration": "the world's duration", "program": "the program ended"}.get(result.stopped_by, "")
+    parts = []
+    for robot in sim.robots:
+        text = f"{robot.name} moved {robot.distance:.2f} m"
+        if robot.collisions:
+            text += f", {len(robot.collisions)} collision{'s' if len(robot.collisions) != 1 else ''}"
+        if robot.fallen:
+            text += ", fell into a hole"
+        if not math.isclose(robot.battery, robot.spec.battery.initial):
+            text += f", battery {robot.battery:.0%}"
+        parts.append(text)
+    line = f"scoopc: simulated {sim.time:.1f} s in {wall:.1f} s ({why}): " + "; ".join(parts)
+    if result.png:
+        line += f"\nscoopc: trajectory written to {result.png}"
+    if result.gif:
+        line += f"\nscoopc: animation written to {result.gif}"
+    if result.record:
+        line += f"\nscoopc: recording written to {result.record}"
+    return line
+
+
+def open_ros2_bus():
+    """The ROS 2 transport: rclpy or DDS (see scoopc.robots.backends), else cyclonedds directly."""
+    try:
+        from .backends import open_ros2_bus as choose
+    except ImportError:
+        from .dds import DdsBus
+        return DdsBus()
+    return choose()
+
+
+def run_on_simulator(paths, world=None, *, duration=None, argv=(), namespace=None, goal=None, png=None,
+                     gif=None, record=None, realtime=False, stdout=None, stderr=None, root=None):
+    """Compile (cached) and run the program at `paths` on the in-process simulator (tests, tools).
+    Returns a RunResult whose `sim` is the Simulator after the run."""
+    from scoopc import commands
+    if isinstance(paths, (str, Path)):
+        paths = [str(paths)]
+    return commands.run_program([str(p) for p in paths], list(argv), robot="sim", world=world,
+                                duration=duration, namespace=namespace, goal=goal, png=png, gif=gif,
+                                record=record, realtime=realtime, stdout=stdout, stderr=stderr, root=root)
+
+
+def run(robot, launch, args, meta, stderr=None):
+    """`scoopc run` with a robot (`robot` is "sim" or "ros2"): set up the transport (and the
+    simulator), run `launch`, stop the robot, report. Returns a RunResult, or 2 for bad usage."""
+    stderr = stderr or sys.stderr
+    progress = _progress_line(stderr)
+    sim = None
+    try:
+        if robot == "sim":
+            from .bus import Bus
+            from .sim.simulator import Simulator
+            world, source = find_world(args.paths, args.world)
+            settings = sim_settings(world, args.namespace, args.goal, args.duration)
+            sim = Simulator(world, Bus())
+            bus = sim.bus
+            if progress is not None:
+                progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
+        else:
+            settings = ros2_settings(args.namespace, args.goal, args.duration)
+            bus = open_ros2_bus()
+    except RobotError as e:
+        stderr.write(f"scoopc: error: {e}\n")
+        return 2
+    png = None
+    if sim is not None and not getattr(args, "no_png", False):
+        png = args.png or f"{meta['root'].lower()}.png"
+    wall = time.monotonic()
+    if sim is not None:
+        result = run_with_robot(lambda on_start: launch(on_start, virtual_clock=not args.realtime), settings,
+                                bus, sim=sim, record=args.record, png=png, gif=args.gif, progress=progress,
+                                stderr=stderr)
+    else:
+        result = run_with_robot(lambda on_start: launch(_deadline(settings.duration)), settings, bus,
+                                record=args.record, stderr=stderr)
+        _close_ros2(bus)
+    if progress is not None:
+        progress("", final=True)
+    if sim is not None:
+        stderr.write(describe_end(result, time.monotonic() - wall) + "\n")
+    elif result.stopped_topics:
+        stderr.write(f"scoopc: sent a zero velocity on {', '.join(result.stopped_topics)}\n")
+    return result
+
+
+def _deadline(duration):
+    """On a ROS 2 robot: stop the program after `duration` seconds of wall time (None: never)."""
+    if duration is None or duration < 0:
+        return None
+
+    def on_start(rt):
+        timer = threading.Timer(duration, rt.stop)
+        timer.daemon = True
+        timer.start()
+        rt.shutdown_hooks.append(timer.cancel)
+    return on_start
+
+
+def _close_ros2(bus):
+    time.sleep(0.2)                       # let the zero velocity reach the robot
+    close = getattr(bus, "close", None)
+    if close is not None:
+        close()
+
+
+def _progress_line(stderr):
+    """Progress on stderr, rewriting one line, on a terminal only."""
+    if not getattr(stderr, "isatty", lambda: False)():
+        return None
+
+    def show(message, final=False):
+        stderr.write("\r\033[K" + (f"scoopc: {message}" if message else ""))
+        if final and message:
+            stderr.write("\n")
+        stderr.flush()
+    return show

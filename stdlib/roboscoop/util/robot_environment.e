@@ -1,0 +1,124 @@
+note
+	description: "[
+		The robot settings of this run: which robot the program drives (its topic namespace), the
+		other robots of a simulated world, their speed limits, and the world's goal and charging
+		station. Set by `scoopc run' (`--robot', `--world', `--namespace', `--goal'); a program run
+		with no robot sees one robot with no namespace.
+	]"
+
+class
+	ROBOT_ENVIRONMENT
+
+feature -- Access
+
+	namespace: STRING
+			-- Topic prefix of the program's robot ("/robot1"; empty when it has none).
+		do
+			Result := namespace_of (main_robot)
+		ensure
+			empty_or_rooted: Result.is_empty or else Result [1] = '/'
+		end
+
+	namespace_of (i: INTEGER): STRING
+			-- Topic prefix of robot `i'.
+		require
+			valid_robot: 1 <= i and i <= robot_count
+		external
+			"Python"
+		end
+
+	robot_count: INTEGER
+			-- Robots known to this run (at least 1).
+		external
+			"Python"
+		ensure
+			at_least_one: Result >= 1
+		end
+
+	main_robot: INTEGER
+			-- Index of the program's robot (`--namespace').
+		external
+			"Python"
+		ensure
+			valid: 1 <= Result and Result <= robot_count
+		end
+
+	max_linear: REAL_64
+			-- Largest forward speed of the program's robot (m/s).
+		do
+			Result := max_linear_of (main_robot)
+		end
+
+	max_angular: REAL_64
+			-- Largest turn rate of the program's robot (rad/s).
+		do
+			Result := max_angular_of (main_robot)
+		end
+
+	max_linear_of (i: INTEGER): REAL_64
+			-- Largest forward speed of robot `i' (m/s).
+		require
+			valid_robot: 1 <= i and i <= robot_count
+		external
+			"Python"
+		end
+
+	max_angular_of (i: INTEGER): REAL_64
+			-- Largest turn rate of robot `i' (rad/s).
+		require
+			valid_robot: 1 <= i and i <= robot_count
+		external
+			"Python"
+		end
+
+	goal_x, goal_y: REAL_64
+			-- The goal (world coordinates, m); 0 when there is none.
+		external
+			"Python"
+		end
+
+	station_x, station_y: REAL_64
+			-- Centre of the charging station (m); 0 when there is none.
+		external
+			"Python"
+		end
+
+	station_radius: REAL_64
+			-- Radius of the charging station (m); 0 when there is none.
+		external
+			"Python"
+		end
+
+	duration: REAL_64
+			-- Seconds the run lasts (simulated seconds on the simulator); negative when unbounded.
+		external
+			"Python"
+		end
+
+feature -- Status report
+
+	is_simulated: BOOLEAN
+			-- Does the program drive the built-in simulator?
+		external
+			"Python"
+		end
+
+	is_ros2: BOOLEAN
+			-- Does the program drive a ROS 2 robot?
+		external
+			"Python"
+		end
+
+	has_goal: BOOLEAN
+			-- Is a goal given (by the world or `--goal')?
+		external
+			"Python"
+		end
+
+	has_charging_station: BOOLEAN
+			-- Does the world have a charging station?
+		external
+			"Python"
+		end
+
+end

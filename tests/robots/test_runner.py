@@ -1,0 +1,130 @@
+"""`scoopc run` with a robot: the in-process simulator stepped on the runtime's clock, the run's
+end (the program's end or the world's duration), the safety stop, ROBOT_ENVIRONMENT, and the
+command line's robot options."""
+import os
+import signal
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from scoopc import cli
+from scoopc.robots.runner import run_on_simulator
+
+PROGRAMS = Path(__file__).parent / "programs"
+
+
+def test_a_program_that_ends_ends_the_simulation(capsys):
+    result = run_on_simulator(PROGRAMS / "run_forward")
+    out, err = capsys.readouterr()
+    assert result.status == 0, err
+    assert result.stopped_by == "program"
+    robot = result.sim.robot()
+    lines = out.splitlines()
+    assert lines[0] == "robot /robot1 of 1 simulated True goal 4.2999999999999998,4.2999999999999998"
+    stopped_at = float(lines[1].split()[-1])
+    assert 2.0 <= stopped_at < 2.05                   # 0.1 m/s, checked every 100 ms of simulated time
+    assert abs(robot.x - stopped_at) < 0.02 and robot.cmd == (0.0, 0.0)
+    # from 0.6 m to 2.0 m at 0.1 m/s: 14 s; the run ends within a few steps of the program
+    assert 14.0 <= result.sim.time <= 14.5
+    assert "scoopc: simulated 14." in err and "(the program ended)" in err
+
+
+def test_the_world_duration_stops_a_program_that_runs_on(capsys):
+    result = run_on_simulator(PROGRAMS / "run_forever", duration=12)
+    out, err = capsys.readouterr()
+    assert result.status == 0, err
+    assert result.stopped_by == "duration"
+    assert result.sim.time == pytest.approx(12.0)
+    assert result.sim.robot().x == pytest.approx(0.6 + 0.1 * 12, abs=0.03)
+    assert "(the world's duration)" in err
+
+
+def test_runs_on_the_virtual_clock_are_repeatable(capsys):
+    first = run_on_simulator(PROGRAMS / "run_forever", duration=5).sim.trajectory()
+    second = run_on_simulator(PROGRAMS / "run_forever", duration=5).sim.trajectory()
+    capsys.readouterr()
+    assert (first == second).all()
+
+
+def test_a_failing_program_leaves_the_robot_stopped(capsys):
+    result = run_on_simulator(PROGRAMS / "run_crash")
+    out, err = capsys.readouterr()
+    assert result.status == 3
+    assert "check violated: `never_here`" in err and "CRASH.make" in err
+    assert result.stopped_topics == ["/robot1/cmd_vel"]
+    robot = result.sim.robot()
+    assert robot.cmd == (0.0, 0.0)                   # the zero velocity came over the bus
+    assert robot.cmd_count == 2 and robot.x > 0.62     # it had moved (until the 0.5 s watchdog), then the stop
+
+
+def test_robot_environment_reads_the_world_beside_the_program(capsys):
+    result = run_on_simulator(PROGRAMS / "run_world")
+    out, err = capsys.readouterr()
+    assert result.status == 0, err
+    assert out.splitlines() == [
+        "robot /alpha (1 of 2)",
+        "/alpha 0.14000000000000001 3",
+        "/beta 0.5 2",
+        "simulated True ros2 False",
+        "goal True 2.5 1.5",
+        "station True 0.29999999999999999 1.7 0.20000000000000001",
+        "duration 20",
+    ]
+
+
+def test_namespace_goal_and_duration_options(capsys):
+    result = run_on_simulator(PROGRAMS / "run_world", namespace="beta", goal=(1.0, -2.0), duration=3)
+    out, _ = capsys.readouterr()
+    lines = out.splitlines()
+    assert lines[0] == "robot /beta (2 of 2)"
+    assert lines[4] == "goal True 1 -2"
+    assert lines[6] == "duration 3"
+
+
+def test_cli_writes_the_trajectory_png(tmp_path, capsys, monkeypatch):
+    monkeypatch.chdir(tmp_path)
+    assert cli.main(["run", str(PROGRAMS / "run_forward")]) == 0
+    err = capsys.readouterr().err
+    assert (tmp_path / "forward.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert "trajectory written to forward.png" in err
+    assert cli.main(["run", str(PROGRAMS / "run_forward"), "--png", str(tmp_path / "x.png")]) == 0
+    assert (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize("options, message", [
+    (["--world", "/nonexistent/world.yaml"], "no world file /nonexistent/world.yaml"),
+    (["--namespace", "gamma"], "the world has no robot with namespace '/gamma' (it has /alpha, /beta)"),
+])
+def test_robot_usage_errors(options, message, capsys):
+    assert cli.main(["run", str(PROGRAMS / "run_world"), "--no-png", *options]) == 2
+    assert f"scoopc: error: {message}" in capsys.readouterr().err
+
+
+def test_a_malformed_world_is_reported(tmp_path, capsys):
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("robots:\n  - {kind: tank}\n")
+    assert cli.main(["run", str(PROGRAMS / "run_world"), "--no-png", "--world", str(bad)]) == 2
+    assert f"scoopc: error: {bad}: unknown robot kind 'tank'" in capsys.readouterr().err
+
+
+def test_programs_without_roboscoop_get_no_robot(capsys):
+    program = Path(__file__).parents[1] / "golden" / "boolean_ops"
+    assert cli.main(["run", str(program)]) == 0
+    assert "scoopc: simulated" not in capsys.readouterr().err
+
+
+def test_ctrl_c_ends_a_realtime_run_and_reports_it(tmp_path):
+    env = dict(os.environ, PYTHONUNBUFFERED="1")
+    proc = subprocess.Popen([sys.executable, "-m", "scoopc", "run", str(PROGRAMS / "run_forever"), "--realtime",
+                             "--no-png"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
+                            cwd=tmp_path)
+    try:
+        assert proc.stdout.readline().startswith("robot /robot1")
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 130, err
+    assert "scoopc: simulated" in err and "Traceback" not in err
