@@ -88,6 +88,8 @@ def _add_compile_and_run(commands) -> None:
     msg.add_argument("--file", metavar="MSG", help="a .msg definition of the type (needs --type)")
     msg.add_argument("--type", metavar="TYPE", help="the type name the --file defines (pkg/msg/Name)")
     msg.add_argument("-o", "--output", default=".", metavar="DIR", help="where to write the .e files (default: .)")
+    msg.add_argument("--all", action="store_true",
+                     help="also write the classes the Roboscoop library already has (std_msgs/Header, ...)")
     msg.set_defaults(handler=lambda args: __import__("scoopc.robots.eiffel_messages",
                                                      fromlist=["command_msg"]).command_msg(args))
 

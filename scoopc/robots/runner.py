@@ -345,7 +345,10 @@ def run(robot, launch, args, meta, stderr=None):
                 progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
         else:
             settings = ros2_settings(args.namespace, args.goal, args.duration)
-            bus = open_ros2_bus()
+            try:
+                bus = open_ros2_bus()
+            except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
+                raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
     except RobotError as e:
         stderr.write(f"scoopc: error: {e}\n")
         return 2
@@ -358,9 +361,13 @@ def run(robot, launch, args, meta, stderr=None):
                                 bus, sim=sim, record=args.record, png=png, gif=args.gif, progress=progress,
                                 stderr=stderr)
     else:
-        result = run_with_robot(lambda on_start: launch(_deadline(settings.duration)), settings, bus,
+        expired = threading.Event()
+        result = run_with_robot(lambda on_start: launch(_deadline(settings.duration, expired)), settings, bus,
                                 record=args.record, stderr=stderr)
         _close_ros2(bus)
+        if expired.is_set():
+            result.stopped_by = "duration"
+            stderr.write(f"scoopc: stopped the program after {settings.duration:g} s (--duration)\n")
     if progress is not None:
         progress("", final=True)
     if sim is not None:
@@ -370,13 +377,17 @@ def run(robot, launch, args, meta, stderr=None):
     return result
 
 
-def _deadline(duration):
+def _deadline(duration, expired):
     """On a ROS 2 robot: stop the program after `duration` seconds of wall time (None: never)."""
     if duration is None or duration < 0:
         return None
 
+    def stop(rt):
+        expired.set()
+        rt.stop()
+
     def on_start(rt):
-        timer = threading.Timer(duration, rt.stop)
+        timer = threading.Timer(duration, stop, (rt,))
         timer.daemon = True
         timer.start()
         rt.shutdown_hooks.append(timer.cancel)

@@ -70,3 +70,8 @@ def publish_twist(current, linear_x, angular_z):
 
 def publish_float64(current, value):
     transport.current().publish(_text(current.topic), new_message("std_msgs/msg/Float64", data=float(value)))
+
+
+def publish_message(current, message):
+    from scoopc.robots import eiffel_bridge
+    transport.current().publish(_text(current.topic), eiffel_bridge.to_message(message))

@@ -42,6 +42,15 @@ feature -- Access
 
 feature -- Basic operations
 
+	publish (a_message: separate ROS_MESSAGE)
+			-- Publish `a_message' (converted to its ROS 2 type on this processor).
+		do
+			publish_message (a_message)
+			published_count := published_count + 1
+		ensure
+			counted: published_count = old published_count + 1
+		end
+
 	publish_velocity (a_linear, a_angular: REAL_64)
 			-- Publish a geometry_msgs/Twist (or TwistStamped) with linear.x = `a_linear'
 			-- and angular.z = `a_angular'.
@@ -62,6 +71,12 @@ feature -- Basic operations
 		end
 
 feature {NONE} -- Transport
+
+	publish_message (a_message: separate ROS_MESSAGE)
+			-- Put `a_message' on the transport.
+		external
+			"Python"
+		end
 
 	publish_twist (a_linear_x, a_angular_z: REAL_64)
 			-- Put the Twist on the transport.
