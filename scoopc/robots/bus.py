@@ -6,6 +6,9 @@ scoopc.robots.messages); the bus neither copies nor converts it. `publish` runs 
 the publisher's thread, in subscription order; a callback subscribed or closed during a delivery
 takes effect from the next `publish`. A callback that raises does not stop the others: the first
 exception is re-raised to the publisher once every subscriber has had the message.
+
+`tap(callback)` sees every message published on the bus, whatever its topic: `callback(topic, msg)`
+runs before the topic's subscribers (a recorder uses it; a tap does not count as a subscriber).
 """
 import threading
 
@@ -28,12 +31,42 @@ class Subscription:
         return f"<Subscription {self.topic!r}{' closed' if self.closed else ''}>"
 
 
+class Tap:
+    """A callback seeing every message of a bus; `close()` stops it (idempotent)."""
+
+    def __init__(self, owner, callback):
+        self.owner = owner
+        self.callback = callback
+        self.closed = False
+
+    def close(self):
+        if not self.closed:
+            self.closed = True
+            self.owner._untap(self)
+
+    def __call__(self, topic, msg):
+        if not self.closed:
+            self.callback(topic, msg)
+
+
 class Bus:
     """Topic -> subscribers; `publish` calls each open subscriber's callback with the message."""
 
     def __init__(self):
         self._lock = threading.Condition(threading.Lock())
         self._subs = {}              # [_lock] topic -> list of Subscription (subscription order)
+        self._taps = []              # Taps (a list replaced on change: read without the lock)
+
+    def tap(self, callback):
+        """Call `callback(topic, msg)` for every message published on this bus; returns a Tap (`close()`)."""
+        tap = Tap(self, callback)
+        with self._lock:
+            self._taps = self._taps + [tap]
+        return tap
+
+    def _untap(self, tap):
+        with self._lock:
+            self._taps = [t for t in self._taps if t is not tap]
 
     def subscribe(self, topic, callback):
         sub = Subscription(self, topic, callback)
@@ -54,6 +87,11 @@ class Bus:
         with self._lock:
             subs = tuple(self._subs.get(topic, ()))
         error = None
+        for tap in tuple(self._taps):
+            try:
+                tap(topic, msg)
+            except Exception as e:
+                error = error or e
         for sub in subs:
             if not sub.closed:
                 try:
@@ -62,6 +100,10 @@ class Bus:
                     error = error or e
         if error is not None:
             raise error
+
+    def wants(self, topic):
+        """Would a message on `topic` reach anyone (a subscriber of the topic, or a tap)?"""
+        return bool(self._taps) or topic in self._subs
 
     def subscriber_count(self, topic):
         with self._lock:

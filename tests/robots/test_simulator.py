@@ -211,4 +211,21 @@ def test_sample_worlds_load(path):
     world = World.load(path)
     sim = Simulator(world, Bus())
     assert world.robots and sim.reachable_grid().sum() > 100
-    assert world.goal is not None and world.station is not None
+    if os.path.basename(path) in ("open.yaml", "cluttered.yaml", "u_trap.yaml", "corridor.yaml"):
+        assert world.goal is not None and world.station is not None
+
+
+def test_only_topics_someone_hears_are_built():
+    bus = Bus()
+    sim = Simulator(World.from_dict({"size": [2, 2]}), bus)
+    heard = []
+    bus.subscribe("/robot1/proximity/center", lambda msg: heard.append("center"))
+    sim.run_until(0.1)
+    assert heard == ["center", "center"]           # 20 Hz: at 50 and 100 ms
+    assert bus.wants("/robot1/proximity/center") and not bus.wants("/robot1/odom")
+    tapped = []
+    tap = bus.tap(lambda topic, msg: tapped.append(topic))
+    sim.run_until(0.2)
+    assert {"/clock", "/robot1/odom", "/robot1/ground/left", "/robot1/proximity/left"} <= set(tapped)
+    tap.close()
+    assert not bus.wants("/robot1/odom")

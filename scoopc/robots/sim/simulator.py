@@ -38,6 +38,7 @@ class Simulator:
                          "ground": _period(ground_rate, self.dt_ns), "battery": _period(battery_rate, self.dt_ns),
                          "clock": 1 if clock_rate is None else _period(clock_rate, self.dt_ns)}
         self._subs = []
+        self._names = {}                  # robot name -> {short topic name: full name}
         for robot in self.robots:
             topic = self.topic(robot, "cmd_vel")
             self._subs.append(bus.subscribe(topic, self._cmd_callback(robot)))
@@ -82,7 +83,7 @@ class Simulator:
         dt = self.dt_ns / 1e9
         for robot in self.robots:
             robot.advance(dt, now, self.world, [o for o in self.robots if o is not robot])
-        if self.steps % self._periods["clock"] == 0:
+        if self.steps % self._periods["clock"] == 0 and self._wants("/clock"):
             self.bus.publish("/clock", sensors.clock_msg(self.time_ns))
         self._publish_sensors()
 
@@ -106,23 +107,45 @@ class Simulator:
     def _due(self, what, period=None):
         return self.steps % (period or self._periods[what]) == 0
 
+    def _wants(self, topic):
+        """Does anyone listen to `topic`? (A bus that cannot tell, such as DDS: assume so.)
+        Messages nobody would receive are neither computed nor built."""
+        wants = getattr(self.bus, "wants", None)
+        return True if wants is None else wants(topic)
+
     def _publish_sensors(self, initial=False):
-        t_ns, pub = self.time_ns, self.bus.publish
+        t_ns, pub, wants = self.time_ns, self.bus.publish, self._wants
         for robot in self.robots:
-            if initial or self._due("odom"):
-                pub(self.topic(robot, "odom"), sensors.odom_msg(robot, t_ns))
+            topic = self._topic_names(robot)
+            if (initial or self._due("odom")) and wants(topic["odom"]):
+                pub(topic["odom"], sensors.odom_msg(robot, t_ns))
             if robot.spec.kind == "thymio" and (initial or self._due("proximity")):
-                for name, value in sensors.proximity_ranges(robot, self.world, self.robots).items():
-                    pub(self.topic(robot, f"proximity/{name}"), sensors.proximity_msg(robot, name, value, t_ns))
+                heard = [name for name in sensors.PROXIMITY if wants(topic[f"proximity/{name}"])]
+                if heard:
+                    values = sensors.proximity_ranges(robot, self.world, self.robots)
+                    for name in heard:
+                        pub(topic[f"proximity/{name}"], sensors.proximity_msg(robot, name, values[name], t_ns))
             if robot.spec.kind == "thymio" and (initial or self._due("ground")):
-                for name, value in sensors.ground_ranges(robot, self.world).items():
-                    pub(self.topic(robot, f"ground/{name}"), sensors.ground_msg(robot, name, value, t_ns))
+                heard = [name for name in sensors.GROUND if wants(topic[f"ground/{name}"])]
+                if heard:
+                    values = sensors.ground_ranges(robot, self.world)
+                    for name in heard:
+                        pub(topic[f"ground/{name}"], sensors.ground_msg(robot, name, values[name], t_ns))
             laser = robot.spec.laser
-            if laser is not None and (initial or self._due("scan", _period(laser.rate, self.dt_ns))):
+            if laser is not None and (initial or self._due("scan", _period(laser.rate, self.dt_ns))) \
+                    and wants(topic["scan"]):
                 ranges = sensors.laser_ranges(robot, self.world, self.robots)
-                pub(self.topic(robot, "scan"), sensors.scan_msg(robot, ranges, t_ns))
-            if initial or self._due("battery"):
-                pub(self.topic(robot, "battery_state"), sensors.battery_msg(robot, t_ns))
+                pub(topic["scan"], sensors.scan_msg(robot, ranges, t_ns))
+            if (initial or self._due("battery")) and wants(topic["battery_state"]):
+                pub(topic["battery_state"], sensors.battery_msg(robot, t_ns))
+
+    def _topic_names(self, robot):
+        names = self._names.get(robot.name)
+        if names is None:
+            short = ["odom", "scan", "battery_state", "cmd_vel"]
+            short += [f"proximity/{n}" for n in sensors.PROXIMITY] + [f"ground/{n}" for n in sensors.GROUND]
+            names = self._names[robot.name] = {n: self.topic(robot, n) for n in short}
+        return names
 
     # ---- results ----------------------------------------------------------------------------------
 
