@@ -93,6 +93,16 @@ def _add_compile_and_run(commands) -> None:
     msg.set_defaults(handler=lambda args: __import__("scoopc.robots.eiffel_messages",
                                                      fromlist=["command_msg"]).command_msg(args))
 
+    sim = commands.add_parser("sim", help="run the simulator as a ROS 2 (DDS) node",
+                              description="Run a simulator world as a separate ROS 2 node over DDS: it subscribes "
+                                          "each robot's cmd_vel and publishes its sensors and /clock, paced to the "
+                                          "wall clock, so that `scoopc run app.e --robot ros2` drives it over the "
+                                          "real transport (docs/ROBOTS.md).")
+    from .robots import simnode
+
+    simnode.add_arguments(sim)
+    sim.set_defaults(handler=simnode.command)
+
 
 def _render(found: list[diagnostics.Diagnostic], line_text, style: str) -> None:
     pretty = style == "pretty" or (style == "auto" and sys.stderr.isatty())

@@ -5,6 +5,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import json
+import os
 import shutil
 import sys
 from pathlib import Path
@@ -197,7 +198,7 @@ def compiled_program(args):
         if checked.has_errors:
             return EXIT_SOURCE
         root = choose_root(project, checked, args.root, args.paths)
-        staging = folder.with_name(key + ".tmp")
+        staging = folder.with_name(f"{key}.{os.getpid()}.tmp")      # per process: runs may race
         if staging.exists():
             shutil.rmtree(staging)
         compiled = build.compile_program(checked, staging, "program", root.key, root.creator,
@@ -206,9 +207,17 @@ def compiled_program(args):
                 "shadowed": checked.semantics.universe.shadowed,
                 "roboscoop": uses_roboscoop(project.files)}
         (staging / "program.json").write_text(json.dumps(meta))
-        if folder.exists():
-            shutil.rmtree(folder)
-        staging.rename(folder)
+        if folder.exists():                  # --no-cache, or another process compiled it meanwhile
+            old = folder.with_name(f"{key}.{os.getpid()}.old")
+            try:
+                folder.rename(old)
+                shutil.rmtree(old, ignore_errors=True)
+            except OSError:
+                pass
+        try:
+            staging.rename(folder)
+        except OSError:                      # another process put its copy in place first: use it
+            shutil.rmtree(staging, ignore_errors=True)
     return folder, meta
 
 

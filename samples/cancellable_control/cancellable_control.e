@@ -1,7 +1,10 @@
 note
 	description: "[
-		A cancellable control loop: a controller runs guarded by a stop signaler, and a
-		supervisor on another processor cancels it after a number of steps.
+		A cancellable control loop on the simulator: a SPIRAL_DRIVER (a CANCELLABLE_CONTROL_LOOP)
+		drives the Thymio along a widening spiral, ten commands a second, until its STOP_SIGNALER
+		fires; a SUPERVISOR on another processor waits (a wait condition on the odometry) until
+		the robot is a metre away from where it started and requests the stop. The root waits
+		for the stop request, then brings the robot to rest.
 	]"
 
 class
@@ -13,48 +16,49 @@ create
 feature {NONE} -- Initialization
 
 	make
-			-- Start the controller and its supervisor, then report once the motor is at rest.
+			-- Start the driver and its supervisor; once the loop is over, stop the robot.
 		local
-			l_motor: separate MOTOR
-			l_stop: separate STOP_SIGNALER
-			l_controller: separate SPEED_CONTROLLER
-			l_supervisor: separate SUPERVISOR
+			env: ROBOT_ENVIRONMENT
+			robot: THYMIO_ROBOT
+			stop: separate STOP_SIGNALER
+			driver: separate SPIRAL_DRIVER
+			supervisor: separate SUPERVISOR
 		do
-			create l_motor.make
-			create l_stop.make
-			create l_controller.make (l_motor, l_stop)
-			create l_supervisor.make (l_motor, l_stop, Step_limit)
-			start_controller (l_controller)
-			start_supervisor (l_supervisor)
-			report (l_motor, l_stop)
+			create env
+			create robot.make (env.namespace)
+			create stop.make
+			create driver.make (stop, robot.drive)
+			create supervisor.make (stop, robot.odometry, 1.0)
+			start_driver (driver)
+			start_supervisor (supervisor)
+			report (stop, robot.drive)
 		end
 
 feature {NONE} -- Implementation
 
-	start_controller (a_controller: separate SPEED_CONTROLLER)
-			-- Let `a_controller' run until stopped.
+	start_driver (a_driver: separate SPIRAL_DRIVER)
+			-- Let `a_driver' run until stopped.
 		do
-			a_controller.run
+			a_driver.run
 		end
 
 	start_supervisor (a_supervisor: separate SUPERVISOR)
-			-- Let `a_supervisor' watch the controller.
+			-- Let `a_supervisor' watch the robot.
 		do
 			a_supervisor.supervise
 		end
 
-	report (a_motor: separate MOTOR; a_stop: separate STOP_SIGNALER)
-			-- Once the loop has been cancelled and the motor brought to rest, say so.
+	report (a_stop: separate STOP_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
+			-- Once the stop is requested, bring the robot to rest and say so. (The driver's
+			-- commands logged before come first: the drive serves its clients in order, and
+			-- no step starts once the loop sees the stop.)
 		require
 			cancelled: a_stop.is_stop_requested
-			at_rest: a_motor.speed = 0
 		do
-			print ("Motor at rest after " + a_motor.command_count.out + " speed commands%N")
+			a_drive.stop
+			print ("Robot at rest%N")
 		ensure
-			one_command_per_step_and_one_to_stop: a_motor.command_count = Step_limit + 1
+			at_rest: a_drive.is_stopped
 		end
-
-	Step_limit: INTEGER = 6
-			-- Steps the control loop may make.
 
 end

@@ -1,5 +1,5 @@
 note
-	description: "Watches the motor and cancels the control loop once it has made a given number of steps."
+	description: "Waits until the robot is far enough from where it started, then requests the stop."
 
 class
 	SUPERVISOR
@@ -9,44 +9,57 @@ create
 
 feature {NONE} -- Initialization
 
-	make (a_motor: separate MOTOR; a_stop: separate STOP_SIGNALER; a_limit: INTEGER)
-			-- Supervisor raising `a_stop' once `a_motor' has had `a_limit' speed commands.
+	make (a_stop: separate STOP_SIGNALER; a_odometry: separate ODOMETRY_SIGNALER; a_distance: REAL_64)
+			-- Supervisor stopping `a_stop' once `a_odometry' is `a_distance' m from its first reading.
 		require
-			positive_limit: a_limit > 0
+			positive_distance: a_distance > 0.0
 		do
-			motor := a_motor
 			stop := a_stop
-			step_limit := a_limit
+			odometry := a_odometry
+			distance := a_distance
 		end
 
 feature -- Access
 
-	step_limit: INTEGER
-			-- Control steps allowed.
+	stop: separate STOP_SIGNALER
+			-- What to raise.
+
+	odometry: separate ODOMETRY_SIGNALER
+			-- Where the robot is.
+
+	distance: REAL_64
+			-- How far the robot may go (m).
+
+	start_x, start_y: REAL_64
+			-- First position seen.
 
 feature -- Basic operations
 
 	supervise
-			-- Cancel the control loop after `step_limit' steps.
+			-- Note the start, wait until the robot is `distance' away, request the stop.
 		do
-			stop_after_limit (motor, stop)
+			note_start (odometry)
+			await_far (odometry, stop)
 		end
 
 feature {NONE} -- Implementation
 
-	stop_after_limit (a_motor: separate MOTOR; a_stop: separate STOP_SIGNALER)
-			-- Once `a_motor' has had `step_limit' commands, request a stop.
+	note_start (a_odometry: separate ODOMETRY_SIGNALER)
+			-- Remember the first position.
 		require
-			limit_reached: a_motor.command_count >= step_limit
+			a_odometry.has_reading
 		do
-			a_stop.request_stop
-			print ("Supervisor: " + a_motor.command_count.out + " steps done, stop requested%N")
-		ensure
-			requested: a_stop.is_stop_requested
+			start_x := a_odometry.x
+			start_y := a_odometry.y
 		end
 
-	motor: separate MOTOR
-	stop: separate STOP_SIGNALER
-			-- The motor watched and the signaler raised.
+	await_far (a_odometry: separate ODOMETRY_SIGNALER; a_stop: separate STOP_SIGNALER)
+			-- Request the stop once the robot is `distance' from the start.
+		require
+			(a_odometry.x - start_x) ^ 2 + (a_odometry.y - start_y) ^ 2 >= distance ^ 2
+		do
+			a_stop.request_stop
+			print ("Supervisor: " + distance.out + " m from the start, stop requested%N")
+		end
 
 end

@@ -49,13 +49,10 @@ class Tap:
             self.callback(topic, msg)
 
 
-class Bus:
-    """Topic -> subscribers; `publish` calls each open subscriber's callback with the message."""
-
-    def __init__(self):
-        self._lock = threading.Condition(threading.Lock())
-        self._subs = {}              # [_lock] topic -> list of Subscription (subscription order)
-        self._taps = []              # Taps (a list replaced on change: read without the lock)
+class Tapped:
+    """The taps of a bus (`tap`, `_untap`): a list replaced on change, read without the lock.
+    The bus has `_lock` and `_taps`; a transport bus (DDS, rclpy) also has `errors`, where
+    `_tapped` keeps what a broken tap raised instead of breaking the transport."""
 
     def tap(self, callback):
         """Call `callback(topic, msg)` for every message published on this bus; returns a Tap (`close()`)."""
@@ -67,6 +64,23 @@ class Bus:
     def _untap(self, tap):
         with self._lock:
             self._taps = [t for t in self._taps if t is not tap]
+
+    def _tapped(self, topic, msg):
+        for tap in self._taps:
+            try:
+                tap(topic, msg)
+            except Exception as e:              # a broken tap must not break the transport
+                if len(self.errors) < 100:
+                    self.errors.append(e)
+
+
+class Bus(Tapped):
+    """Topic -> subscribers; `publish` calls each open subscriber's callback with the message."""
+
+    def __init__(self):
+        self._lock = threading.Condition(threading.Lock())
+        self._subs = {}              # [_lock] topic -> list of Subscription (subscription order)
+        self._taps = []              # Taps (a list replaced on change: read without the lock)
 
     def subscribe(self, topic, callback):
         sub = Subscription(self, topic, callback)

@@ -45,7 +45,7 @@ from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
 from . import cdr, messages
-from .bus import Subscription
+from .bus import Subscription, Tapped
 from .messages import ARRAY, BASE, NAME
 
 log = logging.getLogger(__name__)
@@ -108,9 +108,38 @@ def domain_id() -> int:
     return int(os.environ.get("ROS_DOMAIN_ID", "0") or 0)
 
 
+#: Cyclone DDS settings that keep every participant on 127.0.0.1 (no multicast, unicast discovery)
+LOOPBACK_CONFIG = """<?xml version="1.0" encoding="UTF-8"?>
+<CycloneDDS xmlns="https://cdds.io/config">
+  <Domain Id="any">
+    <General>
+      <Interfaces><NetworkInterface address="127.0.0.1"/></Interfaces>
+      <AllowMulticast>false</AllowMulticast>
+    </General>
+    <Discovery>
+      <ParticipantIndex>auto</ParticipantIndex>
+      <MaxAutoParticipantIndex>50</MaxAutoParticipantIndex>
+      <Peers><Peer address="127.0.0.1"/></Peers>
+    </Discovery>
+  </Domain>
+</CycloneDDS>
+"""
+
+
+def loopback_environment(folder, domain: int) -> dict:
+    """Environment variables binding DDS to loopback in `domain`: writes `folder`/cyclonedds.xml and
+    returns {"CYCLONEDDS_URI": its file URI, "ROS_DOMAIN_ID": str(domain)} (set them before the
+    first participant of a process exists, or pass them to a child process)."""
+    from pathlib import Path
+    path = Path(folder) / "cyclonedds.xml"
+    path.write_text(LOOPBACK_CONFIG)
+    return {"CYCLONEDDS_URI": path.resolve().as_uri(), "ROS_DOMAIN_ID": str(domain)}
+
+
 _BASES = {"bool": bool, "byte": idl.byte, "char": idl.uint8, "int8": idl.int8, "uint8": idl.uint8,
           "int16": idl.int16, "uint16": idl.uint16, "int32": idl.int32, "uint32": idl.uint32,
           "int64": idl.int64, "uint64": idl.uint64, "float32": idl.float32, "float64": idl.float64}
+_HANDLE_MASK = (1 << 64) - 1            # instance handles are uint64; the Python API may give them signed
 _idl_types: dict = {}          # [_idl_lock] (id(store), typename) -> IdlStruct class
 _idl_lock = threading.Lock()
 
@@ -176,7 +205,7 @@ class _Reader:
         self.subs = []           # [DdsBus._lock] open Subscriptions, in subscription order
 
 
-class DdsBus:
+class DdsBus(Tapped):
     """Publish/subscribe on ROS 2 topics over DDS (cyclonedds), with ROS 2's names, types and QoS."""
 
     def __init__(self, domain: int | None = None, types: dict | None = None, store=None):
@@ -194,6 +223,8 @@ class DdsBus:
         self._waitset.attach(self._wake)
         self._thread = None                   # [_lock] the reader thread, started on first subscribe
         self._closed = False
+        self._taps = []                       # Taps (a list replaced on change: read without the lock)
+        self._own = set()                     # [_lock] instance handles of our writers
 
     # -- entities ---------------------------------------------------------------------------------
     def _topic(self, topic: str, typename: str) -> Topic:
@@ -217,6 +248,7 @@ class DdsBus:
                 dds_topic = self._topic(topic, typename)
                 writer = DataWriter(self.participant, dds_topic, qos=qos_for(topic, typename, self.store))
                 self._writers[topic] = writer
+                self._own.add(writer.get_instance_handle() & _HANDLE_MASK)    # as SampleInfo has it: unsigned
             elif self._topics[topic][0] != typename:
                 raise TypeError(f"topic {topic} carries {self._topics[topic][0]}, not {typename}")
             return writer
@@ -241,12 +273,15 @@ class DdsBus:
         ret = ddspy_write(writer._ref, frame(cdr.serialize(msg, typename, self.store)))
         if ret < 0:
             raise RuntimeError(f"DDS write on {topic} failed ({ret})")
+        self._tapped(topic, msg)
 
     def publish_raw(self, topic: str, typename: str, payload: bytes) -> None:
         """Publish CDR bytes as they are (header included) on `topic`."""
         ret = ddspy_write(self.writer(topic, typename)._ref, frame(bytes(payload)))
         if ret < 0:
             raise RuntimeError(f"DDS write on {topic} failed ({ret})")
+        if self._taps:
+            self._tapped(topic, cdr.deserialize(payload, typename, self.store))
 
     def subscribe(self, topic: str, callback, msgtype: str | None = None, raw: bool = False) -> Subscription:
         """Call `callback(msg)` on the bus's reader thread for every message on `topic`
@@ -335,6 +370,7 @@ class DdsBus:
                     return
                 samples = ddspy_take(entry.reader._ref, entry.condition.mask, 64)
                 subs = tuple(entry.subs)
+                own = self._own if self._taps else ()
             if isinstance(samples, int):
                 log.error("DDS take on %s failed (%d)", entry.topic, samples)
                 return
@@ -350,6 +386,8 @@ class DdsBus:
                     log.error("undecodable %s sample on %s: %s", entry.typename, entry.topic, e)
                     targets = tuple(sub for sub in subs if sub.raw)
                     msg = None
+                if msg is not None and self._taps and (info.publication_handle & _HANDLE_MASK) not in own:
+                    self._tapped(entry.topic, msg)
                 for sub in targets:
                     if sub.closed:
                         continue

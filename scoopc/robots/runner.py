@@ -232,7 +232,7 @@ class RunResult:
     stopped_topics: list = field(default_factory=list)
 
 
-def run_with_robot(launch, settings, bus, *, sim=None, duration=None, record=None, png=None, gif=None,
+def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=None, png=None, gif=None,
                    progress=None, stderr=None):
     """Run `launch(on_start)` (which runs the program and returns its exit status) with `bus` as the
     transport and, when `sim` is given, the simulator stepped on the runtime's clock."""
@@ -241,7 +241,6 @@ def run_with_robot(launch, settings, bus, *, sim=None, duration=None, record=Non
     safety = SafetyBus(bus)
     previous_bus, previous_settings = transport.use(safety), SETTINGS
     SETTINGS = settings
-    recorder = _recorder(bus, record) if record else None
     driver = SimDriver(sim, duration if duration is not None else settings.duration, progress) \
         if sim is not None else None
     result = RunResult(status=0, sim=sim)
@@ -250,8 +249,7 @@ def run_with_robot(launch, settings, bus, *, sim=None, duration=None, record=Non
     finally:
         result.stopped_topics = safety.stop_robots()
         if recorder is not None:
-            recorder.close()
-            result.record = str(record)
+            result.record = str(recorder.close())
         transport.use(previous_bus)
         SETTINGS = previous_settings
     if driver is not None:
@@ -261,9 +259,16 @@ def run_with_robot(launch, settings, bus, *, sim=None, duration=None, record=Non
     return result
 
 
-def _recorder(bus, path):
+def _recorder(bus, path, clock=None):
+    """A recorder of every message on `bus` (made before the simulator, so that its first
+    messages are in it; `clock`: the simulated time for messages without a stamp)."""
+    if not path:
+        return None
     from .record import Recorder
-    return Recorder(bus, str(path))
+    try:
+        return Recorder(bus, str(path), clock=clock)
+    except OSError as e:
+        raise RobotError(f"cannot record to {path}: {e.strerror or e}") from None
 
 
 def _render(sim, path, how, stderr):
@@ -339,8 +344,11 @@ def run(robot, launch, args, meta, stderr=None):
             from .sim.simulator import Simulator
             world, source = find_world(args.paths, args.world)
             settings = sim_settings(world, args.namespace, args.goal, args.duration)
-            sim = Simulator(world, Bus())
-            bus = sim.bus
+            bus = Bus()
+            clock = _Later()
+            recorder = _recorder(bus, args.record, clock)
+            sim = Simulator(world, bus)
+            clock.read = lambda: sim.time_ns
             if progress is not None:
                 progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
         else:
@@ -349,6 +357,7 @@ def run(robot, launch, args, meta, stderr=None):
                 bus = open_ros2_bus()
             except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
                 raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
+            recorder = _recorder(bus, args.record)
     except RobotError as e:
         stderr.write(f"scoopc: error: {e}\n")
         return 2
@@ -358,12 +367,12 @@ def run(robot, launch, args, meta, stderr=None):
     wall = time.monotonic()
     if sim is not None:
         result = run_with_robot(lambda on_start: launch(on_start, virtual_clock=not args.realtime), settings,
-                                bus, sim=sim, record=args.record, png=png, gif=args.gif, progress=progress,
+                                bus, sim=sim, recorder=recorder, png=png, gif=args.gif, progress=progress,
                                 stderr=stderr)
     else:
         expired = threading.Event()
         result = run_with_robot(lambda on_start: launch(_deadline(settings.duration, expired)), settings, bus,
-                                record=args.record, stderr=stderr)
+                                recorder=recorder, stderr=stderr)
         _close_ros2(bus)
         if expired.is_set():
             result.stopped_by = "duration"
@@ -399,6 +408,16 @@ def _close_ros2(bus):
     close = getattr(bus, "close", None)
     if close is not None:
         close()
+
+
+class _Later:
+    """A clock whose reading is set once the simulator exists."""
+
+    def __init__(self):
+        self.read = lambda: 0
+
+    def __call__(self):
+        return self.read()
 
 
 def _progress_line(stderr):

@@ -77,16 +77,6 @@ def check_sleeping_barber(out: str) -> None:
     assert int(given) == len(cuts)
 
 
-def check_cancellable_control(out: str) -> None:
-    steps = matching(out, r"Controller: step (\d+), speed (\d+)$")
-    assert [int(s) for s, _ in steps] == list(range(1, len(steps) + 1))
-    assert all(0 <= int(v) <= 100 for _, v in steps), "the motor's speed stays within 0..100"
-    (requested,), = matching(out, r"Supervisor: (\d+) steps done, stop requested$")
-    assert int(requested) == len(steps)
-    (commands,), = matching(out, r"Motor at rest after (\d+) speed commands$")
-    assert int(commands) == len(steps) + 1
-
-
 def check_eyes_follow_ball(out: str) -> None:
     turns = matching(out, r"Eyes: ball at (-?\d+) degrees, head turns to (-?\d+)$")
     throws = matching(out, r"Thrower: ball thrown to (-?\d+) degrees$")
@@ -94,14 +84,6 @@ def check_eyes_follow_ball(out: str) -> None:
     assert all(int(h) == max(-45, min(45, int(b))) for b, h in turns), "the head never turns beyond 45 degrees"
     (count, last), = matching(out, r"Head turned (\d+) times and looks at (-?\d+) degrees$")
     assert int(count) == len(turns) and last == turns[-1][1]
-
-
-def check_go_charging(out: str) -> None:
-    levels = [int(v) for _, v in matching(out, r"Driver: leg (\d+) driven, battery at (\d+)%$")]
-    assert all(0 <= v <= 100 for v in levels)
-    trips = matching(out, r"Charging: battery at (\d+)%, going to the station$")
-    (legs, level, recharged), = matching(out, r"Route of (\d+) legs done: battery at (\d+)%, recharged (\d+) time\(s\)$")
-    assert int(legs) == len(levels) and int(level) == levels[-1] and int(recharged) == len(trips)
 
 
 def check_move_limbs(out: str) -> None:

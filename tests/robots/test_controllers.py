@@ -3,21 +3,11 @@ SIMPLE_CONTROLLER, run in-process with `scoopc run --virtual-clock` against the 
 import threading
 from pathlib import Path
 
-import pytest
 
 from scoopc import cli
-from scoopc.robots import messages, transport
-from scoopc.robots.bus import Bus
+from scoopc.robots import messages
 
 PROGRAMS = Path(__file__).parent / "programs"
-
-
-@pytest.fixture
-def bus():
-    fresh = Bus()
-    previous = transport.use(fresh)
-    yield fresh
-    transport.use(previous)
 
 
 def run(capsys, name):

@@ -16,28 +16,13 @@ pytest.importorskip("cyclonedds")
 from scoopc.robots import cdr, dds, messages  # noqa: E402
 
 TIMEOUT = 10.0
-CONFIG = """<?xml version="1.0" encoding="UTF-8"?>
-<CycloneDDS xmlns="https://cdds.io/config">
-  <Domain Id="any">
-    <General>
-      <Interfaces><NetworkInterface address="127.0.0.1"/></Interfaces>
-      <AllowMulticast>false</AllowMulticast>
-    </General>
-    <Discovery>
-      <ParticipantIndex>auto</ParticipantIndex>
-      <MaxAutoParticipantIndex>50</MaxAutoParticipantIndex>
-      <Peers><Peer address="127.0.0.1"/></Peers>
-    </Discovery>
-  </Domain>
-</CycloneDDS>
-"""
 
 
 @pytest.fixture(scope="module", autouse=True)
 def loopback(tmp_path_factory):
     """Loopback-only DDS in a domain unlikely to clash; restores the environment afterwards."""
     path = tmp_path_factory.mktemp("dds") / "cyclonedds.xml"
-    path.write_text(CONFIG)
+    path.write_text(dds.LOOPBACK_CONFIG)
     saved = {name: os.environ.get(name) for name in ("CYCLONEDDS_URI", "ROS_DOMAIN_ID")}
     os.environ["CYCLONEDDS_URI"] = path.as_uri()
     os.environ["ROS_DOMAIN_ID"] = str(random.randint(100, 200))

@@ -2,23 +2,13 @@
 `scoopc msg` writes, and compiled programs publish Eiffel message objects as ROS 2 messages."""
 from pathlib import Path
 
-import pytest
 
 from scoopc import cli
-from scoopc.robots import eiffel_messages, transport
-from scoopc.robots.bus import Bus
+from scoopc.robots import eiffel_messages
 from scoopc.semantics.universe import stdlib_root
 
 PROGRAMS = Path(__file__).parent / "programs"
 LIBRARY = stdlib_root() / "roboscoop" / "communication" / "messages"
-
-
-@pytest.fixture
-def bus():
-    fresh = Bus()
-    previous = transport.use(fresh)
-    yield fresh
-    transport.use(previous)
 
 
 def test_library_message_classes_are_the_generated_ones(tmp_path):

@@ -5,7 +5,6 @@ import threading
 from pathlib import Path
 
 import numpy as np
-import pytest
 
 from scoopc import cli
 from scoopc.kernel.ext import ros_publisher
@@ -14,14 +13,6 @@ from scoopc.robots.bus import Bus
 
 PROGRAMS = Path(__file__).parent / "programs"
 ROBOSCOOP = Path(__file__).parents[2] / "stdlib" / "roboscoop"
-
-
-@pytest.fixture
-def bus():
-    fresh = Bus()
-    previous = transport.use(fresh)
-    yield fresh
-    transport.use(previous)
 
 
 def run(capsys, name):

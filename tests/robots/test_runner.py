@@ -78,6 +78,7 @@ def test_namespace_goal_and_duration_options(capsys):
     result = run_on_simulator(PROGRAMS / "run_world", namespace="beta", goal=(1.0, -2.0), duration=3)
     out, _ = capsys.readouterr()
     lines = out.splitlines()
+    assert result.status == 0 and result.stopped_by == "program"
     assert lines[0] == "robot /beta (2 of 2)"
     assert lines[4] == "goal True 1 -2"
     assert lines[6] == "duration 3"
@@ -128,3 +129,28 @@ def test_ctrl_c_ends_a_realtime_run_and_reports_it(tmp_path):
         proc.kill()
     assert proc.returncode == 130, err
     assert "scoopc: simulated" in err and "Traceback" not in err
+
+
+def test_record_and_gif_of_a_simulated_run(tmp_path, capsys):
+    from scoopc.robots import record
+
+    mcap, gif = tmp_path / "run.mcap", tmp_path / "run.gif"
+    result = run_on_simulator(PROGRAMS / "run_forward", record=mcap, gif=gif)
+    err = capsys.readouterr().err
+    assert result.status == 0, err
+    assert f"recording written to {mcap}" in err and f"animation written to {gif}" in err
+    assert gif.read_bytes()[:6] == b"GIF89a"
+    messages = record.read(mcap)
+    topics = {topic for topic, _, _ in messages}
+    assert {"/robot1/cmd_vel", "/robot1/odom", "/clock"} <= topics
+    commands = [(t, m) for topic, t, m in messages if topic == "/robot1/cmd_vel"]
+    # cmd_vel has no stamp: it is logged at the simulated time it was sent, the last one the stop
+    assert commands[0][0] <= 200_000_000 and commands[-1][1].linear.x == 0.0
+    assert 14.0e9 <= commands[-1][0] <= 14.5e9
+    times = [t for _, t, _ in messages]
+    assert times == sorted(times)
+
+
+def test_a_recording_that_cannot_be_written_is_a_usage_error(capsys):
+    assert cli.main(["run", str(PROGRAMS / "run_forward"), "--no-png", "--record", "/nonexistent/x.mcap"]) == 2
+    assert "scoopc: error: cannot record to /nonexistent/x.mcap" in capsys.readouterr().err

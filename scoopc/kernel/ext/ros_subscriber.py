@@ -6,7 +6,7 @@ client of the runtime (`rt.outside_client`): the transport thread never writes a
 Eiffel object. Messages are coalesced per subscription: only the newest undelivered message is
 kept, and one call is logged when none is pending, so a slow signaler sees the latest reading
 and no queue grows. The call converts the message to plain values on the listener's processor
-and calls the listener's routine (`on_odometry`, `on_range`, `on_battery`) with them.
+and calls the listener's routine (`on_odometry`, `on_range`, `on_scan`, `on_battery`) with them.
 The subscriptions close when the runtime shuts down (a shutdown hook) or on `close`.
 """
 import math
@@ -38,6 +38,33 @@ def odometry_values(msg):
 
 def range_values(msg):
     return (float(msg.range), float(msg.min_range), float(msg.max_range))
+
+
+def scan_values(msg):
+    """The scan's plain values; the ranges stay a host list until `deliver` makes the array."""
+    return (float(msg.angle_min), float(msg.angle_increment), float(msg.range_min),
+            float(msg.range_max), _stamp(msg.header), _RangeList(float(r) for r in msg.ranges))
+
+
+class _RangeList(list):
+    """Ranges to become an Eiffel ARRAY [REAL_64] in the listener's region (see `_eiffel_values`)."""
+
+
+def real_array(region, values):
+    """A new ARRAY [REAL_64] (1-based) in `region` holding `values`."""
+    from scoopc import kernel
+    from scoopc.kernel import types
+    generic = (types.t("REAL_64"),)
+    items = list(values)
+    special = region.new(kernel.cls("SPECIAL"))
+    special._gen_, special._items, special._cap = generic, items, len(items)
+    array = region.new(kernel.cls("ARRAY"))
+    array._gen_, array.area, array.lower, array.upper = generic, special, 1, len(items)
+    return array
+
+
+def _eiffel_values(listener, values):
+    return tuple(real_array(listener._region_, v) if isinstance(v, _RangeList) else v for v in values)
 
 
 def battery_values(msg):
@@ -99,7 +126,7 @@ def deliver(listener, link):
     """On the listener's processor: the newest message, as plain values, to its routine."""
     msg = link.take()
     if msg is not None:
-        getattr(listener, link.routine)(*link.extra, *link.convert(msg))
+        getattr(listener, link.routine)(*link.extra, *_eiffel_values(listener, link.convert(msg)))
 
 
 def _links(current):
@@ -119,6 +146,10 @@ def listen_odometry(current, listener):
 
 def listen_range(current, listener, sensor):
     _listen(current, listener, "on_range", range_values, (sensor,))
+
+
+def listen_scan(current, listener):
+    _listen(current, listener, "on_scan", scan_values)
 
 
 def listen_battery(current, listener):

@@ -51,6 +51,13 @@ feature -- Basic operations
 			"Python"
 		end
 
+	listen_scan (a_listener: SCAN_LISTENER)
+			-- Deliver sensor_msgs/LaserScan messages to `a_listener' (ranges as a fresh ARRAY [REAL_64]
+			-- on its processor, indexed from 1).
+		external
+			"Python"
+		end
+
 	listen_battery (a_listener: BATTERY_LISTENER)
 			-- Deliver sensor_msgs/BatteryState messages to `a_listener'.
 		external

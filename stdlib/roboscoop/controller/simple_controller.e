@@ -2,34 +2,63 @@ note
 	description: "[
 		The paper's simple controller: go straight while the way is clear, turn away from an
 		obstacle, stop on an emergency. Each behaviour is a guarded routine over separate
-		RANGE_SIGNALER and STOP_SIGNALER arguments whose wait condition says when it applies
-		(`go_straight', `turn', `stop_on_emergency'); it commands a separate DIFFERENTIAL_DRIVE.
-		Several controllers can each call one of them repeatedly (the guard then blocks until
-		it holds), or `run' serves all three on one processor at `period' nanoseconds per
-		iteration until the stop signaler fires, then stops the robot.
+		signalers (STOP_SIGNALER, RANGE_SIGNALER, and a MANEUVER_SIGNALER for timed turns) whose
+		wait condition says when it applies; it commands a separate DIFFERENTIAL_DRIVE.
+
+		Two ways to use it. One controller can serve `go_straight' and `turn' on its own
+		processor (`run'). Or, as in the paper's exploration, three controllers are launched
+		together, each repeating one guarded routine until the stop signaler fires:
+		`run_cruise' (`cruise': forward while clear), `run_avoid' (`avoid': timed escape
+		maneuvers away from obstacles and holes, with random turn durations) and
+		`run_emergency' (`stop_on_emergency'). Each guard also holds once the stop is requested,
+		so every loop ends. Not a busy loop: a guard that stays true runs every `period'
+		nanoseconds (the controller sleeps on the runtime's clock between iterations), so
+		cmd_vel gets at most one command per period from each controller.
 	]"
 
 class
 	SIMPLE_CONTROLLER
 
 create
-	make
+	make, make_with_maneuver
 
 feature {NONE} -- Initialization
 
 	make (a_stop: separate STOP_SIGNALER; a_range: separate RANGE_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE;
 			a_linear, a_angular: REAL_64; a_period: INTEGER_64)
-			-- Controller driving at `a_linear' m/s, turning at `a_angular' rad/s, every `a_period' ns.
+			-- Controller driving at `a_linear' m/s, turning at `a_angular' rad/s, every `a_period' ns,
+			-- with a maneuver signaler of its own.
+		require
+			positive_speeds: a_linear > 0.0 and a_angular > 0.0
+			non_negative_period: a_period >= 0
+		local
+			m: separate MANEUVER_SIGNALER
+		do
+			create m.make
+			make_with_maneuver (a_stop, a_range, m, a_drive, a_linear, a_angular, a_period)
+		end
+
+	make_with_maneuver (a_stop: separate STOP_SIGNALER; a_range: separate RANGE_SIGNALER;
+			a_maneuver: separate MANEUVER_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE;
+			a_linear, a_angular: REAL_64; a_period: INTEGER_64)
+			-- Like `make', sharing the maneuver signaler `a_maneuver' with other controllers.
 		require
 			positive_speeds: a_linear > 0.0 and a_angular > 0.0
 			non_negative_period: a_period >= 0
 		do
 			stop_signaler := a_stop
 			range_signaler := a_range
+			maneuver_signaler := a_maneuver
 			drive := a_drive
 			linear_speed := a_linear
 			angular_speed := a_angular
 			period := a_period
+			create clock.make
+			create random.make
+			random.start
+			min_turn_angle := 0.7
+			max_turn_angle := 2.6
+			backoff_time := 0.4
 		end
 
 feature -- Access
@@ -40,6 +69,9 @@ feature -- Access
 	range_signaler: separate RANGE_SIGNALER
 			-- Obstacles.
 
+	maneuver_signaler: separate MANEUVER_SIGNALER
+			-- Timed escape maneuvers under way.
+
 	drive: separate DIFFERENTIAL_DRIVE
 			-- Where commands go.
 
@@ -47,17 +79,52 @@ feature -- Access
 			-- Forward speed and turn rate commanded.
 
 	period: INTEGER_64
-			-- Nanoseconds between iterations of `run'.
+			-- Nanoseconds between iterations of the loops.
 
 	iteration_count: INTEGER
-			-- Iterations of `run'.
+			-- Iterations of the loop run so far.
+
+	min_turn_angle, max_turn_angle: REAL_64
+			-- Bounds of a random escape turn (radians): each turn lasts the time needed to turn by
+			-- an angle drawn uniformly between them at `angular_speed'.
+
+	backoff_time: REAL_64
+			-- Seconds spent backing away from a hole before turning.
 
 feature -- Status report
 
 	is_finished: BOOLEAN
-			-- Has `run' seen the stop request?
+			-- Has the loop seen the stop request?
 
-feature -- Basic operations
+feature -- Element change
+
+	set_turn_angles (a_min, a_max: REAL_64)
+			-- Escape turns turn by between `a_min' and `a_max' radians.
+		require
+			valid: 0.0 < a_min and a_min <= a_max
+		do
+			min_turn_angle := a_min
+			max_turn_angle := a_max
+		end
+
+	set_backoff_time (a_seconds: REAL_64)
+			-- Back away from a hole for `a_seconds'.
+		require
+			non_negative: a_seconds >= 0.0
+		do
+			backoff_time := a_seconds
+		end
+
+	set_seed (a_seed: INTEGER)
+			-- Restart the random turn durations from `a_seed'.
+		require
+			non_negative: a_seed >= 0
+		do
+			random.set_seed (a_seed)
+			random.start
+		end
+
+feature -- Guarded behaviours
 
 	go_straight (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
 			-- Drive forward when nothing is in front.
@@ -87,7 +154,68 @@ feature -- Basic operations
 			s_sig.is_stop_requested
 		do
 			a_drive.stop
+			is_finished := True
 		end
+
+	cruise (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; m_sig: separate MANEUVER_SIGNALER;
+			a_drive: separate DIFFERENTIAL_DRIVE)
+			-- Drive forward while the way is clear, the data fresh and no maneuver under way.
+		require
+			s_sig.is_stop_requested or (r_sig.is_clear and not r_sig.is_stale and not m_sig.is_active)
+		do
+			if s_sig.is_stop_requested then
+				is_finished := True
+			else
+				a_drive.send (linear_speed, 0.0)
+			end
+		end
+
+	avoid (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; m_sig: separate MANEUVER_SIGNALER;
+			a_drive: separate DIFFERENTIAL_DRIVE)
+			-- Escape from an obstacle in front or a hole under a ground sensor: back away from a
+			-- hole, then turn away for a random time; keep turning while the way is still blocked.
+		require
+			s_sig.is_stop_requested or r_sig.has_obstacle or r_sig.has_ground_hole or m_sig.is_active
+		local
+			now: REAL_64
+		do
+			if s_sig.is_stop_requested then
+				is_finished := True
+			else
+				now := clock.now
+				if not m_sig.is_active or else (m_sig.linear > 0.0 and not r_sig.is_clear) then
+					plan_escape (r_sig, m_sig, now)
+				elseif m_sig.linear < 0.0 and r_sig.is_obstacle_behind then
+					m_sig.advance (now)
+				elseif m_sig.is_phase_over (now) then
+					if m_sig.has_next_phase then
+						m_sig.advance (now)
+					elseif r_sig.has_obstacle or r_sig.has_ground_hole then
+						m_sig.extend (now, uniform (0.2, 0.5))
+					else
+						m_sig.finish
+					end
+				end
+				if m_sig.is_active then
+					a_drive.send (m_sig.linear, m_sig.angular)
+				end
+			end
+		end
+
+	swerve (s_sig: separate STOP_SIGNALER; m_sig: separate MANEUVER_SIGNALER)
+			-- Start a random turn, slowing down, unless a maneuver is under way (wandering).
+		local
+			direction: REAL_64
+		do
+			if s_sig.is_stop_requested then
+				is_finished := True
+			elseif not m_sig.is_active then
+				direction := random_direction
+				m_sig.start (linear_speed / 2.0, direction * angular_speed / 2.0, clock.now, turn_time)
+			end
+		end
+
+feature -- Loops
 
 	run
 			-- Go straight or turn every `period' until the stop signaler fires; then stop the robot.
@@ -98,9 +226,67 @@ feature -- Basic operations
 				is_finished
 			loop
 				control (stop_signaler, range_signaler, drive)
-				if not is_finished and period > 0 then
-					(create {EXECUTION_ENVIRONMENT}).sleep (period)
-				end
+				pause
+			end
+		ensure
+			finished: is_finished
+		end
+
+	run_cruise
+			-- Repeat `cruise' until the stop signaler fires.
+		do
+			from
+				is_finished := False
+			until
+				is_finished
+			loop
+				cruise (stop_signaler, range_signaler, maneuver_signaler, drive)
+				iteration_count := iteration_count + 1
+				pause
+			end
+		ensure
+			finished: is_finished
+		end
+
+	run_avoid
+			-- Repeat `avoid' until the stop signaler fires.
+		do
+			from
+				is_finished := False
+			until
+				is_finished
+			loop
+				avoid (stop_signaler, range_signaler, maneuver_signaler, drive)
+				iteration_count := iteration_count + 1
+				pause
+			end
+		ensure
+			finished: is_finished
+		end
+
+	run_emergency
+			-- Wait for the stop request, then stop the robot.
+		do
+			is_finished := False
+			stop_on_emergency (stop_signaler, drive)
+			iteration_count := iteration_count + 1
+		ensure
+			finished: is_finished
+		end
+
+	run_swerve (a_min_gap, a_max_gap: REAL_64)
+			-- Every `a_min_gap' to `a_max_gap' seconds (at random), `swerve', until the stop signaler fires.
+		require
+			valid_gaps: 0.0 < a_min_gap and a_min_gap <= a_max_gap
+		do
+			from
+				is_finished := False
+			until
+				is_finished
+			loop
+				clock.sleep (uniform (a_min_gap, a_max_gap))
+				swerve (stop_signaler, maneuver_signaler)
+				iteration_count := iteration_count + 1
 			end
 		ensure
 			finished: is_finished
@@ -108,18 +294,85 @@ feature -- Basic operations
 
 feature {NONE} -- Implementation
 
+	clock: TIMER
+			-- The runtime's clock.
+
+	random: RANDOM
+			-- Turn durations and directions.
+
 	control (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
 			-- One iteration: the behaviour whose guard holds (all three reserved together).
 		do
 			if s_sig.is_stop_requested then
 				stop_on_emergency (s_sig, a_drive)
-				is_finished := True
 			elseif r_sig.has_obstacle then
 				turn (s_sig, r_sig, a_drive)
 			else
 				go_straight (s_sig, r_sig, a_drive)
 			end
 			iteration_count := iteration_count + 1
+		end
+
+	plan_escape (r_sig: separate RANGE_SIGNALER; m_sig: separate MANEUVER_SIGNALER; a_now: REAL_64)
+			-- Start the maneuver that gets away from what `r_sig' sees.
+		local
+			direction: REAL_64
+		do
+			if r_sig.has_ground_hole then
+				if r_sig.is_hole_left and not r_sig.is_hole_right then
+					direction := -1.0
+				elseif r_sig.is_hole_right and not r_sig.is_hole_left then
+					direction := 1.0
+				else
+					direction := random_direction
+				end
+				if r_sig.is_obstacle_behind or backoff_time = 0.0 then
+					m_sig.start (0.0, direction * angular_speed, a_now, turn_time)
+				else
+					m_sig.start_two (- linear_speed / 2.0, 0.0, a_now, backoff_time,
+						0.0, direction * angular_speed, turn_time)
+				end
+			else
+				if r_sig.is_obstacle_left and not r_sig.is_obstacle_right then
+					direction := -1.0
+				elseif r_sig.is_obstacle_right and not r_sig.is_obstacle_left then
+					direction := 1.0
+				else
+					direction := random_direction
+				end
+				m_sig.start (0.0, direction * angular_speed, a_now, turn_time)
+			end
+		end
+
+	uniform (a_low, a_high: REAL_64): REAL_64
+			-- A random number in [`a_low', `a_high'].
+		do
+			random.forth
+			Result := a_low + (a_high - a_low) * random.double_item
+		end
+
+	turn_time: REAL_64
+			-- Duration of a random escape turn (s).
+		do
+			Result := uniform (min_turn_angle, max_turn_angle) / angular_speed
+		end
+
+	random_direction: REAL_64
+			-- 1 or -1 at random.
+		do
+			if uniform (0.0, 1.0) < 0.5 then
+				Result := -1.0
+			else
+				Result := 1.0
+			end
+		end
+
+	pause
+			-- Sleep `period' nanoseconds on the runtime's clock (unless finished).
+		do
+			if not is_finished and period > 0 then
+				(create {EXECUTION_ENVIRONMENT}).sleep (period)
+			end
 		end
 
 end

@@ -1,11 +1,16 @@
 note
-	description: "The battery's state (sensor_msgs/BatteryState on a topic)."
+	description: "[
+		The battery's state (sensor_msgs/BatteryState on a topic). Battery states come seldom
+		(1 Hz on the simulator), so the data goes stale after 3 s without one.
+	]"
 
 class
 	BATTERY_SIGNALER
 
 inherit
 	BATTERY_LISTENER
+
+	SENSOR_SIGNALER
 
 create
 	make, make_unconnected
@@ -16,13 +21,14 @@ feature {NONE} -- Initialization
 			-- Signaler fed by the battery state published on `a_topic'.
 		do
 			make_unconnected
-			create subscriber.make (a_topic)
-			subscriber.listen_battery (Current)
+			new_subscriber (create {STRING}.make_from_separate (a_topic)).listen_battery (Current)
 		end
 
 	make_unconnected
 			-- Signaler fed only by calls of `on_battery'; full until told otherwise.
 		do
+			make_sensor
+			set_stale_after (3.0)
 			charging_level := 1.0
 		end
 
@@ -33,12 +39,6 @@ feature -- Access
 
 	voltage: REAL_64
 			-- Last voltage (V).
-
-	update_count: INTEGER
-			-- Readings received.
-
-	subscriber: detachable ROS_SUBSCRIBER
-			-- Where readings come from (Void: unconnected).
 
 feature -- Status report
 
@@ -57,7 +57,7 @@ feature -- Element change
 				charging_level := a_percentage.min (1.0)
 			end
 			voltage := a_voltage
-			update_count := update_count + 1
+			note_reading
 		end
 
 end

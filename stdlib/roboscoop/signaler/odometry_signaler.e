@@ -1,7 +1,8 @@
 note
 	description: "[
 		The robot's odometry (nav_msgs/Odometry on a topic), updated by the transport through
-		asynchronous calls on this signaler's processor. Read it in wait conditions.
+		asynchronous calls on this signaler's processor. Read it in wait conditions. Reports
+		stale data (`is_stale') when the topic goes silent.
 	]"
 
 class
@@ -9,6 +10,8 @@ class
 
 inherit
 	ODOMETRY_LISTENER
+
+	SENSOR_SIGNALER
 
 create
 	make, make_unconnected
@@ -19,14 +22,13 @@ feature {NONE} -- Initialization
 			-- Signaler fed by the odometry published on `a_topic' ("/odom", "/robot1/odom").
 		do
 			make_unconnected
-			create subscriber.make (a_topic)
-			subscriber.listen_odometry (Current)
+			new_subscriber (create {STRING}.make_from_separate (a_topic)).listen_odometry (Current)
 		end
 
 	make_unconnected
 			-- Signaler fed only by calls of `on_odometry'.
 		do
-			create clock.make
+			make_sensor
 			moving_threshold := 0.01
 			twisting_threshold := 0.01
 		end
@@ -41,12 +43,6 @@ feature -- Access
 
 	timestamp: REAL_64
 			-- Stamp of the last message (s).
-
-	received_at: REAL_64
-			-- Runtime clock (s) when the last reading arrived.
-
-	update_count: INTEGER
-			-- Readings received.
 
 	pose: POSE_2D
 			-- Last pose.
@@ -63,9 +59,6 @@ feature -- Access
 	moving_threshold, twisting_threshold: REAL_64
 			-- Speeds below which the robot counts as still.
 
-	subscriber: detachable ROS_SUBSCRIBER
-			-- Where readings come from (Void: unconnected).
-
 feature -- Status report
 
 	is_moving: BOOLEAN
@@ -80,18 +73,6 @@ feature -- Status report
 			Result := vtheta.abs > twisting_threshold
 		end
 
-	has_reading: BOOLEAN
-			-- Has any reading arrived?
-		do
-			Result := update_count > 0
-		end
-
-	is_stale (a_max_age: REAL_64): BOOLEAN
-			-- Is there no reading younger than `a_max_age' seconds?
-		do
-			Result := update_count = 0 or else clock.now - received_at > a_max_age
-		end
-
 feature -- Element change
 
 	on_odometry (a_x, a_y, a_theta, a_vx, a_vtheta, a_timestamp: REAL_64)
@@ -103,8 +84,7 @@ feature -- Element change
 			vx := a_vx
 			vtheta := a_vtheta
 			timestamp := a_timestamp
-			received_at := clock.now
-			update_count := update_count + 1
+			note_reading
 		ensure then
 			counted: update_count = old update_count + 1
 		end
@@ -117,18 +97,5 @@ feature -- Element change
 			moving_threshold := a_moving
 			twisting_threshold := a_twisting
 		end
-
-	close
-			-- Stop listening.
-		do
-			if attached subscriber as s then
-				s.close
-			end
-		end
-
-feature {NONE} -- Implementation
-
-	clock: TIMER
-			-- The runtime's clock.
 
 end

@@ -1,0 +1,46 @@
+note
+	description: "[
+		TangentBug on the simulator: the diff-drive robot of the world goes to the world's goal
+		(or `--goal X,Y') among obstacles it discovers with its 2 m laser, and says whether it
+		reached the goal or found it unreachable.
+	]"
+
+class
+	TANGENT_BUG
+
+create
+	make
+
+feature {NONE} -- Initialization
+
+	make
+			-- Run TangentBug to the goal and report the outcome.
+		local
+			env: ROBOT_ENVIRONMENT
+			bug: TANGENT_BUG_BEHAVIOR
+		do
+			create env
+			if env.has_goal then
+				print ("tangent bug: going to (" + env.goal_x.out + ", " + env.goal_y.out + ")%N")
+				create bug.make_for_namespace (env.namespace, env.goal_x, env.goal_y, env.max_linear, env.max_angular)
+				bug.start
+				bug.wait_until_finished
+				report (bug.status)
+			else
+				print ("tangent bug: the world has no goal (give one with --goal X,Y)%N")
+			end
+		end
+
+feature {NONE} -- Implementation
+
+	report (a_status: separate NAVIGATION_SIGNALER)
+			-- Print the outcome.
+		do
+			print ("tangent bug: " + create {STRING}.make_from_separate (a_status.mode_name)
+				+ " after " + a_status.path_length.truncated_to_integer.out + "."
+				+ ((a_status.path_length * 100.0).truncated_to_integer \\ 100).out + " m, "
+				+ a_status.boundary_count.out + " boundary following(s), "
+				+ a_status.leave_count.out + " leave(s)%N")
+		end
+
+end

@@ -1,0 +1,136 @@
+note
+	description: "[
+		A differential-drive robot under a topic namespace ("/robot1", or "" for none): its
+		velocity commands (`drive': geometry_msgs/Twist on cmd_vel, or TwistStamped with
+		`make_stamped'), its odometry (`odometry', from odom), its battery (`battery', from
+		battery_state), its laser scanner seen as obstacle sectors (`range_signaler', from
+		scan) and the whole scan (`laser'). Each part is a separate object on its own
+		processor, so that controllers reserve only what they use; the robot object just makes
+		and holds them. The odometry, battery and laser signalers subscribe on first use (a
+		program that never asks for them does not pay for their messages).
+	]"
+
+class
+	DIFF_DRIVE_ROBOT
+
+create
+	make, make_stamped, make_with_limits
+
+feature {NONE} -- Initialization
+
+	make (a_namespace: separate STRING)
+			-- Robot under `a_namespace' taking Twist commands, with the default speed limits.
+		do
+			make_with_limits (a_namespace, default_max_linear, default_max_angular, False)
+		end
+
+	make_stamped (a_namespace: separate STRING)
+			-- Robot under `a_namespace' taking TwistStamped commands, with the default speed limits.
+		do
+			make_with_limits (a_namespace, default_max_linear, default_max_angular, True)
+		ensure
+			stamped: is_stamped
+		end
+
+	make_with_limits (a_namespace: separate STRING; a_max_linear, a_max_angular: REAL_64; a_stamped: BOOLEAN)
+			-- Robot under `a_namespace' driven at most at `a_max_linear' m/s and `a_max_angular' rad/s,
+			-- with TwistStamped commands when `a_stamped'.
+		require
+			positive_limits: a_max_linear > 0.0 and a_max_angular > 0.0
+		do
+			namespace := normalized (create {STRING}.make_from_separate (a_namespace))
+			max_linear := a_max_linear
+			max_angular := a_max_angular
+			is_stamped := a_stamped
+			if a_stamped then
+				create drive.make_stamped (topic ("cmd_vel"), a_max_linear, a_max_angular)
+			else
+				create drive.make (topic ("cmd_vel"), a_max_linear, a_max_angular)
+			end
+			make_range_signaler
+		ensure
+			limits_set: max_linear = a_max_linear and max_angular = a_max_angular
+			stamped_set: is_stamped = a_stamped
+		end
+
+feature -- Access
+
+	namespace: STRING
+			-- Topic prefix: empty, or "/" followed by the name ("/robot1").
+
+	max_linear, max_angular: REAL_64
+			-- Speed limits (m/s, rad/s).
+
+	drive: separate DIFFERENTIAL_DRIVE
+			-- Velocity commands (cmd_vel).
+
+	odometry: separate ODOMETRY_SIGNALER
+			-- Pose and speeds (odom), subscribed on first use.
+		once ("OBJECT")
+			create Result.make (topic ("odom"))
+		end
+
+	battery: separate BATTERY_SIGNALER
+			-- Charge (battery_state), subscribed on first use.
+		once ("OBJECT")
+			create Result.make (topic ("battery_state"))
+		end
+
+	range_signaler: separate RANGE_SIGNALER
+			-- Obstacles around the robot.
+
+	laser: separate LASER_SIGNALER
+			-- The whole laser scan (scan), subscribed on first use.
+		once ("OBJECT")
+			create Result.make (topic ("scan"))
+		end
+
+	topic (a_name: STRING): STRING
+			-- Full name of the robot's topic `a_name' ("odom" -> "/robot1/odom").
+		do
+			Result := namespace + "/" + a_name
+		end
+
+	default_max_linear: REAL_64
+			-- Forward speed limit of `make' (m/s).
+		do
+			Result := 0.5
+		end
+
+	default_max_angular: REAL_64
+			-- Turn rate limit of `make' (rad/s).
+		do
+			Result := 2.0
+		end
+
+feature -- Status report
+
+	is_stamped: BOOLEAN
+			-- Are velocity commands TwistStamped?
+
+feature {NONE} -- Implementation
+
+	make_range_signaler
+			-- Create `range_signaler' from the laser scans.
+		do
+			create range_signaler.make_laser (namespace)
+		end
+
+	normalized (a_namespace: STRING): STRING
+			-- `a_namespace' with one leading "/" and no trailing one; empty stays empty.
+		do
+			Result := a_namespace.twin
+			from until Result.is_empty or else Result [Result.count] /= '/' loop
+				Result.remove_tail (1)
+			end
+			from until Result.is_empty or else Result [1] /= '/' loop
+				Result.remove_head (1)
+			end
+			if not Result.is_empty then
+				Result.prepend_character ('/')
+			end
+		ensure
+			empty_or_rooted: Result.is_empty or else (Result [1] = '/' and Result [Result.count] /= '/')
+		end
+
+end
