@@ -82,7 +82,9 @@ class Bus(Tapped):
         self._subs = {}              # [_lock] topic -> list of Subscription (subscription order)
         self._taps = []              # Taps (a list replaced on change: read without the lock)
 
-    def subscribe(self, topic, callback):
+    def subscribe(self, topic, callback, msgtype=None):
+        """Call `callback(msg)` for every message on `topic` (`msgtype`: ignored, the in-process bus
+        carries any message; transports that must know the type take it too)."""
         sub = Subscription(self, topic, callback)
         with self._lock:
             self._subs.setdefault(topic, []).append(sub)

@@ -43,3 +43,65 @@ def test_programs_publish_eiffel_message_objects(bus, capsys):
     assert number.data == 2.5
     scan = next(m for t, m in seen if t == "/cmd_vel" and hasattr(m, "ranges"))
     assert scan.header.frame_id == "laser" and list(scan.ranges) == [0.5, 1.25] and scan.range_max == 2.0
+
+
+def _publish_until_done(bus, topic, make, done):
+    """Publish make(i) for i = 1, 2, ... every few milliseconds until `done` is set."""
+    import threading
+
+    def run():
+        assert bus.wait_for_subscriber(topic, 30)
+        i = 0
+        while not done.wait(0.005):
+            i += 1
+            bus.publish(topic, make(i))
+    thread = threading.Thread(target=run, daemon=True)
+    thread.start()
+    return thread
+
+
+def test_a_listener_gets_message_objects(bus, capsys):
+    import threading
+
+    from scoopc.robots import messages
+
+    def odometry(i):
+        msg = messages.new("nav_msgs/msg/Odometry")
+        msg.header.frame_id = "odom"
+        msg.pose.pose.position.x = float(i)
+        return msg
+    done = threading.Event()
+    thread = _publish_until_done(bus, "/odom", odometry, done)
+    code = cli.main(["run", str(PROGRAMS / "generic_listen"), "--robot", "none"])
+    done.set()
+    thread.join()
+    out, err = capsys.readouterr()
+    assert (code, err) == (0, "")
+    frame, x, covariance = out.strip().split(", ")
+    assert frame == "frame odom" and float(x.split()[1]) >= 3 and covariance == "covariance 36"
+
+
+def test_a_listener_of_a_type_made_by_scoopc_msg(bus, tmp_path, capsys):
+    import shutil
+    import threading
+
+    from scoopc.robots import messages
+
+    program = tmp_path / "imu_listen"
+    shutil.copytree(PROGRAMS / "imu_listen", program)
+    assert cli.main(["msg", "sensor_msgs/msg/Imu", "-o", str(program)]) == 0
+    capsys.readouterr()
+
+    def imu(i):
+        msg = messages.new("sensor_msgs/msg/Imu")
+        msg.linear_acceleration.z = 9.75
+        msg.orientation.w = 1.0
+        return msg
+    done = threading.Event()
+    thread = _publish_until_done(bus, "/imu", imu, done)
+    code = cli.main(["run", str(program), "--robot", "none"])
+    done.set()
+    thread.join()
+    out, err = capsys.readouterr()
+    assert (code, err) == (0, "")
+    assert out == "imu z 9.75 w 1\n"

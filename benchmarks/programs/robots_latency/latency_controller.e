@@ -26,7 +26,7 @@ feature -- Access
 	odometry: separate ODOMETRY_SIGNALER
 			-- Where readings come from.
 
-	publisher: ROS_PUBLISHER
+	publisher: ROS_PUBLISHER [GEOMETRY_MSGS_TWIST]
 			-- Where commands go.
 
 	handled: INTEGER

@@ -49,6 +49,25 @@ def scan_values(msg):
 class _RangeList(list):
     """Ranges to become an Eiffel ARRAY [REAL_64] in the listener's region (see `_eiffel_values`)."""
 
+    def eiffel(self, region):
+        return real_array(region, self)
+
+
+class _Message:
+    """A message to become an object of its Eiffel message class in the listener's region."""
+    __slots__ = ("msg",)
+
+    def __init__(self, msg):
+        self.msg = msg
+
+    def eiffel(self, region):
+        from scoopc.robots import eiffel_bridge
+        return eiffel_bridge.from_message(self.msg, region)
+
+
+def message_value(msg):
+    return (_Message(msg),)
+
 
 def real_array(region, values):
     """A new ARRAY [REAL_64] (1-based) in `region` holding `values`."""
@@ -64,7 +83,7 @@ def real_array(region, values):
 
 
 def _eiffel_values(listener, values):
-    return tuple(real_array(listener._region_, v) if isinstance(v, _RangeList) else v for v in values)
+    return tuple(v.eiffel(listener._region_) if isinstance(v, (_RangeList, _Message)) else v for v in values)
 
 
 def battery_values(msg):
@@ -75,7 +94,7 @@ def battery_values(msg):
 class Link:
     """One subscription of one listener: coalesces messages into calls on its processor."""
 
-    def __init__(self, topic, listener, routine, convert, extra=()):
+    def __init__(self, topic, listener, routine, convert, extra=(), msgtype=None):
         self.topic = topic
         self.listener = listener
         self.routine = routine              # the listener's Python method name
@@ -89,7 +108,11 @@ class Link:
         self.logged = 0                     # [lock] calls logged on the listener's processor
         self.source = rt.outside_client(f"subscription {topic}")
         rt.add_shutdown_hook(self.close)
-        self.subscription = transport.current().subscribe(topic, self.on_message)
+        bus = transport.current()
+        if msgtype is None:
+            self.subscription = bus.subscribe(topic, self.on_message)
+        else:                               # a transport that must know the type (DDS, rclpy)
+            self.subscription = bus.subscribe(topic, self.on_message, msgtype=msgtype)
 
     def on_message(self, msg):
         """On the transport's thread: keep `msg`, log one call if none is pending."""
@@ -136,8 +159,22 @@ def _links(current):
     return links
 
 
-def _listen(current, listener, routine, convert, extra=()):
-    _links(current).append(Link(_text(current.topic), listener, routine, convert, extra))
+def _listen(current, listener, routine, convert, extra=(), msgtype=None):
+    _links(current).append(Link(_text(current.topic), listener, routine, convert, extra, msgtype))
+
+
+def listen(current, listener):
+    """ROS_SUBSCRIBER [M].listen: messages as objects of M (its ROS type from M's class name)."""
+    from scoopc.robots import eiffel_bridge
+    name = current._gen_[0].key
+    try:
+        typename = eiffel_bridge.typename_of_class(name)
+    except KeyError:
+        from scoopc.kernel.ext.exception import failure
+        raise failure(current._region_, "DEVELOPER_EXCEPTION",
+                      f"ROS_SUBSCRIBER [{name.split('@')[0]}]: `listen' needs a message class "
+                      f"(from `scoopc msg' or communication/messages/) as its actual generic") from None
+    _listen(current, listener, "on_message", message_value, msgtype=typename)
 
 
 def listen_odometry(current, listener):

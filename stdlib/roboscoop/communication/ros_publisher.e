@@ -1,11 +1,12 @@
 note
 	description: "[
-		Publishes messages on one topic of the robot's transport. The message is built from
-		plain values on the Python side (rosbags' ROS 2 types); Eiffel code never sees it.
+		Publishes messages of type `M' on one topic of the robot's transport: `publish' takes a
+		message object (converted to its ROS 2 type on this processor); `publish_velocity' and
+		`publish_real' build a Twist (or TwistStamped) and a Float64 from plain values.
 	]"
 
 class
-	ROS_PUBLISHER
+	ROS_PUBLISHER [M -> ROS_MESSAGE]
 
 create
 	make, make_stamped
@@ -42,7 +43,7 @@ feature -- Access
 
 feature -- Basic operations
 
-	publish (a_message: separate ROS_MESSAGE)
+	publish (a_message: separate M)
 			-- Publish `a_message' (converted to its ROS 2 type on this processor).
 		do
 			publish_message (a_message)

@@ -1,13 +1,15 @@
 note
 	description: "[
-		Subscribes to one topic of the robot's transport on behalf of a listener in the same
-		region. Each incoming message becomes an asynchronous call of the listener's
-		`on_...' routine on the listener's processor, with plain values; messages are
-		coalesced: a slow listener gets the newest one, no queue grows.
+		Subscribes to one topic of the robot's transport, whose messages are of type `M', on
+		behalf of a listener in the same region. Each incoming message becomes an asynchronous
+		call on the listener's processor: `on_message' of a ROS_LISTENER [M] with the message as
+		an Eiffel object (`listen'), or, for the signalers' common messages, an `on_...' routine
+		with plain values (`listen_odometry', `listen_range', ...). Messages are coalesced: a slow
+		listener gets the newest one, no queue grows.
 	]"
 
 class
-	ROS_SUBSCRIBER
+	ROS_SUBSCRIBER [M -> ROS_MESSAGE]
 
 create
 	make
@@ -38,6 +40,12 @@ feature -- Access
 		end
 
 feature -- Basic operations
+
+	listen (a_listener: ROS_LISTENER [M])
+			-- Deliver every message to `a_listener''s `on_message', as a new object of `M' in its region.
+		external
+			"Python"
+		end
 
 	listen_odometry (a_listener: ODOMETRY_LISTENER)
 			-- Deliver nav_msgs/Odometry messages to `a_listener'.

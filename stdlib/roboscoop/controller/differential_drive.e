@@ -78,7 +78,7 @@ feature -- Basic operations
 
 feature {NONE} -- Implementation
 
-	publisher: ROS_PUBLISHER
-			-- Where commands go.
+	publisher: ROS_PUBLISHER [ROS_MESSAGE]
+			-- Where commands go (Twist or TwistStamped, by `publish_velocity').
 
 end

@@ -45,7 +45,7 @@ feature -- Access
 			Result := clock.now - received_at
 		end
 
-	subscriber: detachable ROS_SUBSCRIBER
+	subscriber: detachable ROS_SUBSCRIBER [ROS_MESSAGE]
 			-- The first subscription feeding Current (Void: unconnected).
 		do
 			if not subscribers.is_empty then
@@ -139,7 +139,7 @@ feature {NONE} -- Implementation
 	clock: TIMER
 			-- The runtime's clock.
 
-	subscribers: ARRAYED_LIST [ROS_SUBSCRIBER]
+	subscribers: ARRAYED_LIST [ROS_SUBSCRIBER [ROS_MESSAGE]]
 			-- Subscriptions feeding Current.
 
 	note_reading
@@ -151,7 +151,7 @@ feature {NONE} -- Implementation
 			counted: update_count = old update_count + 1
 		end
 
-	new_subscriber (a_topic: STRING): ROS_SUBSCRIBER
+	new_subscriber (a_topic: STRING): ROS_SUBSCRIBER [ROS_MESSAGE]
 			-- A subscription to `a_topic', kept in `subscribers'.
 		do
 			create Result.make (a_topic)

@@ -12,8 +12,8 @@ feature
 			twist: GEOMETRY_MSGS_TWIST
 			number: STD_MSGS_FLOAT64
 			scan: SENSOR_MSGS_LASER_SCAN
-			p: ROS_PUBLISHER
-			remote: separate ROS_PUBLISHER
+			p: ROS_PUBLISHER [ROS_MESSAGE]
+			remote: separate ROS_PUBLISHER [STD_MSGS_FLOAT64]
 		do
 			create twist.make
 			twist.linear.set_x (0.25)
@@ -32,7 +32,7 @@ feature
 			print (twist.ros_type + " " + p.published_count.out + "%N")
 		end
 
-	send (a_publisher: separate ROS_PUBLISHER; a_message: STD_MSGS_FLOAT64)
+	send (a_publisher: separate ROS_PUBLISHER [STD_MSGS_FLOAT64]; a_message: STD_MSGS_FLOAT64)
 		do
 			a_publisher.publish (a_message)
 		end
