@@ -21,7 +21,7 @@ feature {NONE} -- Initialization
 		do
 			create env
 			if env.has_goal then
-				print ("go to goal: driving to (" + env.goal_x.out + ", " + env.goal_y.out + ")%N")
+				print ("go to goal: driving to (" + (env.goal_x * 100.0).rounded.out + ", " + (env.goal_y * 100.0).rounded.out + ") cm%N")
 				create behavior.make_for_namespace (env.namespace, env.goal_x, env.goal_y, env.max_linear, env.max_angular)
 				behavior.start
 				behavior.wait_until_finished

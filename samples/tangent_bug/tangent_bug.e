@@ -17,12 +17,14 @@ feature {NONE} -- Initialization
 			-- Run TangentBug to the goal and report the outcome.
 		local
 			env: ROBOT_ENVIRONMENT
+			robot: separate DIFF_DRIVE_ROBOT
 			bug: TANGENT_BUG_BEHAVIOR
 		do
 			create env
 			if env.has_goal then
-				print ("tangent bug: going to (" + env.goal_x.out + ", " + env.goal_y.out + ")%N")
-				create bug.make_for_namespace (env.namespace, env.goal_x, env.goal_y, env.max_linear, env.max_angular)
+				print ("tangent bug: going to (" + metres (env.goal_x) + ", " + metres (env.goal_y) + ")%N")
+				create robot.make_with_limits (env.namespace, env.max_linear, env.max_angular, False)
+				create bug.make_for_robot (robot, env.goal_x, env.goal_y)
 				bug.start
 				bug.wait_until_finished
 				report (bug.status)
@@ -37,10 +39,18 @@ feature {NONE} -- Implementation
 			-- Print the outcome.
 		do
 			print ("tangent bug: " + create {STRING}.make_from_separate (a_status.mode_name)
-				+ " after " + a_status.path_length.truncated_to_integer.out + "."
-				+ ((a_status.path_length * 100.0).truncated_to_integer \\ 100).out + " m, "
+				+ " after " + metres (a_status.path_length) + " m, "
 				+ a_status.boundary_count.out + " boundary following(s), "
 				+ a_status.leave_count.out + " leave(s)%N")
+		end
+
+	metres (v: REAL_64): STRING
+			-- `v' with two decimals.
+		local
+			cm: INTEGER
+		do
+			cm := (v * 100.0).rounded
+			Result := (cm // 100).out + "." + ((cm \\ 100) // 10).out + (cm \\ 10).out
 		end
 
 end

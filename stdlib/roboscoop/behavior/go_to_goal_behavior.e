@@ -13,7 +13,7 @@ inherit
 	BEHAVIOR
 
 create
-	make, make_for_namespace
+	make, make_for_namespace, make_for_robot
 
 feature {NONE} -- Initialization
 
@@ -47,6 +47,12 @@ feature {NONE} -- Initialization
 			create o.make (ns + "/odom")
 			create d.make (ns + "/cmd_vel", a_max_linear, a_max_angular)
 			make (o, d, a_goal_x, a_goal_y)
+		end
+
+	make_for_robot (a_robot: separate DIFF_DRIVE_ROBOT; a_goal_x, a_goal_y: REAL_64)
+			-- Go to (`a_goal_x', `a_goal_y') with `a_robot''s odometry and drive.
+		do
+			make (a_robot.odometry, a_robot.drive, a_goal_x, a_goal_y)
 		end
 
 feature -- Access

@@ -1,25 +1,27 @@
 note
 	description: "[
 		The geometry and the decisions of TangentBug (Kamon, Rivlin, Rimon 1998) for a disc
-		robot with a laser of limited range; no SCOOP here: `update' takes the robot's pose
-		and a local copy of the latest scan and sets the command (`linear', `angular') and
-		the `mode'.
+		robot with a laser of limited range; no SCOOP here: `update' takes the robot's pose and
+		a local copy of the latest scan, plans again on each new scan (in the pose taken as the
+		scan's) and sets the command (`linear', `angular', never into an obstacle) and `mode'.
 
 		Motion to goal: the nodes of the local tangent graph are the goal, when the way to it
 		is clear within the laser's range, and the endpoints of the obstacle segments seen
-		(offset sideways by the robot's clearance, so the robot passes beside them). The robot
-		heads for the node O that minimises the heuristic distance d(x, O) + d(O, goal); when
-		that distance grows (by more than `Heuristic_slack') the robot is at a local minimum
-		and boundary following begins, on the side of the last node.
+		(offset sideways by the robot's clearance, reachable in a straight line, and closer to
+		the goal than the robot). The robot heads for the node O that minimises the heuristic
+		distance d(x, O) + d(O, goal); at a local minimum (no node, the distance grows by more
+		than `Heuristic_slack' twice running, or no longer shrinks for `Stall_plans' plans)
+		boundary following begins, going on round the obstacle past the last node.
 
-		Boundary following: the robot keeps the obstacle (the segment of the nearest beam on
-		the followed side) at `follow_distance'. `d_followed' is the smallest distance to the
-		goal of the points sensed on the followed obstacle since boundary following began;
-		`d_reach' is the smallest distance to the goal of the free points the robot can reach
-		in a straight line now (the nodes, and the clear part of the ray towards the goal). The
-		robot leaves when d_reach < d_followed - `Leave_slack' and goes back to motion to goal.
-		Coming back to where boundary following began, after going round (`Loop_away' away
-		from it), means the obstacle encloses the goal or the robot: the goal is unreachable.
+		Boundary following: the robot keeps the followed boundary (the nearest point on the
+		followed side, kept on one boundary from plan to plan) at `follow_distance'.
+		`d_followed' is the smallest distance to the goal of the points sensed on the followed
+		obstacle since boundary following began; `d_reach' is the smallest distance to the goal
+		of the free points the robot can reach in a straight line now (the nodes, and the clear
+		part of the ray towards the goal). The robot leaves when d_reach < d_followed -
+		`Leave_slack', heads for that point, then goes on in motion to goal. Coming back to where
+		it first was beside the boundary, after going round (`Loop_away' away from it), means
+		the obstacle encloses the goal or the robot: the goal is unreachable.
 	]"
 
 class
