@@ -11,9 +11,12 @@ linear.x echoes it; one message in flight at a time. Two responders, each a sepa
   LATENCY_CONTROLLER on its own processor, waiting on a wait condition -> ROS_PUBLISHER), run with
   `scoopc run --robot ros2` (DDS through cyclonedds unless rclpy is installed).
 
-Each responder gets warm-up messages (its start, the compilation, DDS discovery) before N timed
-ones; it prints the median, p99 and mean round trip (us), the messages lost (no answer within 1 s,
-odometry is best effort), and the ratio compiled/baseline. DDS stays on 127.0.0.1 (a generated
+Both responders run at once, the baseline on topics of its own (/latency_base/...), and the timed
+round trips alternate between them in blocks of BLOCK, so that a change in the machine's load during
+the run weighs on both alike (measured one after the other, the ratio of two runs of --quick could
+differ by half). Each gets warm-up messages (its start, the compilation, DDS discovery) first. It
+prints, per responder, the median, p99 and mean round trip (us) and the messages lost (no answer
+within 1 s, odometry is best effort), then the ratio compiled/baseline. DDS stays on 127.0.0.1 (a generated
 Cyclone DDS configuration, a random domain in 100..200). `python benchmarks/robots_latency.py --help`.
 """
 import argparse
@@ -31,7 +34,9 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 PROGRAM = os.path.join(HERE, "programs", "robots_latency")
 SIZES = {"full": (10_000, 200), "quick": (1_000, 100), "smoke": (100, 20)}     # timed, warm-up
-ODOM, CMD = "/latency/odom", "/latency/cmd_vel"
+TOPICS = {"compiled": ("/latency/odom", "/latency/cmd_vel"),          # (odometry, command)
+          "baseline": ("/latency_base/odom", "/latency_base/cmd_vel")}
+BLOCK = 50                # consecutive timed round trips to one responder
 LOST_AFTER = 1.0          # seconds without an answer: the message counts as lost
 
 
@@ -51,7 +56,8 @@ def parse_args(argv):
 # --- the baseline responder: cyclonedds' Python API, written by hand -----------------------------
 
 def echo_main():
-    """Answer each Odometry on rt/latency/odom with a Twist on rt/latency/cmd_vel (linear.x = x)."""
+    """Answer each Odometry on rt/latency_base/odom with a Twist on rt/latency_base/cmd_vel
+    (linear.x = x)."""
     from dataclasses import dataclass, field
 
     from cyclonedds.core import ReadCondition, SampleState, ViewState, InstanceState, WaitSet
@@ -125,8 +131,9 @@ def echo_main():
     sensor = Qos(Policy.Reliability.BestEffort, Policy.Durability.Volatile, Policy.History.KeepLast(5), plain_cdr)
     command = Qos(Policy.Reliability.Reliable(duration(milliseconds=100)), Policy.Durability.Volatile,
                   Policy.History.KeepLast(10), plain_cdr)
-    reader = DataReader(participant, Topic(participant, "rt" + ODOM, Odometry), qos=sensor)
-    writer = DataWriter(participant, Topic(participant, "rt" + CMD, Twist), qos=command)
+    odom, cmd = TOPICS["baseline"]
+    reader = DataReader(participant, Topic(participant, "rt" + odom, Odometry), qos=sensor)
+    writer = DataWriter(participant, Topic(participant, "rt" + cmd, Twist), qos=command)
     waitset = WaitSet(participant)
     waitset.attach(ReadCondition(reader, SampleState.Any | ViewState.Any | InstanceState.Any))
     print("ready", flush=True)
@@ -143,17 +150,21 @@ def echo_main():
 # --- the measuring side -------------------------------------------------------------------------
 
 class Pinger:
-    """Sends numbered odometry and waits for the matching command (on our DdsBus)."""
+    """Sends numbered odometry to one responder and waits for the matching command (on our DdsBus)."""
 
-    def __init__(self, bus):
+    def __init__(self, bus, variant):
         from scoopc.robots import messages
         self.bus = bus
+        self.variant = variant
+        self.odom_topic, cmd_topic = TOPICS[variant]
         self.odom = messages.new("nav_msgs/msg/Odometry", child_frame_id="base_link")
         self.odom.header.frame_id = "odom"
         self.cond = threading.Condition()
         self.answer = None
         self.arrived = 0
-        bus.subscribe(CMD, self.on_command)
+        self.number = 0
+        self.samples, self.lost = [], 0
+        bus.subscribe(cmd_topic, self.on_command)
 
     def on_command(self, msg):
         arrived = time.perf_counter_ns()
@@ -161,17 +172,34 @@ class Pinger:
             self.answer, self.arrived = msg.linear.x, arrived
             self.cond.notify_all()
 
-    def ping(self, number, timeout=LOST_AFTER):
-        """Round trip of message `number` in ns (None: no answer within `timeout`)."""
+    def ping(self, timeout=LOST_AFTER, number=None):
+        """Round trip of the next message (or of `number`) in ns (None: no answer within `timeout`)."""
+        if number is None:
+            self.number += 1
+            number = self.number
         self.odom.pose.pose.position.x = float(number)
         with self.cond:
             self.answer = None
         start = time.perf_counter_ns()
-        self.bus.publish(ODOM, self.odom)
+        self.bus.publish(self.odom_topic, self.odom)
         with self.cond:
             if not self.cond.wait_for(lambda: self.answer == number, timeout):
                 return None
             return self.arrived - start
+
+    def timed(self, count):
+        for _ in range(count):
+            rtt = self.ping()
+            if rtt is None:
+                self.lost += 1
+            else:
+                self.samples.append(rtt / 1000)
+
+    def figures(self):
+        """{median_us, p99_us, mean_us, lost, n} of the timed round trips."""
+        samples = sorted(self.samples)
+        return {"median_us": statistics.median(samples), "p99_us": samples[min(len(samples) - 1, int(0.99 * len(samples)))],
+                "mean_us": statistics.fmean(samples), "lost": self.lost, "n": len(samples)}
 
 
 def responder(variant, env):
@@ -182,40 +210,48 @@ def responder(variant, env):
     return subprocess.Popen(command, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
 
 
-def measure(variant, bus, env, timed, warmup):
-    """{median_us, p99_us, mean_us, lost} of `timed` round trips to a fresh responder."""
-    pinger = Pinger(bus)
-    proc = responder(variant, env)
+def await_answer(pinger, proc):
+    """Ping until the responder (starting, compiling, discovering) answers."""
+    deadline = time.monotonic() + 120
+    while pinger.ping(0.2) is None:
+        if proc.poll() is not None or time.monotonic() > deadline:
+            raise RuntimeError(f"{pinger.variant} responder never answered: {proc.stderr.read()[-500:]}")
+
+
+def finish(pinger, proc):
+    """Ask the responder to stop (a negative x, best effort) and check that it exits cleanly."""
+    for _ in range(50):
+        if pinger.ping(0.2, number=-1.0) is not None or proc.poll() is not None:
+            break
+    status = proc.wait(30)
+    if status != 0:
+        raise RuntimeError(f"{pinger.variant} responder exited {status}: {proc.stderr.read()[-500:]}")
+
+
+def measure(variants, bus, env, timed, warmup):
+    """{variant: figures} of `timed` round trips to each responder, in alternating blocks."""
+    pingers = [Pinger(bus, variant) for variant in variants]
+    procs = [responder(variant, env) for variant in variants]
     try:
-        number, deadline = 1, time.monotonic() + 120          # start (and compile) the responder
-        while pinger.ping(number, 0.2) is None:
-            if proc.poll() is not None or time.monotonic() > deadline:
-                raise RuntimeError(f"{variant} responder never answered: {proc.stderr.read()[-500:]}")
-            number += 1
-        for _ in range(warmup):
-            number += 1
-            pinger.ping(number)
-        samples, lost = [], 0
-        for _ in range(timed):
-            number += 1
-            rtt = pinger.ping(number)
-            if rtt is None:
-                lost += 1
-            else:
-                samples.append(rtt / 1000)
-        for _ in range(50):                                     # ask it to stop (best effort)
-            if pinger.ping(-1.0, 0.2) is not None or proc.poll() is not None:
-                break
-        status = proc.wait(30)
-        if status != 0:
-            raise RuntimeError(f"{variant} responder exited {status}: {proc.stderr.read()[-500:]}")
+        for pinger, proc in zip(pingers, procs):
+            await_answer(pinger, proc)
+        for pinger in pingers:
+            pinger.timed(warmup)
+            pinger.samples, pinger.lost = [], 0
+        done = 0
+        while done < timed:
+            block = min(BLOCK, timed - done)
+            for pinger in pingers:
+                pinger.timed(block)
+            done += block
+        for pinger, proc in zip(pingers, procs):
+            finish(pinger, proc)
     finally:
-        if proc.poll() is None:
-            proc.kill()
-            proc.wait()
-    samples.sort()
-    return {"median_us": statistics.median(samples), "p99_us": samples[min(len(samples) - 1, int(0.99 * len(samples)))],
-            "mean_us": statistics.fmean(samples), "lost": lost, "n": len(samples)}
+        for proc in procs:
+            if proc.poll() is None:
+                proc.kill()
+                proc.wait()
+    return {pinger.variant: pinger.figures() for pinger in pingers}
 
 
 def main(argv=None):
@@ -233,17 +269,17 @@ def main(argv=None):
     env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
     print(f"# robots_latency: python {platform.python_version()}, {os.cpu_count()} cpus, load "
           f"{os.getloadavg()[0]:.1f}, loopback DDS domain {settings['ROS_DOMAIN_ID']}, size={size}: "
-          f"{timed} timed round trips after {warmup} warm-up, one in flight", flush=True)
+          f"{timed} timed round trips each after {warmup} warm-up, one in flight, alternating blocks of {BLOCK}", flush=True)
     variants = [args.only] if args.only else ["baseline", "compiled"]
-    results = {}
     bus = dds.DdsBus()
     try:
-        for variant in variants:
-            found = results[variant] = measure(variant, bus, env, timed, warmup)
-            print(f"latency {variant} n={found['n']} median_us={found['median_us']:.0f} "
-                  f"p99_us={found['p99_us']:.0f} mean_us={found['mean_us']:.0f} lost={found['lost']}", flush=True)
+        results = measure(variants, bus, env, timed, warmup)
     finally:
         bus.close()
+    for variant in variants:
+        found = results[variant]
+        print(f"latency {variant} n={found['n']} median_us={found['median_us']:.0f} "
+              f"p99_us={found['p99_us']:.0f} mean_us={found['mean_us']:.0f} lost={found['lost']}", flush=True)
     if len(results) == 2:
         base, ours = results["baseline"], results["compiled"]
         print(f"ratio compiled/baseline median={ours['median_us'] / base['median_us']:.2f} "

@@ -23,6 +23,7 @@ from .semantics.library import cache_dir
 from .semantics.universe import stdlib_files
 
 BASE_PACKAGE = "eiffel_base"
+from .kernel.link import LIBRARY_LEAVES_FILE  # noqa: E402 - beside the name it goes with
 
 
 def _compiler_digest() -> str:
@@ -123,11 +124,13 @@ def compile_program(checked, out_dir: Path, package: str, root_key: str, creator
 
     sem = checked.semantics
     options = Options(assertions=assertions, package=package)
-    modules = generate(sem.universe, sem.tables, options, lambda info: not info.from_library)
+    leaves: list[str] = []
+    modules = generate(sem.universe, sem.tables, options, lambda info: not info.from_library, leaves)
     folder = out_dir / package
     if folder.exists():
         shutil.rmtree(folder)
     write_modules(folder, modules, f"A program compiled by scoopc (root class {root_key}).", (BASE_PACKAGE,))
+    (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
     (folder / "__main__.py").write_text(_main_text(package, root_key, creator, sem.universe))
     return Compiled(package, out_dir, base_package(progress), root_key, creator)
 

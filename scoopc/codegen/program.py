@@ -57,11 +57,17 @@ def generate_class(program: Program, info) -> ast.Module:
         raise CodegenError(f"class {info.name}: {type(problem).__name__}: {problem}") from problem
 
 
-def generate(universe, tables, options: Options, which) -> dict:
-    """{module file name: (ast.Module, Eiffel source path)} for the classes `which(info)` selects."""
+def generate(universe, tables, options: Options, which, library_leaves: list | None = None) -> dict:
+    """{module file name: (ast.Module, Eiffel source path)} for the classes `which(info)` selects.
+    `library_leaves`, if given, receives the library routines that are leaves in this program
+    (scoop.library_leaves)."""
     program = prepare(universe, tables, options)
     modules = {}
     for info in parents_first(universe):
         if which(info):
             modules[module_name(info.name) + ".py"] = (generate_class(program, info), info.decl.span.file)
+    if library_leaves is not None:
+        from .scoop import library_leaves as leaves_of
+
+        library_leaves.extend(leaves_of(program))
     return modules

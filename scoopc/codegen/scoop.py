@@ -39,6 +39,8 @@ SAFE_EXTERNAL_CLASSES = frozenset({
     "IMMUTABLE_STRING_32", "READABLE_STRING_8", "READABLE_STRING_32", "READABLE_STRING_GENERAL",
     "STRING_GENERAL", "IMMUTABLE_STRING_GENERAL", "DOUBLE_MATH", "SINGLE_MATH", "PLATFORM",
 }) | frozenset(BASIC)
+# Single external features of other classes that are as short: a read of the runtime's clock.
+SAFE_EXTERNAL_FEATURES = frozenset({("TIMER", "now")})
 SAFE_ANY_EXTERNALS = frozenset({
     "generator", "generating_type", "conforms_to", "same_type", "standard_is_equal", "is_equal",
     "standard_copy", "copy", "standard_twin", "tagged_out",
@@ -229,7 +231,8 @@ def _external_ok(info, feature, inner) -> bool:
         return False
     if info.name in SAFE_EXTERNAL_CLASSES:
         return True
-    return info.name == "ANY" and feature.decl.names[0].name.key in SAFE_ANY_EXTERNALS
+    name = feature.decl.names[0].name.key
+    return info.name == "ANY" and name in SAFE_ANY_EXTERNALS or (info.name, name) in SAFE_EXTERNAL_FEATURES
 
 
 def _walk_body(analysis: Analysis, info, body, arguments):
@@ -490,6 +493,32 @@ def library_facts(universe, tables, options) -> dict:
                 ok, callees = local_facts(analysis, info, feature)
                 facts[key] = [ok, [[k, c, (w if k == "v" else sorted(w))] for k, c, w in callees]]
     return facts
+
+
+# The library's interfaces whose routines a transport calls (scoopc/kernel/ext/ros_subscriber.py).
+TRANSPORT_LISTENERS = frozenset({"ODOMETRY_LISTENER", "RANGE_LISTENER", "SCAN_LISTENER", "BATTERY_LISTENER",
+                                 "ROS_LISTENER"})
+
+
+def library_leaves(program) -> list[str]:
+    """"CLASS.routine" (Python names) of the routine versions of the library's transport listeners
+    (TRANSPORT_LISTENERS and their heirs) that are leaves in this program's closed world. The
+    compiled library is never decorated (an heir in some program could break the promise), so a
+    program tells the runtime which of them it may treat as leaves: a transport delivers a message
+    to a signaler's leaf callback on its own thread (scoopc.kernel.link.is_leaf_routine). Only the
+    listeners: the whole library's leaves would cost half a second per compilation."""
+    facts = analysis(program)
+    if not facts.closed:
+        return []
+    found = []
+    for info in program.universe.classes.values():
+        if not info.from_library or not TRANSPORT_LISTENERS & (set(info.all_ancestors) | {info.name}):
+            continue
+        for feature in info.features.values():
+            if feature.written_in == info.name and feature.is_routine and not feature.deferred \
+                    and not feature.is_once and facts.is_leaf(feature):
+                found.append(f"{info.name}.{program.naming.primary(feature)}")
+    return sorted(found)
 
 
 def write_library_facts(folder: Path, universe, tables, options) -> None:

@@ -4,8 +4,16 @@ names, `ARRAY`, `STRING_8`; importing them module by module would make import cy
 from __future__ import annotations
 
 import importlib
+import json
+import sys
+from pathlib import Path
 
 _LOADED: dict = {}
+
+#: The file, in a compiled program's package, naming the library routines that are leaves in that
+#: program (scoopc.codegen.scoop.library_leaves); `load` reads it.
+LIBRARY_LEAVES_FILE = "_library_leaves.json"
+_LIBRARY_LEAVES: set = set()     # "CLASS.routine" of the program loaded in this process
 
 
 def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
@@ -13,6 +21,7 @@ def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
     loaded before, e.g. the standard library) and of this package (which take precedence)."""
     if package in _LOADED:
         return _LOADED[package]
+    _read_library_leaves(package)
     names: dict = {}
     for other in uses:
         names.update(importlib.import_module(other).CLASSES_BY_NAME)
@@ -43,3 +52,24 @@ def register_again(package: str) -> None:
         key = getattr(cls, "_key_", None)
         if key is not None:
             register(key, cls)
+
+
+def _read_library_leaves(package: str) -> None:
+    module = sys.modules.get(package)
+    path = Path(getattr(module, "__file__", None) or ".").parent / LIBRARY_LEAVES_FILE
+    try:
+        _LIBRARY_LEAVES.update(json.loads(path.read_text()))
+    except (OSError, ValueError):       # the library itself, or a package without the file
+        pass
+
+
+def is_leaf_routine(cls: type, name: str) -> bool:
+    """Is routine `name` of (generated) class `cls` a leaf (no loop, no separate call, nothing
+    that blocks: scoopc.codegen.scoop) in the loaded program? A program's own routine says so
+    by its `@rt.leaf` mark; a library routine by the program's list of library leaves."""
+    for owner in cls.__mro__:
+        function = owner.__dict__.get(name)
+        if function is not None:
+            return bool(getattr(function, "_scoop_leaf_", False)) \
+                or f"{owner.__name__}.{name}" in _LIBRARY_LEAVES
+    return False

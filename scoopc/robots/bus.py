@@ -77,6 +77,11 @@ class Tapped:
 class Bus(Tapped):
     """Topic -> subscribers; `publish` calls each open subscriber's callback with the message."""
 
+    #: Are callbacks called on a thread of the bus's own, never one that runs a processor? (The
+    #: library then runs a leaf listener's call on that thread: OutsideClient.call's `leaf`.)
+    #: Not here: `publish` calls back on the publisher's thread, which may be a processor's.
+    own_thread_callbacks = False
+
     def __init__(self):
         self._lock = threading.Condition(threading.Lock())
         self._subs = {}              # [_lock] topic -> list of Subscription (subscription order)

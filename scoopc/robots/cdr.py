@@ -12,10 +12,17 @@ The rules (equal byte for byte to rosbags' `typestore.serialize_cdr`):
 * a fixed array `T[n]` is n elements, no length; a sequence `T[]` / `T[<=n]` is a uint32 count then
   the elements (the first element aligned as an element is; an empty sequence adds no padding);
 * a message is not padded at its end.
+
+How: each message type gets an encoder and a decoder made once per (type store, type, byte order)
+as Python source and compiled (`_Plan`). Nested messages are flattened into their parent's code,
+and a run of consecutive fields of one primitive type (a Pose's seven float64) becomes a single
+`struct` call: an Odometry decodes about six times faster than field by field.
 """
+
 from __future__ import annotations
 
 import struct
+import threading
 from typing import Any
 
 import numpy as np
@@ -28,126 +35,263 @@ HEADER_BE = b"\x00\x00\x00\x00"
 _FORMATS = {"bool": "?", "byte": "b", "char": "B", "int8": "b", "uint8": "B", "int16": "h",
             "uint16": "H", "int32": "i", "uint32": "I", "int64": "q", "uint64": "Q",
             "float32": "f", "float64": "d"}
-_UINT32 = struct.Struct("<I")
-
-
-class _Writer:
-    def __init__(self, store):
-        self.out = bytearray()
-        self.store = store
-
-    def align(self, size: int) -> None:
-        pad = -len(self.out) % size
-        if pad:
-            self.out += bytes(pad)
-
-    def primitive(self, name: str, value: Any) -> None:
-        if name in messages.STRING_TYPES:
-            if name == "wstring":
-                raise NotImplementedError("wstring fields are not supported (rosbags has none either)")
-            data = value.encode("utf-8")
-            self.align(4)
-            self.out += _UINT32.pack(len(data) + 1) + data + b"\x00"
-            return
-        dtype = DTYPES[name]
-        self.align(dtype.itemsize)
-        self.out += struct.pack("<" + _FORMATS[name], value)
-
-    def value(self, desc: tuple, value: Any) -> None:
-        kind, detail = desc
-        if kind == BASE:
-            self.primitive(detail[0], value)
-        elif kind == NAME:
-            self.message(value, detail)
-        else:
-            element, size = detail
-            if kind == ARRAY:
-                if len(value) != size:
-                    raise ValueError(f"fixed array of {size} elements given {len(value)}")
-            else:
-                if size and len(value) > size:
-                    raise ValueError(f"bounded sequence (<= {size}) given {len(value)} elements")
-                self.align(4)
-                self.out += _UINT32.pack(len(value))
-            if len(value) == 0:
-                return
-            if messages.is_numeric(element):
-                dtype = DTYPES[element[1][0]]
-                self.align(dtype.itemsize)
-                self.out += np.asarray(value, dtype=dtype).tobytes()
-            else:
-                for item in value:
-                    self.value(element, item)
-
-    def message(self, msg: Any, typename: str) -> None:
-        for name, desc in messages.fields(typename, self.store):
-            self.value(desc, getattr(msg, name))
 
 
 def serialize(msg: Any, typename: str | None = None, store=None) -> bytes:
     """The CDR bytes (little endian, with the encapsulation header) of a type-store message."""
-    writer = _Writer(store)
-    writer.message(msg, typename or messages.typename_of(msg))
-    return HEADER_LE + bytes(writer.out)
-
-
-class _Reader:
-    def __init__(self, data: bytes, store):
-        header = bytes(data[:4])
-        if header[:2] not in (HEADER_LE[:2], HEADER_BE[:2]):
-            raise ValueError(f"not a plain CDR encapsulation header: {header.hex()}")
-        self.order = "<" if header[1] == 1 else ">"
-        self.data = memoryview(data)[4:]
-        self.pos = 0
-        self.store = store
-
-    def align(self, size: int) -> None:
-        self.pos += -self.pos % size
-
-    def take(self, count: int) -> memoryview:
-        if self.pos + count > len(self.data):
-            raise ValueError("CDR data ends early")
-        chunk = self.data[self.pos:self.pos + count]
-        self.pos += count
-        return chunk
-
-    def uint32(self) -> int:
-        self.align(4)
-        return struct.unpack(self.order + "I", self.take(4))[0]
-
-    def primitive(self, name: str) -> Any:
-        if name in messages.STRING_TYPES:
-            if name == "wstring":
-                raise NotImplementedError("wstring fields are not supported")
-            length = self.uint32()
-            raw = bytes(self.take(length))
-            return raw[:-1].decode("utf-8") if length else ""
-        size = DTYPES[name].itemsize
-        self.align(size)
-        return struct.unpack(self.order + _FORMATS[name], self.take(size))[0]
-
-    def value(self, desc: tuple) -> Any:
-        kind, detail = desc
-        if kind == BASE:
-            return self.primitive(detail[0])
-        if kind == NAME:
-            return self.message(detail)
-        element, size = detail
-        count = size if kind == ARRAY else self.uint32()
-        if messages.is_numeric(element):
-            dtype = DTYPES[element[1][0]].newbyteorder(self.order)
-            if count:
-                self.align(dtype.itemsize)
-            raw = self.take(count * dtype.itemsize)
-            return np.frombuffer(raw, dtype=dtype).astype(DTYPES[element[1][0]])
-        return [self.value(element) for _ in range(count)]
-
-    def message(self, typename: str) -> Any:
-        values = {name: self.value(desc) for name, desc in messages.fields(typename, self.store)}
-        return messages.message_class(typename, self.store)(**values)
+    out = bytearray(HEADER_LE)
+    _plan(typename or messages.typename_of(msg), store, "<").encode(out, msg)
+    return bytes(out)
 
 
 def deserialize(data: bytes, typename: str, store=None) -> Any:
     """The type-store message encoded in CDR `data` (with its encapsulation header)."""
-    return _Reader(data, store).message(typename)
+    header = bytes(data[:4])
+    if header[:2] not in (HEADER_LE[:2], HEADER_BE[:2]):
+        raise ValueError(f"not a plain CDR encapsulation header: {header.hex()}")
+    decode = _plan(typename, store, "<" if header[1] == 1 else ">").decode
+    try:
+        return decode(memoryview(data)[4:], 0)[0]
+    except struct.error as e:
+        raise ValueError(f"CDR data ends early ({e})") from None
 
+
+# -- the compiled plans --------------------------------------------------------------------------
+
+_plans: dict = {}                 # (id(store), typename, order) -> _Plan
+_plans_lock = threading.RLock()     # a plan makes the plans of its sequences' element types
+
+
+def _plan(typename: str, store, order: str) -> "_Plan":
+    store = messages._store(store)
+    key = (id(store), typename, order)
+    plan = _plans.get(key)
+    if plan is None:
+        with _plans_lock:
+            plan = _plans.get(key)
+            if plan is None:
+                plan = _plans[key] = _Plan(typename, store, order)
+    return plan
+
+
+class _Plan:
+    """The encoder and decoder of one message type (in one store, one byte order). `encode(out, msg)`
+    appends to `out`, whose first 4 bytes are the encapsulation header; `decode(data, pos)` reads
+    from `data` (after the header) at `pos` and returns (message, position after it). Plans of
+    nested types are made while it is made (ROS 2 types cannot contain themselves)."""
+
+    def __init__(self, typename: str, store, order: str):
+        self.typename, self.store, self.order = typename, store, order
+        self.encode = _EncoderSource(self).compile()
+        self.decode = _DecoderSource(self).compile()
+
+    def nested(self, typename: str) -> "_Plan":
+        return _plan(typename, self.store, self.order)
+
+
+class _Source:
+    """Python source of one function, with the constants it names."""
+
+    def __init__(self, plan: _Plan):
+        self.plan, self.order = plan, plan.order
+        self.lines: list[str] = []
+        self.consts: dict[str, Any] = {"np": np, "pack": struct.pack, "unpack_from": struct.unpack_from,
+                                        "ZEROS": bytes(8)}
+        self.count = 0
+        self.run_format, self.run_items = None, []   # the pending run of one primitive type
+
+    def var(self, prefix: str = "v") -> str:
+        self.count += 1
+        return f"{prefix}{self.count}"
+
+    def const(self, value: Any, prefix: str = "K") -> str:
+        for name, known in self.consts.items():
+            if known is value:
+                return name
+        name = self.var(prefix)
+        self.consts[name] = value
+        return name
+
+    def emit(self, line: str) -> None:
+        self.lines.append("    " + line)
+
+    def primitive(self, name: str, item: str) -> None:
+        """A field of fixed-size primitive type `name`: joins the pending run if of its type."""
+        primitive = (_FORMATS[name], DTYPES[name].itemsize)
+        if primitive != self.run_format:
+            self.flush()
+            self.run_format = primitive
+        self.run_items.append(item)
+
+    def flush(self) -> None:
+        """Emit the pending run: one alignment, one struct call."""
+        if self.run_items:
+            fmt, size = self.run_format
+            self.align(size)
+            self.emit_run(fmt, size, self.run_items)
+        self.run_format, self.run_items = None, []
+
+    def build(self, head: str, name: str):
+        source = "\n".join([head] + self.lines) + "\n"
+        namespace = dict(self.consts)
+        exec(compile(source, f"<cdr {self.plan.typename} {name}>", "exec"), namespace)
+        return namespace[name]
+
+    def element_plan(self, element: tuple, kind: str):
+        """A function (encode(out, value) or decode(data, pos) -> (value, pos)) for one element of
+        a sequence of strings or messages."""
+        if element[0] == NAME:
+            return getattr(self.plan.nested(element[1]), kind)
+        name = element[1][0]
+        if name not in messages.STRING_TYPES:
+            raise NotImplementedError(f"arrays of {name} are not supported")
+        if name == "wstring":
+            raise NotImplementedError("wstring fields are not supported (rosbags has none either)")
+        if kind == "encode":
+            return _encode_string
+        return _decode_string if self.order == "<" else _decode_string_be
+
+
+def _encode_string(out: bytearray, value: str) -> None:
+    data = value.encode("utf-8")
+    out += bytes(-(len(out) - 4) % 4)
+    out += struct.pack("<I", len(data) + 1)
+    out += data
+    out += b"\x00"
+
+
+def _decode_string(data, pos: int, order: str = "<"):
+    pos += -pos % 4
+    (length,) = struct.unpack_from(order + "I", data, pos)
+    pos += 4
+    if pos + length > len(data):
+        raise ValueError("CDR data ends early")
+    text = bytes(data[pos:pos + length - 1]).decode("utf-8") if length else ""
+    return text, pos + length
+
+
+def _decode_string_be(data, pos: int):
+    return _decode_string(data, pos, ">")
+
+
+class _EncoderSource(_Source):
+    """def encode(out, m): the fields of `m` appended to `out` (positions count from out[4])."""
+
+    def compile(self):
+        self.message("m", self.plan.typename)
+        self.flush()
+        self.emit("return out")
+        return self.build("def encode(out, m):", "encode")
+
+    def message(self, expr: str, typename: str) -> None:
+        for name, desc in messages.fields(typename, self.plan.store):
+            self.value(f"{expr}.{name}", desc)
+
+    def align(self, size: int) -> None:
+        if size > 1:
+            self.emit(f"out += ZEROS[:-(len(out) - 4) % {size}]")
+
+    def emit_run(self, fmt: str, size: int, items: list) -> None:
+        self.emit(f"out += pack('<{len(items)}{fmt}', {', '.join(items)})")
+
+    def value(self, expr: str, desc: tuple) -> None:
+        kind, detail = desc
+        if kind == NAME:
+            self.message(expr, detail)
+            return
+        if kind == BASE and detail[0] not in messages.STRING_TYPES:
+            self.primitive(detail[0], expr)
+            return
+        self.flush()
+        if kind == BASE:
+            self.element_plan(desc, "encode")     # refuses wstring
+            self.emit(f"{self.const(_encode_string, 'S')}(out, {expr})")
+            return
+        element, size = detail
+        v = self.var()
+        self.emit(f"{v} = {expr}")
+        if kind == ARRAY:
+            self.emit(f"if len({v}) != {size}:")
+            self.emit(f"    raise ValueError(f'fixed array of {size} elements given {{len({v})}}')")
+        else:
+            if size:
+                self.emit(f"if len({v}) > {size}:")
+                self.emit(f"    raise ValueError(f'bounded sequence (<= {size}) given {{len({v})}} elements')")
+            self.align(4)
+            self.emit(f"out += pack('<I', len({v}))")
+        if messages.is_numeric(element):
+            dtype = DTYPES[element[1][0]]
+            self.emit(f"if len({v}):")
+            if dtype.itemsize > 1:
+                self.emit(f"    out += ZEROS[:-(len(out) - 4) % {dtype.itemsize}]")
+            self.emit(f"    out += np.asarray({v}, dtype={self.const(dtype, 'D')}).tobytes()")
+        else:
+            item = self.var("i")
+            self.emit(f"for {item} in {v}:")
+            self.emit(f"    {self.const(self.element_plan(element, 'encode'), 'E')}(out, {item})")
+
+
+class _DecoderSource(_Source):
+    """def decode(data, pos): (the message at `pos` in `data`, the position after it)."""
+
+    def compile(self):
+        result = self.message(self.plan.typename)
+        self.flush()
+        self.emit(f"return {result}, pos")
+        return self.build("def decode(data, pos):", "decode")
+
+    def message(self, typename: str) -> str:
+        store = self.plan.store
+        arguments = [f"{name}={self.value(desc)}" for name, desc in messages.fields(typename, store)]
+        return f"{self.const(messages.message_class(typename, store), 'C')}({', '.join(arguments)})"
+
+    def align(self, size: int) -> None:
+        if size > 1:
+            self.emit(f"pos += -pos % {size}")
+
+    def emit_run(self, fmt: str, size: int, items: list) -> None:
+        self.emit(f"{', '.join(items)}, = unpack_from('{self.order}{len(items)}{fmt}', data, pos)")
+        self.emit(f"pos += {len(items) * size}")
+
+    def value(self, desc: tuple) -> str:
+        kind, detail = desc
+        if kind == NAME:
+            return self.message(detail)
+        v = self.var()
+        if kind == BASE and detail[0] not in messages.STRING_TYPES:
+            self.primitive(detail[0], v)
+            return v
+        self.flush()
+        if kind == BASE:
+            self.element_plan(desc, "decode")     # refuses wstring
+            self.emit(f"{v}, pos = {self.string_decoder()}(data, pos)")
+            return v
+        element, size = detail
+        count = self.var("n")
+        if kind == ARRAY:
+            self.emit(f"{count} = {size}")
+        else:
+            self.align(4)
+            self.emit(f"{count}, = unpack_from('{self.order}I', data, pos)")
+            self.emit("pos += 4")
+        if messages.is_numeric(element):
+            native = DTYPES[element[1][0]]
+            wire = self.const(native.newbyteorder(self.order), "D")
+            if native.itemsize > 1:
+                self.emit(f"if {count}:")
+                self.emit(f"    pos += -pos % {native.itemsize}")
+            self.emit(f"{v} = np.frombuffer(data, dtype={wire}, count={count}, offset=pos)"
+                      f".astype({self.const(native, 'D')}) if {count} else np.zeros(0, {self.const(native, 'D')})")
+            self.emit(f"pos += {count} * {native.itemsize}")
+        else:
+            plan = self.element_plan(element, "decode")      # refuses wstring
+            decoder = self.string_decoder() if element[0] == BASE else self.const(plan, "P")
+            item = self.var("i")
+            self.emit(f"{v} = []")
+            self.emit(f"for _ in range({count}):")
+            self.emit(f"    {item}, pos = {decoder}(data, pos)")
+            self.emit(f"    {v}.append({item})")
+        return v
+
+    def string_decoder(self) -> str:
+        return self.const(self.element_plan((BASE, ("string", 0)), "decode"), "S")

@@ -208,6 +208,8 @@ class _Reader:
 class DdsBus(Tapped):
     """Publish/subscribe on ROS 2 topics over DDS (cyclonedds), with ROS 2's names, types and QoS."""
 
+    own_thread_callbacks = True               # the reader thread (see bus.Bus)
+
     def __init__(self, domain: int | None = None, types: dict | None = None, store=None):
         self.domain = domain_id() if domain is None else domain
         self.store = store

@@ -47,6 +47,8 @@ def _qos(topic: str):
 class RclpyBus(Tapped):
     """Publish/subscribe on ROS 2 topics through an rclpy node (see the module's note: unverified)."""
 
+    own_thread_callbacks = True               # the executor's thread (see bus.Bus)
+
     def __init__(self, domain: int | None = None, types: dict | None = None, node_name: str = "scoopc"):
         if rclpy is None:
             raise ImportError("rclpy is not importable: source a ROS 2 installation first")

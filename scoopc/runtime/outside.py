@@ -4,7 +4,7 @@ An outside client logs commands from any thread without ever waiting for a proce
 call is a closed private queue of one call put in the supplier's queue of queues, so calls
 of one source to one processor run in the order they were logged."""
 from .errors import ScoopError
-from .session import IDLE, SCHEDULED, Session, enqueue
+from .session import IDLE, RUNNING, SCHEDULED, Session, enqueue
 
 
 class OutsideClient:
@@ -21,19 +21,29 @@ class OutsideClient:
     def __repr__(self):
         return f"outside client {self.name!r}"
 
-    def call(self, target, routine, args=()):
+    def call(self, target, routine, args=(), leaf=False):
+        """Log `routine(target, *args)` on target's processor. `leaf=True`: the caller vouches
+        that the call is a leaf (scoopc.runtime.leaf: it neither blocks nor calls another
+        processor) and that this thread runs no processor (a transport's own thread); if the
+        processor is idle with nothing queued, this thread then runs the call itself, as a
+        worker would (`Runtime.run_here`), saving the thread switch."""
         p = target._region_
         if p.passive:
             raise ScoopError(f"{self!r}: passive region {p!r} needs a processor client")
         s = Session(self, p)
         s.calls.append((routine, target, args, None, None))
-        s.heavy = not getattr(routine, "_scoop_leaf_", False)
+        s.heavy = not (leaf or getattr(routine, "_scoop_leaf_", False))
         s.closed = True
         lock = p.lock
         lock.acquire()
         enqueue(p, s)
         run = p.state == IDLE and p.head is s
         if run:
+            if leaf and not self.rt.stopping:
+                p.state = RUNNING
+                lock.release()
+                self.rt.run_here(p, s)
+                return
             p.state = SCHEDULED
         lock.release()
         if run:

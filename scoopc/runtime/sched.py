@@ -22,6 +22,7 @@ import weakref
 from collections import deque
 
 from .errors import Shutdown, fmt_where
+from .session import IDLE
 
 STARVE_AFTER = 0.005  # seconds a runnable processor may wait for a permit before a worker comes
 MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
@@ -133,6 +134,7 @@ class Runtime:
         self.process_onces = {}          # [g] once ("PROCESS") values
         self.monitor = None
         self.watchers = []               # [g] (predicate, Event): scheduling hooks for tests
+        self._outside = threading.local()  # .exec: the Exec of an outside thread (run_here)
 
     # -- identities ------------------------------------------------------------------
     def register(self, proc):
@@ -226,6 +228,36 @@ class Runtime:
         if spawn is not None:
             spawn.thread.start()
         return p
+
+    def run_here(self, p, s):
+        """An outside thread runs the leaf calls of its closed session `s`, the head of `p`,
+        which it has set RUNNING (OutsideClient.call): as a worker would, counted running and
+        holding a permit, minus the thread switch. Then it ends the session (waking the wait
+        conditions over `p`) and leaves what is queued behind to the pool."""
+        ex = getattr(self._outside, "exec", None)
+        if ex is None:
+            ex = self._outside.exec = Exec(f"outside-{threading.current_thread().name}")
+        with self.glock:
+            self.n_running += 1
+            queued = self.permits.acquire_locked(ex)
+        try:
+            if queued:
+                self.permits.wait_turn(ex)
+            p.exec = ex
+            batch, s.calls = s.calls, []
+            p._run_calls(s, batch)
+        finally:
+            lock = p.lock
+            lock.acquire()
+            p.exec = None
+            p.state = IDLE
+            if p.head is s and not s.calls and not p.qoq and s.dirty is None \
+                    and not (s.changed and p.waiters):
+                p.head = None            # the common case: nothing else to do
+                lock.release()
+            else:
+                p.settle_locked(None)    # end `s` (wakes waiters); the pool takes the rest
+            self.leave_running(ex)
 
     def leave_running(self, ex):
         with self.glock:

@@ -228,3 +228,90 @@ def test_a_program_with_its_own_expanded_class_has_no_leaves(tmp_path):
                                   "\tn: INTEGER\n\tp: POINT\n\tset (v: INTEGER) do n := v end\nend\n")
     compiled, texts = compile_program(folder, tmp_path / "out", "none")
     assert "@rt.leaf" not in texts["exp.py"]
+
+
+# --- library leaves: the transport listeners' routines a program may run as leaves -----------------
+LISTENING_ROOT = """class LISTENING
+create
+	make
+feature
+	make
+		local
+			odometry: separate ODOMETRY_SIGNALER
+			range: separate RANGE_SIGNALER
+		do
+			create odometry.make_unconnected
+			create range.make_unconnected
+		end
+end
+"""
+
+# An heir that makes the library's `note_reading' call another processor: in that program no
+# signaler's `on_odometry' is a leaf any more (`on_odometry' calls `note_reading').
+NOISY_HEIR = """class NOISY_ODOMETRY
+inherit
+	ODOMETRY_SIGNALER
+		redefine note_reading end
+create
+	make_unconnected
+feature
+	log: detachable separate COUNTER
+	note_reading
+		do
+			Precursor
+			if attached log as l then tell (l) end
+		end
+	tell (l: separate COUNTER) do l.increment end
+end
+"""
+
+
+def _library_leaves(tmp_path, sources):
+    import json
+    folder = tmp_path / "listening"
+    folder.mkdir()
+    for name, text in sources.items():
+        (folder / name).write_text(text)
+    compiled, _ = compile_program(folder, tmp_path / "out")
+    return json.loads((compiled.path / compiled.package / "_library_leaves.json").read_text())
+
+
+def test_listener_callbacks_of_the_library_are_listed_as_leaves(tmp_path):
+    leaves = _library_leaves(tmp_path, {"listening.e": LISTENING_ROOT})
+    assert {"ODOMETRY_SIGNALER.on_odometry", "RANGE_SIGNALER.on_range"} <= set(leaves)
+    assert "LASER_SIGNALER.on_scan" not in leaves              # it loops over the beams
+    assert all(name.split(".")[0].endswith(("SIGNALER", "LISTENER")) for name in leaves)
+
+
+def test_a_programs_heir_can_take_a_library_callback_out_of_the_leaves(tmp_path):
+    leaves = _library_leaves(tmp_path, {"listening.e": LISTENING_ROOT, "noisy_odometry.e": NOISY_HEIR,
+                                        "counter.e": COUNTER})
+    assert "ODOMETRY_SIGNALER.on_odometry" not in leaves
+    assert "RANGE_SIGNALER.on_range" in leaves
+
+
+def test_is_leaf_routine_reads_the_mark_and_the_programs_list(monkeypatch):
+    from scoopc.kernel import link
+    monkeypatch.setattr(link, "_LIBRARY_LEAVES", {"LIB_SIGNALER.on_data"})
+
+    class LIB_SIGNALER:
+        def on_data(self):
+            pass
+
+        def on_other(self):
+            pass
+
+    class MINE(LIB_SIGNALER):
+        def on_other(self):
+            pass
+        on_other._scoop_leaf_ = True
+
+    class REDEFINED(LIB_SIGNALER):
+        def on_data(self):                   # a program's version without the mark
+            pass
+
+    assert link.is_leaf_routine(MINE, "on_data")           # inherited library leaf
+    assert link.is_leaf_routine(MINE, "on_other")          # the program's own mark
+    assert not link.is_leaf_routine(LIB_SIGNALER, "on_other")
+    assert not link.is_leaf_routine(REDEFINED, "on_data")
+    assert not link.is_leaf_routine(MINE, "missing")

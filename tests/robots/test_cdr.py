@@ -138,6 +138,8 @@ def test_big_endian_input_is_decoded():
     data = b"\x00\x00\x00\x00" + struct.pack(">iI", -3, 7)
     time = cdr.deserialize(data, "builtin_interfaces/msg/Time")
     assert (time.sec, time.nanosec) == (-3, 7)
+    header = cdr.deserialize(b"\x00\x00\x00\x00" + struct.pack(">iII", 1, 2, 3) + b"ab\x00", "std_msgs/msg/Header")
+    assert (header.stamp.sec, header.stamp.nanosec, header.frame_id) == (1, 2, "ab")
 
 
 def test_bounds_and_lengths_are_checked():
@@ -148,6 +150,10 @@ def test_bounds_and_lengths_are_checked():
         cdr.serialize(msg, "test_msgs/msg/Kinds", store)
     with pytest.raises(ValueError):
         cdr.deserialize(b"\x00\x01\x00\x00\x01", "builtin_interfaces/msg/Time")
+    whole = cdr.serialize(messages.new("nav_msgs/msg/Odometry", child_frame_id="base_link"))
+    for end in (8, 14, 20, 30, 100, len(whole) - 1):   # cut in a string, in a run, in an array
+        with pytest.raises(ValueError):
+            cdr.deserialize(whole[:end], "nav_msgs/msg/Odometry")
 
 
 def test_new_fills_defaults_and_rejects_unknown_fields():

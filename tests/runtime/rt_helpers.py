@@ -71,3 +71,13 @@ def result_of(here, runner):
 
 def _result(runner):
     return runner.result
+
+
+def gated_cell(root):
+    """A new Cell whose processor is held busy (in `Cell.gate`) until the returned event is set."""
+    c = root.new_separate(Cell, Cell.make)
+    gate, entered = threading.Event(), threading.Event()
+    with root.reserve((c,)):
+        root.call(c, Cell.gate, (gate, entered))
+    assert entered.wait(10)
+    return c, gate

@@ -4,7 +4,7 @@ are skipped) and only this reservation's regions are released at its exit."""
 import random
 import threading
 
-from rt_helpers import Cell, spawn
+from rt_helpers import Cell, gated_cell, spawn
 
 
 def test_reserving_a_busy_processor_does_not_block(h):
@@ -23,11 +23,7 @@ def test_reserving_a_busy_processor_does_not_block(h):
 
 def test_first_come_first_served_across_clients(h):
     root = h.root
-    c = root.new_separate(Cell, Cell.make)
-    gate, entered = threading.Event(), threading.Event()
-    with root.reserve((c,)):
-        root.call(c, Cell.gate, (gate, entered))
-    assert entered.wait(10)
+    c, gate = gated_cell(root)
     turns = [threading.Event() for _ in range(6)]
     turns[0].set()
 

@@ -2,7 +2,7 @@
 import threading
 
 import scoopc.runtime as rt
-from rt_helpers import Cell
+from rt_helpers import Cell, gated_cell, spawn
 
 SECOND = 1_000_000_000
 
@@ -83,11 +83,7 @@ def test_real_clock_sleep(h):
 
 def test_outside_client_logs_in_order_without_blocking(h):
     root = h.root
-    c = root.new_separate(Cell, Cell.make)
-    gate, entered = threading.Event(), threading.Event()
-    with root.reserve((c,)):
-        root.call(c, Cell.gate, (gate, entered))
-    assert entered.wait(10)
+    c, gate = gated_cell(root)
     src = rt.outside_client("transport")
     logged = threading.Event()
 
@@ -136,3 +132,58 @@ def test_phase_zero_timers_settle_before_sleepers_wake(harness):
     stepper.source.close()
     assert h.finish() == 0
     assert seen == [(k * SECOND, ["data"] * k) for k in (1, 2, 3)]
+
+
+def test_a_leaf_outside_call_runs_on_the_callers_thread_when_the_processor_is_idle(h):
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    with root.reserve((c,)):
+        assert root.query(c, Cell.items) == []     # created, and idle once released
+    src = rt.outside_client("transport")
+    ran_on = []
+
+    def record(cell, item):
+        ran_on.append(threading.get_ident())
+        cell.log.append(item)
+
+    def transport():
+        src.call(c, record, ("here",), leaf=True)
+    t = threading.Thread(target=transport)
+    t.start()
+    t.join(10)
+    assert ran_on == [t.ident]             # no worker: the transport's thread ran it
+    with root.reserve((c,)):
+        assert root.query(c, Cell.items) == ["here"]
+    src.close()
+    assert h.finish() == 0
+
+
+def test_a_leaf_outside_call_to_a_busy_processor_is_queued(h):
+    root = h.root
+    c, gate = gated_cell(root)
+    src = rt.outside_client("transport")
+    t = threading.Thread(target=lambda: [src.call(c, Cell.add, (i,), leaf=True) for i in range(3)])
+    t.start()
+    t.join(10)
+    assert not t.is_alive() and c.log == []    # logged behind the gate, never waited for it
+    gate.set()
+    src.close()
+    assert h.finish() == 0
+    assert c.log == [0, 1, 2]
+
+
+def test_a_leaf_outside_call_run_by_the_transport_wakes_a_wait_condition(h):
+    from test_wait import _consumer, _waiting
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    evals, got = [], []
+    waiting = _waiting(h.rt)
+    spawn(root, _consumer, c, evals, got)
+    assert waiting.wait(10)                    # the consumer waits for c's value > 0
+    src = rt.outside_client("transport")
+    t = threading.Thread(target=lambda: src.call(c, Cell.set, (7,), leaf=True))
+    t.start()
+    t.join(10)
+    src.close()
+    assert h.finish() == 0
+    assert got == [7] and c.value == 0

@@ -13,6 +13,7 @@ import math
 import threading
 
 import scoopc.runtime as rt
+from scoopc.kernel import link
 from scoopc.robots import transport
 
 
@@ -109,6 +110,9 @@ class Link:
         self.source = rt.outside_client(f"subscription {topic}")
         rt.add_shutdown_hook(self.close)
         bus = transport.current()
+        # On a bus with a thread of its own, a leaf listener routine runs on that thread when
+        # the listener's processor is idle (no thread switch per message).
+        self.leaf = getattr(bus, "own_thread_callbacks", False) and link.is_leaf_routine(type(listener), routine)
         if msgtype is None:
             self.subscription = bus.subscribe(topic, self.on_message)
         else:                               # a transport that must know the type (DDS, rclpy)
@@ -126,7 +130,7 @@ class Link:
             self.scheduled = True
             self.logged += 1
         try:
-            self.source.call(self.listener, deliver, (self,))
+            self.source.call(self.listener, deliver, (self,), leaf=self.leaf)
         except Exception:                   # the runtime is shutting down: drop it
             with self.lock:
                 self.scheduled = False
