@@ -246,6 +246,8 @@ class Runtime:
             p.exec = ex
             batch, s.calls = s.calls, []
             p._run_calls(s, batch)
+        except Shutdown:                 # stopping: the transport's thread goes on (and stops)
+            pass
         finally:
             lock = p.lock
             lock.acquire()
