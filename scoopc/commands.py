@@ -165,7 +165,7 @@ def command_compile(args) -> int:
     target = out / build.BASE_PACKAGE
     if target.exists():
         shutil.rmtree(target)
-    shutil.copytree(compiled.base_path / build.BASE_PACKAGE, target)
+    shutil.copytree(compiled.base_path / build.BASE_PACKAGE, target, ignore=shutil.ignore_patterns("__pycache__"))
     print(f"scoopc: wrote {out / package} and {target}; run it with: cd {out} && python -m {package}",
           file=sys.stderr)
     return EXIT_OK
@@ -207,6 +207,7 @@ def compiled_program(args):
                 "shadowed": checked.semantics.universe.shadowed,
                 "roboscoop": uses_roboscoop(project.files)}
         (staging / "program.json").write_text(json.dumps(meta))
+        build.write_bytecode(staging / "program")
         if folder.exists():                  # --no-cache, or another process compiled it meanwhile
             old = folder.with_name(f"{key}.{os.getpid()}.old")
             try:

@@ -6,7 +6,7 @@ the publishing processor's thread. The Eiffel side passes plain values only.
 """
 from functools import cache
 
-from scoopc.robots import messages, transport
+from scoopc.robots import transport
 
 
 def _text(obj):
@@ -16,13 +16,15 @@ def _text(obj):
 
 def new_message(typename, **fields):
     """A message object of the type store (defaults for the fields not given)."""
+    from scoopc.robots import messages     # rosbags and numpy: loaded by programs that publish only
     return messages.new(typename, **fields)
 
 
 @cache
 def _classes():
     """The dataclasses of the messages built on every command (built directly: no defaults to
-    compute, a third of the time of `messages.new`)."""
+    compute, a fifteenth of the time of `messages.new`)."""
+    from scoopc.robots import messages
     return (messages.message_class("geometry_msgs/msg/Vector3"), messages.message_class("geometry_msgs/msg/Twist"))
 
 
