@@ -106,7 +106,6 @@ def base_package(progress=None) -> Path:
     from .codegen.scoop import write_library_facts       # what programs' leaf analysis needs
 
     write_library_facts(staging / BASE_PACKAGE, sem.universe, sem.tables, options)
-    write_bytecode(staging / BASE_PACKAGE)
     try:
         staging.rename(target)
     except OSError:                            # another process won the race: use its copy
@@ -119,10 +118,21 @@ def write_bytecode(folder: Path) -> None:
     0.3 s per run for the standard library's 320 modules, which Python would otherwise compile
     again on every run where it does not write bytecode itself (PYTHONDONTWRITEBYTECODE, a
     read-only install). Imports from the .pyc name the package's final folder in tracebacks
-    (importlib fixes `co_filename`), so the staging folder's name does not leak."""
+    (importlib fixes `co_filename`), so a staging folder's name does not leak. Each .pyc is
+    written atomically: processes doing it at once do no harm."""
     import compileall
 
     compileall.compile_dir(str(folder), quiet=2)
+
+
+def ensure_bytecode(base: Path) -> None:
+    """The compiled library's bytecode, written by the first run that needs it (`scoopc compile`
+    never does: it copies the sources only)."""
+    package = base / BASE_PACKAGE
+    done = package / "__pycache__" / "scoopc-complete"     # written last: an interrupted run redoes it
+    if not done.exists():
+        write_bytecode(package)
+        done.touch()
 
 
 def _ensure(path: Path) -> Path:

@@ -219,6 +219,7 @@ def compiled_program(args):
             staging.rename(folder)
         except OSError:                      # another process put its copy in place first: use it
             shutil.rmtree(staging, ignore_errors=True)
+    build.ensure_bytecode(Path(meta["base"]))
     return folder, meta
 
 
