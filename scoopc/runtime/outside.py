@@ -34,6 +34,7 @@ class OutsideClient:
         s.calls.append((routine, target, args, None, None))
         s.heavy = not (leaf or getattr(routine, "_scoop_leaf_", False))
         s.closed = True
+        ex = self.rt.outside_exec() if leaf else None
         lock = p.lock
         lock.acquire()
         enqueue(p, s)
@@ -41,8 +42,9 @@ class OutsideClient:
         if run:
             if leaf and not self.rt.stopping:
                 p.state = RUNNING
+                p.exec = ex
                 lock.release()
-                self.rt.run_here(p, s)
+                self.rt.run_here(p, s, ex)
                 return
             p.state = SCHEDULED
         lock.release()

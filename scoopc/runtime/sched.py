@@ -229,21 +229,24 @@ class Runtime:
             spawn.thread.start()
         return p
 
-    def run_here(self, p, s):
-        """An outside thread runs the leaf calls of its closed session `s`, the head of `p`,
-        which it has set RUNNING (OutsideClient.call): as a worker would, counted running and
-        holding a permit, minus the thread switch. Then it ends the session (waking the wait
-        conditions over `p`) and leaves what is queued behind to the pool."""
+    def outside_exec(self):
+        """The Exec of the calling thread, which runs no processor (a transport's own)."""
         ex = getattr(self._outside, "exec", None)
         if ex is None:
             ex = self._outside.exec = Exec(f"outside-{threading.current_thread().name}")
+        return ex
+
+    def run_here(self, p, s, ex):
+        """An outside thread (Exec `ex`) runs the leaf calls of its closed session `s`, the head
+        of `p`, which it has set RUNNING on its behalf (OutsideClient.call): as a worker would,
+        counted running and holding a permit, minus the thread switch. Then it ends the session
+        (waking the wait conditions over `p`) and leaves what is queued behind to the pool."""
         with self.glock:
             self.n_running += 1
             queued = self.permits.acquire_locked(ex)
         try:
             if queued:
                 self.permits.wait_turn(ex)
-            p.exec = ex
             batch, s.calls = s.calls, []
             p._run_calls(s, batch)
         except Shutdown:                 # stopping: the transport's thread goes on (and stops)
