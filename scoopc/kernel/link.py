@@ -21,7 +21,8 @@ def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
     loaded before, e.g. the standard library) and of this package (which take precedence)."""
     if package in _LOADED:
         return _LOADED[package]
-    _read_library_leaves(package)
+    if uses:                             # a program (the library itself uses nothing)
+        _read_library_leaves(package)
     names: dict = {}
     for other in uses:
         names.update(importlib.import_module(other).CLASSES_BY_NAME)
@@ -55,12 +56,16 @@ def register_again(package: str) -> None:
 
 
 def _read_library_leaves(package: str) -> None:
+    """The program being loaded replaces the list (tests run one program after another in a
+    process: a routine that is a leaf in one may not be in the next)."""
     module = sys.modules.get(package)
     path = Path(getattr(module, "__file__", None) or ".").parent / LIBRARY_LEAVES_FILE
     try:
-        _LIBRARY_LEAVES.update(json.loads(path.read_text()))
-    except (OSError, ValueError):       # the library itself, or a package without the file
-        pass
+        leaves = set(json.loads(path.read_text()))
+    except (OSError, ValueError):       # a package compiled without the list: no library leaves
+        leaves = set()
+    _LIBRARY_LEAVES.clear()
+    _LIBRARY_LEAVES.update(leaves)
 
 
 def is_leaf_routine(cls: type, name: str) -> bool:

@@ -315,3 +315,21 @@ def test_is_leaf_routine_reads_the_mark_and_the_programs_list(monkeypatch):
     assert not link.is_leaf_routine(LIB_SIGNALER, "on_other")
     assert not link.is_leaf_routine(REDEFINED, "on_data")
     assert not link.is_leaf_routine(MINE, "missing")
+
+
+def test_each_program_loaded_replaces_the_list_of_library_leaves(tmp_path, monkeypatch):
+    import json
+    import types
+
+    from scoopc.kernel import link
+    monkeypatch.setattr(link, "_LIBRARY_LEAVES", set())
+    for name, leaves in (("first", ["A.f", "B.g"]), ("second", ["B.g"]), ("third", None)):
+        folder = tmp_path / name
+        folder.mkdir()
+        if leaves is not None:
+            (folder / link.LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves))
+        module = types.ModuleType(name)
+        module.__file__ = str(folder / "__init__.py")
+        monkeypatch.setitem(sys.modules, name, module)
+        link._read_library_leaves(name)
+        assert link._LIBRARY_LEAVES == set(leaves or ())
