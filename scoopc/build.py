@@ -19,11 +19,11 @@ from typing import Optional
 
 from . import __version__
 from .codegen.context import Options
+from .kernel.link import LIBRARY_LEAVES_FILE
 from .semantics.library import cache_dir
 from .semantics.universe import stdlib_files
 
 BASE_PACKAGE = "eiffel_base"
-from .kernel.link import LIBRARY_LEAVES_FILE  # noqa: E402 - beside the name it goes with
 
 
 def _compiler_digest() -> str:

@@ -232,7 +232,7 @@ def _external_ok(info, feature, inner) -> bool:
     if info.name in SAFE_EXTERNAL_CLASSES:
         return True
     name = feature.decl.names[0].name.key
-    return info.name == "ANY" and name in SAFE_ANY_EXTERNALS or (info.name, name) in SAFE_EXTERNAL_FEATURES
+    return (info.name == "ANY" and name in SAFE_ANY_EXTERNALS) or (info.name, name) in SAFE_EXTERNAL_FEATURES
 
 
 def _walk_body(analysis: Analysis, info, body, arguments):

@@ -2,7 +2,7 @@
 import threading
 
 import scoopc.runtime as rt
-from rt_helpers import Cell, gated_cell, spawn
+from rt_helpers import Cell, gated_cell
 
 SECOND = 1_000_000_000
 
@@ -173,13 +173,8 @@ def test_a_leaf_outside_call_to_a_busy_processor_is_queued(h):
 
 
 def test_a_leaf_outside_call_run_by_the_transport_wakes_a_wait_condition(h):
-    from test_wait import _consumer, _waiting
-    root = h.root
-    c = root.new_separate(Cell, Cell.make)
-    evals, got = [], []
-    waiting = _waiting(h.rt)
-    spawn(root, _consumer, c, evals, got)
-    assert waiting.wait(10)                    # the consumer waits for c's value > 0
+    from test_wait import waiting_consumer
+    c, evals, got = waiting_consumer(h)        # a consumer waits for c's value > 0
     src = rt.outside_client("transport")
     t = threading.Thread(target=lambda: src.call(c, Cell.set, (7,), leaf=True))
     t.start()

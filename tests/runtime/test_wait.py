@@ -24,13 +24,21 @@ def _waiting(rt_, proc=None):
     return rt_.watch_blocks(lambda b: b.kind == "wait" and (proc is None or b.proc is proc))
 
 
-def test_waits_until_the_condition_holds(h):
+def waiting_consumer(h):
+    """A new Cell and a consumer on another processor waiting for its value to be > 0:
+    (cell, evaluations of the condition, values got)."""
     root = h.root
     c = root.new_separate(Cell, Cell.make)
     evals, got = [], []
     waiting = _waiting(h.rt)
     spawn(root, _consumer, c, evals, got)
     assert waiting.wait(10)                       # it found the condition false and waits
+    return c, evals, got
+
+
+def test_waits_until_the_condition_holds(h):
+    root = h.root
+    c, evals, got = waiting_consumer(h)
     assert got == []
     with root.reserve((c,)):
         root.call(c, Cell.set, (5,))
