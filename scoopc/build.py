@@ -17,7 +17,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Optional
 
-from . import __version__
+from . import __version__, outdir
 from .codegen.context import Options
 from .kernel.link import LIBRARY_LEAVES_FILE
 from .semantics.library import cache_dir
@@ -148,12 +148,11 @@ def compile_program(checked, out_dir: Path, package: str, root_key: str, creator
     options = Options(assertions=assertions, package=package)
     leaves: list[str] = []
     modules = generate(sem.universe, sem.tables, options, lambda info: not info.from_library, leaves)
-    folder = out_dir / package
-    if folder.exists():
-        shutil.rmtree(folder)
+    folder = out_dir / package          # the caller made room for it (outdir.clear, or a fresh staging folder)
     write_modules(folder, modules, f"A program compiled by scoopc (root class {root_key}).", (BASE_PACKAGE,))
     (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
     (folder / "__main__.py").write_text(_main_text(package, root_key, creator, sem.universe))
+    outdir.mark(folder)
     return Compiled(package, out_dir, base_package(progress), root_key, creator)
 
 

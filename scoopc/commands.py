@@ -11,6 +11,7 @@ import sys
 from pathlib import Path
 from typing import Optional
 
+from . import outdir
 from .project import UsageError, collect
 
 EXIT_OK, EXIT_SOURCE, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
@@ -160,12 +161,17 @@ def command_compile(args) -> int:
     root = choose_root(project, checked, args.root, args.paths)
     out = Path(args.output)
     package = root.key.lower()
+    target = out / build.BASE_PACKAGE
+    outdir.prepare(out)
+    for folder in (out / package, target):      # both checked before either is touched
+        outdir.check(folder)
+    for folder in (out / package, target):
+        outdir.clear(folder)
     compiled = build.compile_program(checked, out, package, root.key, root.creator, _assertions(args, project),
                                      progress=_progress())
-    target = out / build.BASE_PACKAGE
-    if target.exists():
-        shutil.rmtree(target)
-    shutil.copytree(compiled.base_path / build.BASE_PACKAGE, target, ignore=shutil.ignore_patterns("__pycache__"))
+    shutil.copytree(compiled.base_path / build.BASE_PACKAGE, target,
+                    ignore=shutil.ignore_patterns("__pycache__", outdir.MARKER, "scoopc-complete"))
+    outdir.mark(target)
     print(f"scoopc: wrote {out / package} and {target}; run it with: cd {out} && python -m {package}",
           file=sys.stderr)
     return EXIT_OK
