@@ -13,6 +13,7 @@ from typing import Optional, Sequence
 
 from . import __version__, diagnostics, messages
 from .project import UsageError, collect
+from .runtime.stop_signals import status_of
 
 EXIT_OK, EXIT_SOURCE, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 4
 
@@ -204,9 +205,10 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
     except UsageError as problem:
         print(f"scoopc: error: {problem}", file=sys.stderr)
         return EXIT_USAGE
-    except KeyboardInterrupt:
-        print("scoopc: interrupted", file=sys.stderr)
-        return 130
+    except KeyboardInterrupt as interrupt:
+        name = getattr(interrupt, "signal_name", "SIGINT")
+        print("scoopc: interrupted" if name == "SIGINT" else f"scoopc: stopped by {name}", file=sys.stderr)
+        return status_of(interrupt)
     except BrokenPipeError:
         return EXIT_OK
     except Exception:  # a bug in scoopc, never the user's fault

@@ -13,6 +13,7 @@ from typing import Optional
 
 from . import outdir
 from .project import UsageError, collect
+from .runtime.stop_signals import stop_on_signals
 
 EXIT_OK, EXIT_SOURCE, EXIT_USAGE, EXIT_RUNTIME = 0, 1, 2, 3
 
@@ -311,12 +312,13 @@ def run_compiled(folder: Path, meta: dict, program_args: list[str], args, stdout
                              virtual_clock=virtual_clock, debug=args.debug, on_start=on_start,
                              stdout=stdout, stderr=stderr)
 
-    if robot == "none":
-        status = launch()
-    else:
-        from .robots import runner
+    with stop_on_signals():                  # SIGTERM and SIGHUP end a run the way Ctrl-C does
+        if robot == "none":
+            status = launch()
+        else:
+            from .robots import runner
 
-        status = runner.run(robot, launch, args, meta, stderr=stderr)
+            status = runner.run(robot, launch, args, meta, stderr=stderr)
     _quiet_if_reader_gone()
     return status
 

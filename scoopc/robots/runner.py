@@ -14,12 +14,14 @@ every cmd_vel topic the program published on gets a zero velocity before the run
 from __future__ import annotations
 
 import math
+import signal
 import sys
 import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..runtime.stop_signals import STOP_SIGNALS, shielded, status_of
 from . import transport
 
 DEFAULT_WORLD = {
@@ -32,6 +34,7 @@ DEFAULT_WORLD = {
     "robots": [{"name": "robot1", "kind": "thymio", "start": [0.6, 0.6, 0.0]}],
 }
 
+_SIGNAL_NAMES = {int(getattr(signal, name)): name for name in STOP_SIGNALS if hasattr(signal, name)}
 _TWISTS = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
 
 
@@ -225,7 +228,7 @@ def ros2_settings(namespace=None, goal=None, duration=None):
 class RunResult:
     status: int
     sim: object = None
-    stopped_by: str | None = None       # "duration", "program" or None (not simulated)
+    stopped_by: str | None = None       # "duration", "program", a signal's name ("SIGTERM") or None
     png: str | None = None
     gif: str | None = None
     record: str | None = None
@@ -246,14 +249,21 @@ def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=N
     result = RunResult(status=0, sim=sim)
     try:
         result.status = launch(driver.attach if driver is not None else None)
+    except KeyboardInterrupt as interrupt:   # a signal after the runtime had handled the first
+        result.status = status_of(interrupt)
+        stderr.write(f"scoopc: stopped by {getattr(interrupt, 'signal_name', 'SIGINT')}\n")
     finally:
-        result.stopped_topics = safety.stop_robots()
-        if recorder is not None:
-            result.record = str(recorder.close())
+        with shielded():                  # a second signal must not cut the robot's stop short
+            result.stopped_topics = safety.stop_robots()
+            if recorder is not None:
+                result.record = str(recorder.close())
         transport.use(previous_bus)
         SETTINGS = previous_settings
-    if driver is not None:
+    if result.status > 128 and result.status - 128 in _SIGNAL_NAMES:
+        result.stopped_by = _SIGNAL_NAMES[result.status - 128]
+    elif driver is not None:
         result.stopped_by = driver.stopped_by or "program"
+    if driver is not None:
         result.png = _render(sim, png, "render_png", stderr)
         result.gif = _render(sim, gif, "render_gif", stderr)
     return result
@@ -289,7 +299,8 @@ def _render(sim, path, how, stderr):
 def describe_end(result, wall) -> str:
     """One line for stderr after a simulated run."""
     sim = result.sim
-    why = {"duration": "the world's duration", "program": "the program ended"}.get(result.stopped_by, "")
+    why = {"duration": "the world's duration", "program": "the program ended"}.get(
+        result.stopped_by, f"stopped by {result.stopped_by}")
     parts = []
     for robot in sim.robots:
         text = f"{robot.name} moved {robot.distance:.2f} m"
@@ -371,9 +382,11 @@ def run(robot, launch, args, meta, stderr=None):
                                 stderr=stderr)
     else:
         expired = threading.Event()
-        result = run_with_robot(lambda on_start: launch(_deadline(settings.duration, expired)), settings, bus,
-                                recorder=recorder, stderr=stderr)
-        _close_ros2(bus)
+        try:
+            result = run_with_robot(lambda on_start: launch(_deadline(settings.duration, expired)), settings,
+                                    bus, recorder=recorder, stderr=stderr)
+        finally:
+            _close_ros2(bus)
         if expired.is_set():
             result.stopped_by = "duration"
             stderr.write(f"scoopc: stopped the program after {settings.duration:g} s (--duration)\n")
@@ -404,10 +417,11 @@ def _deadline(duration, expired):
 
 
 def _close_ros2(bus):
-    time.sleep(0.2)                       # let the zero velocity reach the robot
-    close = getattr(bus, "close", None)
-    if close is not None:
-        close()
+    with shielded():
+        time.sleep(0.2)                   # let the zero velocity reach the robot
+        close = getattr(bus, "close", None)
+        if close is not None:
+            close()
 
 
 class _Later:

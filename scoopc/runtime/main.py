@@ -9,6 +9,7 @@ from .errors import Shutdown, fmt_where
 from .monitor import Monitor, dump
 from .processor import RUNNING, Processor
 from .sched import Exec, Runtime
+from .stop_signals import Stopped, status_of
 
 _current = None        # the runtime of the running program (one at a time)
 
@@ -37,18 +38,21 @@ def start(**options):
     return rt, root
 
 
-def finish(rt, root, interrupted=False):
-    """The root routine returned: wait for quiescence, shut down, return the exit status."""
+def finish(rt, root, interrupted=None):
+    """The root routine returned (or was interrupted: `interrupted` is the KeyboardInterrupt):
+    wait for quiescence, shut down, return the exit status."""
     global _current
     ex = root.exec
     root.unclaim()
     rt.leave_running(ex)
-    status = 130 if interrupted else 0
     try:
         if not interrupted:
             rt.wait_quiet()
-    except KeyboardInterrupt:
-        status = 130
+    except KeyboardInterrupt as e:
+        interrupted = e
+    status = status_of(interrupted) if interrupted else 0
+    if isinstance(interrupted, Stopped):
+        rt.stderr.write(f"scoopc: stopped by {interrupted.signal_name}\n")
     rt.stop()
     rt.monitor.stop()
     _run_hooks(rt)
@@ -73,7 +77,7 @@ def run_main(root_cls, creator, args=(), describe=None, on_start=None, **options
     rt, root = start(**options)
     rt.describe = describe
     restore = _install_dump_signal(rt)
-    interrupted = False
+    interrupted = None
     try:
         if on_start is not None:
             on_start(rt)
@@ -83,8 +87,8 @@ def run_main(root_cls, creator, args=(), describe=None, on_start=None, **options
             creator(obj, *args)
     except Shutdown:
         pass
-    except KeyboardInterrupt:
-        interrupted = True
+    except KeyboardInterrupt as e:
+        interrupted = e
     except BaseException as e:
         rt.fail((describe or _uncaught)(e, root), e)
     try:

@@ -175,6 +175,32 @@ def test_compiled_program_drives_the_sim_node_with_robot_ros2(env, node, bus, tm
     assert 30 <= len(commands) <= 42 and commands[-2:] == [0.0, 0.0] and set(commands[:-2]) == {0.1}
 
 
+@pytest.mark.parametrize("name", ["SIGINT", "SIGTERM", "SIGHUP"])
+def test_a_stop_signal_on_a_ros2_run_stops_the_robot(env, node, bus, tmp_path, name):
+    """`scoopc run --robot ros2` ended by a signal: the program stops, the robot gets a zero velocity
+    (the last command the simulator node recorded) and stays stopped."""
+    sim = node()
+    odom = Odometry(bus)
+    odom.wait(lambda o: True)
+    number = getattr(signal, name)
+    proc = subprocess.Popen([sys.executable, "-m", "scoopc", "run", str(PROGRAM.parent / "drive_until_stopped"),
+                             "--robot", "ros2", "--namespace", "robot1"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, text=True, env=dict(env, PYTHONUNBUFFERED="1"), cwd=tmp_path)
+    try:
+        assert proc.stdout.readline() == "moving\n"          # the robot has moved under the program
+        proc.send_signal(number)
+        _, err = proc.communicate(timeout=TIMEOUT)
+    finally:
+        proc.kill()
+    assert proc.returncode == 128 + number, err
+    assert f"scoopc: stopped by {name}" in err and "sent a zero velocity on /robot1/cmd_vel" in err, err
+    assert "Traceback" not in err
+    odom.settled()
+    assert sim.stop() == 0, sim.stderr
+    commands = [msg.linear.x for topic, _, msg in record.read(sim.mcap) if topic == "/robot1/cmd_vel"]
+    assert 0.1 in commands and commands[-1] == 0.0
+
+
 # -- the robot benchmarks over loopback DDS, smoke sizes: output format only, never timings ---------------
 BENCHMARKS = ROOT / "benchmarks"
 NUMBER = r"\d+"

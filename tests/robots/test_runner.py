@@ -116,19 +116,28 @@ def test_programs_without_roboscoop_get_no_robot(capsys):
     assert "scoopc: simulated" not in capsys.readouterr().err
 
 
-def test_ctrl_c_ends_a_realtime_run_and_reports_it(tmp_path):
+@pytest.mark.parametrize("name", ["SIGINT", "SIGTERM", "SIGHUP"])
+def test_a_stop_signal_stops_the_robot_and_finishes_the_run(tmp_path, name):
+    """Whatever signal ends a run, the robot's last command is a zero velocity, the recording and the
+    picture are written, and the exit status is 128 + the signal's number."""
+    from scoopc.robots import record
+
+    number = getattr(signal, name)
     env = dict(os.environ, PYTHONUNBUFFERED="1")
-    proc = subprocess.Popen([sys.executable, "-m", "scoopc", "run", str(PROGRAMS / "run_forever"), "--realtime",
-                             "--no-png"], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env,
-                            cwd=tmp_path)
+    proc = subprocess.Popen([sys.executable, "-m", "scoopc", "run", str(PROGRAMS / "drive_until_stopped"),
+                             "--realtime", "--record", "run.mcap", "--png", "run.png"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=tmp_path)
     try:
-        assert proc.stdout.readline().startswith("robot /robot1")
-        proc.send_signal(signal.SIGINT)
+        assert proc.stdout.readline() == "moving\n"          # velocity commands have reached the robot
+        proc.send_signal(number)
         out, err = proc.communicate(timeout=60)
     finally:
         proc.kill()
-    assert proc.returncode == 130, err
-    assert "scoopc: simulated" in err and "Traceback" not in err
+    assert proc.returncode == 128 + number, err
+    assert f"scoopc: stopped by {name}" in err and f"(stopped by {name})" in err and "Traceback" not in err
+    commands = [msg.linear.x for topic, _, msg in record.read(tmp_path / "run.mcap") if topic == "/robot1/cmd_vel"]
+    assert 0.1 in commands and commands[-1] == 0.0
+    assert (tmp_path / "run.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 def test_record_and_gif_of_a_simulated_run(tmp_path, capsys):
