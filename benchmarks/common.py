@@ -65,10 +65,10 @@ def compiled_library():
     then taken from scoopc's cache)."""
     if ROOT not in sys.path:
         sys.path.insert(0, ROOT)
-    from scoopc import build
+    from scoopc import driver
 
     start = time.perf_counter()
-    build.base_package()
+    driver.compiled_library()
     return time.perf_counter() - start
 
 
@@ -79,22 +79,18 @@ def compile_benchmark(name, out_dir, assertions="none"):
         sys.path.insert(0, ROOT)
     from pathlib import Path
 
-    from scoopc import build, pipeline
-    from scoopc.commands import choose_root
-    from scoopc.project import collect
+    from scoopc.driver import Compilation
 
     source = os.path.join(HERE, name)
     start = time.perf_counter()
-    project = collect([source])
-    checked = pipeline.check_project(project)
-    errors = [d for d in checked.diagnostics if d.is_error]
+    compilation = Compilation([source], assertions=assertions)
+    errors = [d for d in compilation.checked.diagnostics if d.is_error]
     if errors:
         raise CompileFailed(f"{name}: {errors[0]}")
-    root = choose_root(project, checked, None, [source])
     package = "compiled_" + name
-    compiled = build.compile_program(checked, Path(out_dir), package, root.key, root.creator, assertions)
-    info = {"path": str(compiled.path), "base": str(compiled.base_path), "package": package,
-            "root": root.key, "creator": root.creator, "assertions": assertions,
+    compiled = compilation.write_package(Path(out_dir), package)
+    info = {"path": str(compiled.folder), "base": str(compiled.library), "package": package,
+            "root": compiled.root.key, "creator": compiled.root.creator, "assertions": assertions,
             "seconds": time.perf_counter() - start}
     with open(os.path.join(out_dir, name + ".json"), "w") as f:
         json.dump(info, f)

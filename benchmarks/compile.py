@@ -165,7 +165,7 @@ def main() -> None:
         os.environ["SCOOPC_CACHE_DIR"] = str(Path(work) / "cache")
         lines = generate(program, args.lines)
         project = collect([str(program)])
-        from scoopc import parser
+        from scoopc.parse import parser
 
         kind = "lark-cython" if parser._accelerator() else "pure-Python lark"
         print(f"# scoopc compile benchmark: stdlib {library_lines} lines, program {lines} lines, "
@@ -248,7 +248,7 @@ def full_compile(sample: Path, repeat: int) -> None:
 
 
 def _parse_all(project) -> None:
-    from scoopc import parser
+    from scoopc.parse import parser
     from scoopc.source import SourceFile
 
     for path in list(project.files) + stdlib_files():

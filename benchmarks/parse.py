@@ -14,7 +14,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from scoopc import parser  # noqa: E402
+from scoopc.parse import parser  # noqa: E402
 from scoopc.source import SourceFile  # noqa: E402
 
 CORPUS_DIRS = ("stdlib", "samples", "tests/syntax/valid")

@@ -153,11 +153,11 @@ class Pinger:
     """Sends numbered odometry to one responder and waits for the matching command (on our DdsBus)."""
 
     def __init__(self, bus, variant):
-        from scoopc.robots import messages
+        from scoopc.robots import ros_messages
         self.bus = bus
         self.variant = variant
         self.odom_topic, cmd_topic = TOPICS[variant]
-        self.odom = messages.new("nav_msgs/msg/Odometry", child_frame_id="base_link")
+        self.odom = ros_messages.new("nav_msgs/msg/Odometry", child_frame_id="base_link")
         self.odom.header.frame_id = "odom"
         self.cond = threading.Condition()
         self.answer = None

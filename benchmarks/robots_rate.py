@@ -68,9 +68,9 @@ class Signaler:
 
 class Drive:
     def __init__(self, bus, topic, max_linear=0.5, max_angular=1.0):
-        from scoopc.robots import messages
+        from scoopc.robots import ros_messages
         self.lock = threading.Lock()
-        self.bus, self.topic, self.messages = bus, topic, messages
+        self.bus, self.topic, self.messages = bus, topic, ros_messages
         self.max_linear, self.max_angular = max_linear, max_angular
         self.count = 0
 

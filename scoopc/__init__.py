@@ -1,3 +1,18 @@
-"""scoopc: a compiler from Eiffel with SCOOP concurrency to Python, and its runtime."""
+"""scoopc: a compiler from Eiffel with SCOOP concurrency to Python, and its runtime.
 
-__version__ = "0.1.0"
+The Python API (docs/API.md): `scoopc.check(paths)`, `scoopc.compile(paths, output)` and
+`scoopc.run(paths, args)`, with `scoopc.UsageError` for mistakes in how they are called.
+"""
+
+from .version import __version__
+
+__all__ = ["__version__", "check", "compile", "run", "UsageError"]
+_API = ("check", "compile", "run", "UsageError", "CheckResult", "CompileResult", "RunResult")
+
+
+def __getattr__(name: str):
+    if name in _API:
+        from . import api  # deferred: `import scoopc` (the command line's start-up) stays light
+
+        return getattr(api, name)
+    raise AttributeError(f"module 'scoopc' has no attribute {name!r}")

@@ -1,21 +1,18 @@
-"""The `scoopc` command: argument parsing, running the pipeline, rendering diagnostics, exit codes.
-
-Exit codes (DESIGN section 8): 0 success, 1 source errors, 2 bad usage, 3 run-time failure,
-4 internal error of scoopc (a bug: reported with its Python traceback).
+"""The `scoopc` command: arguments -> driver calls; diagnostics and failures -> stderr and an exit
+code (scoopc.exits: 0 success, 1 source errors, 2 bad usage, 3 run-time failure, 4 internal
+error of scoopc, reported with its Python traceback). No other module imports this one.
 """
 from __future__ import annotations
 
 import argparse
-import re
 import sys
 import traceback
-from typing import Optional, Sequence
+from typing import Callable, Optional, Sequence
 
-from . import __version__, diagnostics, messages
-from .project import UsageError, collect
+from . import diagnostics
+from .exits import Exit, SourceErrors, UsageError
 from .runtime.stop_signals import status_of
-
-EXIT_OK, EXIT_SOURCE, EXIT_USAGE, EXIT_RUNTIME, EXIT_INTERNAL = 0, 1, 2, 3, 4
+from .version import __version__
 
 PATHS_HELP = "a .e file, a directory (a cluster: every .e file below it) or an .ecf project file"
 
@@ -25,16 +22,10 @@ class _Parser(argparse.ArgumentParser):
 
     def error(self, message: str) -> None:  # type: ignore[override]
         self.print_usage(sys.stderr)
-        self.exit(EXIT_USAGE, f"scoopc: error: {message}\n(run `{self.prog} --help` for help)\n")
+        self.exit(Exit.USAGE, f"scoopc: error: {message}\n(run `{self.prog} --help` for help)\n")
 
 
-def _add_source_options(command: argparse.ArgumentParser) -> None:
-    command.add_argument("paths", nargs="*", metavar="PATH", help=PATHS_HELP)
-    command.add_argument("--target", help="the .ecf target to use (default: the last concrete one)")
-    command.add_argument("--format", choices=("auto", "short", "pretty"), default="auto",
-                         help="diagnostics: one line each (short), with source excerpts and hints "
-                              "(pretty); auto: pretty on a terminal")
-
+# ---- arguments -----------------------------------------------------------------------------------
 
 def build_parser() -> argparse.ArgumentParser:
     top = _Parser(prog="scoopc", description="Compile Eiffel programs with SCOOP concurrency to Python.",
@@ -50,37 +41,94 @@ def build_parser() -> argparse.ArgumentParser:
     parse.set_defaults(handler=_command_parse)
 
     check = commands.add_parser("check", help="report all errors of a program, compile nothing",
-                                description="Check Eiffel sources and report every error found: syntax, Eiffel validity (types, inheritance, calls, creation, contracts, void safety) and SCOOP separateness rules, each with its EiffelStudio code.")
+                                description="Check Eiffel sources and report every error found: syntax, Eiffel "
+                                            "validity (types, inheritance, calls, creation, contracts, void "
+                                            "safety) and SCOOP separateness rules, each with its EiffelStudio "
+                                            "code.")
     check.add_argument("--explain", metavar="CODE", help="explain a diagnostic code and exit")
     _add_source_options(check)
     check.set_defaults(handler=_command_check)
-    _add_compile_and_run(commands)
-    return top
-
-
-def _add_compile_and_run(commands) -> None:
-    from . import commands as run_commands
 
     compile_ = commands.add_parser("compile", help="compile a program to a Python package",
                                    description="Check the program, then write it as readable Python: one "
                                                "module per class, in a package runnable with `python -m`, "
-                                               "beside the compiled standard library (eiffel_base).")
+                                               "beside the compiled standard library (eiffel_base). A folder "
+                                               "scoopc did not write is never replaced.")
     _add_source_options(compile_)
     compile_.add_argument("-o", "--output", default="build", metavar="DIR",
                           help="the folder to write the packages into (default: build)")
-    run_commands.add_compile_options(compile_)
-    compile_.set_defaults(handler=run_commands.command_compile)
+    _add_compile_options(compile_)
+    compile_.set_defaults(handler=_command_compile)
 
     run = commands.add_parser("run", help="compile (cached by content) and run a program",
                               description="Compile the program (reusing an earlier compilation of the same "
                                           "sources) and run it. Arguments after `--` go to the program. Exit "
                                           "status: the program's, 1 on source errors, 3 on a run-time failure "
-                                          "(contract violation, uncaught exception, deadlock).")
+                                          "(contract violation, uncaught exception, deadlock), 128 + N when "
+                                          "signal N stopped it (130: Ctrl-C).")
     _add_source_options(run)
-    run_commands.add_compile_options(run)
-    run_commands.add_run_options(run)
-    run.set_defaults(handler=run_commands.command_run)
+    _add_compile_options(run)
+    _add_run_options(run)
+    run.set_defaults(handler=_command_run)
 
+    _add_robot_commands(commands)
+    return top
+
+
+def _add_source_options(command: argparse.ArgumentParser) -> None:
+    command.add_argument("paths", nargs="*", metavar="PATH", help=PATHS_HELP)
+    command.add_argument("--target", help="the .ecf target to use (default: the last concrete one)")
+    command.add_argument("--format", choices=("auto", "short", "pretty"), default="auto",
+                         help="diagnostics: one line each (short), with source excerpts and hints "
+                              "(pretty); auto: pretty on a terminal")
+
+
+def _add_compile_options(command: argparse.ArgumentParser) -> None:
+    command.add_argument("--root", metavar="CLASS[.creation]",
+                         help="the root class and its creation procedure (default: the .ecf's root, else "
+                              "the class named like the single file or directory, else the one class with "
+                              "a `make` no other class uses)")
+    command.add_argument("--assertions", choices=("all", "require", "none"), default=None,
+                         help="which contracts are checked at run time (default: the .ecf's setting, else "
+                              "all); wait conditions are always evaluated")
+
+
+def _add_run_options(command: argparse.ArgumentParser) -> None:
+    command.add_argument("--trace-processors", action="store_true",
+                         help="prefix every output line with the processor that wrote it ([P3] ...)")
+    command.add_argument("--strict", action="store_true",
+                         help="an exception lost in an asynchronous call fails the run (exit 3)")
+    command.add_argument("--debug", action="store_true", help="also show Python tracebacks of failures")
+    command.add_argument("--virtual-clock", action="store_true",
+                         help="run `sleep` and timers on a virtual clock that jumps ahead when every "
+                              "processor waits (fast runs of programs that sleep)")
+    command.add_argument("--no-cache", action="store_true", help="compile again even if cached")
+    robot = command.add_argument_group(
+        "robots", "A program that uses Roboscoop (stdlib/roboscoop) runs on the in-process simulator unless "
+                  "`--robot ros2` is given (docs/ROBOTS.md).")
+    robot.add_argument("--robot", choices=("sim", "ros2", "none"), default=None,
+                       help="sim: the built-in simulator (default for Roboscoop programs); ros2: a ROS 2 robot "
+                            "(rclpy when installed, else DDS with cyclonedds; SCOOPC_ROS2_BACKEND forces one); "
+                            "none: no robot transport")
+    robot.add_argument("--world", metavar="WORLD.yaml",
+                       help="the simulator's world (default: world.yaml beside the program, else a built-in "
+                            "5 x 5 m arena with one Thymio)")
+    robot.add_argument("--namespace", metavar="NS",
+                       help="the robot's namespace: which robot of the world is the program's (default: the "
+                            "first), or the prefix of a ROS 2 robot's topics (default: none)")
+    robot.add_argument("--realtime", action="store_true",
+                       help="pace the simulator to the wall clock (default: simulated time as fast as possible)")
+    robot.add_argument("--duration", type=_non_negative, metavar="SECONDS",
+                       help="simulated seconds to run (default: the world's duration)")
+    robot.add_argument("--goal", type=_point, metavar="X,Y", help="the goal the program is told (default: the world's)")
+    robot.add_argument("--png", metavar="FILE", help="where to draw the trajectory (default: <program>.png)")
+    robot.add_argument("--no-png", action="store_true", help="draw no trajectory")
+    robot.add_argument("--gif", metavar="FILE", help="also write an animation of the run")
+    robot.add_argument("--record", metavar="FILE.mcap",
+                       help="record every topic of the run in an MCAP file (ROS 2 schemas; opens in Foxglove)")
+
+
+def _add_robot_commands(commands) -> None:
     msg = commands.add_parser("msg", help="generate Eiffel classes for a ROS 2 message type",
                               description="Write one Eiffel class per message type: the given ROS 2 type "
                                           "(pkg/msg/Name, from the ROS 2 Humble type store or --file) and, "
@@ -91,21 +139,110 @@ def _add_compile_and_run(commands) -> None:
     msg.add_argument("-o", "--output", default=".", metavar="DIR", help="where to write the .e files (default: .)")
     msg.add_argument("--all", action="store_true",
                      help="also write the classes the Roboscoop library already has (std_msgs/Header, ...)")
-    msg.set_defaults(handler=lambda args: __import__("scoopc.robots.eiffel_messages",
-                                                     fromlist=["command_msg"]).command_msg(args))
+    msg.set_defaults(handler=_command_msg)
 
     sim = commands.add_parser("sim", help="run the simulator as a ROS 2 (DDS) node",
                               description="Run a simulator world as a separate ROS 2 node over DDS: it subscribes "
                                           "each robot's cmd_vel and publishes its sensors and /clock, paced to the "
                                           "wall clock, so that `scoopc run app.e --robot ros2` drives it over the "
                                           "real transport (docs/ROBOTS.md).")
-    from .robots import simnode
+    from .robots import simnode  # deferred: only its argument list is needed here (start-up)
 
     simnode.add_arguments(sim)
     sim.set_defaults(handler=simnode.command)
 
 
-def _render(found: list[diagnostics.Diagnostic], line_text, style: str) -> None:
+def _non_negative(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
+    if value < 0 or value != value:
+        raise argparse.ArgumentTypeError(f"a duration must not be negative: {text!r}")
+    return value
+
+
+def _point(text: str) -> tuple:
+    try:
+        x, y = (float(v) for v in text.split(","))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"a point is X,Y (metres), not {text!r}") from None
+    return (x, y)
+
+
+# ---- commands ------------------------------------------------------------------------------------
+
+def _compilation(args: argparse.Namespace, **options):
+    from .driver import Compilation  # deferred: `scoopc --help` and `parse` need no code generator
+
+    if not args.paths:
+        raise UsageError(f"`scoopc {args.command}` needs at least one PATH ({PATHS_HELP})")
+    return Compilation(args.paths, target=args.target, progress=_progress(), **options)
+
+
+def _command_parse(args: argparse.Namespace) -> int:
+    parsed = _compilation(args).parsed
+    _render(parsed.diagnostics, parsed.line_text, args.format)
+    if args.dump:
+        from . import syntax  # deferred: only --dump prints trees
+
+        for unit in parsed.units:
+            if unit.tree is not None:
+                sys.stdout.write(syntax.dump(unit.tree).rstrip("\n") + "\n")
+    return Exit.SOURCE if parsed.has_errors else Exit.OK
+
+
+def _command_check(args: argparse.Namespace) -> int:
+    if args.explain is not None:
+        from .explain import explain  # deferred: the explanation table is large (start-up)
+
+        text = explain(args.explain)
+        if text is None:
+            raise UsageError(f"unknown diagnostic code `{args.explain}`")
+        print(text)
+        return Exit.OK
+    checked = _compilation(args).checked
+    _render(checked.diagnostics, checked.line_text, args.format)
+    return Exit.SOURCE if checked.has_errors else Exit.OK
+
+
+def _command_compile(args: argparse.Namespace) -> int:
+    compilation = _compilation(args, root=args.root, assertions=args.assertions)
+    try:
+        compilation.require_clean()
+    finally:
+        _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
+    program = compilation.compile_to(args.output)
+    print(f"scoopc: wrote {program.folder / program.package} and {program.folder / 'eiffel_base'}; run it with: "
+          f"cd {program.folder} && python -m {program.package}", file=sys.stderr)
+    return Exit.OK
+
+
+def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
+    from .driver import RunOptions, run_program
+    from .robots.runner import RobotOptions
+
+    compilation = _compilation(args, root=args.root, assertions=args.assertions)
+    try:
+        program = compilation.cached_program(use_cache=not args.no_cache)
+    finally:
+        if "checked" in vars(compilation):           # checked now, not taken from the cache
+            _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
+    options = RunOptions(args.trace_processors, args.strict, args.virtual_clock, args.debug)
+    robot = RobotOptions(args.robot, args.world, args.namespace, args.realtime, args.duration, args.goal,
+                         None if args.no_png else (args.png or True), args.gif, args.record)
+    return run_program(program, program_args, options, robot, compilation.paths).status
+
+
+def _command_msg(args: argparse.Namespace) -> int:
+    from .robots.eiffel_messages import command_msg  # deferred: loads the ROS 2 type store
+
+    return command_msg(args)
+
+
+# ---- rendering -----------------------------------------------------------------------------------
+
+def _render(found: list, line_text: Callable[[str, int], str], style: str) -> None:
     pretty = style == "pretty" or (style == "auto" and sys.stderr.isatty())
     color = pretty and sys.stderr.isatty()
     for d in found:
@@ -116,77 +253,11 @@ def _render(found: list[diagnostics.Diagnostic], line_text, style: str) -> None:
         print(f"{errors} error{'s' if errors != 1 else ''}", file=sys.stderr)
 
 
-def _front_end(args: argparse.Namespace, stage: str = "parse"):
-    from . import pipeline
-
-    if not args.paths:
-        raise UsageError(f"`scoopc {args.command}` needs at least one PATH ({PATHS_HELP})")
-    project = collect(args.paths, args.target)
-    parsed = pipeline.parse_project(project) if stage == "parse" else pipeline.check_project(project)
-    _render(parsed.diagnostics, parsed.line_text, args.format)
-    return parsed
-
-
-def _command_parse(args: argparse.Namespace) -> int:
-    parsed = _front_end(args)
-    if args.dump:
-        from . import syntax
-
-        for unit in parsed.units:
-            if unit.tree is not None:
-                sys.stdout.write(syntax.dump(unit.tree).rstrip("\n") + "\n")
-    return EXIT_SOURCE if parsed.has_errors else EXIT_OK
-
-
-def _command_check(args: argparse.Namespace) -> int:
-    if args.explain is not None:
-        text = explain(args.explain)
-        if text is None:
-            raise UsageError(f"unknown diagnostic code `{args.explain}`")
-        print(text)
-        return EXIT_OK
-    parsed = _front_end(args, "check")
-    return EXIT_SOURCE if parsed.has_errors else EXIT_OK
-
-
-def _canonical(code: str) -> str:
-    """`vuta-3` -> `VUTA(3)`: test folders and shells write parentheses as a dash. Gobo's finer
-    SCOOP codes resolve to ours (`vuta-4g` or `VUTA(4G)` -> `VUTA(3)`)."""
-    from .explanations import ALIASES
-
-    spelled = re.sub(r"\((\w+)\)$", r"-\1", code.strip().upper())
-    if spelled in ALIASES:
-        return ALIASES[spelled]
-    match = re.fullmatch(r"(V[A-Z0-9]+)-(\d+)", spelled)
-    return f"{match.group(1)}({match.group(2)})" if match else spelled
-
-
-def explain(code: str) -> Optional[str]:
-    """The explanation of a diagnostic code (ours or a Gobo alias), or None when the code is unknown:
-    the rule, a wrong example and its fix, then the message and hint templates."""
-    import textwrap
-
-    from .explanations import ALIASES, EXPLANATIONS
-
-    canonical = _canonical(code)
-    entry, message = EXPLANATIONS.get(canonical), messages.MESSAGES.get(canonical)
-    if entry is None and message is None:
+def _progress() -> Optional[Callable[[str], None]]:
+    """Progress lines on stderr for long steps, on a terminal only (stderr stays clean otherwise)."""
+    if not sys.stderr.isatty():
         return None
-    spelled = re.sub(r"\((\w+)\)$", r"-\1", code.strip().upper())
-    heading = f"{canonical} (Gobo: {spelled})" if spelled in ALIASES else canonical
-    if entry is None:
-        lines = [f"{heading}: {message.text}"] + ([f"hint: {message.hint}"] if message.hint else [])
-        return "\n".join(lines)
-
-    def fill(text: str) -> str:
-        return textwrap.fill(text, 100, break_on_hyphens=False, break_long_words=False)
-
-    example, _, sentence = entry.fix.rpartition("\n\n")
-    lines = [fill(f"{heading}: {entry.rule}"), "", "Wrong:", textwrap.indent(entry.wrong, "    "),
-             "Fix:", textwrap.indent(example, "    "), fill(sentence)]
-    if message is not None:
-        lines += ["", f"Message: {message.text}"] + ([f"Hint: {message.hint}"] if message.hint else [])
-    return "\n".join(lines)
+    return lambda message: print(f"scoopc: {message}", file=sys.stderr, flush=True)
 
 
 def main(argv: Optional[Sequence[str]] = None) -> int:
@@ -200,21 +271,23 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         build_parser().error("arguments after `--` are for `scoopc run` only")
     try:
         if args.command == "run":
-            return args.handler(args, program_args)
-        return args.handler(args)
+            return int(args.handler(args, program_args))
+        return int(args.handler(args))
+    except SourceErrors:
+        return Exit.SOURCE                      # the diagnostics are on stderr already
     except UsageError as problem:
         print(f"scoopc: error: {problem}", file=sys.stderr)
-        return EXIT_USAGE
+        return Exit.USAGE
     except KeyboardInterrupt as interrupt:
         name = getattr(interrupt, "signal_name", "SIGINT")
         print("scoopc: interrupted" if name == "SIGINT" else f"scoopc: stopped by {name}", file=sys.stderr)
         return status_of(interrupt)
     except BrokenPipeError:
-        return EXIT_OK
+        return Exit.OK
     except Exception:  # a bug in scoopc, never the user's fault
         print("scoopc: internal error (a bug in scoopc; please report it with the input):", file=sys.stderr)
         traceback.print_exc()
-        return EXIT_INTERNAL
+        return Exit.INTERNAL
 
 
 if __name__ == "__main__":

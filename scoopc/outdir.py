@@ -13,8 +13,8 @@ import shutil
 from pathlib import Path
 from typing import Iterable
 
-from . import __version__
-from .project import UsageError
+from .version import __version__
+from .exits import UsageError
 
 MARKER = ".scoopc-output"
 _CACHES = "__pycache__"

@@ -50,7 +50,7 @@ def read_source(path: str) -> tuple[Optional[SourceFile], Optional[Diagnostic]]:
 
 def parse_project(project: Project) -> Parsed:
     """Parse every file of the project; syntax errors are collected, never raised."""
-    from . import parser  # deferred: building the grammar is the costly part of start-up
+    from .parse import parser  # deferred: building the grammar is the costly part of start-up
 
     parsed = Parsed(diagnostics=list(project.errors) + list(project.notes))
     for path in project.files:
@@ -74,7 +74,7 @@ class Checked(Parsed):
 
 
 def _parse_library_file(path) -> tuple:
-    from . import parser
+    from .parse import parser  # deferred, as in parse_project
 
     source, problem = read_source(str(path))
     if problem is not None:
@@ -96,18 +96,19 @@ def without_gc_pauses():
             gc.enable()
 
 
-def check_project(project: Project, use_cache: bool = True, library_bodies: Optional[bool] = None) -> Checked:
-    """Everything `scoopc check` verifies: syntax, then the semantic checker over the project's
-    classes and the standard library. Library bodies are checked unless they come from the cache."""
+def check_project(project: Project, use_cache: bool = True, library_bodies: Optional[bool] = None,
+                  parsed: Optional[Parsed] = None) -> Checked:
+    """Everything `scoopc check` verifies: syntax (unless `parsed` is given), then the semantic
+    checker over the project's classes and the standard library. Library bodies are checked unless
+    they come from the cache."""
     with without_gc_pauses():
-        return _check_project(project, use_cache, library_bodies)
+        return _check_project(project, use_cache, library_bodies, parsed or parse_project(project))
 
 
-def _check_project(project: Project, use_cache: bool, library_bodies: Optional[bool]) -> Checked:
-    from . import semantics
+def _check_project(project: Project, use_cache: bool, library_bodies: Optional[bool], parsed: Parsed) -> Checked:
+    from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
     from .semantics import library
 
-    parsed = parse_project(project)
     checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
     library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache)
     trees = [(unit.tree, False) for unit in parsed.units if unit.tree is not None]

@@ -14,6 +14,7 @@ from typing import Optional
 
 from . import diagnostics
 from .diagnostics import Diagnostic
+from .exits import UsageError
 from .source import Span
 
 # Libraries whose classes our stdlib provides (EiffelBase/FreeELKS and the SCOOP support around it).
@@ -49,10 +50,6 @@ class Project:
         resolved = path.resolve()
         if all(f.resolve() != resolved for f in self.files):
             self.files.append(path)
-
-
-class UsageError(Exception):
-    """A command-line mistake (exit code 2): a path that does not exist, a wrong extension."""
 
 
 def collect(paths: list[str], target: Optional[str] = None) -> Project:

@@ -76,3 +76,15 @@ def check_golden(request, path: Path, actual: str) -> None:
 
 def case_id(path: Path, base: Path) -> str:
     return path.relative_to(base).as_posix()
+
+
+def run_on_simulator(paths, world=None, *, duration=None, argv=(), namespace=None, goal=None, png=None, gif=None,
+                     record=None, realtime=False, stdout=None, stderr=None, root=None):
+    """Compile (cached) and run the program at `paths` on the in-process simulator, through the
+    Python API. Returns the RunResult, whose `sim` is the Simulator after the run."""
+    import scoopc
+
+    paths = [str(paths)] if isinstance(paths, (str, Path)) else [str(p) for p in paths]
+    return scoopc.run(paths, list(argv), robot="sim", world=world, duration=duration, namespace=namespace,
+                      goal=goal, png=png, gif=gif, record=record, realtime=realtime, stdout=stdout,
+                      stderr=stderr, root=root)

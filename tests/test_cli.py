@@ -5,6 +5,7 @@ import sys
 import pytest
 
 from harness import ROOT
+from scoopc.exits import Exit
 from scoopc import cli
 
 SAMPLE = ROOT / "samples" / "producer_consumer"
@@ -41,7 +42,7 @@ def test_every_command_has_help(capsys, argv):
 def test_no_command_is_a_usage_error(capsys):
     with pytest.raises(SystemExit) as exited:
         cli.main([])
-    assert exited.value.code == cli.EXIT_USAGE
+    assert exited.value.code == Exit.USAGE
 
 
 @pytest.mark.parametrize("argv, fragment", [
@@ -52,7 +53,7 @@ def test_no_command_is_a_usage_error(capsys):
 ])
 def test_usage_errors_exit_2_with_a_message(capsys, argv, fragment):
     code, out, err = run(capsys, *argv)
-    assert code == cli.EXIT_USAGE and fragment in err and out == ""
+    assert code == Exit.USAGE and fragment in err and out == ""
 
 
 def test_check_of_the_sample_is_clean(capsys):
@@ -68,7 +69,7 @@ def test_parse_dump_prints_a_tree_on_stdout(capsys):
 def test_syntax_error_one_line_form_and_exit_1(capsys, tmp_path):
     (tmp_path / "broken.e").write_text(BROKEN)
     code, out, err = run(capsys, "check", "--format", "short", str(tmp_path / "broken.e"))
-    assert code == cli.EXIT_SOURCE and out == ""
+    assert code == Exit.SOURCE and out == ""
     first = err.splitlines()[0]
     assert first.startswith(f"{tmp_path / 'broken.e'}:12:1: error SYNTAX-END: missing `end` of the `")
 
@@ -76,14 +77,14 @@ def test_syntax_error_one_line_form_and_exit_1(capsys, tmp_path):
 def test_pretty_form_shows_the_line_an_underline_and_a_hint(capsys, tmp_path):
     (tmp_path / "broken.e").write_text(BROKEN)
     code, _, err = run(capsys, "check", "--format", "pretty", str(tmp_path / "broken.e"))
-    assert code == cli.EXIT_SOURCE
+    assert code == Exit.SOURCE
     assert "12 | end" in err and "^" in err and "hint:" in err and "1 error" in err
 
 
 def test_unreadable_source_is_a_located_error(capsys, tmp_path):
     (tmp_path / "latin.e").write_bytes(b"class LATIN -- caf\xe9\nend\n")
     code, _, err = run(capsys, "check", "--format", "short", str(tmp_path / "latin.e"))
-    assert code == cli.EXIT_SOURCE and "error SOURCE: cannot read" in err and "not UTF-8" in err
+    assert code == Exit.SOURCE and "error SOURCE: cannot read" in err and "not UTF-8" in err
 
 
 def test_explain_accepts_dashes_for_parentheses(capsys):
@@ -131,18 +132,18 @@ def test_ecf_reads_root_clusters_and_notes_ignored_settings(capsys, tmp_path):
 
 def test_ecf_unknown_target_is_an_error(capsys, tmp_path):
     code, _, err = run(capsys, "check", "--target", "nope", str(_ecf_project(tmp_path)))
-    assert code == cli.EXIT_SOURCE and "has no target `nope`; its targets are: pc" in err
+    assert code == Exit.SOURCE and "has no target `nope`; its targets are: pc" in err
 
 
 def test_internal_errors_are_not_blamed_on_the_user(capsys, monkeypatch):
-    from scoopc import parser
+    from scoopc.parse import parser
 
     def explode(source):
         raise RuntimeError("boom")
 
     monkeypatch.setattr(parser, "parse", explode)
     code, _, err = run(capsys, "check", str(SAMPLE))
-    assert code == cli.EXIT_INTERNAL and "internal error" in err and "RuntimeError: boom" in err
+    assert code == Exit.INTERNAL and "internal error" in err and "RuntimeError: boom" in err
 
 
 def test_the_console_script_runs():
@@ -154,7 +155,7 @@ def test_the_console_script_runs():
 def test_malformed_ecf_is_located_at_the_xml_error(capsys, tmp_path):
     (tmp_path / "bad.ecf").write_text('<system name="x">\n\t<target name="t">\n\t\t<root class=APP/>\n')
     code, _, err = run(capsys, "check", "--format", "short", str(tmp_path / "bad.ecf"))
-    assert code == cli.EXIT_SOURCE and f"{tmp_path / 'bad.ecf'}:3:15: error ECF: " in err
+    assert code == Exit.SOURCE and f"{tmp_path / 'bad.ecf'}:3:15: error ECF: " in err
 
 
 def test_semantic_errors_exit_1_each_with_its_code_and_a_hint(capsys, tmp_path):
@@ -163,6 +164,6 @@ def test_semantic_errors_exit_1_each_with_its_code_and_a_hint(capsys, tmp_path):
         "\t\t\tcreate motor.make\n\t\t\tmotor.stop\n\t\t\tcount := \"x\"\n\t\tend\n"
         "\tstop do end\n\tcount: INTEGER\nend\n", encoding="utf-8")
     code, _, err = run(capsys, "check", "--format", "pretty", str(tmp_path))
-    assert code == cli.EXIT_SOURCE
+    assert code == Exit.SOURCE
     assert "robot.e:9:4: error VUTA(3)" in err and "robot.e:10:13: error VJAR" in err
     assert "hint: pass `motor` as an argument" in err and "2 errors" in err

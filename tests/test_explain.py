@@ -3,7 +3,9 @@ codes are aliases; the explanation table keeps up with the diagnostics and the e
 import pytest
 
 from harness import TESTS
+from scoopc.exits import Exit
 from scoopc import cli, messages
+from scoopc.explain import canonical_code
 from scoopc.explanations import ALIASES, EXPLANATIONS
 
 PLAN_SCOOP_CODES = ["VUTA(3)", "VUAR(2)", "VJAR", "VUAR(3)", "VUAR(4)", "VUER", "V1SE(1)", "V1SE(2)",
@@ -19,13 +21,13 @@ def run(capsys, *argv):
 def folder_codes():
     """The codes of tests/errors/<CODE>/ folders that hold at least one case."""
     folders = {case.parent.name for case in (TESTS / "errors").glob("*/*") if case.is_dir()}
-    return sorted(cli._canonical(name) for name in folders)
+    return sorted(canonical_code(name) for name in folders)
 
 
 @pytest.mark.parametrize("code", sorted(EXPLANATIONS))
 def test_every_code_is_explained(capsys, code):
     status, out, err = run(capsys, "check", "--explain", code)
-    assert status == cli.EXIT_OK and err == ""
+    assert status == Exit.OK and err == ""
     assert out.startswith(f"{code}: ")
     assert "\nWrong:\n" in out and "\nFix:\n" in out
 
@@ -90,4 +92,4 @@ def test_the_gobo_scoop_codes_are_aliases():
 @pytest.mark.parametrize("unknown", ["NO-SUCH-CODE", "VUTA(99)", "VXYZ", "VUTA-9G"])
 def test_an_unknown_code_is_a_usage_error(capsys, unknown):
     status, out, err = run(capsys, "check", "--explain", unknown)
-    assert status == cli.EXIT_USAGE and out == "" and "unknown diagnostic code" in err
+    assert status == Exit.USAGE and out == "" and "unknown diagnostic code" in err

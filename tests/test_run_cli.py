@@ -6,6 +6,7 @@ import sys
 
 import pytest
 
+from scoopc.exits import Exit
 from scoopc import cli
 
 HELLO = """class
@@ -87,7 +88,7 @@ def test_run_prints_what_the_program_prints_and_passes_arguments(tmp_path, capsy
 
 def test_a_contract_violation_exits_3_with_an_eiffel_trace(tmp_path, capsys):
     code, out, err = run(capsys, "run", write(tmp_path, "failing.e", FAILING))
-    assert code == cli.EXIT_RUNTIME and out == ""
+    assert code == Exit.RUNTIME and out == ""
     assert "precondition violated: `positive`" in err
     assert "in FAILING.withdraw (failing.e:" in err and "called by FAILING.make (failing.e:11)" in err
     assert "Traceback" not in err
@@ -95,27 +96,27 @@ def test_a_contract_violation_exits_3_with_an_eiffel_trace(tmp_path, capsys):
 
 def test_debug_adds_the_python_traceback(tmp_path, capsys):
     code, _, err = run(capsys, "run", "--debug", write(tmp_path, "failing.e", FAILING))
-    assert code == cli.EXIT_RUNTIME and "Traceback" in err
+    assert code == Exit.RUNTIME and "Traceback" in err
 
 
 def test_source_errors_exit_1_without_running(tmp_path, capsys):
     path = write(tmp_path, "broken.e", HELLO.replace("print (", "prin ("))
     code, out, err = run(capsys, "run", path)
-    assert code == cli.EXIT_SOURCE and out == "" and "VEEN" in err
+    assert code == Exit.SOURCE and out == "" and "VEEN" in err
 
 
 def test_an_unknown_root_is_a_usage_error(tmp_path, capsys):
     path = write(tmp_path, "hello.e", HELLO)
     code, _, err = run(capsys, "run", "--root", "NOPE", path)
-    assert code == cli.EXIT_USAGE and "root class NOPE" in err
+    assert code == Exit.USAGE and "root class NOPE" in err
     code, _, err = run(capsys, "run", "--root", "HELLO.go", path)
-    assert code == cli.EXIT_USAGE and "not a creation procedure of HELLO" in err
+    assert code == Exit.USAGE and "not a creation procedure of HELLO" in err
 
 
 def test_arguments_after_dashes_belong_to_run_only(capsys):
     with pytest.raises(SystemExit) as exited:
         cli.main(["check", "x.e", "--", "y"])
-    assert exited.value.code == cli.EXIT_USAGE
+    assert exited.value.code == Exit.USAGE
 
 
 def test_run_reads_standard_input(tmp_path, capsys, monkeypatch):
@@ -149,12 +150,12 @@ def test_a_second_run_uses_the_cached_compilation(tmp_path, capsys, monkeypatch)
 def test_cached_packages_are_byte_compiled_once(tmp_path, capsys, monkeypatch):
     """The cache holds .pyc files beside the library and the program, written when they are
     compiled: a run never compiles Python again, even where Python writes no bytecode itself."""
-    from scoopc import build
+    from scoopc.driver import BASE_PACKAGE, compiled_library
 
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path / "cache"))
     path = write(tmp_path, "hello.e", HELLO)
     assert run(capsys, "run", path)[0] == 0
-    base = build.base_package() / build.BASE_PACKAGE
+    base = compiled_library().path / BASE_PACKAGE
     assert len(list((base / "__pycache__").glob("string_8.*.pyc"))) == 1
     programs = list((tmp_path / "cache").rglob("program/__pycache__/hello.*.pyc"))
     assert len(programs) == 1

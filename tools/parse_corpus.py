@@ -16,7 +16,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
-from scoopc import parser  # noqa: E402
+from scoopc.parse import parser  # noqa: E402
 from scoopc.source import SourceFile  # noqa: E402
 
 

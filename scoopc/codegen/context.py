@@ -32,6 +32,9 @@ class Program:
     leaves: dict = field(default_factory=dict)      # id(decl) -> bool
     sources: dict = field(default_factory=dict)     # class key -> source path
     invariant_classes: set = field(default_factory=set)  # classes with an invariant in themselves or a descendant
+    # the compiled library's SCOOP facts (dict, see scoop.library_facts); True: compute them from the
+    # library's bodies (when compiling the library itself); None: none (library routines are non-leaves)
+    library_facts: object = None
 
     def package_of(self, key: str) -> str:
         info = self.universe.get(key)

@@ -32,8 +32,8 @@ def parents_first(universe) -> list:
     return order
 
 
-def prepare(universe, tables, options: Options) -> Program:
-    program = Program(universe, tables, options, Naming(universe))
+def prepare(universe, tables, options: Options, library_facts=None) -> Program:
+    program = Program(universe, tables, options, Naming(universe), library_facts=library_facts)
     for info in parents_first(universe):
         program.layouts[info.name] = layout = make_layout(universe, info, program.layouts)
         layout.plan = plan_bindings(program, info, layout)
@@ -57,11 +57,12 @@ def generate_class(program: Program, info) -> ast.Module:
         raise CodegenError(f"class {info.name}: {type(problem).__name__}: {problem}") from problem
 
 
-def generate(universe, tables, options: Options, which, library_leaves: list | None = None) -> dict:
+def generate(universe, tables, options: Options, which, library_leaves: list | None = None,
+             library_facts=None) -> dict:
     """{module file name: (ast.Module, Eiffel source path)} for the classes `which(info)` selects.
-    `library_leaves`, if given, receives the library routines that are leaves in this program
-    (scoop.library_leaves)."""
-    program = prepare(universe, tables, options)
+    `library_facts`: the compiled library's SCOOP facts (Program.library_facts). `library_leaves`,
+    if given, receives the library routines that are leaves in this program (scoop.library_leaves)."""
+    program = prepare(universe, tables, options, library_facts)
     modules = {}
     for info in parents_first(universe):
         if which(info):

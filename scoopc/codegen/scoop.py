@@ -73,7 +73,8 @@ def analysis(program) -> "Analysis":
     """The program's SCOOP facts, computed once per program (on first use)."""
     found = getattr(program, "_scoop_analysis", None)
     if found is None:
-        found = program._scoop_analysis = Analysis(program.universe, program.tables, program.assertions_for)
+        found = program._scoop_analysis = Analysis(program.universe, program.tables, program.assertions_for,
+                                                   program.library_facts)
     return found
 
 
@@ -193,9 +194,8 @@ class Analysis:
         return found
 
     def _library_facts(self, key: str):
-        if self._library is None:
-            self._library = load_library_facts() if not self.universe.shadowed else {}
-        entry = (self._library or {}).get(key)
+        # a user class that shadows a library class changes what the library's routines call
+        entry = None if self.universe.shadowed else (self._library or {}).get(key)
         if entry is None:
             return None
         return entry[0], [tuple(c[:2]) + ((c[2] if c[0] == "v" else frozenset(c[2])),) for c in entry[1]]
@@ -524,14 +524,3 @@ def library_leaves(program) -> list[str]:
 def write_library_facts(folder: Path, universe, tables, options) -> None:
     facts = library_facts(universe, tables, options)
     (folder / FACTS_FILE).write_text(json.dumps({"format": FACTS_FORMAT, "facts": facts}, separators=(",", ":")))
-
-
-def load_library_facts() -> dict:
-    """The compiled library's facts ({} when unavailable: library routines are then non-leaves)."""
-    try:
-        from ..build import BASE_PACKAGE, base_package
-
-        data = json.loads((base_package() / BASE_PACKAGE / FACTS_FILE).read_text())
-    except Exception:                         # noqa: BLE001 - no facts: no library leaves
-        return {}
-    return data.get("facts", {}) if data.get("format") == FACTS_FORMAT else {}

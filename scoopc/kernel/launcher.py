@@ -11,26 +11,34 @@ import sys
 import traceback
 from pathlib import Path
 
+from ..exits import Exit
 from ..runtime import DeadlockError, DirtyRegionError, PreconditionViolation
 from . import CLASSES
 from .errors import EiffelFailure
 from .support import ContractViolation, EiffelRuntimeError
 
 _LINE_MAPS: dict = {}
+PROGRAM = [sys.argv[0] if sys.argv and sys.argv[0] else "program"]    # the command line ARGUMENTS reads
+
+
+def set_arguments(args) -> None:
+    """Make `args` (command name first, then the arguments: strings) the program's command line."""
+    args = [str(a) for a in args]
+    if not args:
+        raise ValueError("set_arguments: the command name (index 0) is required")
+    PROGRAM[:] = args
 
 
 def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, strict=False,
          virtual_clock=False, debug=False, stdout=None, stderr=None, on_start=None) -> int:
     from .. import runtime as rt
-    from .ext import arguments
-
     from . import link
 
     link.register_again("eiffel_base")                       # the registry may have been reset
     link.register_again(root_cls.__module__.rpartition(".")[0])
     for name, key in (shadowed or {}).items():
         CLASSES.setdefault(key, CLASSES.get(name))
-    arguments.set_arguments(list(argv))
+    set_arguments(list(argv))
     stderr = stderr or sys.stderr
 
     def describe(error, proc):
@@ -39,7 +47,7 @@ def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, st
     routine = getattr(root_cls, creator, None) if creator else None
     if creator and routine is None:
         stderr.write(f"scoopc: the root class has no creation procedure `{creator}`\n")
-        return 2
+        return Exit.USAGE
     restore = _tune_collector()
     try:
         return rt.run_main(root_cls, routine, (), describe=describe, trace_processors=trace_processors,

@@ -2,7 +2,7 @@
 
 Topic names are full names including the namespace ("/robot1/cmd_vel" or "/cmd_vel"). A message
 is whatever the publisher passes (by convention an instance of the rosbags type store's dataclass,
-scoopc.robots.messages); the bus neither copies nor converts it. `publish` runs every callback on
+scoopc.robots.ros_messages); the bus neither copies nor converts it. `publish` runs every callback on
 the publisher's thread, in subscription order; a callback subscribed or closed during a delivery
 takes effect from the next `publish`. A callback that raises does not stop the others: the first
 exception is re-raised to the publisher once every subscriber has had the message.

@@ -1,4 +1,4 @@
-"""Our own CDR (OMG Common Data Representation, version 1, as ROS 2 uses it) for type-store messages.
+"""Our own CDR (OMG Common Data Representation, version 1, as ROS 2 uses it) for type-store ros_messages.
 
 `serialize(msg, typename)` gives the 4-byte encapsulation header (00 01 00 00: CDR, little endian)
 followed by the fields in order; `deserialize(data, typename)` reads it back (either byte order).
@@ -27,8 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from . import messages
-from .messages import ARRAY, BASE, DTYPES, NAME
+from . import ros_messages
+from .ros_messages import ARRAY, BASE, DTYPES, NAME
 
 HEADER_LE = b"\x00\x01\x00\x00"
 HEADER_BE = b"\x00\x00\x00\x00"
@@ -40,7 +40,7 @@ _FORMATS = {"bool": "?", "byte": "b", "char": "B", "int8": "b", "uint8": "B", "i
 def serialize(msg: Any, typename: str | None = None, store=None) -> bytes:
     """The CDR bytes (little endian, with the encapsulation header) of a type-store message."""
     out = bytearray(HEADER_LE)
-    _plan(typename or messages.typename_of(msg), store, "<").encode(out, msg)
+    _plan(typename or ros_messages.typename_of(msg), store, "<").encode(out, msg)
     return bytes(out)
 
 
@@ -63,7 +63,7 @@ _plans_lock = threading.RLock()     # a plan makes the plans of its sequences' e
 
 
 def _plan(typename: str, store, order: str) -> "_Plan":
-    store = messages._store(store)
+    store = ros_messages._store(store)
     key = (id(store), typename, order)
     plan = _plans.get(key)
     if plan is None:
@@ -139,11 +139,11 @@ class _Source:
 
     def element_plan(self, element: tuple, kind: str):
         """A function (encode(out, value) or decode(data, pos) -> (value, pos)) for one element of
-        a sequence of strings or messages."""
+        a sequence of strings or ros_messages."""
         if element[0] == NAME:
             return getattr(self.plan.nested(element[1]), kind)
         name = element[1][0]
-        if name not in messages.STRING_TYPES:
+        if name not in ros_messages.STRING_TYPES:
             raise NotImplementedError(f"arrays of {name} are not supported")
         if name == "wstring":
             raise NotImplementedError("wstring fields are not supported (rosbags has none either)")
@@ -184,7 +184,7 @@ class _EncoderSource(_Source):
         return self.build("def encode(out, m):", "encode")
 
     def message(self, expr: str, typename: str) -> None:
-        for name, desc in messages.fields(typename, self.plan.store):
+        for name, desc in ros_messages.fields(typename, self.plan.store):
             self.value(f"{expr}.{name}", desc)
 
     def align(self, size: int) -> None:
@@ -199,7 +199,7 @@ class _EncoderSource(_Source):
         if kind == NAME:
             self.message(expr, detail)
             return
-        if kind == BASE and detail[0] not in messages.STRING_TYPES:
+        if kind == BASE and detail[0] not in ros_messages.STRING_TYPES:
             self.primitive(detail[0], expr)
             return
         self.flush()
@@ -219,7 +219,7 @@ class _EncoderSource(_Source):
                 self.emit(f"    raise ValueError(f'bounded sequence (<= {size}) given {{len({v})}} elements')")
             self.align(4)
             self.emit(f"out += pack('<I', len({v}))")
-        if messages.is_numeric(element):
+        if ros_messages.is_numeric(element):
             dtype = DTYPES[element[1][0]]
             self.emit(f"if len({v}):")
             if dtype.itemsize > 1:
@@ -242,8 +242,8 @@ class _DecoderSource(_Source):
 
     def message(self, typename: str) -> str:
         store = self.plan.store
-        arguments = [f"{name}={self.value(desc)}" for name, desc in messages.fields(typename, store)]
-        return f"{self.const(messages.message_class(typename, store), 'C')}({', '.join(arguments)})"
+        arguments = [f"{name}={self.value(desc)}" for name, desc in ros_messages.fields(typename, store)]
+        return f"{self.const(ros_messages.message_class(typename, store), 'C')}({', '.join(arguments)})"
 
     def align(self, size: int) -> None:
         if size > 1:
@@ -258,7 +258,7 @@ class _DecoderSource(_Source):
         if kind == NAME:
             return self.message(detail)
         v = self.var()
-        if kind == BASE and detail[0] not in messages.STRING_TYPES:
+        if kind == BASE and detail[0] not in ros_messages.STRING_TYPES:
             self.primitive(detail[0], v)
             return v
         self.flush()
@@ -274,7 +274,7 @@ class _DecoderSource(_Source):
             self.align(4)
             self.emit(f"{count}, = unpack_from('{self.order}I', data, pos)")
             self.emit("pos += 4")
-        if messages.is_numeric(element):
+        if ros_messages.is_numeric(element):
             native = DTYPES[element[1][0]]
             wire = self.const(native.newbyteorder(self.order), "D")
             if native.itemsize > 1:

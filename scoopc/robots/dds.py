@@ -44,9 +44,9 @@ from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 from cyclonedds.util import duration
 
-from . import cdr, messages
+from . import cdr, ros_messages
 from .bus import Subscription, Tapped
-from .messages import ARRAY, BASE, NAME
+from .ros_messages import ARRAY, BASE, NAME
 
 log = logging.getLogger(__name__)
 
@@ -148,7 +148,7 @@ def _idl_field(desc: tuple, store):
     kind, detail = desc
     if kind == BASE:
         name, bound = detail
-        if name in messages.STRING_TYPES:
+        if name in ros_messages.STRING_TYPES:
             if name == "wstring":
                 raise NotImplementedError("wstring fields are not supported")
             return idl.bounded_str[bound] if bound else str
@@ -168,7 +168,7 @@ def idl_type(typename: str, store=None):
         found = _idl_types.get(key)
     if found is not None:
         return found
-    fields = {name: _idl_field(desc, store) for name, desc in messages.fields(typename, store)}
+    fields = {name: _idl_field(desc, store) for name, desc in ros_messages.fields(typename, store)}
     cls = make_idl_struct(typename.replace("/", "_"), dds_type_name(typename), fields)
     with _idl_lock:
         return _idl_types.setdefault(key, cls)
@@ -176,7 +176,7 @@ def idl_type(typename: str, store=None):
 
 def type_hash(typename: str, store=None) -> str:
     """`RIHS01_<hex>` (REP 2011) of a message type, from the type store's definitions."""
-    return (messages.typestore() if store is None else store).hash_rihs01(typename)
+    return (ros_messages.typestore() if store is None else store).hash_rihs01(typename)
 
 
 def qos_for(topic: str, typename: str, store=None) -> Qos:
@@ -270,7 +270,7 @@ class DdsBus(Tapped):
 
     # -- the Bus interface -----------------------------------------------------------------------
     def publish(self, topic: str, msg) -> None:
-        typename = messages.typename_of(msg)
+        typename = ros_messages.typename_of(msg)
         writer = self.writer(topic, typename)
         ret = ddspy_write(writer._ref, frame(cdr.serialize(msg, typename, self.store)))
         if ret < 0:

@@ -1,4 +1,4 @@
-"""The one generic bridge between Eiffel objects of `scoopc msg` classes and type-store messages.
+"""The one generic bridge between Eiffel objects of `scoopc msg` classes and type-store ros_messages.
 
 `to_message(obj)` reads the Eiffel object's attributes by field name (the naming scheme of
 `eiffel_messages`) and builds the rosbags message; `from_message(msg, region)` makes the Eiffel object
@@ -14,9 +14,9 @@ from typing import Any
 
 import numpy as np
 
-from . import messages
+from . import ros_messages
 from .eiffel_messages import attribute_name, class_name, eiffel_type
-from .messages import BASE, DTYPES, NAME
+from .ros_messages import BASE, DTYPES, NAME
 
 
 def python_name(field: str) -> str:
@@ -29,7 +29,7 @@ def python_name(field: str) -> str:
 
 def typename_of_class(name: str, store=None) -> str:
     """The ROS type name of a generated class (GEOMETRY_MSGS_TWIST -> geometry_msgs/msg/Twist)."""
-    store = messages.typestore() if store is None else store
+    store = ros_messages.typestore() if store is None else store
     for typename in store.fielddefs:
         if class_name(typename) == name.split("@")[0]:
             return typename
@@ -39,7 +39,7 @@ def typename_of_class(name: str, store=None) -> str:
 def _host(desc: tuple, value: Any, store) -> Any:
     kind, detail = desc
     if kind == BASE:
-        if detail[0] in messages.STRING_TYPES:
+        if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings
             return strings.text(value)
         return value
@@ -48,7 +48,7 @@ def _host(desc: tuple, value: Any, store) -> Any:
     element = detail[0]
     items = list(value.area._items[: value.upper - value.lower + 1]) if value is not None else []
     converted = [_host(element, item, store) for item in items]
-    if messages.is_numeric(element):
+    if ros_messages.is_numeric(element):
         return np.array(converted, dtype=DTYPES[element[1][0]])
     return converted
 
@@ -57,8 +57,8 @@ def to_message(obj: Any, typename: str | None = None, store=None) -> Any:
     """The type-store message with the field values of an Eiffel object of a generated class."""
     typename = typename or typename_of_class(type(obj).__name__, store)
     values = {field: _host(desc, getattr(obj, python_name(field)), store)
-              for field, desc in messages.fields(typename, store)}
-    return messages.new(typename, store, **values)
+              for field, desc in ros_messages.fields(typename, store)}
+    return ros_messages.new(typename, store, **values)
 
 
 def _type_desc(type_name: str):
@@ -70,7 +70,7 @@ def _eiffel(desc: tuple, value: Any, region, store) -> Any:
     from .. import kernel
     kind, detail = desc
     if kind == BASE:
-        if detail[0] in messages.STRING_TYPES:
+        if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings
             return strings.new_string_8(region, value)
         if detail[0] == "bool":
@@ -91,8 +91,8 @@ def _eiffel(desc: tuple, value: Any, region, store) -> Any:
 def from_message(msg: Any, region, store=None) -> Any:
     """A new Eiffel object (in `region`) of the generated class of `msg`'s type, with its values."""
     from .. import kernel
-    typename = messages.typename_of(msg)
+    typename = ros_messages.typename_of(msg)
     obj = region.new(kernel.cls(class_name(typename)))
-    for field, desc in messages.fields(typename, store):
+    for field, desc in ros_messages.fields(typename, store):
         setattr(obj, python_name(field), _eiffel(desc, getattr(msg, field), region, store))
     return obj

@@ -16,8 +16,9 @@ import os
 import re
 import sys
 
-from . import messages
-from .messages import ARRAY, BASE, NAME
+from ..exits import UsageError
+from . import ros_messages
+from .ros_messages import ARRAY, BASE, NAME
 
 BASIC = {"bool": "BOOLEAN", "byte": "INTEGER_8", "char": "NATURAL_8", "int8": "INTEGER_8",
          "uint8": "NATURAL_8", "int16": "INTEGER_16", "uint16": "NATURAL_16", "int32": "INTEGER_32",
@@ -86,7 +87,7 @@ def _manifest(base: str, value) -> str | None:
 def generate_class(typename: str, store=None) -> str:
     """The text of the Eiffel class for one message type."""
     name = class_name(typename)
-    fields = [(attribute_name(f), desc) for f, desc in messages.fields(typename, store)]
+    fields = [(attribute_name(f), desc) for f, desc in ros_messages.fields(typename, store)]
     attrs = {a for a, _ in fields}
     body_make, needs_index = [], False
     for attr, desc in fields:
@@ -118,12 +119,12 @@ def generate_class(typename: str, store=None) -> str:
                                                                           "feature -- Constants", "",
                                                                           f'\tRos_type: STRING = "{typename}"',
                                                                           "\t\t\t-- The ROS 2 type name."]
-    for const, base, value in messages.constants(typename, store):
+    for const, base, value in ros_messages.constants(typename, store):
         manifest = _manifest(base, value)
         if manifest is not None:
             lines += ["", f"\t{_constant_name(const, attrs)}: {BASIC[base]} = {manifest}"]
     lines += ["", "feature -- Access"]
-    for (attr, desc), (field, _) in zip(fields, messages.fields(typename, store)):
+    for (attr, desc), (field, _) in zip(fields, ros_messages.fields(typename, store)):
         lines += ["", f"\t{attr}: {eiffel_type(desc)}", f"\t\t\t-- Field `{field}'."]
     lines += ["", "feature -- Element change"]
     for attr, desc in fields:
@@ -147,7 +148,7 @@ def library_types() -> list[str]:
     """Every type with a class in the library (LIBRARY_TYPES and the types their fields use)."""
     found = []
     for typename in LIBRARY_TYPES:
-        for each in messages.nested_types(typename):
+        for each in ros_messages.nested_types(typename):
             if each not in found:
                 found.append(each)
     return found
@@ -162,7 +163,7 @@ def generate(typename: str, output: str, store=None, include_library: bool = Fal
     """Write the classes of `typename` and of every message type it uses into `output` (not those
     the library has, unless `include_library`); the paths."""
     library = set() if include_library else set(library_types())
-    wanted = [each for each in messages.nested_types(typename, store) if each not in library]
+    wanted = [each for each in ros_messages.nested_types(typename, store) if each not in library]
     return generate_types(wanted, output, store)
 
 
@@ -179,8 +180,6 @@ def generate_types(typenames, output: str, store=None) -> list[str]:
 
 def command_msg(args) -> int:
     """`scoopc msg TYPE [-o DIR]` / `scoopc msg --file X.msg --type pkg/msg/X [-o DIR]`."""
-    from ..project import UsageError
-
     store = None
     typename = args.type or args.typename
     if not typename:
@@ -194,16 +193,16 @@ def command_msg(args) -> int:
         except OSError as problem:
             raise UsageError(f"cannot read {args.file}: {problem.strerror}") from None
         try:
-            store = messages.store_with({typename: text})
+            store = ros_messages.store_with({typename: text})
         except Exception as problem:  # rosbags' parser errors
             raise UsageError(f"{args.file}: not a valid .msg definition: {problem}") from None
-    if not messages.has_type(typename, store):
+    if not ros_messages.has_type(typename, store):
         raise UsageError(f"unknown ROS 2 message type `{typename}` (give its definition with --file)")
     written = generate(typename, args.output, store, include_library=args.all)
     for path in written:
         print(path)
     if not args.all:
-        kept = [class_name(each) for each in messages.nested_types(typename, store) if each in library_types()]
+        kept = [class_name(each) for each in ros_messages.nested_types(typename, store) if each in library_types()]
         if kept:
             print(f"scoopc: the Roboscoop library already has {', '.join(kept)} (--all writes them too)",
                   file=sys.stderr)

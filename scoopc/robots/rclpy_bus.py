@@ -22,7 +22,7 @@ from __future__ import annotations
 import threading
 import time
 
-from . import cdr, messages
+from . import cdr, ros_messages
 from .bus import Subscription, Tapped
 from .dds import default_type, topic_kind
 
@@ -93,7 +93,7 @@ class RclpyBus(Tapped):
 
     # -- the Bus interface -----------------------------------------------------------------------
     def publish(self, topic: str, msg) -> None:
-        typename = messages.typename_of(msg)
+        typename = ros_messages.typename_of(msg)
         self._publisher(topic, typename).publish(cdr.serialize(msg, typename))
         if self._taps and not self.subscriber_count(topic):
             self._tapped(topic, msg)

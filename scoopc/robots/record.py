@@ -23,7 +23,7 @@ import time
 
 from mcap.writer import CompressionType, Writer
 
-from . import cdr, messages
+from . import cdr, ros_messages
 
 PROFILE = "ros2"
 SCHEMA_ENCODING = "ros2msg"
@@ -32,7 +32,7 @@ MESSAGE_ENCODING = "cdr"
 
 def message_definition(typename: str, store=None) -> str:
     """The ros2msg schema text of a type: its definition followed by every dependency's."""
-    text, _ = (messages.typestore() if store is None else store).generate_msgdef(typename, ros_version=2)
+    text, _ = (ros_messages.typestore() if store is None else store).generate_msgdef(typename, ros_version=2)
     return text
 
 
@@ -40,7 +40,7 @@ def stamp_ns(msg) -> int | None:
     """The message's own time in nanoseconds (header.stamp, or a Clock's clock), None if it has none
     (or a zero stamp)."""
     stamp = getattr(getattr(msg, "header", None), "stamp", None)
-    if stamp is None and messages.typename_of(msg) == "rosgraph_msgs/msg/Clock":
+    if stamp is None and ros_messages.typename_of(msg) == "rosgraph_msgs/msg/Clock":
         stamp = msg.clock
     if stamp is None:
         return None
@@ -93,7 +93,7 @@ class Recorder:
 
     def write(self, topic: str, msg, log_time: int | None = None) -> None:
         """Record one message (the tap calls this for every message of the bus)."""
-        typename = messages.typename_of(msg)
+        typename = ros_messages.typename_of(msg)
         data = cdr.serialize(msg, typename, self.store)
         with self._lock:
             if self._closed:

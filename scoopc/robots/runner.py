@@ -20,6 +20,10 @@ import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any, Optional, Union
+
+from ..exits import UsageError
+from ..results import RunResult
 
 from ..runtime.stop_signals import STOP_SIGNALS, shielded, status_of
 from . import transport
@@ -38,8 +42,27 @@ _SIGNAL_NAMES = {int(getattr(signal, name)): name for name in STOP_SIGNALS if ha
 _TWISTS = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
 
 
-class RobotError(Exception):
-    """A robot run that cannot start (bad world, unknown namespace, no ROS 2 transport)."""
+class RobotError(UsageError):
+    """A robot run that cannot start (bad world, unknown namespace, no ROS 2 transport): exit 2."""
+
+
+@dataclass
+class RobotOptions:
+    """How a Roboscoop program runs (the robot options of `scoopc run`, docs/ROBOTS.md)."""
+    robot: Optional[str] = None         # "sim", "ros2" or "none"; None: "sim" for Roboscoop programs
+    world: Any = None                   # a world file's path, a dict or a World; None: world.yaml beside
+    #                                     the program, else the built-in arena
+    namespace: Optional[str] = None     # which robot of the world, or a ROS 2 robot's topic prefix
+    realtime: bool = False              # pace the simulator to the wall clock
+    duration: Optional[float] = None    # seconds to run (default: the world's duration; ROS 2: none)
+    goal: Optional[tuple] = None        # (x, y) told to the program (default: the world's)
+    png: Union[str, Path, bool, None] = None    # the trajectory picture; True: <program>.png
+    gif: Union[str, Path, None] = None
+    record: Union[str, Path, None] = None       # an MCAP recording of every topic
+
+    def __post_init__(self):
+        if self.robot not in (None, "sim", "ros2", "none"):
+            raise UsageError(f"robot must be sim, ros2 or none, not {self.robot!r}")
 
 
 @dataclass
@@ -54,8 +77,13 @@ class RobotSettings:
     duration: float = -1.0
 
 
-SETTINGS = RobotSettings()
-ROS2_LIMITS = (0.2, 1.0)                # speed limits reported for a ROS 2 robot (m/s, rad/s)
+ROS2_LIMITS = (0.2, 1.0)
+SERVICE = "robot"                       # the RobotSettings' key in the runtime's services
+
+
+def settings_of(rt) -> RobotSettings:
+    """The robot settings of the run on runtime `rt` (a run without a robot: the defaults)."""
+    return rt.services.get(SERVICE) or RobotSettings()                # speed limits reported for a ROS 2 robot (m/s, rad/s)
 
 
 class SafetyBus:
@@ -79,7 +107,7 @@ class SafetyBus:
 
     def stop_robots(self):
         """A zero velocity on every cmd_vel topic used (Twist or TwistStamped as the program sent)."""
-        from scoopc.kernel.ext.ros_publisher import twist, twist_stamped
+        from .velocity import twist, twist_stamped  # deferred: loads rosbags (start-up)
         with self._lock:
             topics = dict(self.command_topics)
         for topic, stamped in topics.items():
@@ -224,31 +252,26 @@ def ros2_settings(namespace=None, goal=None, duration=None):
 
 # ---- runs --------------------------------------------------------------------------------------
 
-@dataclass
-class RunResult:
-    status: int
-    sim: object = None
-    stopped_by: str | None = None       # "duration", "program", a signal's name ("SIGTERM") or None
-    png: str | None = None
-    gif: str | None = None
-    record: str | None = None
-    stopped_topics: list = field(default_factory=list)
-
-
 def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=None, png=None, gif=None,
-                   progress=None, stderr=None):
+                   progress=None, stderr=None, extra_start=None):
     """Run `launch(on_start)` (which runs the program and returns its exit status) with `bus` as the
-    transport and, when `sim` is given, the simulator stepped on the runtime's clock."""
-    global SETTINGS
+    transport and, when `sim` is given, the simulator stepped on the runtime's clock. The program
+    reads `settings` through ROBOT_ENVIRONMENT (the runtime's `services`)."""
     stderr = stderr or sys.stderr
     safety = SafetyBus(bus)
-    previous_bus, previous_settings = transport.use(safety), SETTINGS
-    SETTINGS = settings
+    previous_bus = transport.use(safety)
     driver = SimDriver(sim, duration if duration is not None else settings.duration, progress) \
         if sim is not None else None
     result = RunResult(status=0, sim=sim)
+
+    def on_start(rt):
+        rt.services[SERVICE] = settings
+        if driver is not None:
+            driver.attach(rt)
+        if extra_start is not None:
+            extra_start(rt)
     try:
-        result.status = launch(driver.attach if driver is not None else None)
+        result.status = launch(on_start)
     except KeyboardInterrupt as interrupt:   # a signal after the runtime had handled the first
         result.status = status_of(interrupt)
         stderr.write(f"scoopc: stopped by {getattr(interrupt, 'signal_name', 'SIGINT')}\n")
@@ -258,7 +281,6 @@ def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=N
             if recorder is not None:
                 result.record = str(recorder.close())
         transport.use(previous_bus)
-        SETTINGS = previous_settings
     if result.status > 128 and result.status - 128 in _SIGNAL_NAMES:
         result.stopped_by = _SIGNAL_NAMES[result.status - 128]
     elif driver is not None:
@@ -331,71 +353,63 @@ def open_ros2_bus():
     return choose()
 
 
-def run_on_simulator(paths, world=None, *, duration=None, argv=(), namespace=None, goal=None, png=None,
-                     gif=None, record=None, realtime=False, stdout=None, stderr=None, root=None):
-    """Compile (cached) and run the program at `paths` on the in-process simulator (tests, tools).
-    Returns a RunResult whose `sim` is the Simulator after the run."""
-    from scoopc import commands
-    if isinstance(paths, (str, Path)):
-        paths = [str(paths)]
-    return commands.run_program([str(p) for p in paths], list(argv), robot="sim", world=world,
-                                duration=duration, namespace=namespace, goal=goal, png=png, gif=gif,
-                                record=record, realtime=realtime, stdout=stdout, stderr=stderr, root=root)
-
-
-def run(robot, launch, args, meta, stderr=None):
-    """`scoopc run` with a robot (`robot` is "sim" or "ros2"): set up the transport (and the
-    simulator), run `launch`, stop the robot, report. Returns a RunResult, or 2 for bad usage."""
+def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=None) -> RunResult:
+    """A run with a robot (`options.robot` is "sim" or "ros2"): set up the transport (and the
+    simulator), run `launch(on_start, virtual_clock)`, stop the robot, report on `stderr`. Raises
+    RobotError, before the program starts, when the run cannot be set up."""
     stderr = stderr or sys.stderr
     progress = _progress_line(stderr)
-    sim = None
-    try:
-        if robot == "sim":
-            from .bus import Bus
-            from .sim.simulator import Simulator
-            world, source = find_world(args.paths, args.world)
-            settings = sim_settings(world, args.namespace, args.goal, args.duration)
-            bus = Bus()
-            clock = _Later()
-            recorder = _recorder(bus, args.record, clock)
-            sim = Simulator(world, bus)
-            clock.read = lambda: sim.time_ns
-            if progress is not None:
-                progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
-        else:
-            settings = ros2_settings(args.namespace, args.goal, args.duration)
-            try:
-                bus = open_ros2_bus()
-            except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
-                raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
-            recorder = _recorder(bus, args.record)
-    except RobotError as e:
-        stderr.write(f"scoopc: error: {e}\n")
-        return 2
-    png = None
-    if sim is not None and not getattr(args, "no_png", False):
-        png = args.png or f"{meta['root'].lower()}.png"
     wall = time.monotonic()
-    if sim is not None:
-        result = run_with_robot(lambda on_start: launch(on_start, virtual_clock=not args.realtime), settings,
-                                bus, sim=sim, recorder=recorder, png=png, gif=args.gif, progress=progress,
-                                stderr=stderr)
+    if options.robot == "sim":
+        result = _run_simulated(options, launch, program_paths, program_name, stderr, progress)
     else:
-        expired = threading.Event()
-        try:
-            result = run_with_robot(lambda on_start: launch(_deadline(settings.duration, expired)), settings,
-                                    bus, recorder=recorder, stderr=stderr)
-        finally:
-            _close_ros2(bus)
-        if expired.is_set():
-            result.stopped_by = "duration"
-            stderr.write(f"scoopc: stopped the program after {settings.duration:g} s (--duration)\n")
+        result = _run_ros2(options, launch, stderr)
     if progress is not None:
         progress("", final=True)
-    if sim is not None:
+    if result.sim is not None:
         stderr.write(describe_end(result, time.monotonic() - wall) + "\n")
     elif result.stopped_topics:
         stderr.write(f"scoopc: sent a zero velocity on {', '.join(result.stopped_topics)}\n")
+    return result
+
+
+def _run_simulated(options, launch, program_paths, program_name, stderr, progress) -> RunResult:
+    from .bus import Bus
+    from .sim.simulator import Simulator
+    world, source = find_world(program_paths, options.world)
+    settings = sim_settings(world, options.namespace, options.goal, options.duration)
+    bus = Bus()
+    clock = _Later()
+    recorder = _recorder(bus, options.record, clock)
+    sim = Simulator(world, bus)
+    clock.read = lambda: sim.time_ns
+    if progress is not None:
+        progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
+    png = f"{program_name.lower()}.png" if options.png is True else (options.png or None)
+    return run_with_robot(lambda on_start: launch(on_start, not options.realtime), settings, bus, sim=sim,
+                          recorder=recorder, png=png, gif=options.gif, progress=progress, stderr=stderr)
+
+
+def _run_ros2(options, launch, stderr) -> RunResult:
+    settings = ros2_settings(options.namespace, options.goal, options.duration)
+    try:
+        bus = open_ros2_bus()
+    except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
+        raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
+    try:
+        recorder = _recorder(bus, options.record)
+    except RobotError:
+        _close_ros2(bus)
+        raise
+    expired = threading.Event()
+    try:
+        result = run_with_robot(lambda on_start: launch(on_start, None), settings, bus, recorder=recorder,
+                                stderr=stderr, extra_start=_deadline(settings.duration, expired))
+    finally:
+        _close_ros2(bus)
+    if expired.is_set():
+        result.stopped_by = "duration"
+        stderr.write(f"scoopc: stopped the program after {settings.duration:g} s (--duration)\n")
     return result
 
 

@@ -27,6 +27,7 @@ import sys
 import threading
 import time
 
+from ..exits import Exit
 from .backends import describe, open_ros2_bus
 
 MAX_LAG = 0.25            # wall-clock seconds the node may fall behind before it drops the debt
@@ -124,7 +125,7 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
         loaded = world if isinstance(world, World) else World.load(world)
     except (OSError, WorldError, ValueError, TypeError, LookupError, yaml.YAMLError) as e:
         _say(stderr, f"error: cannot load the world {world}: {e}")
-        return 2
+        return Exit.USAGE
     end = loaded.duration if duration is None else duration
     end = math.inf if not end or end <= 0 else end
     own_bus = bus is None
@@ -135,7 +136,7 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
             bus = open_ros2_bus(domain, types=stamped)
         except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
             _say(stderr, f"error: cannot open the ROS 2 transport: {e}")
-            return 2
+            return Exit.USAGE
     backend = describe(bus)
     node = NodeBus(bus)
     recorder = sim = None
@@ -220,7 +221,7 @@ def command(args: argparse.Namespace) -> int:
     rate = 1.0 if args.rate is None else args.rate
     if rate < 0:
         print("scoopc sim: error: --rate must be 0 or more", file=sys.stderr)
-        return 2
+        return Exit.USAGE
     return run(args.world, rate=rate, duration=args.duration, domain=args.domain, png=args.png, gif=args.gif,
                record=args.record, progress=args.progress)
 

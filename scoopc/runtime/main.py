@@ -5,6 +5,7 @@ import signal
 import threading
 import traceback
 
+from ..exits import Exit
 from .errors import Shutdown, fmt_where
 from .monitor import Monitor, dump
 from .processor import RUNNING, Processor
@@ -65,7 +66,7 @@ def finish(rt, root, interrupted=None):
         rt.stderr.write(f"scoopc: threads still running at exit: {', '.join(alive)}\n")
     _current = None
     if rt.failures and status == 0:
-        status = 3
+        status = Exit.RUNTIME
     return status
 
 

@@ -131,6 +131,8 @@ class Runtime:
         self.out = Output(stdout or sys.stdout, trace_processors)
         self.clock = Clock(self, virtual_clock)
         self.shutdown_hooks = []         # [g]
+        self.services = {}               # what the embedding run offers the program's externals, by
+        #                                  name (set by `on_start`, before the root object exists)
         self.process_onces = {}          # [g] once ("PROCESS") values
         self.monitor = None
         self.watchers = []               # [g] (predicate, Event): scheduling hooks for tests

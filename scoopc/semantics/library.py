@@ -15,7 +15,8 @@ from dataclasses import replace
 from pathlib import Path
 from typing import Optional
 
-from .. import __version__, syntax
+from .. import syntax
+from ..version import __version__
 from .universe import stdlib_files
 
 CACHE_FORMAT = 4

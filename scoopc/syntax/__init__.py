@@ -1,6 +1,6 @@
 """The AST: what the parser builds and every later stage reads.
 
-Input: built by scoopc/parse_tree from parser reductions. Output: frozen dataclasses, one per
+Input: built by scoopc/parse/builders from parser reductions. Output: frozen dataclasses, one per
 construct, each with a `span`; `dump(node)` gives a stable indented text form for tests.
 
 Conventions:

@@ -169,7 +169,7 @@ def test_short_library_routines_count_as_leaves_but_are_never_decorated(program)
     assert is_leaf(box, "put") and is_leaf(box, "first")       # LINKED_QUEUE.extend / item
     assert is_leaf(box, "keep")                                # stores its separate argument only
     assert "with here.reserve" not in routine(box, "keep")
-    base = Path(program[0].base_path) / "eiffel_base"
+    base = Path(program[0].library) / "eiffel_base"
     assert (base / "_scoop_facts.json").exists()
     assert not any("@rt.leaf" in p.read_text() for p in base.glob("*.py"))
 
@@ -273,7 +273,7 @@ def _library_leaves(tmp_path, sources):
     for name, text in sources.items():
         (folder / name).write_text(text)
     compiled, _ = compile_program(folder, tmp_path / "out")
-    return json.loads((compiled.path / compiled.package / "_library_leaves.json").read_text())
+    return json.loads((compiled.folder / compiled.package / "_library_leaves.json").read_text())
 
 
 def test_listener_callbacks_of_the_library_are_listed_as_leaves(tmp_path):

@@ -1,7 +1,7 @@
 """Compiling and running golden programs in this process (shared by test_golden.py and
 test_samples.py).
 
-A program is checked and compiled with the compiler's API (scoopc/build.py) into a package of its
+A program is checked and compiled with the compiler's driver (scoopc.driver.Compilation) into a package of its
 own (named like its root class, as `scoopc compile` names it), then run by the kernel's launcher
 with the output captured. Expected outputs are compared exactly, per processor (each
 processor's lines in order, from `--trace-processors` prefixes) or as sorted lines.
@@ -76,19 +76,15 @@ def relative_text(text: str) -> str:
 def compile_program(folder: Path, out_dir: Path, assertions: str = "all"):
     """Check and compile the program in `folder` (root: the class named like the folder).
     Returns (compiled, {module file name: text}); raises AssertionError on source errors."""
-    from scoopc import build, pipeline
-    from scoopc.commands import choose_root
-    from scoopc.project import collect
+    from scoopc.driver import Compilation
 
-    paths = [str(folder.resolve())]
-    project = collect(paths)
-    checked = pipeline.check_project(project)
+    compilation = Compilation([folder.resolve()], assertions=assertions)
+    checked = compilation.checked
     if checked.has_errors:
         errors = "\n".join(f"{d.span}: {d.code}: {d.message}" for d in checked.diagnostics if d.is_error)
         raise AssertionError(f"{folder.name} does not compile:\n{errors}")
-    root = choose_root(project, checked, None, paths)
-    package = root.key.lower()
-    compiled = build.compile_program(checked, out_dir, package, root.key, root.creator, assertions)
+    package = compilation.root.key.lower()
+    compiled = compilation.write_package(out_dir, package)
     texts = {p.name: relative_text(p.read_text()) for p in sorted((out_dir / package).glob("*.py"))
              if not p.name.startswith("__")}
     return compiled, texts
@@ -134,29 +130,29 @@ def _library_classes() -> dict:
 
 
 def _run_program(compiled, config: Config) -> Outcome:
-    from scoopc import build
     from scoopc.codegen.names import class_name, module_name
+    from scoopc.driver.packages import ensure_on_path
     from scoopc.kernel import launcher
 
-    build.ensure_on_path(compiled.base_path, compiled.path)
+    ensure_on_path(compiled.library, compiled.folder)
     package = compiled.package
     for name in [m for m in sys.modules if m == package or m.startswith(package + ".")]:
         del sys.modules[name]
     from scoopc.kernel import link
     link._LOADED.pop(package, None)
     importlib.invalidate_caches()
-    module = importlib.import_module(f"{package}.{module_name(compiled.root_key)}")
-    root_cls = getattr(module, class_name(compiled.root_key))
+    module = importlib.import_module(f"{package}.{module_name(compiled.root.key)}")
+    root_cls = getattr(module, class_name(compiled.root.key))
     out, err = io.StringIO(), io.StringIO()
     saved_stdin = sys.stdin
     sys.stdin = io.StringIO(config.stdin or "")
     try:
-        status = launcher.main(root_cls, compiled.creator, [compiled.root_key.lower()] + list(config.args),
+        status = launcher.main(root_cls, compiled.root.creator, [compiled.root.key.lower()] + list(config.args),
                                trace_processors=config.trace, strict=config.strict,
                                virtual_clock=config.virtual_clock, stdout=out, stderr=err)
     finally:
         sys.stdin = saved_stdin
-        sys.path.remove(str(compiled.path))
+        sys.path.remove(str(compiled.folder))
     return Outcome(status, out.getvalue(), relative_text(err.getvalue()))
 
 

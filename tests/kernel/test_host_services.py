@@ -117,8 +117,15 @@ def test_region_id(cur):
 
 # --- arguments ---------------------------------------------------------------------------------
 
-def test_arguments(cur, monkeypatch):
-    monkeypatch.setattr(arguments, "PROGRAM", list(arguments.PROGRAM))
+def test_arguments(cur):
+    saved = list(arguments.PROGRAM)
+    try:
+        check_arguments(cur)
+    finally:
+        arguments.PROGRAM[:] = saved
+
+
+def check_arguments(cur):
     arguments.set_arguments(["prog", "-v", "f\u00e9e"])
     assert arguments.argument_count(cur) == 2 and arguments_32.argument_count(cur) == 2
     a0 = arguments.i_th_argument(cur, 0)

@@ -204,7 +204,7 @@ def fake_ros():
 
 
 def test_rclpy_bus_converts_through_cdr_on_the_rclpy_api(fake_ros):
-    from scoopc.robots import cdr, messages
+    from scoopc.robots import cdr, ros_messages
     fake, module = fake_ros
     bus = module.RclpyBus(domain=5)
     got, raw, tapped = [], [], []
@@ -212,17 +212,17 @@ def test_rclpy_bus_converts_through_cdr_on_the_rclpy_api(fake_ros):
     bus.subscribe("/robot1/cmd_vel", got.append)
     bus.subscribe("/robot1/cmd_vel", raw.append, raw=True)
     assert bus.wait_for_subscriber("/robot1/cmd_vel", 1) and bus.subscriber_count("/robot1/cmd_vel") == 2
-    sent = messages.new("geometry_msgs/msg/Twist", linear=messages.new("geometry_msgs/msg/Vector3", x=0.3))
+    sent = ros_messages.new("geometry_msgs/msg/Twist", linear=ros_messages.new("geometry_msgs/msg/Vector3", x=0.3))
     bus.publish("/robot1/cmd_vel", sent)
     assert fake.inits == [5] and fake.published == [("/robot1/cmd_vel", cdr.serialize(sent))]
     assert [m.linear.x for m in got] == [0.3] and raw == [cdr.serialize(sent)]
-    bus.publish("/robot1/odom", messages.new("nav_msgs/msg/Odometry"))   # not subscribed: tapped here
+    bus.publish("/robot1/odom", ros_messages.new("nav_msgs/msg/Odometry"))   # not subscribed: tapped here
     assert tapped == [("/robot1/cmd_vel", "geometry_msgs/msg/Twist"),           # each once
                       ("/robot1/odom", "nav_msgs/msg/Odometry")] and bus.errors == []
     assert fake.qos["/robot1/odom"] == "sensor_data" and fake.qos["/robot1/cmd_vel"][0] == "profile"
     assert bus.wait_for_publisher("/robot1/odom", 1) and bus.topics() == ["/robot1/cmd_vel"]
     with pytest.raises(TypeError):
-        bus.publish("/robot1/cmd_vel", messages.new("std_msgs/msg/String"))
+        bus.publish("/robot1/cmd_vel", ros_messages.new("std_msgs/msg/String"))
     bus.close()
     assert fake.destroyed and not bus._thread.is_alive()
     with pytest.raises(RuntimeError):

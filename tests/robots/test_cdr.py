@@ -6,10 +6,10 @@ import struct
 import numpy as np
 import pytest
 
-from scoopc.robots import cdr, messages
-from scoopc.robots.messages import ARRAY, BASE, DTYPES, NAME
+from scoopc.robots import cdr, ros_messages
+from scoopc.robots.ros_messages import ARRAY, BASE, DTYPES, NAME
 
-STORE = messages.typestore()
+STORE = ros_messages.typestore()
 CORE = ("std_msgs", "geometry_msgs", "nav_msgs", "sensor_msgs", "builtin_interfaces", "rosgraph_msgs")
 ALL_TYPES = sorted(STORE.fielddefs)
 TEXTS = ["", "a", "ab", "abc", "héllo", "ロボット", "x" * 9, "tab\tand\nnewline"]
@@ -69,14 +69,14 @@ def generate(desc, rng, store=STORE):
     element, size = detail
     count = size if kind == ARRAY else rng.randint(0, min(size, 4) if size else 4)
     items = [generate(element, rng, store) for _ in range(count)]
-    if messages.is_numeric(element):
+    if ros_messages.is_numeric(element):
         return np.array(items, dtype=DTYPES[element[1][0]])
     return items
 
 
 def generate_message(typename, rng, store=STORE):
-    return messages.new(typename, store, **{name: generate(desc, rng, store)
-                                            for name, desc in messages.fields(typename, store)})
+    return ros_messages.new(typename, store, **{name: generate(desc, rng, store)
+                                            for name, desc in ros_messages.fields(typename, store)})
 
 
 def same(a, b):
@@ -108,29 +108,29 @@ def test_the_store_covers_the_core_packages():
 
 @pytest.mark.parametrize("typename", ALL_TYPES)
 def test_every_type_equals_rosbags(typename):
-    check(messages.new(typename), typename)  # defaults
+    check(ros_messages.new(typename), typename)  # defaults
     rng = random.Random(typename)
     for _ in range(20):
         check(generate_message(typename, rng), typename)
 
 
 def test_every_field_kind_from_a_msg_definition():
-    store = messages.store_with(EXTRA)
+    store = ros_messages.store_with(EXTRA)
     rng = random.Random(7)
     for _ in range(40):
         check(generate_message("test_msgs/msg/Kinds", rng, store), "test_msgs/msg/Kinds", store)
 
 
 def test_alignment_is_relative_to_the_end_of_the_header():
-    msg = messages.new("std_msgs/msg/Header", stamp=messages.new("builtin_interfaces/msg/Time", sec=1, nanosec=2),
+    msg = ros_messages.new("std_msgs/msg/Header", stamp=ros_messages.new("builtin_interfaces/msg/Time", sec=1, nanosec=2),
                        frame_id="ab")
     data = cdr.serialize(msg)
     assert data[:4] == b"\x00\x01\x00\x00"
     assert data[4:] == struct.pack("<iII", 1, 2, 3) + b"ab\x00"
-    odd = messages.new("std_msgs/msg/String", data="")
+    odd = ros_messages.new("std_msgs/msg/String", data="")
     assert cdr.serialize(odd) == b"\x00\x01\x00\x00" + struct.pack("<I", 1) + b"\x00"
-    twist = cdr.serialize(messages.new("sensor_msgs/msg/Range", radiation_type=1, range=2.0))
-    assert twist == bytes(STORE.serialize_cdr(messages.new("sensor_msgs/msg/Range", radiation_type=1, range=2.0),
+    twist = cdr.serialize(ros_messages.new("sensor_msgs/msg/Range", radiation_type=1, range=2.0))
+    assert twist == bytes(STORE.serialize_cdr(ros_messages.new("sensor_msgs/msg/Range", radiation_type=1, range=2.0),
                                               "sensor_msgs/msg/Range"))
 
 
@@ -143,26 +143,26 @@ def test_big_endian_input_is_decoded():
 
 
 def test_bounds_and_lengths_are_checked():
-    store = messages.store_with(EXTRA)
+    store = ros_messages.store_with(EXTRA)
     msg = generate_message("test_msgs/msg/Kinds", random.Random(1), store)
     msg.bounded_ints = np.zeros(5, dtype=np.int16)
     with pytest.raises(ValueError):
         cdr.serialize(msg, "test_msgs/msg/Kinds", store)
     with pytest.raises(ValueError):
         cdr.deserialize(b"\x00\x01\x00\x00\x01", "builtin_interfaces/msg/Time")
-    whole = cdr.serialize(messages.new("nav_msgs/msg/Odometry", child_frame_id="base_link"))
+    whole = cdr.serialize(ros_messages.new("nav_msgs/msg/Odometry", child_frame_id="base_link"))
     for end in (8, 14, 20, 30, 100, len(whole) - 1):   # cut in a string, in a run, in an array
         with pytest.raises(ValueError):
             cdr.deserialize(whole[:end], "nav_msgs/msg/Odometry")
 
 
 def test_new_fills_defaults_and_rejects_unknown_fields():
-    odom = messages.new("nav_msgs/msg/Odometry", child_frame_id="base")
+    odom = ros_messages.new("nav_msgs/msg/Odometry", child_frame_id="base")
     assert odom.child_frame_id == "base" and odom.pose.pose.orientation.w == 0.0
     assert odom.pose.covariance.shape == (36,) and odom.pose.covariance.dtype == np.float64
-    assert messages.new("sensor_msgs/msg/LaserScan").ranges.dtype == np.float32
+    assert ros_messages.new("sensor_msgs/msg/LaserScan").ranges.dtype == np.float32
     with pytest.raises(TypeError):
-        messages.new("geometry_msgs/msg/Twist", speed=1)
+        ros_messages.new("geometry_msgs/msg/Twist", speed=1)
     with pytest.raises(KeyError):
-        messages.fields("nope_msgs/msg/Nothing")
-    assert messages.nested_types("geometry_msgs/msg/Twist") == ["geometry_msgs/msg/Twist", "geometry_msgs/msg/Vector3"]
+        ros_messages.fields("nope_msgs/msg/Nothing")
+    assert ros_messages.nested_types("geometry_msgs/msg/Twist") == ["geometry_msgs/msg/Twist", "geometry_msgs/msg/Vector3"]

@@ -5,7 +5,7 @@ from pathlib import Path
 
 
 from scoopc import cli
-from scoopc.robots import messages
+from scoopc.robots import ros_messages
 
 PROGRAMS = Path(__file__).parent / "programs"
 
@@ -17,7 +17,7 @@ def run(capsys, name):
 
 
 def range_msg(value, max_range=0.14):
-    return messages.new("sensor_msgs/msg/Range", range=value, min_range=0.0, max_range=max_range)
+    return ros_messages.new("sensor_msgs/msg/Range", range=value, min_range=0.0, max_range=max_range)
 
 
 def test_cancellable_loop_runs_at_its_period_and_never_after_the_stop(capsys):

@@ -13,7 +13,7 @@ import pytest
 
 pytest.importorskip("cyclonedds")
 
-from scoopc.robots import cdr, dds, messages  # noqa: E402
+from scoopc.robots import cdr, dds, ros_messages  # noqa: E402
 
 TIMEOUT = 10.0
 
@@ -66,13 +66,13 @@ class Inbox:
 
 
 def twist(lx=0.25, az=-1.5):
-    msg = messages.new("geometry_msgs/msg/Twist")
+    msg = ros_messages.new("geometry_msgs/msg/Twist")
     msg.linear.x, msg.angular.z = lx, az
     return msg
 
 
 def odometry():
-    msg = messages.new("nav_msgs/msg/Odometry", child_frame_id="robot1/base_link")
+    msg = ros_messages.new("nav_msgs/msg/Odometry", child_frame_id="robot1/base_link")
     msg.header.frame_id = "odom"
     msg.header.stamp.sec, msg.header.stamp.nanosec = 12, 345_000_000
     msg.pose.pose.position.x, msg.pose.pose.position.y = 1.5, -0.75
@@ -108,12 +108,12 @@ def test_names_types_and_qos_families():
 
 
 def test_framing_pads_to_four_and_records_the_padding():
-    data = cdr.serialize(messages.new("std_msgs/msg/String", data="ab"))   # 4 + 4 + 3 bytes
+    data = cdr.serialize(ros_messages.new("std_msgs/msg/String", data="ab"))   # 4 + 4 + 3 bytes
     framed = dds.frame(data)
     assert len(framed) % 4 == 0 and framed[:3] == data[:3] and framed[3] == 1
     assert framed[4:len(data)] == data[4:] and framed[len(data):] == b"\x00"
     assert dds.frame(framed) == framed
-    assert_same(cdr.deserialize(framed, "std_msgs/msg/String"), messages.new("std_msgs/msg/String", data="ab"))
+    assert_same(cdr.deserialize(framed, "std_msgs/msg/String"), ros_messages.new("std_msgs/msg/String", data="ab"))
 
 
 # -- two participants in this process -------------------------------------------------------------
@@ -151,7 +151,7 @@ def test_discovery_sees_ros_names_qos_and_type_hash(buses):
         assert endpoint.type_name == dds.dds_type_name(typename)
         qos = endpoint.qos
         userdata = qos[dds.Policy.Userdata].data
-        assert userdata == f"typehash={messages.typestore().hash_rihs01(typename)};".encode()
+        assert userdata == f"typehash={ros_messages.typestore().hash_rihs01(typename)};".encode()
         assert qos[dds.Policy.Durability] == dds.Policy.Durability.Volatile
         if topic.endswith("cmd_vel"):
             assert isinstance(qos[dds.Policy.Reliability], dds.Policy.Reliability.Reliable)
@@ -214,13 +214,13 @@ def test_subscription_close_and_callback_errors(buses):
 # -- a separate process over loopback UDP -----------------------------------------------------------
 ECHO = textwrap.dedent("""
     import sys
-    from scoopc.robots import dds, messages
+    from scoopc.robots import dds, ros_messages
     bus = dds.DdsBus()
     bus.writer("/cmd_vel_echo", "geometry_msgs/msg/Twist")
     def on_cmd(raw):
         bus.publish_raw("/cmd_vel_echo", "geometry_msgs/msg/Twist", raw)
     def on_twist(msg):
-        odom = messages.new("nav_msgs/msg/Odometry", child_frame_id="robot1/base_link")
+        odom = ros_messages.new("nav_msgs/msg/Odometry", child_frame_id="robot1/base_link")
         odom.twist.twist = msg
         bus.publish("/robot1/odom", odom)
     bus.subscribe("/cmd_vel", on_cmd, raw=True)
@@ -260,7 +260,7 @@ def test_separate_process_over_loopback(buses):
         assert got.child_frame_id == "robot1/base_link"
         assert_same(got.twist.twist, sent)
         raw = echoed.get()                     # the bytes as they crossed the wire, twice
-        expected = messages.typestore().serialize_cdr(sent, "geometry_msgs/msg/Twist")
+        expected = ros_messages.typestore().serialize_cdr(sent, "geometry_msgs/msg/Twist")
         assert bytes(raw) == bytes(expected)   # 52 bytes: no padding needed
     finally:
         proc.stdin.close()

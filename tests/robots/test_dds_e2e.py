@@ -18,7 +18,7 @@ import pytest
 
 pytest.importorskip("cyclonedds")
 
-from scoopc.robots import dds, messages, record  # noqa: E402
+from scoopc.robots import dds, ros_messages, record  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 WORLD = """name: e2e
@@ -125,7 +125,7 @@ def bus(env):
 
 
 def twist(v):
-    return messages.new("geometry_msgs/msg/Twist", linear=messages.new("geometry_msgs/msg/Vector3", x=v))
+    return ros_messages.new("geometry_msgs/msg/Twist", linear=ros_messages.new("geometry_msgs/msg/Vector3", x=v))
 
 
 def test_sim_node_driven_over_dds(node, bus):

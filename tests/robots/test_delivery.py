@@ -6,13 +6,13 @@ from pathlib import Path
 
 from scoopc import cli
 from scoopc.kernel.ext import ros_subscriber
-from scoopc.robots import messages
+from scoopc.robots import ros_messages
 
 PROGRAMS = Path(__file__).parent / "programs"
 
 
 def odometry(x):
-    msg = messages.new("nav_msgs/msg/Odometry")
+    msg = ros_messages.new("nav_msgs/msg/Odometry")
     msg.pose.pose.position.x = x
     return msg
 

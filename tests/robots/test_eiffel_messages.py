@@ -2,7 +2,7 @@
 import numpy as np
 
 from scoopc import cli, kernel
-from scoopc.robots import eiffel_bridge, eiffel_messages, messages
+from scoopc.robots import eiffel_bridge, eiffel_messages, ros_messages
 
 TYPES = ["geometry_msgs/msg/Twist", "nav_msgs/msg/Odometry", "sensor_msgs/msg/LaserScan",
          "sensor_msgs/msg/Range", "sensor_msgs/msg/BatteryState"]
@@ -52,7 +52,7 @@ class _Region:
 
 
 def _fake_classes(typename):
-    for each in messages.nested_types(typename):
+    for each in ros_messages.nested_types(typename):
         name = eiffel_messages.class_name(each)
         kernel.CLASSES[name] = type(name, (), {})
     for name in ("SPECIAL", "ARRAY", "STRING_8"):
@@ -61,10 +61,10 @@ def _fake_classes(typename):
 
 def test_bridge_round_trip_on_the_object_model():
     _fake_classes("sensor_msgs/msg/LaserScan")
-    scan = messages.new("sensor_msgs/msg/LaserScan", angle_max=1.5, range_max=2.0,
+    scan = ros_messages.new("sensor_msgs/msg/LaserScan", angle_max=1.5, range_max=2.0,
                         ranges=np.array([0.5, 1.0, 2.0], dtype=np.float32),
-                        header=messages.new("std_msgs/msg/Header", frame_id="laser",
-                                            stamp=messages.new("builtin_interfaces/msg/Time", sec=3)))
+                        header=ros_messages.new("std_msgs/msg/Header", frame_id="laser",
+                                            stamp=ros_messages.new("builtin_interfaces/msg/Time", sec=3)))
     obj = eiffel_bridge.from_message(scan, _Region())
     assert type(obj).__name__ == "SENSOR_MSGS_LASER_SCAN"
     assert obj.range_max == 2.0 and obj.ranges.upper == 3 and obj.ranges.area._items == [0.5, 1.0, 2.0]

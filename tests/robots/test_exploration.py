@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 import yaml
 
-from scoopc.robots.runner import run_on_simulator
+from harness import run_on_simulator
 
 ROOT = Path(__file__).parents[2]
 EXPLORATION = ROOT / "samples" / "exploration"
@@ -26,8 +26,8 @@ STOP_PROGRAM = Path(__file__).parent / "programs" / "h1_explore_stop"
 
 CHILD = """
 import io, json, sys
-from scoopc.robots.runner import run_on_simulator
-r = run_on_simulator(sys.argv[1], world=sys.argv[2], stdout=io.StringIO(), stderr=io.StringIO())
+import scoopc
+r = scoopc.run([sys.argv[1]], robot="sim", world=sys.argv[2], stdout=io.StringIO(), stderr=io.StringIO())
 print(json.dumps({
     "status": r.status, "time": r.sim.time, "coverage": r.sim.coverage(),
     "collisions": len(r.sim.robot().collisions), "fallen": r.sim.robot().fallen,

@@ -14,7 +14,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from scoopc.robots.runner import run_on_simulator
+from harness import run_on_simulator
 
 SAMPLE = Path(__file__).resolve().parents[2] / "samples" / "go_charging"
 WORLDS = SAMPLE.parent / "worlds"

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from scoopc import cli
-from scoopc.robots import messages
-from scoopc.robots.runner import run_on_simulator
+from scoopc.robots import ros_messages
+from harness import run_on_simulator
 
 ROOT = Path(__file__).parents[2]
 PROGRAMS = Path(__file__).parent / "programs"
@@ -35,11 +35,11 @@ def test_timer_calls_agents_later_and_repeatedly_and_cancels_and_event_publishes
 
 
 def odometry_msg():
-    return messages.new("nav_msgs/msg/Odometry")
+    return ros_messages.new("nav_msgs/msg/Odometry")
 
 
 def range_msg(value, max_range=0.12):
-    return messages.new("sensor_msgs/msg/Range", range=value, min_range=0.0, max_range=max_range)
+    return ros_messages.new("sensor_msgs/msg/Range", range=value, min_range=0.0, max_range=max_range)
 
 
 def test_signalers_report_stale_data_when_a_topic_goes_silent(bus, capsys):

@@ -1,5 +1,5 @@
 """The library's ROS 2 message classes (stdlib/roboscoop/communication/messages/) are what
-`scoopc msg` writes, and compiled programs publish Eiffel message objects as ROS 2 messages."""
+`scoopc msg` writes, and compiled programs publish Eiffel message objects as ROS 2 ros_messages."""
 from pathlib import Path
 
 
@@ -63,10 +63,10 @@ def _publish_until_done(bus, topic, make, done):
 def test_a_listener_gets_message_objects(bus, capsys):
     import threading
 
-    from scoopc.robots import messages
+    from scoopc.robots import ros_messages
 
     def odometry(i):
-        msg = messages.new("nav_msgs/msg/Odometry")
+        msg = ros_messages.new("nav_msgs/msg/Odometry")
         msg.header.frame_id = "odom"
         msg.pose.pose.position.x = float(i)
         return msg
@@ -85,7 +85,7 @@ def test_a_listener_of_a_type_made_by_scoopc_msg(bus, tmp_path, capsys):
     import shutil
     import threading
 
-    from scoopc.robots import messages
+    from scoopc.robots import ros_messages
 
     program = tmp_path / "imu_listen"
     shutil.copytree(PROGRAMS / "imu_listen", program)
@@ -93,7 +93,7 @@ def test_a_listener_of_a_type_made_by_scoopc_msg(bus, tmp_path, capsys):
     capsys.readouterr()
 
     def imu(i):
-        msg = messages.new("sensor_msgs/msg/Imu")
+        msg = ros_messages.new("sensor_msgs/msg/Imu")
         msg.linear_acceleration.z = 9.75
         msg.orientation.w = 1.0
         return msg

@@ -15,9 +15,9 @@ import numpy as np
 import pytest
 
 from scoopc import cli
-from scoopc.robots import messages, transport
+from scoopc.robots import ros_messages, transport
 from scoopc.robots.bus import Bus
-from scoopc.robots.runner import run_on_simulator
+from harness import run_on_simulator
 
 ROOT = Path(__file__).parents[2]
 PROGRAMS = Path(__file__).parent / "programs"
@@ -49,10 +49,10 @@ def test_listen_scan_feeds_a_laser_signaler(capsys):
     def publish():
         assert bus.wait_for_subscriber("/scan", 30)
         for k, stamp in enumerate((3.0, 4.5)):       # coalesced or not, the last one arrives
-            header = messages.new("std_msgs/msg/Header", stamp=messages.new(
+            header = ros_messages.new("std_msgs/msg/Header", stamp=ros_messages.new(
                 "builtin_interfaces/msg/Time", sec=int(stamp), nanosec=int(stamp % 1 * 1e9)))
             ranges = np.array([0.5, math.inf, 2.5, 1.5 + k], dtype=np.float32)
-            bus.publish("/scan", messages.new("sensor_msgs/msg/LaserScan", header=header, angle_min=-math.pi,
+            bus.publish("/scan", ros_messages.new("sensor_msgs/msg/LaserScan", header=header, angle_min=-math.pi,
                                               angle_increment=math.pi / 2, range_min=0.1, range_max=2.0,
                                               ranges=ranges))
 

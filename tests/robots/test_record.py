@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from mcap.reader import make_reader
 
-from scoopc.robots import cdr, messages, record
+from scoopc.robots import cdr, ros_messages, record
 from scoopc.robots.bus import Bus
 from scoopc.robots.sim import Simulator
 
@@ -19,8 +19,8 @@ WORLD = {"name": "rec", "size": [3.0, 3.0], "duration": 10,
 
 
 def twist(v, w=0.0):
-    return messages.new("geometry_msgs/msg/Twist", linear=messages.new("geometry_msgs/msg/Vector3", x=v),
-                        angular=messages.new("geometry_msgs/msg/Vector3", z=w))
+    return ros_messages.new("geometry_msgs/msg/Twist", linear=ros_messages.new("geometry_msgs/msg/Vector3", x=v),
+                        angular=ros_messages.new("geometry_msgs/msg/Vector3", z=w))
 
 
 @pytest.fixture
@@ -52,7 +52,7 @@ def test_mcap_file_has_ros2_schemas_channels_and_every_message(recorded_run):
                                 "sensor_msgs/msg/Range", "sensor_msgs/msg/LaserScan", "sensor_msgs/msg/BatteryState"}
         for name, schema in schemas.items():
             assert schema.encoding == "ros2msg"
-            assert schema.data.decode() == messages.typestore().generate_msgdef(name, ros_version=2)[0]
+            assert schema.data.decode() == ros_messages.typestore().generate_msgdef(name, ros_version=2)[0]
         assert "MSG: std_msgs/Header" in schemas["nav_msgs/msg/Odometry"].data.decode()
         channels = {c.topic: c for c in summary.channels.values()}
         assert all(c.message_encoding == "cdr" for c in channels.values())
@@ -104,7 +104,7 @@ def test_mcap_ros2_support_decodes_it(recorded_run):
 def test_rosbags_reads_the_single_file(recorded_run):
     from rosbags.rosbag2 import Reader
     path, published, _ = recorded_run
-    store = messages.typestore()
+    store = ros_messages.typestore()
     with Reader(path) as reader:
         assert reader.message_count == len(published)
         types = {c.topic: c.msgtype for c in reader.connections}
@@ -120,11 +120,11 @@ def test_log_time_rules_without_a_clock(tmp_path):
     bus = Bus()
     path = tmp_path / "plain.mcap"
     recorder = record.Recorder(bus, path, compression="none")
-    odom = messages.new("nav_msgs/msg/Odometry")
+    odom = ros_messages.new("nav_msgs/msg/Odometry")
     odom.header.stamp.sec, odom.header.stamp.nanosec = 3, 250
     bus.publish("/robot1/odom", odom)
     bus.publish("/robot1/cmd_vel", twist(0.2))                # the latest stamp seen
-    recorder.write("/note", messages.new("std_msgs/msg/String", data="hello"), log_time=7)
+    recorder.write("/note", ros_messages.new("std_msgs/msg/String", data="hello"), log_time=7)
     with pytest.raises(TypeError):
         bus.publish("/robot1/odom", twist(0.1))               # one type per topic
     assert recorder.close() == str(path) and recorder.close() == str(path)
@@ -173,7 +173,7 @@ def test_dds_bus_tap_records_what_it_publishes_and_receives(tmp_path, monkeypatc
         assert sender.wait_for_subscriber("/robot1/cmd_vel", 10)
         sender.publish("/robot1/cmd_vel", twist(0.25))
         assert got.wait(10)
-        receiver.publish("/robot1/status", messages.new("std_msgs/msg/String", data="ok"))
+        receiver.publish("/robot1/status", ros_messages.new("std_msgs/msg/String", data="ok"))
         assert own.wait(10)                                   # its own reader got it too
         recorder.close()
     finally:

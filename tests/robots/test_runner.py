@@ -10,7 +10,7 @@ from pathlib import Path
 import pytest
 
 from scoopc import cli
-from scoopc.robots.runner import run_on_simulator
+from harness import run_on_simulator
 
 PROGRAMS = Path(__file__).parent / "programs"
 

@@ -8,7 +8,7 @@ import threading
 import pytest
 from PIL import Image
 
-from scoopc.robots import messages, record, simnode
+from scoopc.robots import ros_messages, record, simnode
 from scoopc.robots.bus import Bus
 
 WORLD = {"name": "strip", "size": [3.0, 1.0], "duration": 60,
@@ -16,7 +16,7 @@ WORLD = {"name": "strip", "size": [3.0, 1.0], "duration": 60,
 
 
 def twist(v):
-    return messages.new("geometry_msgs/msg/Twist", linear=messages.new("geometry_msgs/msg/Vector3", x=v))
+    return ros_messages.new("geometry_msgs/msg/Twist", linear=ros_messages.new("geometry_msgs/msg/Vector3", x=v))
 
 
 class GoTo:
@@ -48,11 +48,11 @@ def test_node_bus_applies_commands_between_steps_and_taps_both_ways():
     tap = node.tap(lambda topic, msg: tapped.append(topic))
     inner.publish("/robot1/cmd_vel", twist(0.1))            # arrives from the transport: queued
     assert got == [] and tapped == []
-    node.publish("/robot1/odom", messages.new("nav_msgs/msg/Odometry"))
+    node.publish("/robot1/odom", ros_messages.new("nav_msgs/msg/Odometry"))
     assert node.drain() == 1 and [m.linear.x for m in got] == [0.1]
     assert tapped == ["/robot1/odom", "/robot1/cmd_vel"] and node.drain() == 0
     tap.close()
-    node.publish("/clock", messages.new("rosgraph_msgs/msg/Clock"))
+    node.publish("/clock", ros_messages.new("rosgraph_msgs/msg/Clock"))
     assert tapped == ["/robot1/odom", "/robot1/cmd_vel"]
 
 

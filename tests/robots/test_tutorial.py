@@ -2,7 +2,7 @@
 import re
 from pathlib import Path
 
-from scoopc.robots.runner import run_on_simulator
+from harness import run_on_simulator
 
 SAMPLE = Path(__file__).parents[2] / "samples" / "first_controller"
 

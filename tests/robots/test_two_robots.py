@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 import yaml
 
-from scoopc.robots.runner import run_on_simulator
+from harness import run_on_simulator
 
 SAMPLE = Path(__file__).resolve().parents[2] / "samples" / "two_robots"
 PASSAGE = (2.0, 1.5)          # centre of the passage (samples/worlds/two_robots.yaml)

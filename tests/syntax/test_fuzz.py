@@ -9,7 +9,8 @@ import re
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from harness import ROOT
-from scoopc import messages, parser
+from scoopc.parse import parser
+from scoopc import messages
 from scoopc.source import SourceFile
 
 TOKEN = re.compile(r'"(?:%.|[^"%\n])*"|\'(?:%.|[^\'%\n])*\'|--[^\n]*|\s+|\w+|[^\w\s]{1,3}')

@@ -3,7 +3,7 @@ from pathlib import Path
 
 import pytest
 
-from scoopc import parser
+from scoopc.parse import parser
 from scoopc.source import SourceFile
 
 INVALID = Path(__file__).resolve().parent / "invalid"

@@ -1,7 +1,7 @@
 """Pre-ECMA syntax is named with its modern spelling (SYNTAX-OBSOLETE), at the right place."""
 import pytest
 
-from scoopc import parser
+from scoopc.parse import parser
 from scoopc.source import SourceFile
 
 CASES = [

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from scoopc import diagnostics, parser, syntax as s
+from scoopc.parse import parser
+from scoopc import diagnostics, syntax as s
 from scoopc.source import SourceFile
 
 

@@ -5,7 +5,8 @@ from pathlib import Path
 import pytest
 
 from harness import assert_markers, case_id, check_golden
-from scoopc import diagnostics, parser, syntax
+from scoopc.parse import parser
+from scoopc import diagnostics, syntax
 from scoopc.source import SourceFile
 
 HERE = Path(__file__).resolve().parent

@@ -1,20 +1,10 @@
 """ARGUMENTS' `external "Python"` features (stdlib/base/kernel/arguments.e).
 
 The program's command line is `PROGRAM`: index 0 is the command name (EiffelBase's
-`argument (0)`), then the arguments. The launcher sets it with `set_arguments` before the root
-creation procedure runs; ARGUMENTS_32 reads the same list.
+`argument (0)`), then the arguments. The launcher (scoopc.kernel.launcher) sets it with `set_arguments`
+before the root creation procedure runs; ARGUMENTS_32 reads the same list.
 """
-import sys
-
-PROGRAM = [sys.argv[0] if sys.argv and sys.argv[0] else "program"]
-
-
-def set_arguments(args):
-    """Make `args` (command name first, then the arguments: strings) the program's command line."""
-    args = [str(a) for a in args]
-    if not args:
-        raise ValueError("set_arguments: the command name (index 0) is required")
-    PROGRAM[:] = args
+from scoopc.kernel.launcher import PROGRAM, set_arguments  # noqa: F401 - set_arguments: tests and embedders
 
 
 def argument_count(current):

@@ -1,10 +1,11 @@
 """ROBOT_ENVIRONMENT's `external "Python"` features (stdlib/roboscoop/util/robot_environment.e):
-the settings `scoopc run` gave this run (scoopc.robots.runner.SETTINGS)."""
+the settings `scoopc run` gave this run (scoopc.robots.runner.settings_of the running runtime)."""
+from scoopc import runtime
 from scoopc.robots import runner
 
 
 def _settings():
-    return runner.SETTINGS
+    return runner.settings_of(runtime.current())
 
 
 def _namespaces():

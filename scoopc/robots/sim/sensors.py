@@ -16,7 +16,7 @@ _NUMPY = {"float32": np.float32, "float64": np.float64, "int8": np.int8, "uint8"
           "uint16": np.uint16, "int32": np.int32, "uint32": np.uint32, "int64": np.int64, "uint64": np.uint64}
 
 try:  # helper M's message model when present: same type store classes
-    from scoopc.robots.messages import new as _new_external
+    from scoopc.robots.ros_messages import new as _new_external
 except Exception:  # pragma: no cover - depends on the other module's presence
     _new_external = None
 

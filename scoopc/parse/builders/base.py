@@ -9,9 +9,9 @@ from typing import Any
 
 from lark import Token
 
-from .. import diagnostics
-from ..source import Span
-from ..syntax import Identifier
+from ... import diagnostics
+from ...source import Span
+from ...syntax import Identifier
 
 _new = object.__new__
 

@@ -16,12 +16,13 @@ from typing import Optional
 from lark import Lark
 from lark.exceptions import UnexpectedInput
 
-from . import diagnostics, syntax, syntax_errors
-from .diagnostics import Diagnostic, InternalError
-from .parse_tree import AstBuilder
-from .source import SourceFile, Span
+from .. import diagnostics, syntax
+from ..diagnostics import Diagnostic, InternalError
+from ..source import SourceFile, Span
+from . import syntax_errors
+from .builders import AstBuilder
 
-GRAMMAR_PATH = Path(__file__).with_name("grammar.lark")
+GRAMMAR_PATH = Path(__file__).parents[1] / "grammar.lark"   # where users and docs look for it
 
 _lock = threading.Lock()
 _instance: Optional[tuple[Lark, AstBuilder]] = None

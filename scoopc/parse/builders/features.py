@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Any, Optional
 
-from .. import syntax as s
+from ... import syntax as s
 from .base import BuilderBase, Tag
 
 

@@ -14,9 +14,9 @@ from typing import Any, Iterator, Optional
 from lark import Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
 
-from . import diagnostics, syntax
-from .diagnostics import Diagnostic
-from .source import SourceFile, Span
+from .. import diagnostics, syntax
+from ..diagnostics import Diagnostic
+from ..source import SourceFile, Span
 from .syntax_terms import (EXPRESSION_STARTS, INSTRUCTION_KEYWORDS, KEYWORDS, OPENERS,
                            OPERATORS, describe_token, display)
 

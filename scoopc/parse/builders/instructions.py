@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from .. import syntax as s
+from ... import syntax as s
 from .base import BuilderBase, Keyworded
 
 _CALLS = (s.UnqualifiedCall, s.QualifiedCall, s.StaticCall, s.Precursor, s.BracketExpression)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import dataclasses
 from typing import Any, Optional
 
-from .. import syntax as s
+from ... import syntax as s
 from .base import BuilderBase, Keyworded
 
 

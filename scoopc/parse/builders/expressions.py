@@ -8,7 +8,7 @@ from typing import Any, Optional
 
 from lark import Token
 
-from .. import syntax as s
+from ... import syntax as s
 from .base import BuilderBase
 from .literals import character_value, integer_value, real_value, string_value
 

@@ -1,0 +1,63 @@
+"""The Python API: `scoopc.check`, `scoopc.compile` and `scoopc.run` do what the commands of the
+same names do, with options as keyword arguments and results as records (scoopc.results), never
+printing diagnostics (docs/API.md). A usage mistake raises scoopc.UsageError; source errors come
+back as the result's diagnostics with status 1."""
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Callable, Optional, Sequence, TextIO, Union
+
+from .driver import Compilation, RunOptions, run_program
+from .exits import Exit, SourceErrors, UsageError
+from .results import CheckResult, CompileResult, RunResult
+from .robots.runner import RobotOptions
+
+PathLike = Union[str, Path]
+Progress = Optional[Callable[[str], None]]
+
+__all__ = ["CheckResult", "CompileResult", "RunResult", "UsageError", "check", "compile", "run"]
+
+
+def check(paths: Sequence[PathLike], *, target: Optional[str] = None) -> CheckResult:
+    """Check a program (its .e files, cluster folders or .ecf project): every syntax, validity and
+    SCOOP error, as `scoopc check` reports them."""
+    compilation = Compilation(paths, target=target)
+    found = compilation.checked.diagnostics
+    return CheckResult(Exit.SOURCE if compilation.checked.has_errors else Exit.OK, found)
+
+
+def compile(paths: Sequence[PathLike], output: PathLike = "build", *, target: Optional[str] = None,  # noqa: A001
+            root: Optional[str] = None, assertions: Optional[str] = None, progress: Progress = None) -> CompileResult:
+    """Check, then write readable Python: `output/<root>` (the program, runnable with `python -m`)
+    beside `output/eiffel_base` (the compiled standard library), as `scoopc compile -o` does."""
+    compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
+    try:
+        program = compilation.compile_to(output)
+    except SourceErrors as errors:
+        return CompileResult(Exit.SOURCE, errors.diagnostics)
+    return CompileResult(Exit.OK, compilation.checked.diagnostics, program.folder / program.package,
+                         program.folder / "eiffel_base")
+
+
+def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: Optional[str] = None,
+        root: Optional[str] = None, assertions: Optional[str] = None, cache: bool = True, progress: Progress = None,
+        trace_processors: bool = False, strict: bool = False, virtual_clock: bool = False, debug: bool = False,
+        stdout: Optional[TextIO] = None, stderr: Optional[TextIO] = None, robot: Optional[str] = None,
+        world: Any = None, namespace: Optional[str] = None, realtime: bool = False,
+        duration: Optional[float] = None, goal: Optional[tuple] = None, png: Union[PathLike, bool, None] = None,
+        gif: Optional[PathLike] = None, record: Optional[PathLike] = None) -> RunResult:
+    """Compile (cached by content unless `cache` is false) and run a program in this process, as
+    `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
+    simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in
+    <root>.png. The result's `status` is the program's exit status."""
+    compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
+    try:
+        program = compilation.cached_program(use_cache=cache)
+    except SourceErrors as errors:
+        return RunResult(Exit.SOURCE, errors.diagnostics)
+    options = RunOptions(trace_processors, strict, virtual_clock, debug, stdout, stderr)
+    robot_options = RobotOptions(robot, world, namespace, realtime, duration, goal, png, gif, record)
+    result = run_program(program, args, options, robot_options, compilation.paths)
+    if "checked" in vars(compilation):                # compiled now, not taken from the cache
+        result.diagnostics = compilation.checked.diagnostics
+    return result

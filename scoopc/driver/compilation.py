@@ -1,0 +1,216 @@
+"""Driver, one program through the pipeline: a Compilation owns the phases (project, parsed,
+checked, root, the library's package and facts, the program's modules, the package on disk) and
+computes each once, on first use, so every caller (the command line, the Python API, the tests)
+gets the same pipeline and no phase is built as a side effect of another. Long phases report
+through the `progress` callback.
+"""
+from __future__ import annotations
+
+import json
+import os
+import re
+import shutil
+from dataclasses import dataclass, field
+from functools import cached_property
+from pathlib import Path
+from typing import Callable, Optional, Sequence, Union
+
+from .. import outdir, pipeline
+from ..codegen.context import Options
+from ..codegen.names import class_name, module_name
+from ..codegen.program import generate
+from ..exits import SourceErrors, UsageError
+from ..kernel.link import LIBRARY_LEAVES_FILE
+from ..project import Project, collect
+from ..semantics.library import cache_dir
+from ..semantics.universe import stdlib_root
+from .library import Library, compiled_library
+from .packages import BASE_PACKAGE, ensure_bytecode, program_key, write_bytecode, write_modules
+from .roots import Root, choose_root
+
+Progress = Optional[Callable[[str], None]]
+PathLike = Union[str, Path]
+ASSERTIONS = ("all", "require", "none")
+
+
+@dataclass(frozen=True)
+class CompiledProgram:
+    """A program compiled into a package on disk, ready to run."""
+    folder: Path                # holds the program's package
+    package: str                # its name
+    root: Root
+    library: Path               # holds the compiled library's package, eiffel_base
+    shadowed: dict = field(default_factory=dict)   # user classes named like library classes
+    roboscoop: bool = False     # does it use the Roboscoop library (then it runs with a robot)?
+
+    def meta(self) -> dict:
+        return {"package": self.package, "root": self.root.key, "creator": self.root.creator,
+                "base": str(self.library), "shadowed": self.shadowed, "roboscoop": self.roboscoop}
+
+    @classmethod
+    def from_meta(cls, folder: Path, meta: dict) -> "CompiledProgram":
+        return cls(folder, meta["package"], Root(meta["root"], meta["creator"]), Path(meta["base"]),
+                   meta["shadowed"], meta["roboscoop"])
+
+
+class Compilation:
+    """One program (the sources at `paths`) and the options that shape its compilation."""
+
+    def __init__(self, paths: Sequence[PathLike], *, target: Optional[str] = None, root: Optional[str] = None,
+                 assertions: Optional[str] = None, progress: Progress = None):
+        if not paths:
+            raise UsageError("no PATH given: name a .e file, a directory or an .ecf project file")
+        if assertions is not None and assertions not in ASSERTIONS:
+            raise UsageError(f"assertions must be one of {', '.join(ASSERTIONS)}, not {assertions!r}")
+        self.paths = [str(p) for p in paths]
+        self.target, self.root_option, self.assertions_option = target, root, assertions
+        self.progress = progress
+        self._modules: dict[str, tuple[dict, list]] = {}
+
+    # ---- the front end ------------------------------------------------------------------------
+    @cached_property
+    def project(self) -> Project:
+        return collect(self.paths, self.target)
+
+    @cached_property
+    def parsed(self) -> pipeline.Parsed:
+        return pipeline.parse_project(self.project)
+
+    @cached_property
+    def checked(self) -> pipeline.Checked:
+        return pipeline.check_project(self.project, parsed=self.parsed)
+
+    def require_clean(self) -> pipeline.Checked:
+        """The checked program; SourceErrors when it has errors."""
+        if self.checked.has_errors:
+            raise SourceErrors(self.checked.diagnostics)
+        return self.checked
+
+    @cached_property
+    def root(self) -> Root:
+        return choose_root(self.project, self.require_clean(), self.root_option, self.paths)
+
+    @property
+    def assertions(self) -> str:
+        return self.assertions_option or self.project.settings.assertions or "all"
+
+    # ---- the back end -------------------------------------------------------------------------
+    @cached_property
+    def library(self) -> Library:
+        return compiled_library(self.progress)
+
+    def modules(self, package: str = "program") -> tuple[dict, list]:
+        """The program's modules ({file name: (ast.Module, Eiffel file)}) as package `package`
+        (they import each other by the package's name), and the library routines that are leaves
+        in the program's closed world."""
+        if package not in self._modules:
+            sem = self.require_clean().semantics
+            leaves: list[str] = []
+            options = Options(assertions=self.assertions, package=package)
+            modules = generate(sem.universe, sem.tables, options, lambda info: not info.from_library, leaves,
+                               library_facts=self.library.facts)
+            self._modules[package] = (modules, leaves)
+        return self._modules[package]
+
+    def write_package(self, out: Path, package: str) -> CompiledProgram:
+        """Write the program's package as `out/package` (a folder that must not exist yet, or
+        that outdir.clear emptied), marked as written by scoopc."""
+        sem = self.require_clean().semantics
+        modules, leaves = self.modules(package)
+        folder = out / package
+        write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).",
+                      (BASE_PACKAGE,))
+        (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
+        (folder / "__main__.py").write_text(_main_text(package, self.root, dict(sem.universe.shadowed)))
+        outdir.mark(folder)
+        return CompiledProgram(out, package, self.root, self.library.path, dict(sem.universe.shadowed),
+                               uses_roboscoop(self.project.files))
+
+    def compile_to(self, out: PathLike) -> CompiledProgram:
+        """`scoopc compile -o OUT`: OUT/<root> and OUT/eiffel_base, replacing only what scoopc wrote
+        there before (outdir)."""
+        out = Path(out)
+        package = self.root.key.lower()
+        library = out / BASE_PACKAGE
+        outdir.prepare(out)
+        for folder in (out / package, library):        # both checked before either is touched
+            outdir.check(folder)
+        for folder in (out / package, library):
+            outdir.clear(folder)
+        compiled = self.write_package(out, package)
+        shutil.copytree(self.library.path / BASE_PACKAGE, library,
+                        ignore=shutil.ignore_patterns("__pycache__", outdir.MARKER))
+        outdir.mark(library)
+        return compiled
+
+    def cached_program(self, use_cache: bool = True) -> CompiledProgram:
+        """The program compiled into scoopc's cache, keyed by the sources' contents and the options;
+        an earlier compilation is used unless `use_cache` is false."""
+        extra = json.dumps([self.root_option, self.assertions_option, self.project.settings.assertions,
+                            self.project.root.class_name if self.project.root else None])
+        key = program_key([Path(p) for p in self.project.files], extra)
+        folder = cache_dir() / "programs" / key
+        found = _read_cached(folder) if use_cache else None
+        if found is None:
+            self.require_clean()
+            found = self._cache(folder, key)
+        ensure_bytecode(found.library)
+        return found
+
+    def _cache(self, folder: Path, key: str) -> CompiledProgram:
+        staging = folder.with_name(f"{key}.{os.getpid()}.tmp")      # per process: runs may race
+        if staging.exists():
+            shutil.rmtree(staging)
+        staging.mkdir(parents=True)
+        compiled = self.write_package(staging, "program")
+        (staging / "program.json").write_text(json.dumps(compiled.meta()))
+        write_bytecode(staging / "program")
+        if folder.exists():                  # no cache wanted, or another process compiled it meanwhile
+            old = folder.with_name(f"{key}.{os.getpid()}.old")
+            try:
+                folder.rename(old)
+                shutil.rmtree(old, ignore_errors=True)
+            except OSError:
+                pass
+        try:
+            staging.rename(folder)
+        except OSError:                      # another process put its copy in place first: use it
+            shutil.rmtree(staging, ignore_errors=True)
+        return CompiledProgram.from_meta(folder, compiled.meta())
+
+
+def _read_cached(folder: Path) -> Optional[CompiledProgram]:
+    try:
+        meta = json.loads((folder / "program.json").read_text())
+        found = CompiledProgram.from_meta(folder, meta)
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+    return found if found.library.exists() else None
+
+
+def _main_text(package: str, root: Root, shadowed: dict) -> str:
+    return (f'"""Run the program: python -m {package} [ARGS]."""\n'
+            f"import sys\n\n"
+            f"from scoopc.kernel import launcher\n\n"
+            f"if __name__ == '__main__':\n"
+            f"    from {package}.{module_name(root.key)} import {class_name(root.key)}\n"
+            f"    sys.exit(launcher.main({class_name(root.key)}, {root.creator!r}, sys.argv, "
+            f"shadowed={shadowed!r}))\n")
+
+
+def uses_roboscoop(files: Sequence[PathLike]) -> bool:
+    """Does a user class name a class of stdlib/roboscoop? (Comments do not count.)"""
+    library = stdlib_root()
+    names = {p.stem.upper() for p in (library / "roboscoop").rglob("*.e")}
+    for name in files:
+        path = Path(name).resolve()
+        if library in path.parents:
+            continue
+        try:
+            text = path.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            continue
+        code = re.sub(r"--[^\n]*", "", text)
+        if names.intersection(re.findall(r"\b[A-Z][A-Z0-9_]*\b", code)):
+            return True
+    return False

@@ -1,0 +1,110 @@
+"""Driver, packages on disk: the modules codegen made -> a Python package, with the map from
+Python lines back to Eiffel lines, bytecode, and the content keys of cached compilations.
+
+A package's `__init__` loads its modules parents first (scoopc.kernel.link); `_lines.json` maps
+every generated module's lines back to its Eiffel file and lines ({module: [eiffel file,
+{python line: eiffel line}]}), which the launcher reads to print Eiffel traces.
+"""
+from __future__ import annotations
+
+import ast
+import compileall
+import hashlib
+import json
+import sys
+from pathlib import Path
+from typing import Iterator, Optional
+
+from ..version import __version__
+from ..semantics.universe import stdlib_files
+
+BASE_PACKAGE = "eiffel_base"
+
+
+def compiler_digest() -> str:
+    """A key of everything a compiled package depends on: scoopc's version, the code generator,
+    the kernel, the checker and the standard library's sources."""
+    digest = hashlib.sha256(__version__.encode())
+    root = Path(__file__).parents[1]
+    for folder in ("codegen", "kernel", "kernel/ext", "semantics"):
+        for path in sorted((root / folder).glob("*.py")):
+            digest.update(path.name.encode())
+            digest.update(path.read_bytes())
+    for path in stdlib_files():
+        digest.update(path.name.encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:24]
+
+
+def program_key(sources: list[Path], extra: str) -> str:
+    """The cache key of a program: the compiler, the options in `extra`, each source's path and text."""
+    digest = hashlib.sha256(compiler_digest().encode() + extra.encode())
+    for path in sorted(sources):
+        digest.update(str(path).encode())
+        digest.update(path.read_bytes())
+    return digest.hexdigest()[:24]
+
+
+def write_modules(folder: Path, modules: dict, init_doc: str, uses: tuple[str, ...] = ()) -> None:
+    """Write the modules of one package (readable Python text) and its __init__, which loads
+    them parents first (scoopc.kernel.link)."""
+    folder.mkdir(parents=True, exist_ok=True)
+    order = [name[:-3] for name in modules]
+    (folder / "__init__.py").write_text(
+        f'"""{init_doc}"""\nfrom scoopc.kernel import link\n\n'
+        f"CLASSES_BY_NAME = link.load(__name__, {order!r}, uses={uses!r})\n")
+    lines = {}
+    for filename, (module, source) in modules.items():
+        text = ast.unparse(module) + "\n"
+        (folder / filename).write_text(text)
+        lines[filename[:-3]] = [source, line_map(module, text)]
+    (folder / "_lines.json").write_text(json.dumps(lines, separators=(",", ":")))
+
+
+def line_map(module: ast.Module, text: str) -> dict:
+    """Python line -> Eiffel line: the written text parses back to the same tree shape."""
+    found: dict = {}
+    for original, written in zip(_statements(module), _statements(ast.parse(text))):
+        line = getattr(original, "lineno", None)
+        if line is not None:
+            found.setdefault(str(written.lineno), line)
+    return found
+
+
+def _statements(node: ast.AST) -> Iterator[ast.stmt]:
+    """Every statement below `node`, in order, without visiting expressions."""
+    for field in ("body", "handlers", "orelse", "finalbody"):
+        for child in getattr(node, field, None) or ():
+            if isinstance(child, (ast.stmt, ast.excepthandler)):
+                if isinstance(child, ast.stmt):
+                    yield child
+                yield from _statements(child)
+
+
+def write_bytecode(folder: Path) -> None:
+    """Byte-compile a cached package once, so that every run imports it from its .pyc files: about
+    0.3 s per run for the standard library's 320 modules, which Python would otherwise compile
+    again on every run where it does not write bytecode itself (PYTHONDONTWRITEBYTECODE, a
+    read-only install). Imports from the .pyc name the package's final folder in tracebacks
+    (importlib fixes `co_filename`), so a staging folder's name does not leak. Each .pyc is
+    written atomically: processes doing it at once do no harm."""
+    compileall.compile_dir(str(folder), quiet=2)
+
+
+def ensure_bytecode(base: Path) -> None:
+    """The compiled library's bytecode, written by the first run that needs it (`scoopc compile`
+    never does: it copies the sources only)."""
+    package = base / BASE_PACKAGE
+    done = package / "__pycache__" / "scoopc-complete"     # written last: an interrupted run redoes it
+    if not done.exists():
+        write_bytecode(package)
+        done.touch()
+
+
+def ensure_on_path(*folders: Optional[Path]) -> None:
+    """Put each folder first on sys.path (once), so that its packages import."""
+    for folder in folders:
+        if folder is not None:
+            if str(folder) in sys.path:
+                sys.path.remove(str(folder))
+            sys.path.insert(0, str(folder))

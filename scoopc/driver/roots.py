@@ -1,0 +1,70 @@
+"""Driver, the root: which class and creation procedure start the program (DESIGN section 8):
+`--root CLASS[.creation]`, else the .ecf's root, else the class named like the single file or
+directory given, else the one class with a `make` that no other given class mentions."""
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Optional, Sequence
+
+from ..exits import UsageError
+
+
+@dataclass(frozen=True)
+class Root:
+    key: str            # the class name, upper case
+    creator: str        # the creation procedure, lower case
+
+
+def parse_root_option(text: Optional[str]) -> Optional[tuple[str, str]]:
+    """`CLASS[.creation]` -> (CLASS, creation); None for no option."""
+    if not text:
+        return None
+    name, _, creator = text.partition(".")
+    return name.upper(), (creator or "make").lower()
+
+
+def choose_root(project, checked, option: Optional[str], paths: Sequence[str]) -> Root:
+    """The root of a checked program, or a UsageError that says why there is none."""
+    user = {i.name: i for i in checked.semantics.universe.classes.values() if not i.from_library}
+    wanted = parse_root_option(option)
+    if wanted is None and project.root is not None:
+        wanted = (project.root.class_name.upper(), project.root.creation.lower())
+    if wanted is None and len(paths) == 1:
+        stem = Path(str(paths[0]).rstrip("/")).stem.upper()
+        if stem in user:
+            wanted = (stem, "make")
+    if wanted is None:
+        wanted = (_only_candidate(user), "make")
+    name, creator = wanted
+    info = user.get(name)
+    if info is None:
+        raise UsageError(f"root class {name} is not among the given classes")
+    creators = info.creators
+    allowed = (creators is None and creator == "default_create") or (creators is not None and creator in creators)
+    if not allowed:
+        listed = ", ".join(sorted(creators)) if creators is not None else "default_create"
+        raise UsageError(f"`{creator}` is not a creation procedure of {name} (it has: {listed})")
+    feature = info.features.get(creator)
+    if feature is not None and feature.arguments:
+        raise UsageError(f"the root creation procedure {name}.{creator} must take no arguments")
+    return Root(name, creator)
+
+
+def _only_candidate(user: dict) -> str:
+    candidates = [n for n, i in user.items() if "make" in i.features and (i.creators is None or "make" in i.creators)]
+    used = {ty.name for i in user.values() for _, ty, _ in i.parents}
+    unused = [n for n in candidates if n not in used and not _mentioned_elsewhere(n, user)]
+    if len(unused) == 1:
+        return unused[0]
+    listed = ", ".join(sorted(candidates)) or "none"
+    raise UsageError(f"cannot tell which class is the root: use --root CLASS (candidates: {listed})")
+
+
+def _mentioned_elsewhere(name: str, user: dict) -> bool:
+    pattern = re.compile(r"\b" + name + r"\b", re.IGNORECASE)
+    for other in user.values():
+        if other.name != name and pattern.search(Path(other.decl.span.file).read_text(errors="replace")):
+            return True
+    return False

@@ -1,0 +1,81 @@
+"""Driver, the run: a compiled program's package imported into this process and started on the
+SCOOP runtime by the launcher, with a robot (the simulator or ROS 2) when it uses Roboscoop.
+SIGINT, SIGTERM and SIGHUP end a run the same way (runtime.stop_signals)."""
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+from dataclasses import dataclass
+from typing import Optional, Sequence, TextIO
+
+from ..codegen.names import class_name, module_name
+from ..kernel import launcher, link
+from ..results import RunResult
+from ..robots.runner import RobotOptions
+from ..runtime.stop_signals import stop_on_signals
+from .compilation import CompiledProgram
+from .packages import ensure_on_path
+
+
+@dataclass
+class RunOptions:
+    """How the runtime runs the program (the run options of `scoopc run`)."""
+    trace_processors: bool = False      # tag each output line with its processor ([P3] ...)
+    strict: bool = False                # an exception lost in an asynchronous call fails the run
+    virtual_clock: bool = False         # sleeps and timers on a clock that jumps when all wait
+    debug: bool = False                 # Python tracebacks too
+    stdout: Optional[TextIO] = None     # where the program's output goes (default: sys.stdout)
+    stderr: Optional[TextIO] = None     # where failures and scoopc's reports go (default: sys.stderr)
+
+
+def run_program(program: CompiledProgram, args: Sequence[str], options: RunOptions,
+                robot: RobotOptions, program_paths: Sequence[str] = ()) -> RunResult:
+    """Run `program` with the command-line arguments `args`; `program_paths` are its sources
+    (where the simulator looks for world.yaml)."""
+    root_cls = _load(program)
+    argv = [program.root.key.lower(), *args]
+    sys.stdout.flush()
+
+    def launch(on_start=None, virtual_clock: Optional[bool] = options.virtual_clock) -> int:
+        return launcher.main(root_cls, program.root.creator, argv, shadowed=program.shadowed,
+                             trace_processors=options.trace_processors, strict=options.strict,
+                             virtual_clock=options.virtual_clock if virtual_clock is None else virtual_clock,
+                             debug=options.debug, on_start=on_start, stdout=options.stdout,
+                             stderr=options.stderr)
+
+    kind = robot.robot or ("sim" if program.roboscoop else "none")
+    with stop_on_signals():                  # SIGTERM and SIGHUP end a run the way Ctrl-C does
+        if kind == "none":
+            result = RunResult(launch())
+        else:
+            from ..robots import runner  # deferred: the simulator and DDS load only for robot runs
+
+            chosen = RobotOptions(**{**vars(robot), "robot": kind})
+            result = runner.run(chosen, launch, list(program_paths), program.root.key, stderr=options.stderr)
+    _quiet_if_reader_gone()
+    return result
+
+
+def _load(program: CompiledProgram) -> type:
+    """The root class, from the program's package imported fresh (another program of the same
+    package name may have run in this process before)."""
+    ensure_on_path(program.library, program.folder)
+    package = program.package
+    for name in [m for m in sys.modules if m == package or m.startswith(package + ".")]:
+        del sys.modules[name]
+    link.forget(package)
+    importlib.invalidate_caches()
+    module = importlib.import_module(f"{package}.{module_name(program.root.key)}")
+    return getattr(module, class_name(program.root.key))
+
+
+def _quiet_if_reader_gone() -> None:
+    """Output piped into a reader that stopped (`| head`): no complaint at interpreter exit."""
+    try:
+        sys.stdout.flush()
+    except BrokenPipeError:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
