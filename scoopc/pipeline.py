@@ -97,20 +97,21 @@ def without_gc_pauses():
 
 
 def check_project(project: Project, use_cache: bool = True, library_bodies: Optional[bool] = None,
-                  parsed: Optional[Parsed] = None) -> Checked:
+                  parsed: Optional[Parsed] = None, progress=None) -> Checked:
     """Everything `scoopc check` verifies: syntax (unless `parsed` is given), then the semantic
     checker over the project's classes and the standard library. Library bodies are checked unless
-    they come from the cache."""
+    they come from the cache. `progress(text)` hears of slow steps."""
     with without_gc_pauses():
-        return _check_project(project, use_cache, library_bodies, parsed or parse_project(project))
+        return _check_project(project, use_cache, library_bodies, parsed or parse_project(project), progress)
 
 
-def _check_project(project: Project, use_cache: bool, library_bodies: Optional[bool], parsed: Parsed) -> Checked:
+def _check_project(project: Project, use_cache: bool, library_bodies: Optional[bool], parsed: Parsed,
+                   progress) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
     from .semantics import library
 
     checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
-    library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache)
+    library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache, progress)
     trees = [(unit.tree, False) for unit in parsed.units if unit.tree is not None]
     base = prepared[0] if prepared is not None else None
     for source, tree, found in library_units:

@@ -104,3 +104,17 @@ def test_importing_scoopc_loads_no_compiler():
                           capture_output=True, text=True, timeout=60)
     version, loaded = done.stdout.splitlines()
     assert version == scoopc.__version__ and loaded == "['scoopc', 'scoopc.version']"
+
+
+@pytest.mark.slow
+def test_a_first_run_reports_its_slow_steps(tmp_path, monkeypatch):
+    """With an empty cache the standard library is read and compiled (seconds): the progress
+    callback hears of each step before it starts; a second run has nothing slow to report."""
+    monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path / "cache"))
+    heard = []
+    out = io.StringIO()
+    assert scoopc.run([SAMPLES / "parallel_sum"], progress=heard.append, stdout=out).status == Exit.OK
+    assert [h.split(" (")[0] for h in heard] == ["reading the standard library", "compiling the standard library"]
+    heard.clear()
+    assert scoopc.run([SAMPLES / "parallel_sum"], progress=heard.append, stdout=io.StringIO()).status == Exit.OK
+    assert heard == []

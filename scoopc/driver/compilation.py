@@ -78,7 +78,7 @@ class Compilation:
 
     @cached_property
     def checked(self) -> pipeline.Checked:
-        return pipeline.check_project(self.project, parsed=self.parsed)
+        return pipeline.check_project(self.project, parsed=self.parsed, progress=self.progress)
 
     def require_clean(self) -> pipeline.Checked:
         """The checked program; SourceErrors when it has errors."""

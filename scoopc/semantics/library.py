@@ -39,11 +39,12 @@ def _key(files: list[Path]) -> str:
     return digest.hexdigest()[:32]
 
 
-def load(parse_file, prepare=None, use_cache: bool = True):
+def load(parse_file, prepare=None, use_cache: bool = True, progress=None):
     """(units, prepared) for the stdlib: units are [(SourceFile, tree, diagnostics)] for every
     class file; prepared is `prepare(units)` (the library's universe, ready for user classes to be
     added), kept in the cache with the units. Without the cache, prepared is None. From the cache,
-    the trees have no routine bodies and the SourceFile is None."""
+    the trees have no routine bodies and the SourceFile is None. `progress(text)` hears of the
+    slow path (parsing the library: a few seconds, once per version)."""
     files = stdlib_files()
     key = _key(files)
     if not use_cache:
@@ -52,6 +53,8 @@ def load(parse_file, prepare=None, use_cache: bool = True):
     cached = _read(key)
     if cached is not None:
         return cached
+    if progress is not None:
+        progress(f"reading the standard library ({len(files)} classes, once per scoopc version)")
     parsed = [parse_file(path) for path in files]
     _PARSED.clear()
     _PARSED[key] = parsed                    # compiling the library next needs the bodies too
