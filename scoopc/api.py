@@ -7,7 +7,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Any, Callable, Optional, Sequence, TextIO, Union
 
-from .driver import Compilation, RunOptions, run_program
+from .driver import Compilation, RunOptions, run_compilation
 from .exits import Exit, SourceErrors, UsageError
 from .results import CheckResult, CompileResult, RunResult
 from .robots.runner import RobotOptions
@@ -51,13 +51,12 @@ def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: Optional
     simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in
     <root>.png. The result's `status` is the program's exit status."""
     compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
-    try:
-        program = compilation.cached_program(use_cache=cache)
-    except SourceErrors as errors:
-        return RunResult(Exit.SOURCE, errors.diagnostics)
     options = RunOptions(trace_processors, strict, virtual_clock, debug, stdout, stderr)
     robot_options = RobotOptions(robot, world, namespace, realtime, duration, goal, png, gif, record)
-    result = run_program(program, args, options, robot_options, compilation.paths)
+    try:
+        result = run_compilation(compilation, args, options, robot_options, use_cache=cache)
+    except SourceErrors as errors:
+        return RunResult(Exit.SOURCE, errors.diagnostics)
     if "checked" in vars(compilation):                # compiled now, not taken from the cache
         result.diagnostics = compilation.checked.diagnostics
     return result

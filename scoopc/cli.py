@@ -102,7 +102,8 @@ def _add_run_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("--virtual-clock", action="store_true",
                          help="run `sleep` and timers on a virtual clock that jumps ahead when every "
                               "processor waits (fast runs of programs that sleep)")
-    command.add_argument("--no-cache", action="store_true", help="compile again even if cached")
+    command.add_argument("--no-cache", action="store_true",
+                         help="compile the program and the standard library again, even if cached")
     robot = command.add_argument_group(
         "robots", "A program that uses Roboscoop (stdlib/roboscoop) runs on the in-process simulator unless "
                   "`--robot ros2` is given (docs/ROBOTS.md).")
@@ -219,19 +220,19 @@ def _command_compile(args: argparse.Namespace) -> int:
 
 
 def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
-    from .driver import RunOptions, run_program
-    from .robots.runner import RobotOptions
+    from .driver import RunOptions, run_compilation  # deferred: the code generator (start-up)
+    from .robots.runner import RobotOptions  # deferred: the robot side (start-up)
 
     compilation = _compilation(args, root=args.root, assertions=args.assertions)
-    try:
-        program = compilation.cached_program(use_cache=not args.no_cache)
-    finally:
-        if "checked" in vars(compilation):           # checked now, not taken from the cache
-            _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
     options = RunOptions(args.trace_processors, args.strict, args.virtual_clock, args.debug)
     robot = RobotOptions(args.robot, args.world, args.namespace, args.realtime, args.duration, args.goal,
                          None if args.no_png else (args.png or True), args.gif, args.record)
-    return run_program(program, program_args, options, robot, compilation.paths).status
+    try:
+        compilation.cached_program(use_cache=not args.no_cache)
+    finally:
+        if "checked" in vars(compilation):           # checked now, not taken from the cache
+            _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
+    return run_compilation(compilation, program_args, options, robot).status
 
 
 def _command_msg(args: argparse.Namespace) -> int:

@@ -7,7 +7,7 @@ from .compilation import CompiledProgram, Compilation
 from .library import Library, LibraryError, compiled_library
 from .packages import BASE_PACKAGE
 from .roots import Root, choose_root
-from .running import RunOptions, run_program
+from .running import RunOptions, run_compilation, run_program
 
 __all__ = ["BASE_PACKAGE", "Compilation", "CompiledProgram", "Library", "LibraryError", "Root", "RunOptions",
-           "SourceErrors", "choose_root", "compiled_library", "run_program"]
+           "SourceErrors", "choose_root", "compiled_library", "run_compilation", "run_program"]

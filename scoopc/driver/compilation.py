@@ -25,7 +25,8 @@ from ..project import Project, collect
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root
 from .library import Library, compiled_library
-from .packages import BASE_PACKAGE, ensure_bytecode, program_key, write_bytecode, write_modules
+from .packages import (BASE_PACKAGE, ensure_bytecode, is_whole, program_key, writable_cache, write_bytecode,
+                       write_manifest, write_modules)
 from .roots import Root, choose_root
 
 Progress = Optional[Callable[[str], None]]
@@ -66,6 +67,8 @@ class Compilation:
         self.target, self.root_option, self.assertions_option = target, root, assertions
         self.progress = progress
         self._modules: dict[str, tuple[dict, list]] = {}
+        self.rebuild_library = False
+        self._program: Optional[CompiledProgram] = None
 
     # ---- the front end ------------------------------------------------------------------------
     @cached_property
@@ -97,7 +100,7 @@ class Compilation:
     # ---- the back end -------------------------------------------------------------------------
     @cached_property
     def library(self) -> Library:
-        return compiled_library(self.progress)
+        return compiled_library(self.progress, rebuild=self.rebuild_library)
 
     def modules(self, package: str = "program") -> tuple[dict, list]:
         """The program's modules ({file name: (ast.Module, Eiffel file)}) as package `package`
@@ -145,7 +148,12 @@ class Compilation:
 
     def cached_program(self, use_cache: bool = True) -> CompiledProgram:
         """The program compiled into scoopc's cache, keyed by the sources' contents and the options;
-        an earlier compilation is used unless `use_cache` is false."""
+        an earlier compilation is used unless `use_cache` is false. Computed once per Compilation."""
+        if self._program is None:
+            self._program = self._cached_program(use_cache)
+        return self._program
+
+    def _cached_program(self, use_cache: bool) -> CompiledProgram:
         extra = json.dumps([self.root_option, self.assertions_option, self.project.settings.assertions,
                             self.project.root.class_name if self.project.root else None])
         key = program_key([Path(p) for p in self.project.files], extra)
@@ -153,16 +161,19 @@ class Compilation:
         found = _read_cached(folder) if use_cache else None
         if found is None:
             self.require_clean()
+            self.rebuild_library |= not use_cache        # no cache at all: the library is compiled again too
             found = self._cache(folder, key)
         ensure_bytecode(found.library)
         return found
 
     def _cache(self, folder: Path, key: str) -> CompiledProgram:
+        writable_cache()
         staging = folder.with_name(f"{key}.{os.getpid()}.tmp")      # per process: runs may race
         if staging.exists():
             shutil.rmtree(staging)
         staging.mkdir(parents=True)
         compiled = self.write_package(staging, "program")
+        write_manifest(staging / "program")
         (staging / "program.json").write_text(json.dumps(compiled.meta()))
         write_bytecode(staging / "program")
         if folder.exists():                  # no cache wanted, or another process compiled it meanwhile
@@ -185,7 +196,8 @@ def _read_cached(folder: Path) -> Optional[CompiledProgram]:
         found = CompiledProgram.from_meta(folder, meta)
     except (OSError, ValueError, KeyError, TypeError):
         return None
-    return found if found.library.exists() else None
+    whole = is_whole(found.library / BASE_PACKAGE) and is_whole(folder / found.package)
+    return found if whole else None
 
 
 def _main_text(package: str, root: Root, shadowed: dict) -> str:

@@ -16,7 +16,8 @@ from ..codegen.scoop import FACTS_FILE, FACTS_FORMAT, write_library_facts
 from ..pipeline import check_project
 from ..project import Project
 from ..semantics.library import cache_dir
-from .packages import BASE_PACKAGE, compiler_digest, write_modules
+from .packages import (BASE_PACKAGE, compiler_digest, is_whole, remove_cached, writable_cache, write_manifest,
+                       write_modules)
 
 Progress = Optional[Callable[[str], None]]
 
@@ -31,10 +32,13 @@ class Library:
     facts: dict         # {routine version key: [leaf verdict, callees]} (codegen.scoop.library_facts)
 
 
-def compiled_library(progress: Progress = None) -> Library:
-    """The compiled standard library, built on first use (a few seconds, once per scoopc version)."""
+def compiled_library(progress: Progress = None, rebuild: bool = False) -> Library:
+    """The compiled standard library, built on first use (a few seconds, once per scoopc version),
+    and built again when it is damaged or `rebuild` is asked."""
     target = cache_dir() / f"base-{compiler_digest()}"
-    if not (target / BASE_PACKAGE / "__init__.py").exists():
+    if rebuild or not is_whole(target / BASE_PACKAGE):
+        if target.exists():
+            remove_cached(target)
         _build(target, progress)
     return Library(target, _read_facts(target / BASE_PACKAGE / FACTS_FILE))
 
@@ -48,10 +52,10 @@ def _build(target: Path, progress: Progress) -> None:
     sem = checked.semantics
     options = Options(package=BASE_PACKAGE)
     modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library)
-    target.parent.mkdir(parents=True, exist_ok=True)
-    staging = Path(tempfile.mkdtemp(prefix="base-", dir=target.parent))
+    staging = Path(tempfile.mkdtemp(prefix="base-", dir=writable_cache()))
     write_modules(staging / BASE_PACKAGE, modules, "The standard library, compiled by scoopc.")
     write_library_facts(staging / BASE_PACKAGE, sem.universe, sem.tables, options)
+    write_manifest(staging / BASE_PACKAGE)
     try:
         staging.rename(target)
     except OSError:                            # another process won the race: use its copy

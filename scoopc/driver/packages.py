@@ -11,14 +11,66 @@ import ast
 import compileall
 import hashlib
 import json
+import shutil
 import sys
+import tempfile
 from pathlib import Path
 from typing import Iterator, Optional
 
-from ..version import __version__
+from ..exits import UsageError
+from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_files
+from ..version import __version__
 
 BASE_PACKAGE = "eiffel_base"
+MANIFEST = "_manifest.json"       # {module file: size}: a cached package is whole when these match
+
+
+class DamagedCache(Exception):
+    """A cached package failed to load (a module missing, truncated or garbled, bad bytecode):
+    it is compiled again."""
+
+    def __init__(self, folder: Path, error: BaseException):
+        super().__init__(f"{folder}: {type(error).__name__}: {error}")
+        self.folder = folder
+
+
+def writable_cache() -> Path:
+    """scoopc's cache folder, made if needed; a UsageError when it cannot be written."""
+    folder = cache_dir()
+    try:
+        if folder.exists() and not folder.is_dir():
+            raise NotADirectoryError(0, "it is a file, not a folder")
+        folder.mkdir(parents=True, exist_ok=True)
+        with tempfile.TemporaryFile(dir=folder):
+            pass
+    except OSError as problem:
+        raise UsageError(f"cannot write scoopc's cache folder {folder} ({problem.strerror or problem}): set "
+                         f"SCOOPC_CACHE_DIR to a folder you can write") from None
+    return folder
+
+
+def write_manifest(package: Path) -> None:
+    """Record the size of every module of a cached package, written last."""
+    sizes = {p.name: p.stat().st_size for p in sorted(package.glob("*.py"))}
+    (package / MANIFEST).write_text(json.dumps(sizes, separators=(",", ":")))
+
+
+def is_whole(package: Path) -> bool:
+    """Does a cached package still have every module, at the size it was written? (A stat per
+    module: cheap enough for every run.)"""
+    try:
+        sizes = json.loads((package / MANIFEST).read_text())
+        return all((package / name).stat().st_size == size for name, size in sizes.items())
+    except (OSError, ValueError, AttributeError, TypeError):
+        return False
+
+
+def remove_cached(folder: Path) -> None:
+    """Remove a folder of scoopc's cache (never anything outside it)."""
+    root = cache_dir().resolve()
+    if folder.resolve() != root and root in folder.resolve().parents:
+        shutil.rmtree(folder, ignore_errors=True)
 
 
 def compiler_digest() -> str:

@@ -14,8 +14,8 @@ from ..kernel import launcher, link
 from ..results import RunResult
 from ..robots.runner import RobotOptions
 from ..runtime.stop_signals import stop_on_signals
-from .compilation import CompiledProgram
-from .packages import ensure_on_path
+from .compilation import Compilation, CompiledProgram
+from .packages import BASE_PACKAGE, DamagedCache, ensure_on_path, remove_cached
 
 
 @dataclass
@@ -27,6 +27,31 @@ class RunOptions:
     debug: bool = False                 # Python tracebacks too
     stdout: Optional[TextIO] = None     # where the program's output goes (default: sys.stdout)
     stderr: Optional[TextIO] = None     # where failures and scoopc's reports go (default: sys.stderr)
+
+
+def run_compilation(compilation: Compilation, args: Sequence[str], options: RunOptions, robot: RobotOptions,
+                    use_cache: bool = True) -> RunResult:
+    """Compile (cached by content) and run. A cached package that does not load (a module deleted,
+    truncated or garbled, bad bytecode) is compiled again, with a note on stderr: the program's
+    first (cheap), then the standard library's too."""
+    program = compilation.cached_program(use_cache=use_cache)
+    for rebuild_library in (False, True):
+        try:
+            return run_program(program, args, options, robot, compilation.paths)
+        except DamagedCache:
+            if not rebuild_library:
+                (options.stderr or sys.stderr).write("scoopc: note: the compiled program in scoopc's cache was "
+                                                     "damaged (a module did not load): compiling it again\n")
+        program = _recompiled(compilation, program, rebuild_library)
+    return run_program(program, args, options, robot, compilation.paths)    # a third failure is a bug
+
+
+def _recompiled(compilation: Compilation, damaged: CompiledProgram, rebuild_library: bool) -> CompiledProgram:
+    remove_cached(damaged.folder)
+    again = Compilation(compilation.paths, target=compilation.target, root=compilation.root_option,
+                        assertions=compilation.assertions_option, progress=compilation.progress)
+    again.rebuild_library = rebuild_library
+    return again.cached_program()
 
 
 def run_program(program: CompiledProgram, args: Sequence[str], options: RunOptions,
@@ -66,8 +91,15 @@ def _load(program: CompiledProgram) -> type:
         del sys.modules[name]
     link.forget(package)
     importlib.invalidate_caches()
-    module = importlib.import_module(f"{package}.{module_name(program.root.key)}")
-    return getattr(module, class_name(program.root.key))
+    try:
+        module = importlib.import_module(f"{package}.{module_name(program.root.key)}")
+        return getattr(module, class_name(program.root.key))
+    except Exception as error:                   # generated modules only define: a failure is damage
+        for name in [m for m in sys.modules if m.split(".")[0] in (package, BASE_PACKAGE)]:
+            del sys.modules[name]
+        link.forget(package)
+        link.forget(BASE_PACKAGE)
+        raise DamagedCache(program.folder, error) from error
 
 
 def _quiet_if_reader_gone() -> None:
