@@ -6,8 +6,22 @@ Lines and columns are 1-based; columns count characters, a tab counting as one.
 from __future__ import annotations
 
 import bisect
+import errno
+import os
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
+
+MAX_SOURCE_BYTES = 16 * 2**20       # no class text is this long; a larger file is a mistake
+
+
+def _open_regular(path: str, flags: int) -> int:
+    """os.open for regular files only: opened without blocking (a FIFO), then checked."""
+    fd = os.open(path, flags | getattr(os, "O_NONBLOCK", 0))
+    if not stat.S_ISREG(os.fstat(fd).st_mode):
+        os.close(fd)
+        raise OSError(errno.EINVAL, "not a regular file (a device, pipe or socket)")
+    return fd
 
 
 @dataclass(frozen=True)
@@ -51,8 +65,13 @@ class SourceFile:
 
     @classmethod
     def read(cls, path: str | Path) -> "SourceFile":
-        """Read a file as UTF-8 (a BOM is dropped; undecodable bytes raise UnicodeDecodeError)."""
-        data = Path(path).read_bytes()
+        """Read a file as UTF-8 (a BOM is dropped; undecodable bytes raise UnicodeDecodeError).
+        Only a regular file of at most MAX_SOURCE_BYTES is read (OSError otherwise): a FIFO would
+        block, and a link to /dev/zero would never end."""
+        with open(path, "rb", opener=_open_regular) as handle:
+            data = handle.read(MAX_SOURCE_BYTES + 1)
+        if len(data) > MAX_SOURCE_BYTES:
+            raise OSError(errno.EFBIG, f"larger than {MAX_SOURCE_BYTES // 2**20} MiB: not a class text")
         text = data.decode("utf-8-sig")
         return cls(str(path), text.replace("\r\n", "\n").replace("\r", "\n"))
 

@@ -1,4 +1,5 @@
 """The command line: help, exit codes, diagnostics on stderr, .ecf projects (DESIGN section 8)."""
+import os
 import subprocess
 import sys
 
@@ -167,3 +168,16 @@ def test_semantic_errors_exit_1_each_with_its_code_and_a_hint(capsys, tmp_path):
     assert code == Exit.SOURCE
     assert "robot.e:9:4: error VUTA(3)" in err and "robot.e:10:13: error VJAR" in err
     assert "hint: pass `motor` as an argument" in err and "2 errors" in err
+
+
+@pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs on this platform")
+def test_a_fifo_a_device_and_a_huge_file_are_reported_not_read(tmp_path, capsys):
+    os.mkfifo(tmp_path / "fifo.e")                      # reading it would block for ever
+    (tmp_path / "zero.e").symlink_to("/dev/zero")       # reading it would never end
+    with open(tmp_path / "huge.e", "wb") as huge:
+        huge.truncate(17 * 2**20)                       # sparse: no disk used
+    for name, reason in (("fifo.e", "not a regular file"), ("zero.e", "not a regular file"),
+                         ("huge.e", "larger than 16 MiB")):
+        code, out, err = run(capsys, "check", str(tmp_path / name), "--format", "short")
+        assert code == Exit.SOURCE and out == ""
+        assert err.startswith(f"{tmp_path / name}:1:1: error SOURCE: cannot read {tmp_path / name}: {reason}")
