@@ -63,7 +63,8 @@ def finish(rt, root, interrupted=None):
     for message, _exc in rt.failures:
         rt.stderr.write(f"scoopc: run-time failure: {message}\n")
     if alive:
-        rt.stderr.write(f"scoopc: threads still running at exit: {', '.join(alive)}\n")
+        shown = ", ".join(alive[:5]) + (f" and {len(alive) - 5} more" if len(alive) > 5 else "")
+        rt.stderr.write(f"scoopc: still busy at exit, ended with the process: {shown}\n")
     _current = None
     if rt.failures and status == 0:
         status = Exit.RUNTIME

@@ -406,13 +406,17 @@ class Runtime:
         self.clock.stop()
 
     def join_workers(self, timeout=2.0):
-        """Join every worker (structured ownership); returns the names of those still alive."""
+        """Join every worker (structured ownership) within `timeout` seconds in all, not each: a
+        worker busy in a computation that makes no runtime call does not notice the stop, and
+        fifty of them must not cost fifty timeouts. Returns the names of those still alive (daemon
+        threads: they end with the process)."""
         with self.glock:
             workers = list(self.workers)
+        deadline = time.monotonic() + timeout
         alive = []
         for w in workers:
             if w.thread.ident is not None:
-                w.thread.join(timeout)
+                w.thread.join(max(0.0, deadline - time.monotonic()))
                 if w.thread.is_alive():
                     alive.append(w.exec.name)
         return alive

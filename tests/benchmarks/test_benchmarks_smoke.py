@@ -185,3 +185,14 @@ def test_a_failing_run_is_reported_and_fails_the_command(monkeypatch, capsys):
     out = capsys.readouterr().out.splitlines()
     assert out[2].startswith("mutex workers=") and "FAILED" in out[2]
     assert out[3] == "geomean_ratio=nan failed=mutex"
+
+
+def test_exit_time_benchmark_smoke():
+    """benchmarks/exit_time.py at smoke size: its output's format, and that a run with busy
+    processors ends after Ctrl-C at all (the time limit only guards against a hang)."""
+    exit_time = os.path.join(os.path.dirname(RUN), "exit_time.py")
+    done = subprocess.run([sys.executable, exit_time, "--smoke"], capture_output=True, text=True, timeout=180)
+    assert done.returncode == 0, done.stdout + done.stderr
+    lines = done.stdout.splitlines()
+    assert lines[0].startswith("# exit_time:") and "3 busy processors" in lines[0]
+    assert re.fullmatch(rf"exit compiled_s={NUMBER} baseline_s={NUMBER} ratio={NUMBER}", lines[1]), lines[1]
