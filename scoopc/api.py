@@ -57,6 +57,6 @@ def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: Optional
         result = run_compilation(compilation, args, options, robot_options, use_cache=cache)
     except SourceErrors as errors:
         return RunResult(Exit.SOURCE, errors.diagnostics)
-    if "checked" in vars(compilation):                # compiled now, not taken from the cache
+    if compilation.was_checked:                       # compiled now, not taken from the cache
         result.diagnostics = compilation.checked.diagnostics
     return result

@@ -230,7 +230,7 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
     try:
         compilation.cached_program(use_cache=not args.no_cache)
     finally:
-        if "checked" in vars(compilation):           # checked now, not taken from the cache
+        if compilation.was_checked:                  # checked now, not taken from the cache
             _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
     return run_compilation(compilation, program_args, options, robot).status
 

@@ -83,6 +83,11 @@ class Compilation:
     def checked(self) -> pipeline.Checked:
         return pipeline.check_project(self.project, parsed=self.parsed, progress=self.progress)
 
+    @property
+    def was_checked(self) -> bool:
+        """Has this compilation checked the program (a cached run does not)?"""
+        return "checked" in self.__dict__
+
     def require_clean(self) -> pipeline.Checked:
         """The checked program; SourceErrors when it has errors."""
         if self.checked.has_errors:
