@@ -40,14 +40,6 @@ class Diagnostic:
         return self.severity == ERROR
 
 
-class CompilerError(Exception):
-    """Raised by a stage that cannot go on; carries the diagnostics it found."""
-
-    def __init__(self, diagnostics: Iterable[Diagnostic]):
-        self.diagnostics = list(diagnostics)
-        super().__init__("\n".join(short(d) for d in self.diagnostics))
-
-
 class InternalError(Exception):
     """A bug in scoopc, never the user's fault (reported as such, with the Python traceback)."""
 

@@ -330,8 +330,4 @@ def _constant_desc(node) -> bool:
     return isinstance(node, ast.Name)
 
 
-def basic_class(ty) -> bool:
-    return ty is not None and not ty.is_formal and ty.name in BASIC
-
-
 __all__ = ["Calls", "class_name", "is_external", "declared_name"]

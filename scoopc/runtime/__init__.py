@@ -9,11 +9,6 @@ from .processor import Processor, Session
 from . import reservation as _reservation  # noqa: F401  (installs Processor.reserve)
 
 
-class SObject:
-    """Optional base class of generated classes: declares the region slot."""
-    __slots__ = ("_region_", "__dict__", "__weakref__")
-
-
 def now_ns():
     """The runtime clock (virtual or real), in nanoseconds."""
     return current().clock.now_ns()

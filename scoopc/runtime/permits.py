@@ -18,7 +18,6 @@ own lock; permits only decide who runs.
 """
 import os
 import sys
-import threading
 from collections import deque
 
 from .errors import Shutdown
@@ -133,7 +132,3 @@ class Permits:
             self.total += 1
             self.held += 1
             ex.plock.release()
-
-
-def new_plock():
-    return threading.Lock()

@@ -118,7 +118,6 @@ class Runtime:
         self.stopping = False            # [g] set once; read racily as a fast check
         self.attention = False           # [g] stopping or permits.want_yield: one racy read
         #                                  at reservation entry instead of two
-        self.root_done = False           # [g]
         self.changed = threading.Condition(self.glock)   # quiescence / stop, for run_main
         self.wait_set = 0                # [g] number of blocked threads of kind 'wait'
         self.idlock = threading.Lock()
