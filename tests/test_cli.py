@@ -4,8 +4,9 @@ import sys
 
 import pytest
 
-from harness import ROOT
 from scoopc import cli
+
+from harness import ROOT
 
 SAMPLE = ROOT / "samples" / "producer_consumer"
 

@@ -1,5 +1,6 @@
 """The habits that keep the code the way it is (issue 23): the runtime's API is fully typed and
-checked strictly by mypy (settings in pyproject.toml); the test fails with mypy's report."""
+checked strictly by mypy, and the tree passes ruff's lint. Both tools read their settings from
+pyproject.toml; each test fails with the tool's own report."""
 import subprocess
 import sys
 from pathlib import Path
@@ -11,6 +12,9 @@ ROOT = Path(__file__).resolve().parent.parent
 # The packages checked strictly ([[tool.mypy.overrides]] in pyproject.toml); the driver's is
 # checked once it exists.
 STRICT_PACKAGES = ("scoopc.runtime", "scoopc.driver")
+
+# What ruff lints ([tool.ruff] in pyproject.toml says how, and which generated files it skips).
+LINTED = ("scoopc", "tests", "benchmarks", "tools")
 
 
 def _run(args: list[str], timeout: float) -> subprocess.CompletedProcess[str]:
@@ -31,3 +35,8 @@ def test_mypy_strict_on_the_runtime_and_the_driver(tmp_path):
     result = _run(args, timeout=300)
     assert result.returncode == 0, f"mypy on {', '.join(packages)}:\n{result.stdout}{result.stderr}"
 
+
+def test_ruff_lint():
+    pytest.importorskip("ruff", reason="ruff is in the test extra")
+    result = _run(["ruff", "check", "--no-cache", "--output-format", "concise", *LINTED], timeout=300)
+    assert result.returncode == 0, f"ruff check:\n{result.stdout}{result.stderr}"

@@ -103,7 +103,7 @@ def fquot(a, b):
 
 def hex_string(region, x, bits):
     """`to_hex_string`: all bits/4 digits, upper case, two's complement."""
-    return s8(region, format(x & ((1 << bits) - 1), "0%dX" % (bits // 4)))
+    return s8(region, format(x & ((1 << bits) - 1), f"0{bits // 4}X"))
 
 
 def exponentiable(x, other):

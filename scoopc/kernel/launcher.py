@@ -22,9 +22,8 @@ _LINE_MAPS: dict = {}
 def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, strict=False,
          virtual_clock=False, debug=False, stdout=None, stderr=None, on_start=None) -> int:
     from .. import runtime as rt
-    from .ext import arguments
-
     from . import link
+    from .ext import arguments
 
     link.register_again("eiffel_base")                       # the registry may have been reset
     link.register_again(root_cls.__module__.rpartition(".")[0])

@@ -5,12 +5,10 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING, TypeVar
 
 from . import reservation as _reservation  # noqa: F401  (installs Processor.reserve)
-from .errors import (DeadlockError, DirtyRegionError, PreconditionViolation, ScoopError,
-                     Shutdown, UncontrolledTarget)
+from .errors import DeadlockError, DirtyRegionError, PreconditionViolation, ScoopError, Shutdown, UncontrolledTarget
 from .main import current, finish, run_main, start
 from .monitor import dump as _dump
-from .once import once_object
-from .once import once_process as _once_process
+from .once import once_object, once_process as _once_process
 from .outside import Agent, OutsideClient
 from .processor import Processor
 from .protocols import Args, OnceKey, Routine, Separate

@@ -15,7 +15,7 @@ import heapq
 import itertools
 import threading
 import time
-from typing import TYPE_CHECKING, Union
+from typing import TYPE_CHECKING
 
 from .protocols import Args, Routine, Separate, Where
 from .sched import Block
@@ -55,16 +55,19 @@ class Timer:
 
 class Clock:
     """Fields marked [g] are protected by the runtime's glock."""
+    heap: list[tuple[int, int, int, Timer | Block]]
+    due: list[Timer]
+    thread: threading.Thread | None
 
     def __init__(self, rt: Runtime, virtual: bool) -> None:
         self.rt = rt
         self.virtual = virtual
         self.vnow = 0                 # [g] virtual time, ns
-        self.heap: list[tuple[int, int, int, Timer | Block]] = []                # [g] (deadline, phase, seq, Timer or Block)
+        self.heap = []                # [g] (deadline, phase, seq, Timer or Block)
         self.seq = itertools.count()  # [g]
-        self.due: list[Timer] = []                 # [g] timers handed to the clock thread
+        self.due = []                 # [g] timers handed to the clock thread
         self.cv = threading.Condition(rt.glock)
-        self.thread: threading.Thread | None = None            # [g] the clock thread, started with the first timer
+        self.thread = None            # [g] the clock thread, started with the first timer
         self.stopped = False          # [g]
 
     def now_ns(self) -> int:

@@ -1,8 +1,6 @@
 """Exceptions the SCOOP runtime raises into generated code, and the run-time failure record."""
 from __future__ import annotations
 
-from typing import Optional
-
 
 class ScoopError(Exception):
     """Base class of the runtime's own exceptions."""
@@ -11,7 +9,7 @@ class ScoopError(Exception):
 class PreconditionViolation(ScoopError):
     """A precondition clause is false and is not a wait condition (no newly reserved target)."""
 
-    def __init__(self, tag: Optional[str], where: object) -> None:
+    def __init__(self, tag: str | None, where: object) -> None:
         super().__init__(f"precondition {tag or '(untagged)'} violated at {fmt_where(where)}")
         self.tag, self.where = tag, where
 

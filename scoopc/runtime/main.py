@@ -12,13 +12,13 @@ from typing import TYPE_CHECKING, TextIO, TypedDict
 from .errors import Shutdown, fmt_where
 from .monitor import Monitor, dump
 from .processor import Processor
-from .session import RUNNING
 from .protocols import Args, Routine, Separate
 from .sched import Exec, Runtime
+from .session import RUNNING
 from .stop_signals import Stopped, status_of
 
 if TYPE_CHECKING:
-    from typing_extensions import Unpack    # in typing from Python 3.11
+    from typing_extensions import Unpack  # in typing from Python 3.11
 
 _current: Runtime | None = None        # the runtime of the running program (one at a time)
 

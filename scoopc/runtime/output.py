@@ -10,11 +10,13 @@ if TYPE_CHECKING:
 
 
 class Output:
+    partial: dict[Processor, str]
+
     def __init__(self, stream: TextIO, trace: bool) -> None:
         self.stream = stream
         self.trace = trace
         self.lock = threading.Lock()
-        self.partial: dict[Processor, str] = {}     # [lock] processor -> unfinished line (trace mode only)
+        self.partial = {}     # [lock] processor -> unfinished line (trace mode only)
         self.broken = False   # [lock] the reader of the stream has gone
 
     def write(self, proc: Processor, text: str) -> None:

@@ -18,11 +18,12 @@ if TYPE_CHECKING:
 
 class OutsideClient:
     """A source of commands from outside the processors; counted open until `close`."""
+    exec: Exec | None
 
     def __init__(self, rt: Runtime, name: str) -> None:
         self.rt = rt
         self.name = name
-        self.exec: Exec | None = None       # not a processor: nothing to wait for in the wait-for graph
+        self.exec = None       # not a processor: nothing to wait for in the wait-for graph
         self.open = True       # [rt.glock]
         with rt.glock:
             rt.sources += 1

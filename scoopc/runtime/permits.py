@@ -39,13 +39,14 @@ def base_permits() -> int:
 
 class Permits:
     """Fields marked [g] are protected by the runtime's glock (`rt.glock`)."""
+    waiting: deque[Exec]
 
     def __init__(self, rt: Runtime) -> None:
         self.rt = rt
         self.base = base_permits()
         self.total = self.base        # [g] permits, including extra ones for stuck holders
         self.held = 0                 # [g]
-        self.waiting: deque[Exec] = deque()        # [g] Execs waiting for a permit, FIFO
+        self.waiting = deque()        # [g] Execs waiting for a permit, FIFO
         self.moves = 0                # [g] permits changed hands (progress, for stuck checks)
         self.want_yield = False       # [g] written; read racily at yield points
 

@@ -30,7 +30,7 @@ Where = tuple[str, str, str, int]
 # A precondition clause `(pred, targets, tag, where)`: `pred()` or `pred(*pre_args)` is its value,
 # `targets` the indexes of the reserved arguments it calls (a wait condition if any is newly
 # reserved), `tag` its label.
-Clause = tuple[Callable[..., object], tuple[int, ...], Optional[str], Optional[Where]]
+Clause = tuple[Callable[..., object], tuple[int, ...], str | None, Where | None]
 
 # A logged call in a private queue: (routine, target, args, Block of the waiting client or None
 # for a command, the processor passing its locks or None).

@@ -30,11 +30,8 @@ from .protocols import OnceTable, Where
 from .session import IDLE
 
 if TYPE_CHECKING:
-    from .clock import Clock
     from .monitor import Monitor
-    from .output import Output
     from .outside import OutsideClient
-    from .permits import Permits
     from .processor import Processor
     from .session import Session
 
@@ -131,6 +128,18 @@ class Worker:
 
 class Runtime:
     """Process-wide runtime state. `glock` protects every field marked [g]."""
+    describe: Callable[[BaseException, Processor], str] | None
+    runnable: deque[Processor]
+    parked: list[Worker]
+    blocked: set[Exec]
+    workers: list[Worker]
+    failures: list[tuple[str, BaseException | None]]
+    procs: weakref.WeakValueDictionary[int, Processor]
+    stderr: TextIO
+    shutdown_hooks: list[Callable[[], object]]
+    process_onces: OnceTable
+    monitor: Monitor | None
+    watchers: list[tuple[Callable[[Block], object], threading.Event]]
     _timer_source: OutsideClient     # the source of timers' commands, made by the first call_later
 
     def __init__(self, *, virtual_clock: bool = False, trace_processors: bool = False,
@@ -140,17 +149,17 @@ class Runtime:
         from .output import Output
         from .permits import Permits
         self.glock = threading.Lock()
-        self.describe: Callable[[BaseException, Processor], str] | None = None  # describe(exception, processor) -> text, set by run_main
+        self.describe = None             # describe(exception, processor) -> text, set by run_main
         self.permits = Permits(self)
-        self.runnable: deque[Processor] = deque()          # [g] processors in state SCHEDULED, FIFO
+        self.runnable = deque()          # [g] processors in state SCHEDULED, FIFO
         self.runnable_since = 0.0        # [g] monotonic time the runnable queue's head was queued
-        self.parked: list[Worker] = []                 # [g] parked Workers
+        self.parked = []                 # [g] parked Workers
         self.n_waking = 0                # [g] workers woken but not yet looking for work
         self.n_running = 0               # [g] threads counted as running processor code
-        self.blocked: set[Exec] = set()             # [g] Execs currently blocked
-        self.workers: list[Worker] = []                # [g] every Worker started and not yet joined
+        self.blocked = set()             # [g] Execs currently blocked
+        self.workers = []                # [g] every Worker started and not yet joined
         self.sources = 0                 # [g] open outside clients
-        self.failures: list[tuple[str, BaseException | None]] = []               # [g] (message, exception) run-time failures
+        self.failures = []               # [g] (message, exception) run-time failures
         self.stopping = False            # [g] set once; read racily as a fast check
         self.attention = False           # [g] stopping or permits.want_yield: one racy read
         #                                  at reservation entry instead of two
@@ -158,17 +167,17 @@ class Runtime:
         self.wait_set = 0                # [g] number of blocked threads of kind 'wait'
         self.idlock = threading.Lock()
         self.ids = itertools.count(1)    # [idlock]
-        self.procs: weakref.WeakValueDictionary[int, Processor] = weakref.WeakValueDictionary()   # [idlock] id -> Processor, for the dump
+        self.procs = weakref.WeakValueDictionary()   # [idlock] id -> Processor, for the dump
         self.strict = strict
         self.trace_processors = trace_processors
         self.deadlock_tick = deadlock_tick
-        self.stderr: TextIO = stderr or sys.stderr
+        self.stderr = stderr or sys.stderr
         self.out = Output(stdout or sys.stdout, trace_processors)
         self.clock = Clock(self, virtual_clock)
-        self.shutdown_hooks: list[Callable[[], object]] = []         # [g]
-        self.process_onces: OnceTable = {}          # [g] once ("PROCESS") values
-        self.monitor: Monitor | None = None
-        self.watchers: list[tuple[Callable[[Block], object], threading.Event]] = []               # [g] (predicate, Event): scheduling hooks for tests
+        self.shutdown_hooks = []         # [g]
+        self.process_onces = {}          # [g] once ("PROCESS") values
+        self.monitor = None
+        self.watchers = []               # [g] (predicate, Event): scheduling hooks for tests
         self._outside = threading.local()  # .exec: the Exec of an outside thread (run_here)
 
     # -- identities ------------------------------------------------------------------

@@ -13,14 +13,14 @@ from __future__ import annotations
 
 import signal
 import threading
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from types import FrameType
-from typing import Callable, Iterator, Optional, Union
 
 STOP_SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP")
 
 # What `signal.signal` takes and gives back: a handler, SIG_DFL/SIG_IGN, or None (not set from Python).
-_Handler = Union[Callable[[int, Optional[FrameType]], object], int, signal.Handlers, None]
+_Handler = Callable[[int, FrameType | None], object] | int | signal.Handlers | None
 
 
 class Stopped(KeyboardInterrupt):

@@ -6,11 +6,11 @@ import math
 import struct
 
 import pytest
-from hypothesis import given
-from hypothesis import strategies as st
+from hypothesis import given, strategies as st
+
+from scoopc.kernel import basic as B, basic_dispatch
 
 from basic_support import Str, ev, fake_strings as _fake_strings
-from scoopc.kernel import basic as B, basic_dispatch
 
 fake_strings = _fake_strings
 NAN, INF = math.nan, math.inf

@@ -7,8 +7,7 @@ import pytest
 from scoopc import kernel
 from scoopc.kernel import strings as K
 from scoopc.kernel.errors import EiffelFailure
-from scoopc.kernel.ext import file as F
-from scoopc.kernel.ext import io_medium as M
+from scoopc.kernel.ext import file as F, io_medium as M
 
 
 class Region:

@@ -4,9 +4,10 @@ from pathlib import Path
 
 import pytest
 
-from harness import assert_markers, case_id, check_golden
 from scoopc import diagnostics, parser, syntax
 from scoopc.source import SourceFile
+
+from harness import assert_markers, case_id, check_golden
 
 HERE = Path(__file__).resolve().parent
 VALID = sorted((HERE / "valid").rglob("*.e"))

@@ -16,7 +16,7 @@ def _text(obj):
 
 def new_message(typename, **fields):
     """A message object of the type store (defaults for the fields not given)."""
-    from scoopc.robots import messages     # rosbags and numpy: loaded by programs that publish only
+    from scoopc.robots import messages  # rosbags and numpy: loaded by programs that publish only
     return messages.new(typename, **fields)
 
 
