@@ -60,7 +60,7 @@ def echo_main():
     (linear.x = x)."""
     from dataclasses import dataclass, field
 
-    from cyclonedds.core import ReadCondition, SampleState, ViewState, InstanceState, WaitSet
+    from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
     from cyclonedds.domain import DomainParticipant
     from cyclonedds.idl import IdlStruct
     from cyclonedds.idl.types import array, float64, int32, uint32

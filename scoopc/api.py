@@ -4,21 +4,22 @@ printing diagnostics (docs/API.md). A usage mistake raises scoopc.UsageError; so
 back as the result's diagnostics with status 1."""
 from __future__ import annotations
 
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import Any, Callable, Optional, Sequence, TextIO, Union
+from typing import Any, TextIO
 
 from .driver import Compilation, RunOptions, run_compilation
 from .exits import Exit, SourceErrors, UsageError
 from .results import CheckResult, CompileResult, RunResult
 from .robots.runner import RobotOptions
 
-PathLike = Union[str, Path]
-Progress = Optional[Callable[[str], None]]
+PathLike = str | Path
+Progress = Callable[[str], None] | None
 
 __all__ = ["CheckResult", "CompileResult", "RunResult", "UsageError", "check", "compile", "run"]
 
 
-def check(paths: Sequence[PathLike], *, target: Optional[str] = None) -> CheckResult:
+def check(paths: Sequence[PathLike], *, target: str | None = None) -> CheckResult:
     """Check a program (its .e files, cluster folders or .ecf project): every syntax, validity and
     SCOOP error, as `scoopc check` reports them."""
     compilation = Compilation(paths, target=target)
@@ -26,8 +27,8 @@ def check(paths: Sequence[PathLike], *, target: Optional[str] = None) -> CheckRe
     return CheckResult(Exit.SOURCE if compilation.checked.has_errors else Exit.OK, found)
 
 
-def compile(paths: Sequence[PathLike], output: PathLike = "build", *, target: Optional[str] = None,  # noqa: A001
-            root: Optional[str] = None, assertions: Optional[str] = None, progress: Progress = None) -> CompileResult:
+def compile(paths: Sequence[PathLike], output: PathLike = "build", *, target: str | None = None,  # noqa: A001
+            root: str | None = None, assertions: str | None = None, progress: Progress = None) -> CompileResult:
     """Check, then write readable Python: `output/<root>` (the program, runnable with `python -m`)
     beside `output/eiffel_base` (the compiled standard library), as `scoopc compile -o` does."""
     compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
@@ -39,13 +40,13 @@ def compile(paths: Sequence[PathLike], output: PathLike = "build", *, target: Op
                          program.folder / "eiffel_base")
 
 
-def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: Optional[str] = None,
-        root: Optional[str] = None, assertions: Optional[str] = None, cache: bool = True, progress: Progress = None,
+def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: str | None = None,
+        root: str | None = None, assertions: str | None = None, cache: bool = True, progress: Progress = None,
         trace_processors: bool = False, strict: bool = False, virtual_clock: bool = False, debug: bool = False,
-        stdout: Optional[TextIO] = None, stderr: Optional[TextIO] = None, robot: Optional[str] = None,
-        world: Any = None, namespace: Optional[str] = None, realtime: bool = False,
-        duration: Optional[float] = None, goal: Optional[tuple] = None, png: Union[PathLike, bool, None] = None,
-        gif: Optional[PathLike] = None, record: Optional[PathLike] = None) -> RunResult:
+        stdout: TextIO | None = None, stderr: TextIO | None = None, robot: str | None = None,
+        world: Any = None, namespace: str | None = None, realtime: bool = False,
+        duration: float | None = None, goal: tuple | None = None, png: PathLike | bool | None = None,
+        gif: PathLike | None = None, record: PathLike | None = None) -> RunResult:
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
     simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in

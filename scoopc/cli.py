@@ -7,7 +7,7 @@ from __future__ import annotations
 import argparse
 import sys
 import traceback
-from typing import Callable, Optional, Sequence
+from collections.abc import Callable, Sequence
 
 from . import diagnostics
 from .exits import Exit, SourceErrors, UsageError
@@ -254,14 +254,14 @@ def _render(found: list, line_text: Callable[[str, int], str], style: str) -> No
         print(f"{errors} error{'s' if errors != 1 else ''}", file=sys.stderr)
 
 
-def _progress() -> Optional[Callable[[str], None]]:
+def _progress() -> Callable[[str], None] | None:
     """Progress lines on stderr for long steps, on a terminal only (stderr stays clean otherwise)."""
     if not sys.stderr.isatty():
         return None
     return lambda message: print(f"scoopc: {message}", file=sys.stderr, flush=True)
 
 
-def main(argv: Optional[Sequence[str]] = None) -> int:
+def main(argv: Sequence[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     program_args: list[str] = []
     if "--" in argv:

@@ -7,8 +7,8 @@ underline and the hint.
 """
 from __future__ import annotations
 
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from typing import Callable, Iterable, Optional
 
 from . import messages
 from .source import Span
@@ -23,13 +23,13 @@ class Note:
     """A secondary message, optionally located ("declared here")."""
 
     message: str
-    span: Optional[Span] = None
+    span: Span | None = None
 
 
 @dataclass(frozen=True)
 class Diagnostic:
     code: str
-    span: Optional[Span]
+    span: Span | None
     message: str
     notes: tuple[Note, ...] = ()
     severity: str = ERROR
@@ -40,19 +40,11 @@ class Diagnostic:
         return self.severity == ERROR
 
 
-class CompilerError(Exception):
-    """Raised by a stage that cannot go on; carries the diagnostics it found."""
-
-    def __init__(self, diagnostics: Iterable[Diagnostic]):
-        self.diagnostics = list(diagnostics)
-        super().__init__("\n".join(short(d) for d in self.diagnostics))
-
-
 class InternalError(Exception):
     """A bug in scoopc, never the user's fault (reported as such, with the Python traceback)."""
 
 
-def make(code: str, span: Optional[Span], notes: Iterable[Note] = (), severity: str = ERROR,
+def make(code: str, span: Span | None, notes: Iterable[Note] = (), severity: str = ERROR,
          **arguments: object) -> Diagnostic:
     """A diagnostic whose message and hint are the templates of `code` filled with `arguments`
     (every argument of the message is required; those of the hint are optional)."""

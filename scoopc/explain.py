@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import re
 import textwrap
-from typing import Optional
 
 from . import messages
 from .explanations import ALIASES, EXPLANATIONS
@@ -20,7 +19,7 @@ def canonical_code(code: str) -> str:
     return f"{match.group(1)}({match.group(2)})" if match else spelled
 
 
-def explain(code: str) -> Optional[str]:
+def explain(code: str) -> str | None:
     """The explanation of a diagnostic code (ours or a Gobo alias), or None when the code is unknown:
     the rule, a wrong example and its fix, then the message and hint templates."""
     canonical = canonical_code(code)

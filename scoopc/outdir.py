@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import json
 import shutil
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Iterable
 
-from .version import __version__
 from .exits import UsageError
+from .version import __version__
 
 MARKER = ".scoopc-output"
 _CACHES = "__pycache__"

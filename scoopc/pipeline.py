@@ -8,18 +8,21 @@ from __future__ import annotations
 import gc
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from typing import Optional
+from typing import TYPE_CHECKING
 
 from . import diagnostics
 from .diagnostics import Diagnostic
 from .project import Project
 from .source import SourceFile, Span
 
+if TYPE_CHECKING:
+    from .semantics import Checked as semantics_checked
+
 
 @dataclass
 class ParsedUnit:
     source: SourceFile
-    tree: Optional[object]          # syntax.ClassDeclaration, None when the file has syntax errors
+    tree: object | None          # syntax.ClassDeclaration, None when the file has syntax errors
 
 
 @dataclass
@@ -37,7 +40,7 @@ class Parsed:
         return source.line_text(line) if source is not None else ""
 
 
-def read_source(path: str) -> tuple[Optional[SourceFile], Optional[Diagnostic]]:
+def read_source(path: str) -> tuple[SourceFile | None, Diagnostic | None]:
     """A file's text, or a SOURCE diagnostic saying why it cannot be read."""
     try:
         return SourceFile.read(path), None
@@ -70,7 +73,7 @@ def parse_project(project: Project) -> Parsed:
 class Checked(Parsed):
     """Parsed plus what the checker proved (None when syntax errors stopped it)."""
 
-    semantics: Optional[object] = None
+    semantics: semantics_checked | None = None
 
 
 def _parse_library_file(path) -> tuple:
@@ -96,8 +99,8 @@ def without_gc_pauses():
             gc.enable()
 
 
-def check_project(project: Project, use_cache: bool = True, library_bodies: Optional[bool] = None,
-                  parsed: Optional[Parsed] = None, progress=None) -> Checked:
+def check_project(project: Project, use_cache: bool = True, library_bodies: bool | None = None,
+                  parsed: Parsed | None = None, progress=None) -> Checked:
     """Everything `scoopc check` verifies: syntax (unless `parsed` is given), then the semantic
     checker over the project's classes and the standard library. Library bodies are checked unless
     they come from the cache. `progress(text)` hears of slow steps."""
@@ -105,7 +108,7 @@ def check_project(project: Project, use_cache: bool = True, library_bodies: Opti
         return _check_project(project, use_cache, library_bodies, parsed or parse_project(project), progress)
 
 
-def _check_project(project: Project, use_cache: bool, library_bodies: Optional[bool], parsed: Parsed,
+def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed,
                    progress) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
     from .semantics import library
@@ -114,7 +117,7 @@ def _check_project(project: Project, use_cache: bool, library_bodies: Optional[b
     library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache, progress)
     trees = [(unit.tree, False) for unit in parsed.units if unit.tree is not None]
     base = prepared[0] if prepared is not None else None
-    for source, tree, found in library_units:
+    for source, _tree, found in library_units:
         if source is not None:
             checked.sources.setdefault(source.path, source)
         checked.diagnostics.extend(found)

@@ -10,7 +10,6 @@ import re
 import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Optional
 
 from . import diagnostics
 from .diagnostics import Diagnostic
@@ -33,15 +32,15 @@ class Root:
 class Settings:
     """What an .ecf (or the command line) asks of the compiler."""
 
-    assertions: Optional[str] = None        # "all" | "require" | "none"; None: the tool's default
-    void_safety: Optional[str] = None       # "none" | "conformance" | "initialization" | "transitional" | "all"
-    concurrency: Optional[str] = None       # "scoop" | "thread" | "none"
+    assertions: str | None = None        # "all" | "require" | "none"; None: the tool's default
+    void_safety: str | None = None       # "none" | "conformance" | "initialization" | "transitional" | "all"
+    concurrency: str | None = None       # "scoop" | "thread" | "none"
 
 
 @dataclass
 class Project:
     files: list[Path] = field(default_factory=list)
-    root: Optional[Root] = None
+    root: Root | None = None
     settings: Settings = field(default_factory=Settings)
     notes: list[Diagnostic] = field(default_factory=list)
     errors: list[Diagnostic] = field(default_factory=list)
@@ -52,7 +51,7 @@ class Project:
             self.files.append(path)
 
 
-def collect(paths: list[str], target: Optional[str] = None) -> Project:
+def collect(paths: list[str], target: str | None = None) -> Project:
     """Gather the source files named by `paths` (files, directories, .ecf files)."""
     project = Project()
     for raw in paths:
@@ -105,7 +104,7 @@ def _ecf_span(path: Path) -> Span:
     return Span(str(path), 1, 1, 1, 2)
 
 
-def _read_ecf(project: Project, path: Path, target_name: Optional[str]) -> None:
+def _read_ecf(project: Project, path: Path, target_name: str | None) -> None:
     try:
         system = ElementTree.parse(path).getroot()
     except ElementTree.ParseError as problem:
@@ -127,7 +126,7 @@ def _read_ecf(project: Project, path: Path, target_name: Optional[str]) -> None:
         _read_target(project, path, element)
 
 
-def _choose_target(project: Project, path: Path, targets: dict, wanted: Optional[str]):
+def _choose_target(project: Project, path: Path, targets: dict, wanted: str | None):
     if wanted is not None:
         if wanted not in targets:
             project.errors.append(diagnostics.make(

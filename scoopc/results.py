@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Optional
+from typing import Any
 
 
 @dataclass
@@ -19,8 +19,8 @@ class CheckResult:
 
 @dataclass
 class CompileResult(CheckResult):
-    package: Optional[Path] = None                  # OUT/<root>, the program's package
-    library: Optional[Path] = None                  # OUT/eiffel_base
+    package: Path | None = None                  # OUT/<root>, the program's package
+    library: Path | None = None                  # OUT/eiffel_base
 
 
 @dataclass
@@ -28,8 +28,8 @@ class RunResult:
     status: int                                     # the program's exit status (exits.Exit, or 128 + signal)
     diagnostics: list = field(default_factory=list)  # what the check reported (a cached run: none)
     sim: Any = None                                 # the Simulator after a simulated run
-    stopped_by: Optional[str] = None                # "duration", "program", a signal's name, or None
-    png: Optional[str] = None                       # pictures and recordings written
-    gif: Optional[str] = None
-    record: Optional[str] = None
+    stopped_by: str | None = None                # "duration", "program", a signal's name, or None
+    png: str | None = None                       # pictures and recordings written
+    gif: str | None = None
+    record: str | None = None
     stopped_topics: list = field(default_factory=list)  # cmd_vel topics that got a zero velocity

@@ -37,12 +37,12 @@ class Span:
     def __str__(self) -> str:
         return f"{self.file}:{self.line}:{self.column}"
 
-    def to(self, other: "Span") -> "Span":
+    def to(self, other: Span) -> Span:
         """The span from the start of self to the end of other."""
         return Span(self.file, self.line, self.column, other.end_line, other.end_column)
 
     @staticmethod
-    def point(file: str, line: int, column: int) -> "Span":
+    def point(file: str, line: int, column: int) -> Span:
         return Span(file, line, column, line, column + 1)
 
 
@@ -64,7 +64,7 @@ class SourceFile:
         object.__setattr__(self, "_line_starts", starts)
 
     @classmethod
-    def read(cls, path: str | Path) -> "SourceFile":
+    def read(cls, path: str | Path) -> SourceFile:
         """Read a file as UTF-8 (a BOM is dropped; undecodable bytes raise UnicodeDecodeError).
         Only a regular file of at most MAX_SOURCE_BYTES is read (OSError otherwise): a FIFO would
         block, and a link to /dev/zero would never end."""

@@ -9,8 +9,9 @@ import sys
 import pytest
 
 import scoopc
-from harness import ROOT
 from scoopc.exits import Exit
+
+from harness import ROOT
 
 SAMPLES = ROOT / "samples"
 PLAIN = sorted(p for p in SAMPLES.iterdir() if p.is_dir() and any(p.glob("*.e")) and not (p / "world.yaml").exists())
@@ -70,7 +71,8 @@ def test_a_robot_sample_runs_on_the_simulator_through_the_api():
 def test_compile_writes_a_runnable_package(tmp_path):
     result = scoopc.compile([SAMPLES / "producer_consumer"], tmp_path / "out")
     assert result.status == Exit.OK and result.errors == []
-    assert result.package == tmp_path / "out" / "producer_consumer" and result.library == tmp_path / "out" / "eiffel_base"
+    assert result.package == tmp_path / "out" / "producer_consumer"
+    assert result.library == tmp_path / "out" / "eiffel_base"
     done = subprocess.run([sys.executable, "-m", "producer_consumer"], cwd=tmp_path / "out", capture_output=True,
                           text=True, timeout=120)
     assert done.returncode == 0 and "consumers took items adding up to" in done.stdout, done.stderr

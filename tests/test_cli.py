@@ -5,9 +5,10 @@ import sys
 
 import pytest
 
-from harness import ROOT
-from scoopc.exits import Exit
 from scoopc import cli
+from scoopc.exits import Exit
+
+from harness import ROOT
 
 SAMPLE = ROOT / "samples" / "producer_consumer"
 

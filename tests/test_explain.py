@@ -2,11 +2,12 @@
 codes are aliases; the explanation table keeps up with the diagnostics and the error cases."""
 import pytest
 
-from harness import TESTS
-from scoopc.exits import Exit
 from scoopc import cli, messages
+from scoopc.exits import Exit
 from scoopc.explain import canonical_code
 from scoopc.explanations import ALIASES, EXPLANATIONS
+
+from harness import TESTS
 
 PLAN_SCOOP_CODES = ["VUTA(3)", "VUAR(2)", "VJAR", "VUAR(3)", "VUAR(4)", "VUER", "V1SE(1)", "V1SE(2)",
                     "V1SE(3)", "VFFD(8)", "PROCESSOR-TAG"]

@@ -94,6 +94,6 @@ def test_a_marker_cannot_name_files_outside_its_folder(project, capsys):
     victim = project / "hello" / "hello.e"
     package = project / "out" / "hello"
     package.mkdir(parents=True)
-    (package / outdir.MARKER).write_text('{"files": ["../../hello/hello.e", "%s"]}' % victim)
+    (package / outdir.MARKER).write_text(f'{{"files": ["../../hello/hello.e", "{victim}"]}}')
     assert compile_(capsys, "hello", "out")[0] == 0
     assert victim.read_text() == HELLO

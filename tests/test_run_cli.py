@@ -6,8 +6,8 @@ import sys
 
 import pytest
 
-from scoopc.exits import Exit
 from scoopc import cli
+from scoopc.exits import Exit
 
 HELLO = """class
 	HELLO

@@ -126,7 +126,7 @@ class Calls:
                 return P.call("B.query", [target, P.const(self.py_name(feature)), P.name("here")])
             return P.call("B.call", [target, P.const(self.py_name(feature)), P.tup(args), P.name("here")])
         if target_node is not None and self.assertions == "all" and target_ty is not None \
-                and target_ty.name in self.program.invariant_classes and not feature.kind in ("attribute", "constant"):
+                and target_ty.name in self.program.invariant_classes and feature.kind not in ("attribute", "constant"):
             return P.call("S.call_checked", [target, P.const(self.py_name(feature, owner)), P.tup(args)])
         return self.plain_call(target, feature, args, owner)
 
@@ -328,10 +328,6 @@ class Calls:
 
 def _constant_desc(node) -> bool:
     return isinstance(node, ast.Name)
-
-
-def basic_class(ty) -> bool:
-    return ty is not None and not ty.is_formal and ty.name in BASIC
 
 
 __all__ = ["Calls", "class_name", "is_external", "declared_name"]

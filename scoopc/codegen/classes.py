@@ -8,7 +8,7 @@ import importlib
 from .. import syntax
 from ..semantics.types import BASIC
 from . import pyast as P
-from .calls import is_external, declared_name
+from .calls import declared_name, is_external
 from .context import ModuleContext
 from .layout import impl_id, lookup
 from .names import class_name

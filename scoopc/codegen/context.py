@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import ast
 from dataclasses import dataclass, field
-from typing import Optional
 
 from . import pyast as P
 from .names import Naming, class_name, module_name
@@ -85,5 +84,5 @@ def fail(message: str, span=None):
     raise CodegenError(message + where)
 
 
-def first(items, default=None) -> Optional[object]:
+def first(items, default=None) -> object | None:
     return next(iter(items), default)

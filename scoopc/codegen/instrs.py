@@ -5,8 +5,8 @@ from __future__ import annotations
 import ast
 
 from .. import syntax
-from . import pyast as P
 from ..semantics.types import BASIC
+from . import pyast as P
 from .context import fail
 
 

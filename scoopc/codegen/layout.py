@@ -10,8 +10,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from .names import class_name
-
 
 @dataclass
 class Layout:
@@ -64,7 +62,3 @@ def lookup(layout: Layout, name: str, layouts: dict):
         if found is not None:
             return found
     return None
-
-
-def python_base_names(layout: Layout) -> list[str]:
-    return [class_name(b) for b in layout.bases]

@@ -37,7 +37,6 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         self.olds: dict = {}
         self.temps = 0
         self.result_type = feature.signature.result if feature is not None and feature.signature else None
-        self.inline_agents: list = []
 
     # --- names ------------------------------------------------------------------------------------
     def py_name(self, feature, owner=None) -> str:

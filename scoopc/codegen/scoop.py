@@ -69,7 +69,7 @@ def version_key(feature) -> str:
     return f"{feature.written_in}.{feature.decl.names[0].name.key}"
 
 
-def analysis(program) -> "Analysis":
+def analysis(program) -> Analysis:
     """The program's SCOOP facts, computed once per program (on first use)."""
     found = getattr(program, "_scoop_analysis", None)
     if found is None:

@@ -3,7 +3,7 @@ standard library (library.py), packages on disk (packages.py), the root (roots.p
 (running.py). The command line (scoopc.cli) and the Python API (scoopc.api) are thin layers over
 it; nothing below it imports it."""
 from ..exits import SourceErrors
-from .compilation import CompiledProgram, Compilation
+from .compilation import Compilation, CompiledProgram
 from .library import Library, LibraryError, compiled_library
 from .packages import BASE_PACKAGE
 from .roots import Root, choose_root

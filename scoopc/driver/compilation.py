@@ -6,14 +6,16 @@ through the `progress` callback.
 """
 from __future__ import annotations
 
+import ast
 import json
 import os
 import re
 import shutil
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
-from typing import Callable, Optional, Sequence, Union
+from typing import Any
 
 from .. import outdir, pipeline
 from ..codegen.context import Options
@@ -22,15 +24,25 @@ from ..codegen.program import generate
 from ..exits import SourceErrors, UsageError
 from ..kernel.link import LIBRARY_LEAVES_FILE
 from ..project import Project, collect
+from ..semantics import Checked as SemanticsChecked
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root
 from .library import Library, compiled_library
-from .packages import (BASE_PACKAGE, ensure_bytecode, is_whole, program_key, writable_cache, write_bytecode,
-                       write_manifest, write_modules)
+from .packages import (
+    BASE_PACKAGE,
+    ensure_bytecode,
+    is_whole,
+    program_key,
+    writable_cache,
+    write_bytecode,
+    write_manifest,
+    write_modules,
+)
 from .roots import Root, choose_root
 
-Progress = Optional[Callable[[str], None]]
-PathLike = Union[str, Path]
+Progress = Callable[[str], None] | None
+PathLike = str | Path
+Modules = dict[str, tuple[ast.Module, str]]     # file name -> (module, its Eiffel source file)
 ASSERTIONS = ("all", "require", "none")
 
 
@@ -41,15 +53,15 @@ class CompiledProgram:
     package: str                # its name
     root: Root
     library: Path               # holds the compiled library's package, eiffel_base
-    shadowed: dict = field(default_factory=dict)   # user classes named like library classes
+    shadowed: dict[str, str] = field(default_factory=dict)   # user classes named like library classes
     roboscoop: bool = False     # does it use the Roboscoop library (then it runs with a robot)?
 
-    def meta(self) -> dict:
+    def meta(self) -> dict[str, Any]:
         return {"package": self.package, "root": self.root.key, "creator": self.root.creator,
                 "base": str(self.library), "shadowed": self.shadowed, "roboscoop": self.roboscoop}
 
     @classmethod
-    def from_meta(cls, folder: Path, meta: dict) -> "CompiledProgram":
+    def from_meta(cls, folder: Path, meta: dict[str, Any]) -> CompiledProgram:
         return cls(folder, meta["package"], Root(meta["root"], meta["creator"]), Path(meta["base"]),
                    meta["shadowed"], meta["roboscoop"])
 
@@ -57,8 +69,8 @@ class CompiledProgram:
 class Compilation:
     """One program (the sources at `paths`) and the options that shape its compilation."""
 
-    def __init__(self, paths: Sequence[PathLike], *, target: Optional[str] = None, root: Optional[str] = None,
-                 assertions: Optional[str] = None, progress: Progress = None):
+    def __init__(self, paths: Sequence[PathLike], *, target: str | None = None, root: str | None = None,
+                 assertions: str | None = None, progress: Progress = None):
         if not paths:
             raise UsageError("no PATH given: name a .e file, a directory or an .ecf project file")
         if assertions is not None and assertions not in ASSERTIONS:
@@ -66,9 +78,9 @@ class Compilation:
         self.paths = [str(p) for p in paths]
         self.target, self.root_option, self.assertions_option = target, root, assertions
         self.progress = progress
-        self._modules: dict[str, tuple[dict, list]] = {}
+        self._modules: dict[str, tuple[Modules, list[str]]] = {}
         self.rebuild_library = False
-        self._program: Optional[CompiledProgram] = None
+        self._program: CompiledProgram | None = None
 
     # ---- the front end ------------------------------------------------------------------------
     @cached_property
@@ -94,9 +106,16 @@ class Compilation:
             raise SourceErrors(self.checked.diagnostics)
         return self.checked
 
+    @property
+    def semantics(self) -> SemanticsChecked:
+        """What the checker proved of a program without errors (SourceErrors otherwise)."""
+        found = self.require_clean().semantics
+        assert found is not None            # no syntax errors: the checker ran
+        return found
+
     @cached_property
     def root(self) -> Root:
-        return choose_root(self.project, self.require_clean(), self.root_option, self.paths)
+        return choose_root(self.project, self.semantics.universe, self.root_option, self.paths)
 
     @property
     def assertions(self) -> str:
@@ -107,12 +126,12 @@ class Compilation:
     def library(self) -> Library:
         return compiled_library(self.progress, rebuild=self.rebuild_library)
 
-    def modules(self, package: str = "program") -> tuple[dict, list]:
+    def modules(self, package: str = "program") -> tuple[Modules, list[str]]:
         """The program's modules ({file name: (ast.Module, Eiffel file)}) as package `package`
         (they import each other by the package's name), and the library routines that are leaves
         in the program's closed world."""
         if package not in self._modules:
-            sem = self.require_clean().semantics
+            sem = self.semantics
             leaves: list[str] = []
             options = Options(assertions=self.assertions, package=package)
             modules = generate(sem.universe, sem.tables, options, lambda info: not info.from_library, leaves,
@@ -123,7 +142,7 @@ class Compilation:
     def write_package(self, out: Path, package: str) -> CompiledProgram:
         """Write the program's package as `out/package` (a folder that must not exist yet, or
         that outdir.clear emptied), marked as written by scoopc."""
-        sem = self.require_clean().semantics
+        sem = self.semantics
         modules, leaves = self.modules(package)
         folder = out / package
         write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).",
@@ -195,7 +214,7 @@ class Compilation:
         return CompiledProgram.from_meta(folder, compiled.meta())
 
 
-def _read_cached(folder: Path) -> Optional[CompiledProgram]:
+def _read_cached(folder: Path) -> CompiledProgram | None:
     try:
         meta = json.loads((folder / "program.json").read_text())
         found = CompiledProgram.from_meta(folder, meta)
@@ -205,7 +224,7 @@ def _read_cached(folder: Path) -> Optional[CompiledProgram]:
     return found if whole else None
 
 
-def _main_text(package: str, root: Root, shadowed: dict) -> str:
+def _main_text(package: str, root: Root, shadowed: dict[str, str]) -> str:
     return (f'"""Run the program: python -m {package} [ARGS]."""\n'
             f"import sys\n\n"
             f"from scoopc.kernel import launcher\n\n"

@@ -6,9 +6,10 @@ from __future__ import annotations
 import json
 import shutil
 import tempfile
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable, Optional
+from typing import Any
 
 from ..codegen.context import Options
 from ..codegen.program import generate
@@ -16,10 +17,17 @@ from ..codegen.scoop import FACTS_FILE, FACTS_FORMAT, write_library_facts
 from ..pipeline import check_project
 from ..project import Project
 from ..semantics.library import cache_dir
-from .packages import (BASE_PACKAGE, compiler_digest, is_whole, remove_cached, writable_cache, write_manifest,
-                       write_modules)
+from .packages import (
+    BASE_PACKAGE,
+    compiler_digest,
+    is_whole,
+    remove_cached,
+    writable_cache,
+    write_manifest,
+    write_modules,
+)
 
-Progress = Optional[Callable[[str], None]]
+Progress = Callable[[str], None] | None
 
 
 class LibraryError(Exception):
@@ -29,7 +37,7 @@ class LibraryError(Exception):
 @dataclass(frozen=True)
 class Library:
     path: Path          # the folder holding the package eiffel_base
-    facts: dict         # {routine version key: [leaf verdict, callees]} (codegen.scoop.library_facts)
+    facts: dict[str, Any]   # {routine version key: [leaf verdict, callees]} (codegen.scoop.library_facts)
 
 
 def compiled_library(progress: Progress = None, rebuild: bool = False) -> Library:
@@ -50,6 +58,7 @@ def _build(target: Path, progress: Progress) -> None:
     if checked.has_errors:
         raise LibraryError("the standard library does not check: " + str(checked.diagnostics[0]))
     sem = checked.semantics
+    assert sem is not None                     # no errors: the checker ran
     options = Options(package=BASE_PACKAGE)
     modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library)
     staging = Path(tempfile.mkdtemp(prefix="base-", dir=writable_cache()))
@@ -62,13 +71,12 @@ def _build(target: Path, progress: Progress) -> None:
         shutil.rmtree(staging, ignore_errors=True)
 
 
-def _read_facts(path: Path) -> dict:
+def _read_facts(path: Path) -> dict[str, Any]:
     """The facts file's contents; {} when it is missing or of another format (library routines
     then count as non-leaves, which is always safe)."""
     try:
         data = json.loads(path.read_text())
     except (OSError, ValueError):
         return {}
-    if not isinstance(data, dict) or data.get("format") != FACTS_FORMAT:
-        return {}
-    return data.get("facts", {})
+    facts = data.get("facts") if isinstance(data, dict) and data.get("format") == FACTS_FORMAT else None
+    return facts if isinstance(facts, dict) else {}

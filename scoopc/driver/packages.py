@@ -14,8 +14,8 @@ import json
 import shutil
 import sys
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Iterator, Optional
 
 from ..exits import UsageError
 from ..semantics.library import cache_dir
@@ -97,7 +97,8 @@ def program_key(sources: list[Path], extra: str) -> str:
     return digest.hexdigest()[:24]
 
 
-def write_modules(folder: Path, modules: dict, init_doc: str, uses: tuple[str, ...] = ()) -> None:
+def write_modules(folder: Path, modules: dict[str, tuple[ast.Module, str]], init_doc: str,
+                  uses: tuple[str, ...] = ()) -> None:
     """Write the modules of one package (readable Python text) and its __init__, which loads
     them parents first (scoopc.kernel.link)."""
     folder.mkdir(parents=True, exist_ok=True)
@@ -105,7 +106,7 @@ def write_modules(folder: Path, modules: dict, init_doc: str, uses: tuple[str, .
     (folder / "__init__.py").write_text(
         f'"""{init_doc}"""\nfrom scoopc.kernel import link\n\n'
         f"CLASSES_BY_NAME = link.load(__name__, {order!r}, uses={uses!r})\n")
-    lines = {}
+    lines: dict[str, list[object]] = {}
     for filename, (module, source) in modules.items():
         text = ast.unparse(module) + "\n"
         (folder / filename).write_text(text)
@@ -113,9 +114,9 @@ def write_modules(folder: Path, modules: dict, init_doc: str, uses: tuple[str, .
     (folder / "_lines.json").write_text(json.dumps(lines, separators=(",", ":")))
 
 
-def line_map(module: ast.Module, text: str) -> dict:
+def line_map(module: ast.Module, text: str) -> dict[str, int]:
     """Python line -> Eiffel line: the written text parses back to the same tree shape."""
-    found: dict = {}
+    found: dict[str, int] = {}
     for original, written in zip(_statements(module), _statements(ast.parse(text))):
         line = getattr(original, "lineno", None)
         if line is not None:
@@ -153,7 +154,7 @@ def ensure_bytecode(base: Path) -> None:
         done.touch()
 
 
-def ensure_on_path(*folders: Optional[Path]) -> None:
+def ensure_on_path(*folders: Path | None) -> None:
     """Put each folder first on sys.path (once), so that its packages import."""
     for folder in folders:
         if folder is not None:

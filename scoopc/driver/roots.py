@@ -4,11 +4,13 @@ directory given, else the one class with a `make` that no other given class ment
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Optional, Sequence
 
 from ..exits import UsageError
+from ..project import Project
+from ..semantics.universe import ClassInfo, Universe
 
 
 @dataclass(frozen=True)
@@ -17,7 +19,7 @@ class Root:
     creator: str        # the creation procedure, lower case
 
 
-def parse_root_option(text: Optional[str]) -> Optional[tuple[str, str]]:
+def parse_root_option(text: str | None) -> tuple[str, str] | None:
     """`CLASS[.creation]` -> (CLASS, creation); None for no option."""
     if not text:
         return None
@@ -25,9 +27,9 @@ def parse_root_option(text: Optional[str]) -> Optional[tuple[str, str]]:
     return name.upper(), (creator or "make").lower()
 
 
-def choose_root(project, checked, option: Optional[str], paths: Sequence[str]) -> Root:
-    """The root of a checked program, or a UsageError that says why there is none."""
-    user = {i.name: i for i in checked.semantics.universe.classes.values() if not i.from_library}
+def choose_root(project: Project, universe: Universe, option: str | None, paths: Sequence[str]) -> Root:
+    """The root of a checked program (its universe), or a UsageError that says why there is none."""
+    user = {i.name: i for i in universe.classes.values() if not i.from_library}
     wanted = parse_root_option(option)
     if wanted is None and project.root is not None:
         wanted = (project.root.class_name.upper(), project.root.creation.lower())
@@ -52,17 +54,17 @@ def choose_root(project, checked, option: Optional[str], paths: Sequence[str]) -
     return Root(name, creator)
 
 
-def _only_candidate(user: dict) -> str:
+def _only_candidate(user: dict[str, ClassInfo]) -> str:
     candidates = [n for n, i in user.items() if "make" in i.features and (i.creators is None or "make" in i.creators)]
     used = {ty.name for i in user.values() for _, ty, _ in i.parents}
     unused = [n for n in candidates if n not in used and not _mentioned_elsewhere(n, user)]
     if len(unused) == 1:
-        return unused[0]
+        return str(unused[0])
     listed = ", ".join(sorted(candidates)) or "none"
     raise UsageError(f"cannot tell which class is the root: use --root CLASS (candidates: {listed})")
 
 
-def _mentioned_elsewhere(name: str, user: dict) -> bool:
+def _mentioned_elsewhere(name: str, user: dict[str, ClassInfo]) -> bool:
     pattern = re.compile(r"\b" + name + r"\b", re.IGNORECASE)
     for other in user.values():
         if other.name != name and pattern.search(Path(other.decl.span.file).read_text(errors="replace")):

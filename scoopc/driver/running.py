@@ -6,13 +6,16 @@ from __future__ import annotations
 import importlib
 import os
 import sys
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Optional, Sequence, TextIO
+from typing import TextIO
 
 from ..codegen.names import class_name, module_name
 from ..kernel import launcher, link
 from ..results import RunResult
+from ..robots import runner
 from ..robots.runner import RobotOptions
+from ..runtime.sched import Runtime
 from ..runtime.stop_signals import stop_on_signals
 from .compilation import Compilation, CompiledProgram
 from .packages import BASE_PACKAGE, DamagedCache, ensure_on_path, remove_cached
@@ -25,8 +28,8 @@ class RunOptions:
     strict: bool = False                # an exception lost in an asynchronous call fails the run
     virtual_clock: bool = False         # sleeps and timers on a clock that jumps when all wait
     debug: bool = False                 # Python tracebacks too
-    stdout: Optional[TextIO] = None     # where the program's output goes (default: sys.stdout)
-    stderr: Optional[TextIO] = None     # where failures and scoopc's reports go (default: sys.stderr)
+    stdout: TextIO | None = None     # where the program's output goes (default: sys.stdout)
+    stderr: TextIO | None = None     # where failures and scoopc's reports go (default: sys.stderr)
 
 
 def run_compilation(compilation: Compilation, args: Sequence[str], options: RunOptions, robot: RobotOptions,
@@ -62,7 +65,8 @@ def run_program(program: CompiledProgram, args: Sequence[str], options: RunOptio
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
 
-    def launch(on_start=None, virtual_clock: Optional[bool] = options.virtual_clock) -> int:
+    def launch(on_start: Callable[[Runtime], None] | None = None,
+               virtual_clock: bool | None = options.virtual_clock) -> int:
         return launcher.main(root_cls, program.root.creator, argv, shadowed=program.shadowed,
                              trace_processors=options.trace_processors, strict=options.strict,
                              virtual_clock=options.virtual_clock if virtual_clock is None else virtual_clock,
@@ -74,8 +78,6 @@ def run_program(program: CompiledProgram, args: Sequence[str], options: RunOptio
         if kind == "none":
             result = RunResult(launch())
         else:
-            from ..robots import runner  # deferred: the simulator and DDS load only for robot runs
-
             chosen = RobotOptions(**{**vars(robot), "robot": kind})
             result = runner.run(chosen, launch, list(program_paths), program.root.key, stderr=options.stderr)
     _quiet_if_reader_gone()
@@ -93,7 +95,8 @@ def _load(program: CompiledProgram) -> type:
     importlib.invalidate_caches()
     try:
         module = importlib.import_module(f"{package}.{module_name(program.root.key)}")
-        return getattr(module, class_name(program.root.key))
+        root_class: type = getattr(module, class_name(program.root.key))
+        return root_class
     except Exception as error:                   # generated modules only define: a failure is damage
         for name in [m for m in sys.modules if m.split(".")[0] in (package, BASE_PACKAGE)]:
             del sys.modules[name]

@@ -5,17 +5,21 @@ built-in by its seed name; an object of a generated class is asked by `getattr`.
 Also Eiffel `=` (`same`) and `~` (`equal`).
 
 The features of a basic value are the inline templates of scoopc/kernel/basic_inline.py
-compiled to functions `(region, current, *arguments)`, plus ANY's features for values.
+compiled to functions `(region, current, *arguments)`, plus ANY's features for values. The
+templates' `B` is scoopc.kernel.basic_ops, the helpers (the templates of basic classes name
+no dispatch function); scoopc.kernel.basic, which generated code imports, re-exports both.
 """
 import ast
 
-from . import basic as B
+from . import basic_ops as B
 from .basic_inline import specs
 from .boxes import KINDS as BOXES
 
 _KINDS = {bool: "BOOLEAN", int: "INTEGER_32", float: "REAL_64", str: "CHARACTER_8"}
 _KINDS.update(BOXES)                      # values boxed on reattachment (scoopc/kernel/boxes.py)
 _TABLES = {}        # basic class name -> {seed name: function (region, current, *arguments)}
+
+GENERATING_TYPE = None      # hook set by the code generator's support: fn(region, TypeDesc) -> TYPE
 
 
 def call(target, name, arguments=(), region=None):
@@ -57,6 +61,15 @@ def _feature(kind, name):
         return table[name]
     except KeyError:
         raise AttributeError(f"a {kind} value has no feature `{name}'") from None
+
+
+def generating_type(region, value):
+    """ANY.generating_type of a basic value, through the hook `GENERATING_TYPE`."""
+    if GENERATING_TYPE is None:
+        raise NotImplementedError("generating_type of a basic value: "
+                                  "scoopc.kernel.basic_dispatch.GENERATING_TYPE is unset")
+    from .types import of
+    return GENERATING_TYPE(region, of(value))
 
 
 # --- Equality ------------------------------------------------------------------------------
@@ -148,7 +161,7 @@ def _make_table(kind):
         "tagged_out": out,
         "debug_output": out,
         "generator": lambda r, x: B.s8(r, kind),
-        "generating_type": lambda r, x: B.generating_type(r, x),
+        "generating_type": generating_type,
         "twin": lambda r, x: x, "standard_twin": lambda r, x: x, "deep_twin": lambda r, x: x,
         "copy": lambda r, x, other: None, "standard_copy": lambda r, x, other: None,
         "deep_copy": lambda r, x, other: None,

@@ -6,8 +6,7 @@ it can, these handle what only the run time knows (the dynamic class of a target
 """
 from __future__ import annotations
 
-from . import CLASSES, register as _register
-from . import types as T
+from . import CLASSES, register as _register, types as T
 from .boxes import BY_KIND as _BOX_KINDS, box
 from .errors import EiffelFailure
 

@@ -105,7 +105,7 @@ class TypeDesc:
             return True           # generics not known at run time
         return all(mine.conforms_to(theirs) for mine, theirs in zip(actual, self.generics))
 
-    def conforms_to(self, other: "TypeDesc") -> bool:
+    def conforms_to(self, other: TypeDesc) -> bool:
         if other.key == "ANY" or self is other:
             return True
         if self.key in _INTEGER_KINDS or other.key in _INTEGER_KINDS or self.is_basic or other.is_basic:

@@ -11,7 +11,6 @@ import re
 import threading
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Optional
 
 from lark import Lark
 from lark.exceptions import UnexpectedInput
@@ -25,13 +24,13 @@ from .builders import AstBuilder
 GRAMMAR_PATH = Path(__file__).parents[1] / "grammar.lark"   # where users and docs look for it
 
 _lock = threading.Lock()
-_instance: Optional[tuple[Lark, AstBuilder]] = None
-_pure: Optional[Lark] = None
+_instance: tuple[Lark, AstBuilder] | None = None
+_pure: Lark | None = None
 
 
 @dataclass
 class ParseResult:
-    tree: Optional[syntax.ClassDeclaration]
+    tree: syntax.ClassDeclaration | None
     diagnostics: list[Diagnostic] = field(default_factory=list)
 
 
@@ -85,7 +84,7 @@ def parse(source: SourceFile) -> ParseResult:
         return ParseResult(None, _sorted(problems + [error] + _recover(source, error)))
 
 
-def _parse_once(source: SourceFile) -> tuple[list, list[Diagnostic], Optional[Diagnostic]]:
+def _parse_once(source: SourceFile) -> tuple[list, list[Diagnostic], Diagnostic | None]:
     """(classes, problems, the syntax error or None) of one run of the parser over `source`."""
     lark_parser, builder = _parser()
     builder.reset(source.path)
@@ -127,7 +126,7 @@ def _recover(source: SourceFile, error: Diagnostic) -> list[Diagnostic]:
     return found
 
 
-def _last_match_before(pattern: re.Pattern, text: str, end: int) -> Optional[int]:
+def _last_match_before(pattern: re.Pattern, text: str, end: int) -> int | None:
     start = None
     for match in pattern.finditer(text, 0, end):
         start = match.start()

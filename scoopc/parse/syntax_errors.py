@@ -9,7 +9,8 @@ Diagnosis tries repairs on copies of the parser: if inserting `end` lets the par
 from __future__ import annotations
 
 import copy
-from typing import Any, Iterator, Optional
+from collections.abc import Iterator
+from typing import Any
 
 from lark import Token
 from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedToken
@@ -17,8 +18,7 @@ from lark.exceptions import UnexpectedCharacters, UnexpectedInput, UnexpectedTok
 from .. import diagnostics, syntax
 from ..diagnostics import Diagnostic
 from ..source import SourceFile, Span
-from .syntax_terms import (EXPRESSION_STARTS, INSTRUCTION_KEYWORDS, KEYWORDS, OPENERS,
-                           OPERATORS, describe_token, display)
+from .syntax_terms import EXPRESSION_STARTS, INSTRUCTION_KEYWORDS, KEYWORDS, OPENERS, OPERATORS, describe_token, display
 
 # After a keyword used as a name, one of these usually follows (or a `.` precedes it).
 _NAME_FOLLOWERS = {"COLON", "COMMA", "ASSIGNMENT", "DOT", "RPAR", "SEMICOLON", "LPAR"}
@@ -124,7 +124,7 @@ _OBSOLETE = {
 }
 
 
-def _obsolete(token: Token, expected: set, stack: list) -> Optional[dict]:
+def _obsolete(token: Token, expected: set, stack: list) -> dict | None:
     """Arguments of a SYNTAX-OBSOLETE diagnostic when `token` starts or shows an obsolete form."""
     entry = _OBSOLETE.get((token.type, str(token.value).lower()))
     previous = stack[-1] if stack else None
@@ -140,7 +140,7 @@ def _obsolete(token: Token, expected: set, stack: list) -> Optional[dict]:
     return {"what": entry[0], "instead": entry[1]}
 
 
-def _replay(lark_parser: Any, text: str, stop: Token) -> tuple[Any, Optional[Token]]:
+def _replay(lark_parser: Any, text: str, stop: Token) -> tuple[Any, Token | None]:
     """A parser fed with every token before `stop` (so with no reduction that `stop` caused:
     LALR may reduce on a token it then rejects), and the token after `stop`."""
     parser = lark_parser.parse_interactive(text)
@@ -153,7 +153,7 @@ def _replay(lark_parser: Any, text: str, stop: Token) -> tuple[Any, Optional[Tok
     return parser, None
 
 
-def _next(tokens: Iterator[Token]) -> Optional[Token]:
+def _next(tokens: Iterator[Token]) -> Token | None:
     try:
         return next(tokens, None)
     except UnexpectedInput:
@@ -187,7 +187,7 @@ def _borrow(type_: str, value: str, token: Token) -> Token:
                  token.column, token.start_pos)
 
 
-def _is_reserved_name(parser: Any, token: Token, expected: set, following: Optional[Token]) -> bool:
+def _is_reserved_name(parser: Any, token: Token, expected: set, following: Token | None) -> bool:
     if token.type not in KEYWORDS or token.type in expected or "IDENTIFIER" not in expected:
         return False
     stack = parser.parser_state.value_stack
@@ -197,7 +197,7 @@ def _is_reserved_name(parser: Any, token: Token, expected: set, following: Optio
     return _feeds(parser, [_borrow("IDENTIFIER", token.value, token), following])
 
 
-def _missing_end(parser: Any, token: Token, expected: set) -> Optional[tuple[str, str]]:
+def _missing_end(parser: Any, token: Token, expected: set) -> tuple[str, str] | None:
     """(construct, where) of the innermost construct whose `end` is missing, if adding `end`s
     lets the parser accept `token`."""
     if "END" not in expected:
@@ -212,7 +212,7 @@ def _missing_end(parser: Any, token: Token, expected: set) -> Optional[tuple[str
     return None
 
 
-def _innermost_opener(stack: list) -> Optional[tuple[str, str]]:
+def _innermost_opener(stack: list) -> tuple[str, str] | None:
     """The innermost opener on the parser's stack that lacks its `end`. An `end` less indented
     than the opener it was matched with belonged to an outer construct (Eiffel code aligns
     `end` with its opener), so that opener, or a construct nested in it that took its `end`,
@@ -239,7 +239,7 @@ _CONSTRUCTS = {syntax.Conditional: "if", syntax.MultiBranch: "inspect", syntax.L
                syntax.SeparateInstruction: "separate"}
 
 
-def _misaligned_within(values: list) -> Optional[tuple[str, str]]:
+def _misaligned_within(values: list) -> tuple[str, str] | None:
     """The deepest construct, along the last instructions of `values`, whose `end` is less
     indented than its opening keyword (it took the `end` of the construct around it)."""
     found = None
@@ -273,7 +273,7 @@ def _inner_compound(node: Any) -> Any:
     return getattr(node, "body", None) if type(node) in _CONSTRUCTS else None
 
 
-def _opener(value: Any) -> Optional[tuple[str, int, int]]:
+def _opener(value: Any) -> tuple[str, int, int] | None:
     """(keyword, line, column) if `value` on the parser's stack opens a construct."""
     if isinstance(getattr(value, "type", None), str):
         token = value

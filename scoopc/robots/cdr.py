@@ -62,7 +62,7 @@ _plans: dict = {}                 # (id(store), typename, order) -> _Plan
 _plans_lock = threading.RLock()     # a plan makes the plans of its sequences' element types
 
 
-def _plan(typename: str, store, order: str) -> "_Plan":
+def _plan(typename: str, store, order: str) -> _Plan:
     store = ros_messages._store(store)
     key = (id(store), typename, order)
     plan = _plans.get(key)
@@ -85,7 +85,7 @@ class _Plan:
         self.encode = _EncoderSource(self).compile()
         self.decode = _DecoderSource(self).compile()
 
-    def nested(self, typename: str) -> "_Plan":
+    def nested(self, typename: str) -> _Plan:
         return _plan(typename, self.store, self.order)
 
 

@@ -36,8 +36,7 @@ import time
 from cyclonedds._clayer import ddspy_take, ddspy_write
 from cyclonedds.core import GuardCondition, InstanceState, ReadCondition, SampleState, ViewState, WaitSet
 from cyclonedds.domain import DomainParticipant
-from cyclonedds.idl import make_idl_struct
-from cyclonedds.idl import types as idl
+from cyclonedds.idl import make_idl_struct, types as idl
 from cyclonedds.pub import DataWriter
 from cyclonedds.qos import Policy, Qos
 from cyclonedds.sub import DataReader

@@ -11,7 +11,7 @@ A field description is rosbags' `(Nodetype, detail)` pair: `(BASE, (name, bound)
 from __future__ import annotations
 
 from functools import lru_cache
-from typing import Any, Optional
+from typing import Any
 
 import numpy as np
 from rosbags.typesys import Stores, get_types_from_msg, get_typestore
@@ -117,7 +117,7 @@ def new(typename: str, store=None, **values: Any) -> Any:
     return message_class(typename, store)(**arguments)
 
 
-def nested_types(typename: str, store=None, found: Optional[list[str]] = None) -> list[str]:
+def nested_types(typename: str, store=None, found: list[str] | None = None) -> list[str]:
     """`typename` and every message type its fields use, recursively (each once, `typename` first)."""
     found = [] if found is None else found
     if typename in found:

@@ -20,11 +20,10 @@ import threading
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any, Optional, Union
+from typing import Any
 
 from ..exits import UsageError
 from ..results import RunResult
-
 from ..runtime.stop_signals import STOP_SIGNALS, shielded, status_of
 from . import transport
 
@@ -49,16 +48,16 @@ class RobotError(UsageError):
 @dataclass
 class RobotOptions:
     """How a Roboscoop program runs (the robot options of `scoopc run`, docs/ROBOTS.md)."""
-    robot: Optional[str] = None         # "sim", "ros2" or "none"; None: "sim" for Roboscoop programs
+    robot: str | None = None         # "sim", "ros2" or "none"; None: "sim" for Roboscoop programs
     world: Any = None                   # a world file's path, a dict or a World; None: world.yaml beside
     #                                     the program, else the built-in arena
-    namespace: Optional[str] = None     # which robot of the world, or a ROS 2 robot's topic prefix
+    namespace: str | None = None     # which robot of the world, or a ROS 2 robot's topic prefix
     realtime: bool = False              # pace the simulator to the wall clock
-    duration: Optional[float] = None    # seconds to run (default: the world's duration; ROS 2: none)
-    goal: Optional[tuple] = None        # (x, y) told to the program (default: the world's)
-    png: Union[str, Path, bool, None] = None    # the trajectory picture; True: <program>.png
-    gif: Union[str, Path, None] = None
-    record: Union[str, Path, None] = None       # an MCAP recording of every topic
+    duration: float | None = None    # seconds to run (default: the world's duration; ROS 2: none)
+    goal: tuple | None = None        # (x, y) told to the program (default: the world's)
+    png: str | Path | bool | None = None    # the trajectory picture; True: <program>.png
+    gif: str | Path | None = None
+    record: str | Path | None = None       # an MCAP recording of every topic
 
     def __post_init__(self):
         if self.robot not in (None, "sim", "ros2", "none"):
@@ -77,13 +76,13 @@ class RobotSettings:
     duration: float = -1.0
 
 
-ROS2_LIMITS = (0.2, 1.0)
+ROS2_LIMITS = (0.2, 1.0)                # speed limits reported for a ROS 2 robot (m/s, rad/s)
 SERVICE = "robot"                       # the RobotSettings' key in the runtime's services
 
 
 def settings_of(rt) -> RobotSettings:
     """The robot settings of the run on runtime `rt` (a run without a robot: the defaults)."""
-    return rt.services.get(SERVICE) or RobotSettings()                # speed limits reported for a ROS 2 robot (m/s, rad/s)
+    return rt.services.get(SERVICE) or RobotSettings()
 
 
 class SafetyBus:

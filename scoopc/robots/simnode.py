@@ -29,9 +29,9 @@ import time
 
 from ..exits import Exit
 from .backends import describe, open_ros2_bus
+from .bus import Tap
 
 MAX_LAG = 0.25            # wall-clock seconds the node may fall behind before it drops the debt
-from .bus import Tap
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:

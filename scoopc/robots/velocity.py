@@ -6,7 +6,7 @@ from functools import cache
 
 def new_message(typename, **fields):
     """A message object of the type store (defaults for the fields not given)."""
-    from scoopc.robots import ros_messages     # rosbags and numpy: loaded by programs that publish only
+    from scoopc.robots import ros_messages  # rosbags and numpy: loaded by programs that publish only
     return ros_messages.new(typename, **fields)
 
 
@@ -15,7 +15,8 @@ def _classes():
     """The dataclasses of the messages built on every command (built directly: no defaults to
     compute, a fifteenth of the time of `ros_messages.new`)."""
     from scoopc.robots import ros_messages
-    return (ros_messages.message_class("geometry_msgs/msg/Vector3"), ros_messages.message_class("geometry_msgs/msg/Twist"))
+    return (ros_messages.message_class("geometry_msgs/msg/Vector3"),
+            ros_messages.message_class("geometry_msgs/msg/Twist"))
 
 
 def twist(linear_x, angular_z):

@@ -9,18 +9,36 @@ therefore always sees that step's sensor data.
 Timers fire on the clock thread (owned and joined by the runtime), which logs the timer's
 command on its target processor like an outside client would.
 """
+from __future__ import annotations
+
 import heapq
 import itertools
 import threading
 import time
+from typing import TYPE_CHECKING
 
+from .protocols import Args, Routine, Separate, Where
 from .sched import Block
+
+if TYPE_CHECKING:
+    from .outside import OutsideClient
+    from .processor import Processor
+    from .sched import Runtime
 
 
 class Timer:
     __slots__ = ("deadline", "target", "routine", "args", "period", "cancelled", "source", "phase")
+    deadline: int
+    target: Separate
+    routine: Routine
+    args: Args
+    period: int | None
+    cancelled: bool
+    source: OutsideClient
+    phase: int
 
-    def __init__(self, deadline, target, routine, args, period, source, phase=1):
+    def __init__(self, deadline: int, target: Separate, routine: Routine, args: Args,
+                 period: int | None, source: OutsideClient, phase: int = 1) -> None:
         self.deadline = deadline
         self.phase = phase
         self.target, self.routine, self.args = target, routine, args
@@ -28,7 +46,7 @@ class Timer:
         self.cancelled = False   # [rt.glock]
         self.source = source
 
-    def cancel(self):
+    def cancel(self) -> None:
         rt = self.source.rt
         with rt.glock:
             self.cancelled = True
@@ -37,8 +55,11 @@ class Timer:
 
 class Clock:
     """Fields marked [g] are protected by the runtime's glock."""
+    heap: list[tuple[int, int, int, Timer | Block]]
+    due: list[Timer]
+    thread: threading.Thread | None
 
-    def __init__(self, rt, virtual):
+    def __init__(self, rt: Runtime, virtual: bool) -> None:
         self.rt = rt
         self.virtual = virtual
         self.vnow = 0                 # [g] virtual time, ns
@@ -49,13 +70,13 @@ class Clock:
         self.thread = None            # [g] the clock thread, started with the first timer
         self.stopped = False          # [g]
 
-    def now_ns(self):
+    def now_ns(self) -> int:
         if self.virtual:
             return self.vnow          # a plain read of an int: never torn
         return time.monotonic_ns()
 
     # -- sleeping ----------------------------------------------------------------------
-    def sleep(self, proc, ns, where=None):
+    def sleep(self, proc: Processor, ns: int, where: Where | None = None) -> None:
         lk = threading.Lock()
         lk.acquire()
         rt = self.rt
@@ -64,16 +85,19 @@ class Clock:
             blk = Block("sleep", proc, None, where, lk, deadline)
             if self.virtual:
                 heapq.heappush(self.heap, (deadline, 1, next(self.seq), blk))
-        rt.block(proc.exec, blk)
+        rt.block(proc.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
 
-    def real_wait(self, blk):
+    def real_wait(self, blk: Block) -> None:
+        """Wait on the real clock for a sleeper's deadline (or its wake-up)."""
+        deadline = blk.deadline
+        assert deadline is not None, "a sleeper's Block has a deadline"
         while True:
-            left = blk.deadline - time.monotonic_ns()
+            left = deadline - time.monotonic_ns()
             if left <= 0 or blk.lock.acquire(timeout=left / 1e9):
                 return
 
     # -- timers ------------------------------------------------------------------------
-    def add_timer(self, timer):
+    def add_timer(self, timer: Timer) -> Timer:
         rt = self.rt
         start = None
         with rt.glock:
@@ -87,12 +111,12 @@ class Clock:
             start.start()
         return timer
 
-    def pending_locked(self):
+    def pending_locked(self) -> bool:
         """[g] Is a timer still to fire (keeps the program alive)?"""
         return bool(self.due) or any(isinstance(e[-1], Timer) and not e[-1].cancelled
                                      for e in self.heap)
 
-    def advance_locked(self):
+    def advance_locked(self) -> None:
         """[g] Virtual clock, every processor thread waiting: jump to the next deadline and
         serve its first phase."""
         while self.heap and getattr(self.heap[0][-1], "cancelled", False):
@@ -112,7 +136,7 @@ class Clock:
             self.rt.n_running += 1     # the clock thread runs until it has logged them
             self.cv.notify_all()
 
-    def _run(self):
+    def _run(self) -> None:
         rt = self.rt
         with rt.glock:
             while not self.stopped:
@@ -134,9 +158,10 @@ class Clock:
                     continue
                 self._collect_real()
 
-    def _collect_real(self):
+    def _collect_real(self) -> None:
         """[g] Real clock: wait for the earliest timer and move the due ones to `due`."""
-        while self.heap and self.heap[0][-1].cancelled:
+        # On the real clock only timers are in the heap (sleepers wait on their own lock).
+        while self.heap and self.heap[0][-1].cancelled:  # type: ignore[union-attr]  # timers only
             heapq.heappop(self.heap)
         if not self.heap:
             self.cv.wait()
@@ -146,9 +171,9 @@ class Clock:
             self.cv.wait(left / 1e9)
             return
         t = heapq.heappop(self.heap)[-1]
-        self.due.append(t)
+        self.due.append(t)  # type: ignore[arg-type]  # timers only, as above
 
-    def _fire(self, t):
+    def _fire(self, t: Timer) -> None:
         try:
             t.source.call(t.target, t.routine, t.args)
         except Exception as e:             # e.g. a timer on a passive region: collected
@@ -161,12 +186,12 @@ class Clock:
                     t.deadline += t.period
                     heapq.heappush(self.heap, (t.deadline, t.phase, next(self.seq), t))
 
-    def stop(self):
+    def stop(self) -> None:
         with self.rt.glock:
             self.stopped = True
             self.cv.notify_all()
 
-    def join(self, timeout):
+    def join(self, timeout: float) -> None:
         t = self.thread
         if t is not None:
             t.join(timeout)

@@ -1,4 +1,5 @@
 """Exceptions the SCOOP runtime raises into generated code, and the run-time failure record."""
+from __future__ import annotations
 
 
 class ScoopError(Exception):
@@ -8,7 +9,7 @@ class ScoopError(Exception):
 class PreconditionViolation(ScoopError):
     """A precondition clause is false and is not a wait condition (no newly reserved target)."""
 
-    def __init__(self, tag, where):
+    def __init__(self, tag: str | None, where: object) -> None:
         super().__init__(f"precondition {tag or '(untagged)'} violated at {fmt_where(where)}")
         self.tag, self.where = tag, where
 
@@ -31,7 +32,7 @@ class DeadlockError(ScoopError):
     """Ends the root routine when a deadlock was detected; the report is in `args[0]`."""
 
 
-def fmt_where(where):
+def fmt_where(where: object) -> str:
     """`(class, routine, file, line)` -> 'CLASS.routine (file:line)'; tolerant of None/str."""
     if where is None:
         return "?"

@@ -16,11 +16,20 @@ costs about as much as the work it guards, so these entry points skip them:
 Every guarantee is kept by falling back to the general path whenever the fast one does
 not apply; the fast paths only skip checks whose answer codegen promised.
 """
+from __future__ import annotations
+
 import threading
+from collections.abc import Sequence
+from types import TracebackType
+from typing import TYPE_CHECKING
 
 from .errors import PASS_THROUGH, PreconditionViolation
+from .protocols import Args, Clause, Routine, Separate, Where
 from .sched import Block
 from .session import IDLE, RUNNING, SCHEDULED, Session, close_locked, enqueue
+
+if TYPE_CHECKING:
+    from .processor import Processor
 
 
 class _Nothing:
@@ -28,10 +37,11 @@ class _Nothing:
     __slots__ = ()
     taken = None
 
-    def __enter__(self):
+    def __enter__(self) -> _Nothing:
         return self
 
-    def __exit__(self, et=None, ev=None, tb=None):
+    def __exit__(self, et: type[BaseException] | None = None, ev: BaseException | None = None,
+                 tb: TracebackType | None = None) -> None:
         return None
 
     enter = __enter__
@@ -42,10 +52,14 @@ NOTHING = _Nothing()
 
 
 class FastPaths:
-    """Mixin of `Processor` (fields documented there)."""
+    """Mixin of `Processor` (fields documented there). Its methods take `self: Processor`, which
+    mypy refuses for a subclass (error code misc, ignored on each `def`): a Protocol would not
+    do, since they pass `self` on as the client of a Session or the waiter of a Block."""
     __slots__ = ()
+    spare: Session | None            # Processor's slot
 
-    def reserve1(self, x, where=None, pre=None, pre_args=()):
+    def reserve1(self: Processor, x: Separate | None, where: Where | None = None,  # type: ignore[misc]
+                 pre: Sequence[Clause] | None = None, pre_args: Args = ()) -> Session | _Nothing:
         """`with here.reserve1(x, where):` reserves the one separate argument `x` (Void
         or already held: nothing). With `pre` (a tuple of clauses `(pred, targets, tag,
         where)`, `pred(*pre_args) -> bool`, `targets` `(0,)` if the clause calls `x`,
@@ -58,7 +72,7 @@ class FastPaths:
             return s
         return self._guarded1(s, pre, pre_args)
 
-    def _session1(self, p, where):
+    def _session1(self: Processor, p: Processor, where: Where | None) -> Session:  # type: ignore[misc]
         """A private queue for `p`: the client's spare one if any (see `Session.__exit__`)."""
         s = self.spare
         if s is None:
@@ -69,7 +83,7 @@ class FastPaths:
         s.closed = s.changed = s.heavy = False
         return s
 
-    def _guarded1(self, s, pre, pre_args):
+    def _guarded1(self: Processor, s: Session, pre: Sequence[Clause], pre_args: Args) -> Session:  # type: ignore[misc]
         """Reserve through `s`, evaluate the clauses; wait or raise on a false one."""
         p = s.proc
         while True:
@@ -89,7 +103,7 @@ class FastPaths:
             self._wait1(s, p, clause)
             s = self._session1(p, s.where)    # a private queue for the next try
 
-    def _wait1(self, s, p, clause):
+    def _wait1(self: Processor, s: Session, p: Processor, clause: Clause) -> None:  # type: ignore[misc]
         """Register the wake-up and release `s` under one hold of `p.lock` (no change can
         slip in between), sleep until another client's session with a command ends."""
         lk = threading.Lock()                # the one-shot wake-up, already held
@@ -110,14 +124,15 @@ class FastPaths:
         else:
             close_locked(p, s)               # releases p.lock
         try:
-            self.rt.block(self.exec, blk)
+            self.rt.block(self.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
         finally:
             if blk.value is not p:           # our waker did not unlist us already
                 with p.lock:
                     if blk in p.waiters:
                         p.waiters.remove(blk)
 
-    def command1(self, x, routine, args=(), where=None):
+    def command1(self: Processor, x: Separate, routine: Routine, args: Args = (),  # type: ignore[misc]
+                 where: Where | None = None) -> None:
         """`with here.reserve1(x, where): here.call(x, routine, args)` in one step: a
         routine (or separate block) with one separate argument `x`, no precondition, whose
         body is the single command `x.routine (args)`, none of whose arguments can pass
@@ -177,7 +192,8 @@ class FastPaths:
             return
         close_locked(p, s)
 
-    def _busy1(self, p, s, x, routine, args):
+    def _busy1(self: Processor, p: Processor, s: Session, x: Separate, routine: Routine,  # type: ignore[misc]
+               args: Args) -> None:
         """[p.lock held; released] `command1` on a busy supplier: the general path with the
         private queue `s`, enqueued behind the others (never blocks)."""
         s.changed = False
@@ -189,7 +205,8 @@ class FastPaths:
         finally:
             s.__exit__()
 
-    def _log1(self, p, x, routine, args, where):
+    def _log1(self: Processor, p: Processor, x: Separate, routine: Routine, args: Args,  # type: ignore[misc]
+              where: Where | None) -> None:
         """Log a non-leaf command in a new closed private queue (one lock round)."""
         s = Session(self, p, where)
         s.calls.append((routine, x, args, None, None))
@@ -208,7 +225,7 @@ class FastPaths:
             p.qoq.append(s)
         lock.release()
 
-    def leaf_call(self, target, routine, args=()):
+    def leaf_call(self: Processor, target: Separate, routine: Routine, args: Args = ()) -> None:  # type: ignore[misc]
         """`call` of a `@leaf` command whose arguments cannot pass locks (codegen-checked:
         all expanded, or none). On a claimed supplier: a plain call; a failure dirties."""
         p = target._region_
@@ -218,7 +235,8 @@ class FastPaths:
             return
         self.call(target, routine, args)
 
-    def leaf_query(self, target, routine, args=(), where=None):
+    def leaf_query(self: Processor, target: Separate, routine: Routine, args: Args = (),  # type: ignore[misc]
+                   where: Where | None = None) -> object:
         """`query` of a `@leaf` routine whose arguments cannot pass locks (as `leaf_call`)."""
         s = self.held.get(target._region_)
         if s.__class__ is Session and s.claimed and s.dirty is None \

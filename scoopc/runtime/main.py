@@ -1,27 +1,46 @@
 """The program entry point for generated code: run the root creation procedure as the root
 processor on the main thread, wait for termination, and shut down (Ctrl-C, deadlock,
 failure) with every thread joined and every failure reported."""
+from __future__ import annotations
+
 import signal
 import threading
 import traceback
+from collections.abc import Callable
+from typing import TYPE_CHECKING, TextIO, TypedDict
 
 from ..exits import Exit
 from .errors import Shutdown, fmt_where
 from .monitor import Monitor, dump
-from .processor import RUNNING, Processor
+from .processor import Processor
+from .protocols import Args, Routine, Separate
 from .sched import Exec, Runtime
+from .session import RUNNING
 from .stop_signals import Stopped, status_of
 
-_current = None        # the runtime of the running program (one at a time)
+if TYPE_CHECKING:
+    from typing_extensions import Unpack  # in typing from Python 3.11
+
+_current: Runtime | None = None        # the runtime of the running program (one at a time)
 
 
-def current():
+class Options(TypedDict, total=False):
+    """The keyword options of `start` and `run_main`: those of `Runtime`."""
+    virtual_clock: bool
+    trace_processors: bool
+    strict: bool
+    stdout: TextIO | None
+    stderr: TextIO | None
+    deadlock_tick: float
+
+
+def current() -> Runtime:
     if _current is None:
         raise RuntimeError("no SCOOP runtime is running (use rt.run_main or rt.start)")
     return _current
 
 
-def start(**options):
+def start(**options: Unpack[Options]) -> tuple[Runtime, Processor]:
     """Create the runtime and the root processor, run by the calling thread. For tests and
     embedding; `run_main` is start + root creation + finish."""
     global _current
@@ -39,11 +58,12 @@ def start(**options):
     return rt, root
 
 
-def finish(rt, root, interrupted=None):
+def finish(rt: Runtime, root: Processor, interrupted: KeyboardInterrupt | None = None) -> int:
     """The root routine returned (or was interrupted: `interrupted` is the KeyboardInterrupt):
     wait for quiescence, shut down, return the exit status."""
     global _current
     ex = root.exec
+    assert ex is not None, "the root processor runs on the main thread"
     root.unclaim()
     rt.leave_running(ex)
     try:
@@ -55,6 +75,7 @@ def finish(rt, root, interrupted=None):
     if isinstance(interrupted, Stopped):
         rt.stderr.write(f"scoopc: stopped by {interrupted.signal_name}\n")
     rt.stop()
+    assert rt.monitor is not None, "set by `start`"
     rt.monitor.stop()
     _run_hooks(rt)
     alive = rt.join_workers()
@@ -71,7 +92,9 @@ def finish(rt, root, interrupted=None):
     return status
 
 
-def run_main(root_cls, creator, args=(), describe=None, on_start=None, **options):
+def run_main(root_cls: type[Separate], creator: Routine | None, args: Args = (),
+             describe: Callable[[BaseException, Processor], str] | None = None,
+             on_start: Callable[[Runtime], object] | None = None, **options: Unpack[Options]) -> int:
     """Run a program: `creator(root_object, *args)` on the root processor. Exit status.
     `describe(exception, processor)`: the text reporting an uncaught exception (default: the
     exception and the processor's innermost frame). `on_start(rt)`: called on the root's thread
@@ -79,7 +102,7 @@ def run_main(root_cls, creator, args=(), describe=None, on_start=None, **options
     rt, root = start(**options)
     rt.describe = describe
     restore = _install_dump_signal(rt)
-    interrupted = None
+    interrupted: KeyboardInterrupt | None = None
     try:
         if on_start is not None:
             on_start(rt)
@@ -99,13 +122,13 @@ def run_main(root_cls, creator, args=(), describe=None, on_start=None, **options
         restore()
 
 
-def _uncaught(e, proc):
+def _uncaught(e: BaseException, proc: Processor) -> str:
     where = f" in {fmt_where(proc.frames[-1])}" if proc.frames else ""
     text = "".join(traceback.format_exception_only(type(e), e)).strip()
     return f"uncaught exception on {proc!r}{where}: {text}"
 
 
-def _run_hooks(rt):
+def _run_hooks(rt: Runtime) -> None:
     with rt.glock:
         hooks = list(reversed(rt.shutdown_hooks))
     for fn in hooks:
@@ -115,7 +138,7 @@ def _run_hooks(rt):
             rt.stderr.write(f"scoopc: shutdown hook {fn!r} failed: {e!r}\n")
 
 
-def _install_dump_signal(rt):
+def _install_dump_signal(rt: Runtime) -> Callable[[], object]:
     if threading.current_thread() is not threading.main_thread() or \
             not hasattr(signal, "SIGUSR1"):
         return lambda: None

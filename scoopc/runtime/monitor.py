@@ -7,17 +7,27 @@ no timer, no open outside client" is a wait-condition deadlock. The monitor thre
 once a tick, and only reports a candidate seen again, unchanged (same Block objects: a
 thread that moved got a new one), on the next tick: no false report from a racy snapshot.
 """
+from __future__ import annotations
+
 import threading
+from typing import TYPE_CHECKING
 
 from .errors import fmt_where
+from .protocols import Where
+from .session import Session
+
+if TYPE_CHECKING:
+    from .processor import Processor
+    from .sched import Block, Exec, Runtime
 
 
-def _target(blk):
+def _target(blk: Block) -> Exec | None:
     """The Exec that must move for `blk`'s thread to move, or None (it can move by itself,
     or waits for time, a condition or an outside client)."""
     if blk.kind not in ("sync", "turn"):
         return None
     s = blk.on
+    assert isinstance(s, Session), "a sync or turn Block is on a Session"
     p = s.proc
     with p.lock:
         if p.state == 2:                       # RUNNING: whoever runs it
@@ -26,10 +36,10 @@ def _target(blk):
         if h is s or h is None or h.calls:
             return None
         client = h.client
-    return getattr(client, "exec", None)
+    return client.exec
 
 
-def _top_frame(proc):
+def _top_frame(proc: Processor) -> Where | None:
     """The innermost frame pushed by generated code; read racily (a report, not logic)."""
     try:
         return proc.frames[-1]
@@ -37,21 +47,25 @@ def _top_frame(proc):
         return None
 
 
-def _describe(blk):
+def _describe(blk: Block) -> str:
     where = fmt_where(blk.where if blk.where is not None else _top_frame(blk.proc))
+    on = blk.on
     if blk.kind == "sync":
+        assert isinstance(on, Session)
         what = getattr(blk.what, "__qualname__", blk.what)
-        return f"{blk.proc!r} in {where} waits for the result of {what} on {blk.on.proc!r}"
+        return f"{blk.proc!r} in {where} waits for the result of {what} on {on.proc!r}"
     if blk.kind == "turn":
-        return f"{blk.proc!r} in {where} waits for its turn on passive {blk.on.proc!r}"
+        assert isinstance(on, Session)
+        return f"{blk.proc!r} in {where} waits for its turn on passive {on.proc!r}"
     if blk.kind == "wait":
-        on = ", ".join(repr(p) for p in blk.on)
+        assert isinstance(on, tuple)
+        regions = ", ".join(repr(p) for p in on)
         tag = f" {blk.what}" if blk.what else ""
-        return f"{blk.proc!r} in {where} waits on wait condition{tag} over {on}"
+        return f"{blk.proc!r} in {where} waits on wait condition{tag} over {regions}"
     return f"{blk.proc!r} in {where} sleeps"
 
 
-def snapshot(rt):
+def snapshot(rt: Runtime) -> tuple[dict[Exec, Block], bool]:
     """(blocks, all_waiting, quiet_otherwise) read under glock."""
     with rt.glock:
         blocks = {ex: ex.blocked for ex in rt.blocked if ex.blocked is not None}
@@ -61,14 +75,15 @@ def snapshot(rt):
     return blocks, all_blocked and no_wakers
 
 
-def find_deadlock(rt):
+def find_deadlock(rt: Runtime) -> tuple[frozenset[Block], list[str]] | None:
     """A candidate deadlock as (frozenset of Blocks, report lines), or None."""
     blocks, stuck = snapshot(rt)
     if not blocks:
         return None
     edges = {ex: _target(blk) for ex, blk in blocks.items()}
     for start in edges:
-        path, ex = [], start
+        path: list[Exec] = []
+        ex: Exec | None = start
         while ex in edges and ex not in path:
             path.append(ex)
             ex = edges[ex]
@@ -86,7 +101,7 @@ def find_deadlock(rt):
     return None
 
 
-def dump(rt):
+def dump(rt: Runtime) -> str:
     """A text dump of every live processor and every blocked thread."""
     from .processor import STATE_NAMES
     with rt.idlock:
@@ -110,20 +125,20 @@ def dump(rt):
 class Monitor:
     """The deadlock watchdog thread, owned by run_main (started, stopped and joined)."""
 
-    def __init__(self, rt):
+    def __init__(self, rt: Runtime) -> None:
         self.rt = rt
         self.stopped = threading.Event()
         self.thread = threading.Thread(target=self._run, name="scoop-monitor", daemon=True)
-        self.previous = None
+        self.previous: frozenset[Block] | None = None
 
-    def start(self):
+    def start(self) -> None:
         self.thread.start()
 
-    def stop(self):
+    def stop(self) -> None:
         self.stopped.set()
         self.thread.join()
 
-    def _run(self):
+    def _run(self) -> None:
         rt = self.rt
         try:
             while not self.stopped.wait(rt.deadlock_tick):
@@ -131,7 +146,7 @@ class Monitor:
         except BaseException as e:          # collected by the owner
             rt.fail(f"internal error in the deadlock monitor: {e!r}", e)
 
-    def check(self):
+    def check(self) -> None:
         found = find_deadlock(self.rt)
         if found is None:
             self.previous = None

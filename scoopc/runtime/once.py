@@ -2,18 +2,27 @@
 
 Values are keyed by region, never by thread: a call run on another thread on a region's
 behalf (client executes, callbacks) sees that region's values."""
+from __future__ import annotations
+
 import threading
+from collections.abc import Callable
+from typing import TYPE_CHECKING
+
+from .protocols import Args, OnceKey, OnceTable, Separate
+
+if TYPE_CHECKING:
+    from .sched import Runtime
 
 
 class _Failed:
     """A once routine whose first call raised: later calls raise the same exception."""
     __slots__ = ("exc",)
 
-    def __init__(self, exc):
+    def __init__(self, exc: BaseException) -> None:
         self.exc = exc
 
 
-def once_in(table, key, fn, args):
+def once_in(table: OnceTable, key: OnceKey, fn: Callable[..., object], args: Args) -> object:
     """Run `fn(*args)` the first time `key` is seen in `table`; the caller owns `table`."""
     try:
         v = table[key]
@@ -33,7 +42,7 @@ def once_in(table, key, fn, args):
 _process_lock = threading.RLock()     # serialises first calls of process-wide onces
 
 
-def once_process(rt, key, fn, args=()):
+def once_process(rt: Runtime, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
     table = rt.process_onces
     v = table.get(key, table)          # fast path: a plain dict read once computed
     if v is not table and v.__class__ is not _Failed:
@@ -42,7 +51,7 @@ def once_process(rt, key, fn, args=()):
         return once_in(table, key, fn, args)
 
 
-def once_object(obj, key, fn, args=()):
+def once_object(obj: Separate, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
     """Per-object once; `obj`'s routines run only on its region, which owns the table."""
-    table = obj.__dict__.setdefault("_onces_", {})
+    table: OnceTable = obj.__dict__.setdefault("_onces_", {})
     return once_in(table, key, fn, args)

@@ -1,17 +1,25 @@
 """Untorn program output: one print call writes its text whole; with processor tracing,
 every output line carries the tag of the processor that wrote it."""
+from __future__ import annotations
+
 import threading
+from typing import TYPE_CHECKING, TextIO
+
+if TYPE_CHECKING:
+    from .processor import Processor
 
 
 class Output:
-    def __init__(self, stream, trace):
+    partial: dict[Processor, str]
+
+    def __init__(self, stream: TextIO, trace: bool) -> None:
         self.stream = stream
         self.trace = trace
         self.lock = threading.Lock()
         self.partial = {}     # [lock] processor -> unfinished line (trace mode only)
         self.broken = False   # [lock] the reader of the stream has gone
 
-    def write(self, proc, text):
+    def write(self, proc: Processor, text: str) -> None:
         if not self.trace:
             with self.lock:
                 self._emit(text)
@@ -26,7 +34,7 @@ class Output:
             if tail:
                 self.partial[proc] = tail
 
-    def _emit(self, text):
+    def _emit(self, text: str) -> None:
         """[lock] Write to the stream; once its reader has gone (a pipe into `head`), output is
         dropped instead of failing the program's routines."""
         if self.broken:
@@ -36,7 +44,7 @@ class Output:
         except BrokenPipeError:
             self.broken = True
 
-    def write_other(self, stream, text):
+    def write_other(self, stream: TextIO, text: str) -> None:
         """Write `text` whole on another stream (stderr) under the same lock, and flush it."""
         with self.lock:
             stream.write(text)
@@ -45,7 +53,7 @@ class Output:
             except (OSError, ValueError):
                 pass
 
-    def flush_streams(self, *others):
+    def flush_streams(self, *others: TextIO) -> None:
         """Flush the output stream and `others` now (unfinished traced lines stay held)."""
         with self.lock:
             for stream in (self.stream,) + others:
@@ -54,7 +62,7 @@ class Output:
                 except (OSError, ValueError):
                     pass
 
-    def flush(self):
+    def flush(self) -> None:
         """At exit: write unfinished lines, then flush the stream."""
         with self.lock:
             for proc, tail in sorted(self.partial.items(), key=lambda kv: kv[0].id):

@@ -16,26 +16,32 @@ computation or a blocking external call never stops the other processors for mor
 about two slices. Correctness never depends on permits: every shared structure has its
 own lock; permits only decide who runs.
 """
+from __future__ import annotations
+
 import os
 import sys
-import threading
 from collections import deque
+from typing import TYPE_CHECKING
 
 from .errors import Shutdown
+
+if TYPE_CHECKING:
+    from .sched import Exec, Runtime
 
 SLICE = 0.005      # seconds
 
 
-def base_permits():
+def base_permits() -> int:
     """One permit with the GIL; one per CPU on a free-threaded interpreter."""
-    gil = getattr(sys, "_is_gil_enabled", lambda: True)()
+    gil: bool = getattr(sys, "_is_gil_enabled", lambda: True)()
     return 1 if gil else (os.cpu_count() or 1)
 
 
 class Permits:
     """Fields marked [g] are protected by the runtime's glock (`rt.glock`)."""
+    waiting: deque[Exec]
 
-    def __init__(self, rt):
+    def __init__(self, rt: Runtime) -> None:
         self.rt = rt
         self.base = base_permits()
         self.total = self.base        # [g] permits, including extra ones for stuck holders
@@ -44,14 +50,14 @@ class Permits:
         self.moves = 0                # [g] permits changed hands (progress, for stuck checks)
         self.want_yield = False       # [g] written; read racily at yield points
 
-    def acquire(self, ex):
+    def acquire(self, ex: Exec) -> None:
         """Take a permit for thread `ex` (waiting for one if none is free)."""
         with self.rt.glock:
             queued = self.acquire_locked(ex)
         if queued:
             self._wait(ex)
 
-    def acquire_locked(self, ex):
+    def acquire_locked(self, ex: Exec) -> bool:
         """[g] Take a free permit for `ex` (False), or queue `ex` for one (True: the
         caller must then call `wait_turn` after releasing glock)."""
         if self.held < self.total and not self.waiting or self.rt.stopping:
@@ -62,7 +68,7 @@ class Permits:
         self.waiting.append(ex)
         return True
 
-    def release_locked(self, ex):
+    def release_locked(self, ex: Exec) -> None:
         """[g] Give thread `ex`'s permit to the first waiter, or back."""
         if not ex.permit:
             return
@@ -76,16 +82,16 @@ class Permits:
         if self.total > self.base:
             self.total -= 1                            # an extra permit is given back
 
-    def release(self, ex):
+    def release(self, ex: Exec) -> None:
         with self.rt.glock:
             self.release_locked(ex)
 
-    def _want_yield(self, flag):
+    def _want_yield(self, flag: bool) -> None:
         """[g] Set `want_yield` and the runtime's summary flag read at reservation entry."""
         self.want_yield = flag
         self.rt.attention = flag or self.rt.stopping
 
-    def yield_point(self, ex):
+    def yield_point(self, ex: Exec) -> None:
         """Called at reservation entry when `want_yield` is set: let a waiter run."""
         rt = self.rt
         with rt.glock:
@@ -98,13 +104,13 @@ class Permits:
             self.waiting.append(ex)
         self._wait(ex)
 
-    def wait_turn(self, ex):
+    def wait_turn(self, ex: Exec) -> None:
         self._wait(ex)
 
-    def _wait(self, ex):
+    def _wait(self, ex: Exec) -> None:
         rt = self.rt
         lk = ex.plock
-        seen = None
+        seen: int | None = None
         while not lk.acquire(timeout=SLICE):
             with rt.glock:
                 spawn = rt.overdue_worker_locked()
@@ -126,14 +132,10 @@ class Permits:
         if rt.stopping:
             raise Shutdown()
 
-    def stop_locked(self):
+    def stop_locked(self) -> None:
         """[g] Shutdown: let every waiter run (to meet Shutdown at its next runtime call)."""
         while self.waiting:
             ex = self.waiting.popleft()
             self.total += 1
             self.held += 1
             ex.plock.release()
-
-
-def new_plock():
-    return threading.Lock()

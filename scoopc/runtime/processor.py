@@ -10,16 +10,33 @@ itself on its own thread ("client executes", as SCOOP/Qs): no thread hand-off. I
 that claim (`Session.claimed`) until it releases the reservation, so its later calls on the
 supplier take no lock at all.
 """
+from __future__ import annotations
+
 import threading
 from collections import deque
+from collections.abc import Sequence
+from typing import TYPE_CHECKING, TypeVar
 
 from .errors import PASS_THROUGH, DirtyRegionError, Shutdown, UncontrolledTarget
 from .fast import FastPaths
 from .once import once_in
+from .protocols import Args, Call, Clause, OnceKey, OnceTable, Routine, Separate, Where
 from .sched import Block
 from .session import IDLE, RUNNING, SCHEDULED, Session, close, drop_claim_locked  # noqa: F401
 
-Reservation = None      # set by reservation.py (which imports this module)
+if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from .fast import _Nothing
+    from .outside import OutsideClient
+    from .reservation import Reservation
+    from .sched import Exec, Runtime
+else:
+    Reservation = None  # set by reservation.py (which imports this module)
+
+S = TypeVar("S", bound=Separate)
+# The sessions a server or a client running calls on a supplier's behalf takes at once.
+Batches = list[tuple[Session, list[Call]]]
 BATCH_SESSIONS = 64     # sessions a server takes under one lock hold
 HELP_LIMIT = 256        # leaf calls a releasing client serves for others before handing off
 STATE_NAMES = ("idle", "scheduled", "running")
@@ -33,8 +50,22 @@ class Processor(FastPaths):
     are the API for generated code."""
     __slots__ = ("id", "rt", "lock", "head", "qoq", "state", "passive", "exec", "held",
                  "waiters", "onces", "frames", "name", "spare", "__weakref__")
+    id: int
+    rt: Runtime
+    lock: threading.Lock
+    head: Session | None
+    qoq: deque[Session]
+    state: int
+    passive: bool
+    exec: Exec | None
+    held: dict[Processor, Session | Processor]
+    waiters: list[Block]
+    onces: OnceTable
+    frames: list[Where]
+    name: str | None
+    spare: Session | None
 
-    def __init__(self, rt, passive=False, name=None):
+    def __init__(self, rt: Runtime, passive: bool = False, name: str | None = None) -> None:
         self.rt = rt
         self.id = rt.register(self)
         self.lock = threading.Lock()
@@ -51,29 +82,32 @@ class Processor(FastPaths):
         self.spare = None         # [executor] a finished Session of ours no one refers to,
         #                           reused by the next `reserve1` (saves an allocation)
 
-    def __repr__(self):
+    def __repr__(self) -> str:
         return f"P{self.id}" + (f"({self.name})" if self.name else "")
 
     # -- object creation ---------------------------------------------------------------
-    def new(self, cls):
+    def new(self, cls: type[S]) -> S:
         """A new object of `cls` in this region (its creation procedure is not called)."""
         obj = cls.__new__(cls)
         obj._region_ = self
         return obj
 
-    def new_separate(self, cls, creator, args=(), gen=None):
+    def new_separate(self, cls: type[S], creator: Routine | None, args: Args = (),
+                     gen: object = None) -> S:
         """Separate creation: a new processor; `creator` is logged on it as a command.
         `gen`: the actual generics of a generic class (set as `_gen_` before `creator` runs)."""
         return self._create(Processor(self.rt, False, cls.__name__), cls, creator, args, gen)
 
-    def new_passive(self, cls, creator, args=(), gen=None):
+    def new_passive(self, cls: type[S], creator: Routine | None, args: Args = (),
+                    gen: object = None) -> S:
         """`create <NONE>`: a passive region whose calls its clients run under reservation."""
         return self._create(Processor(self.rt, True, cls.__name__), cls, creator, args, gen)
 
-    def _create(self, proc, cls, creator, args, gen=None):
+    def _create(self, proc: Processor, cls: type[S], creator: Routine | None, args: Args,
+                gen: object = None) -> S:
         obj = proc.new(cls)
         if gen is not None:
-            obj._gen_ = gen
+            obj._gen_ = gen  # type: ignore[attr-defined]  # only generic classes have `_gen_`
         s = Session(self, proc)
         proc.head = s             # the new processor is ours alone: no lock needed yet
         self.held[proc] = s
@@ -86,7 +120,7 @@ class Processor(FastPaths):
         return obj
 
     # -- calls -------------------------------------------------------------------------
-    def call(self, target, routine, args=()):
+    def call(self, target: Separate, routine: Routine, args: Args = ()) -> None:
         """A separate command: asynchronous unless it passes locks or the region is passive."""
         p = target._region_
         s = self.held.get(p)
@@ -136,7 +170,8 @@ class Processor(FastPaths):
         else:
             raise UncontrolledTarget(f"{self} calls {routine.__qualname__} on {p}, not reserved")
 
-    def query(self, target, routine, args=(), where=None):
+    def query(self, target: Separate, routine: Routine, args: Args = (),
+              where: Where | None = None) -> object:
         """A separate query: synchronous (wait by necessity)."""
         p = target._region_
         s = self.held.get(p)
@@ -151,7 +186,7 @@ class Processor(FastPaths):
             return self._borrowed(p, routine, target, args)
         raise UncontrolledTarget(f"{self} queries {routine.__qualname__} on {p}, not reserved")
 
-    def _passes(self, args):
+    def _passes(self, args: Args) -> bool:
         """Lock passing: an argument is a reference into a region we hold (or a TUPLE)."""
         held = self.held
         for a in args:
@@ -162,7 +197,8 @@ class Processor(FastPaths):
                 return True
         return False
 
-    def _sync(self, s, p, routine, target, args, where, is_cmd):
+    def _sync(self, s: Session, p: Processor, routine: Routine, target: Separate, args: Args,
+              where: Where | None, is_cmd: bool) -> object:
         """A synchronous call: run it ourselves if `p` is free for us, else wait for it."""
         if self.rt.stopping:
             raise Shutdown()
@@ -193,13 +229,13 @@ class Processor(FastPaths):
                 if passer is not None or not getattr(routine, "_scoop_leaf_", False):
                     s.heavy = True
             lock.release()
-            self.rt.block(self.exec, blk)
+            self.rt.block(self.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
             if not p.passive:
                 if blk.error is not None:
                     raise blk.error
                 return blk.value
 
-    def _claim_locked(self, p, s):
+    def _claim_locked(self, p: Processor, s: Session) -> bool:
         """[p.lock held, then released; p free, `s` its head with nothing pending] Claim `p`
         for a call we run ourselves. Our own session keeps the claim until we release it; a
         supplier running on our behalf by lock passing claims per call, so `p.exec` never
@@ -214,7 +250,8 @@ class Processor(FastPaths):
         p.lock.release()
         return False
 
-    def _leaf_now(self, p, s, routine, target, args):
+    def _leaf_now(self, p: Processor, s: Session, routine: Routine, target: Separate,
+                  args: Args) -> None:
         """[p.lock held, p free, our session at its head with nothing pending] Run a leaf
         command ourselves. A leaf never blocks, so no frame is pushed for the monitor."""
         if self._claim_locked(p, s):
@@ -225,7 +262,8 @@ class Processor(FastPaths):
         finally:
             p.release_claim()
 
-    def _leaf_claimed(self, p, s, routine, target, args):
+    def _leaf_claimed(self, p: Processor, s: Session, routine: Routine, target: Separate,
+                      args: Args) -> None:
         """[`p` claimed for `s`] A leaf command: its failure only makes `s` dirty."""
         s.changed = True
         try:
@@ -238,7 +276,8 @@ class Processor(FastPaths):
             s.dirty = e
             lock.release()
 
-    def _query_now(self, p, s, routine, target, args, is_cmd):
+    def _query_now(self, p: Processor, s: Session, routine: Routine, target: Separate, args: Args,
+                   is_cmd: bool) -> object:
         """[p.lock held, p free, our session at its head with nothing pending] Run a
         synchronous call ourselves on `p`'s behalf (client executes)."""
         if is_cmd:
@@ -250,7 +289,8 @@ class Processor(FastPaths):
         finally:
             p.release_claim()
 
-    def _inline(self, p, s, batches, routine, target, args, passer, is_cmd):
+    def _inline(self, p: Processor, s: Session, batches: Batches, routine: Routine,
+                target: Separate, args: Args, passer: Processor | None, is_cmd: bool) -> object:
         """[p.lock held, p claimed by `_take`] Run the calls queued ahead of ours, then this
         one, on our own thread on `p`'s behalf; a leaf command's failure only dirties `s`."""
         p.exec = self.exec
@@ -282,7 +322,7 @@ class Processor(FastPaths):
         finally:
             p.unclaim()
 
-    def _borrowed(self, p, routine, target, args):
+    def _borrowed(self, p: Processor, routine: Routine, target: Separate, args: Args) -> object:
         """A callback into a region whose locks were passed to us: its own thread is blocked
         waiting for us, so we run the call on its behalf, on our thread."""
         saved = p.exec
@@ -292,7 +332,8 @@ class Processor(FastPaths):
         finally:
             p.exec = saved
 
-    def _invoke_passing(self, passer, routine, target, args):
+    def _invoke_passing(self, passer: Processor, routine: Routine, target: Separate,
+                        args: Args) -> object:
         """Run a call while holding every lock of `passer` (lock passing)."""
         saved = self.held
         held = dict(saved)
@@ -305,7 +346,7 @@ class Processor(FastPaths):
             self.held = saved
 
     # -- serving -----------------------------------------------------------------------
-    def release_claim(self):
+    def release_claim(self) -> None:
         """A per-call claim ends (the session stays at the head, nothing queued)."""
         lock = self.lock
         lock.acquire()
@@ -313,7 +354,7 @@ class Processor(FastPaths):
         self.state = IDLE
         lock.release()
 
-    def unclaim(self):
+    def unclaim(self) -> None:
         """The thread running on our behalf stops; hand remaining work to the pool."""
         lock = self.lock
         lock.acquire()
@@ -327,7 +368,7 @@ class Processor(FastPaths):
         self.state = IDLE
         lock.release()
 
-    def run_scheduled(self, ex):
+    def run_scheduled(self, ex: Exec) -> None:
         """Worker entry: serve the queue of queues until it has nothing runnable."""
         lock = self.lock
         lock.acquire()
@@ -338,7 +379,7 @@ class Processor(FastPaths):
         self.exec = ex
         self._serve_locked()         # the same lock hold: one round fewer per hand-off
 
-    def _serve_locked(self):
+    def _serve_locked(self) -> None:
         """[lock held] Serve the queue of queues. Under one lock hold it takes the head's
         calls and, while sessions are closed, the calls of those behind it (in order: each
         closed session is finished before the next starts), so a shared supplier with many
@@ -371,7 +412,7 @@ class Processor(FastPaths):
             for _ in range(len(batches) - 1):       # all but the last are closed
                 self._advance_locked()
 
-    def _run_calls(self, s, batch):
+    def _run_calls(self, s: Session, batch: list[Call]) -> None:
         rt = self.rt
         for routine, target, args, blk, passer in batch:
             if s.dirty is not None:
@@ -403,7 +444,7 @@ class Processor(FastPaths):
                 blk.value = r
                 rt.unblock(blk)
 
-    def settle_locked(self, helper):
+    def settle_locked(self, helper: Processor | OutsideClient | None) -> None:
         """[lock held, state IDLE; releases it] After a session ended: run the leaf calls
         queued next on the helper's thread (a releasing client), up to HELP_LIMIT, so a
         busy shared supplier does not need a thread hand-off per client; hand anything
@@ -434,7 +475,7 @@ class Processor(FastPaths):
             self.state = IDLE
             self.exec = None
 
-    def _run_backlog(self, batches):
+    def _run_backlog(self, batches: Batches) -> None:
         """Run taken batches in order (ours last), finishing each session ahead of ours."""
         for h, batch in batches:
             if batch:
@@ -444,9 +485,9 @@ class Processor(FastPaths):
                 for _ in range(len(batches) - 1):
                     self._advance_locked()
 
-    def _advance_locked(self):
+    def _advance_locked(self) -> Session | None:
         """[lock] The head session is finished: report, wake waiters, move to the next."""
-        s = self.head
+        s: Session = self.head  # type: ignore[assignment]  # called only with a head
         if s.dirty is not None and not s.delivered:
             self.rt.report_lost(self, s)
         if s.changed and self.waiters:
@@ -458,7 +499,7 @@ class Processor(FastPaths):
             nxt.turn = None
         return nxt
 
-    def wake_waiters_locked(self, s):
+    def wake_waiters_locked(self, s: Session) -> None:
         """[lock] Session `s`, in which a command ran, ends: wake the other clients
         waiting on a wait condition over us (targeted wake-up)."""
         keep = []
@@ -471,13 +512,13 @@ class Processor(FastPaths):
         self.waiters = keep
 
     # -- services ----------------------------------------------------------------------
-    def print(self, text):
+    def print(self, text: str) -> None:
         """Write `text` whole (never torn by another processor's output)."""
         if self.rt.stopping:
             raise Shutdown()
         self.rt.out.write(self, text)
 
-    def print_error(self, text):
+    def print_error(self, text: str) -> None:
         """Write `text` whole on the run's stderr (the `stderr` given to run_main), under the
         lock of the standard output, so no output line of either stream is torn; flushed
         at once, like C's stderr. Not tagged in trace mode."""
@@ -485,25 +526,26 @@ class Processor(FastPaths):
             raise Shutdown()
         self.rt.out.write_other(self.rt.stderr, text)
 
-    def flush_output(self):
+    def flush_output(self) -> None:
         """Flush the run's stdout and stderr streams (IO_MEDIUM.flush on the console)."""
         self.rt.out.flush_streams(self.rt.stderr)
 
-    def sleep(self, ns, where=None):
+    def sleep(self, ns: int, where: Where | None = None) -> None:
         """Sleep `ns` nanoseconds on the runtime clock (virtual or real)."""
         self.rt.clock.sleep(self, ns, where)
 
-    def once(self, key, fn, args=()):
+    def once(self, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
         """A once routine per region: keyed by this region, whichever thread runs it."""
         return once_in(self.onces, key, fn, args)
 
-    def push_frame(self, where):
+    def push_frame(self, where: Where) -> None:
         self.frames.append(where)
 
-    def pop_frame(self):
+    def pop_frame(self) -> None:
         self.frames.pop()
 
-    def reserve(self, objs, pre=None, where=None, pre_args=None):
+    def reserve(self, objs: Sequence[Separate | None], pre: Sequence[Clause] | None = None,
+                where: Where | None = None, pre_args: Args | None = None) -> Session | _Nothing | Reservation:
         """A reservation of the separate arguments `objs` (see reservation.py); the common
         one-supplier reservation without wait condition is its private queue itself.
         `pre_args`: None (each clause's `pred()` takes no argument) or the tuple passed
@@ -513,7 +555,7 @@ class Processor(FastPaths):
         return Reservation(self, objs, pre, where, pre_args)
 
 
-def _ahead_locked(p, s):
+def _ahead_locked(p: Processor, s: Session) -> Sequence[Session] | None:
     """[p.lock, p not RUNNING] The sessions ahead of `s` in `p`'s queue of queues if a
     client may run them itself (all closed, leaf calls only), else None. Running them in
     order keeps every guarantee: it is what the supplier would do next, on another thread."""
@@ -532,7 +574,7 @@ def _ahead_locked(p, s):
     return None
 
 
-def _take(p, s, ahead):
+def _take(p: Processor, s: Session, ahead: Sequence[Session]) -> Batches:
     """[p.lock] Claim `p` and take the calls of the sessions ahead and of `s` itself."""
     p.state = RUNNING
     batches = []
@@ -545,7 +587,7 @@ def _take(p, s, ahead):
     return batches
 
 
-def locked_lock():
+def locked_lock() -> threading.Lock:
     """A new lock, already held: a one-shot wake-up for a blocked thread."""
     lk = threading.Lock()
     lk.acquire()

@@ -6,22 +6,38 @@ under their locks taken in processor-id order (never blocking: a private queue i
 in the queue of queues). A failed wait condition releases what this reservation took,
 registers a targeted wake-up on the suppliers its failing clause queried, and sleeps.
 """
-from .errors import PreconditionViolation
+from __future__ import annotations
+
+from collections.abc import Sequence
+from types import TracebackType
+
 from . import processor
-from .processor import locked_lock
-from .session import Session, close, enqueue_claim
+from .errors import PreconditionViolation
+from .processor import Processor, locked_lock
+from .protocols import Args, Clause, Separate, Where
 from .sched import Block
+from .session import Session, close, enqueue_claim
+
+# What a reservation took: (region, its new private queue) pairs.
+Taken = Sequence[tuple[Processor, Session]]
 
 
-def _id(p):
+def _id(p: Processor) -> int:
     return p.id
 
 
 class Reservation:
     """`with here.reserve(objs, pre, where):` — also `enter()` / `exit()` explicitly."""
     __slots__ = ("here", "objs", "pre", "where", "taken", "pre_args")
+    here: Processor
+    objs: Sequence[Separate | None]
+    pre: Sequence[Clause] | None
+    where: Where | None
+    taken: Taken | None
+    pre_args: Args | None
 
-    def __init__(self, here, objs, pre, where, pre_args=None):
+    def __init__(self, here: Processor, objs: Sequence[Separate | None], pre: Sequence[Clause] | None,
+                 where: Where | None, pre_args: Args | None = None) -> None:
         self.here = here
         self.pre_args = pre_args  # None: clauses are closures; else passed to each `pred`
         self.objs = objs
@@ -29,12 +45,13 @@ class Reservation:
         self.where = where
         self.taken = None   # [here's executor] [(region, Session)] this reservation took
 
-    def enter(self):
+    def enter(self) -> Reservation:
         here = self.here
         rt = here.rt
         if rt.attention:                  # a permit waiter asked to yield, or stopping
-            rt.attend(here.exec)
+            rt.attend(here.exec)  # type: ignore[arg-type]  # running: its exec is set
         objs = self.objs
+        regs: Sequence[Processor]
         if len(objs) == 1:                # the common case, with few calls
             o = objs[0]
             regs = () if o is None or o._region_ in here.held else (o._region_,)
@@ -62,13 +79,14 @@ class Reservation:
 
     __enter__ = enter
 
-    def __exit__(self, et, ev, tb):
+    def __exit__(self, et: type[BaseException] | None, ev: BaseException | None,
+                 tb: TracebackType | None) -> None:
         self.exit()
 
-    def _regions(self):
+    def _regions(self) -> list[Processor]:
         """The regions to reserve: not Void, not held already, each once."""
         held = self.here.held
-        regs = []
+        regs: list[Processor] = []
         for o in self.objs:
             if o is not None:
                 r = o._region_
@@ -76,16 +94,16 @@ class Reservation:
                     regs.append(r)
         return regs
 
-    def _queried(self, clause, regs):
+    def _queried(self, clause: Clause, regs: Sequence[Processor]) -> list[Processor]:
         """The newly reserved regions that `clause` uses as targets."""
-        queried = []
+        queried: list[Processor] = []
         for i in clause[1]:
             o = self.objs[i]
             if o is not None and o._region_ in regs and o._region_ not in queried:
                 queried.append(o._region_)
         return queried
 
-    def _wait(self, clause, regs):
+    def _wait(self, clause: Clause, regs: Sequence[Processor]) -> None:
         """Release, sleep until a queried supplier served another client, or raise."""
         queried = self._queried(clause, regs)
         if not queried:
@@ -97,7 +115,7 @@ class Reservation:
         _register(blk, queried)           # before releasing: no change can slip in between
         self.exit()
         try:
-            here.rt.block(here.exec, blk)
+            here.rt.block(here.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
         finally:
             done = blk.value              # the region whose waker already unlisted blk
             for r in queried:
@@ -106,7 +124,7 @@ class Reservation:
                         if blk in r.waiters:
                             r.waiters.remove(blk)
 
-    def exit(self):
+    def exit(self) -> None:
         taken = self.taken
         if taken:
             held = self.here.held
@@ -116,13 +134,13 @@ class Reservation:
         self.taken = None
 
 
-def _register(blk, regions):
+def _register(blk: Block, regions: Sequence[Processor]) -> None:
     for r in regions:                     # `regions` has no duplicates
         with r.lock:
             r.waiters.append(blk)
 
 
-def _reserve_one(here, r, where):
+def _reserve_one(here: Processor, r: Processor, where: Where | None) -> Taken:
     s = Session(here, r, where)
     lock = r.lock
     lock.acquire()
@@ -132,7 +150,7 @@ def _reserve_one(here, r, where):
     return ((r, s),)
 
 
-def reserve_regions(here, regs, where):
+def reserve_regions(here: Processor, regs: Sequence[Processor], where: Where | None) -> Taken:
     """Enqueue one new private queue per region atomically; record them as held."""
     if len(regs) == 1:
         return _reserve_one(here, regs[0], where)
@@ -151,4 +169,5 @@ def reserve_regions(here, regs, where):
     return taken
 
 
-processor.Reservation = Reservation     # Processor.reserve builds these
+# Processor.reserve builds these (processor.py imports the class for the type checker only).
+processor.Reservation = Reservation  # type: ignore[attr-defined]

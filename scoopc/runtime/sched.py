@@ -14,15 +14,26 @@ Blocking (synchronous calls, wait conditions, passive-region turns, sleep) goes 
 
 Lock order: a processor's `lock` may be held while taking `glock`, never the reverse.
 """
+from __future__ import annotations
+
 import itertools
 import sys
 import threading
 import time
 import weakref
 from collections import deque
+from collections.abc import Callable
+from typing import TYPE_CHECKING, TextIO
 
 from .errors import Shutdown, fmt_where
+from .protocols import OnceTable, Where
 from .session import IDLE
+
+if TYPE_CHECKING:
+    from .monitor import Monitor
+    from .outside import OutsideClient
+    from .processor import Processor
+    from .session import Session
 
 STARVE_AFTER = 0.005  # seconds a runnable processor may wait for a permit before a worker comes
 MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
@@ -31,8 +42,12 @@ MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
 class Exec:
     """One OS thread running processor code (a worker, the main thread, a client)."""
     __slots__ = ("blocked", "name", "permit", "plock")
+    blocked: Block | None
+    name: str
+    permit: bool
+    plock: threading.Lock
 
-    def __init__(self, name):
+    def __init__(self, name: str) -> None:
         self.blocked = None    # Block or None; written by the owner thread under rt.glock
         self.name = name
         self.permit = False    # [rt.glock] this thread holds a run permit (permits.py)
@@ -43,8 +58,20 @@ class Block:
     """What a blocked thread waits for; a new one per episode, so identity marks progress."""
     __slots__ = ("kind", "proc", "on", "where", "lock", "deadline", "exec", "value", "error",
                  "what")
+    kind: str
+    proc: Processor
+    on: Session | tuple[Processor, ...] | None
+    where: Where | None
+    lock: threading.Lock
+    deadline: int | None
+    exec: Exec | None
+    value: object
+    error: BaseException | None
+    what: object
 
-    def __init__(self, kind, proc, on, where, lock, deadline=None, what=None):
+    def __init__(self, kind: str, proc: Processor, on: Session | tuple[Processor, ...] | None,
+                 where: Where | None, lock: threading.Lock, deadline: int | None = None,
+                 what: object = None) -> None:
         self.kind = kind          # 'sync' | 'turn' | 'wait' | 'sleep'
         self.proc = proc          # the processor that waits (innermost context)
         self.on = on              # sync/turn: the Session; wait: tuple of processors
@@ -58,7 +85,7 @@ class Block:
         self.what = what          # sync: the routine called; wait: the clause tag
 
 
-def wake(lock):
+def wake(lock: threading.Lock) -> None:
     """Release a one-shot wake-up lock; a second release (shutdown racing a waker) is harmless."""
     try:
         lock.release()
@@ -68,15 +95,19 @@ def wake(lock):
 
 class Worker:
     __slots__ = ("rt", "lock", "exec", "thread")
+    rt: Runtime
+    lock: threading.Lock
+    exec: Exec
+    thread: threading.Thread
 
-    def __init__(self, rt, n):
+    def __init__(self, rt: Runtime, n: int) -> None:
         self.rt = rt
         self.lock = threading.Lock()      # held while parked; released by `schedule`
         self.lock.acquire()
         self.exec = Exec(f"worker-{n}")
         self.thread = threading.Thread(target=self.run, name=self.exec.name, daemon=True)
 
-    def run(self):
+    def run(self) -> None:
         rt, ex = self.rt, self.exec
         try:
             fresh = True     # started by `schedule`, which counted it in n_waking
@@ -97,9 +128,24 @@ class Worker:
 
 class Runtime:
     """Process-wide runtime state. `glock` protects every field marked [g]."""
+    describe: Callable[[BaseException, Processor], str] | None
+    runnable: deque[Processor]
+    parked: list[Worker]
+    blocked: set[Exec]
+    workers: list[Worker]
+    failures: list[tuple[str, BaseException | None]]
+    procs: weakref.WeakValueDictionary[int, Processor]
+    stderr: TextIO
+    shutdown_hooks: list[Callable[[], object]]
+    services: dict[str, object]
+    process_onces: OnceTable
+    monitor: Monitor | None
+    watchers: list[tuple[Callable[[Block], object], threading.Event]]
+    _timer_source: OutsideClient     # the source of timers' commands, made by the first call_later
 
-    def __init__(self, *, virtual_clock=False, trace_processors=False, strict=False,
-                 stdout=None, stderr=None, deadlock_tick=0.2):
+    def __init__(self, *, virtual_clock: bool = False, trace_processors: bool = False,
+                 strict: bool = False, stdout: TextIO | None = None, stderr: TextIO | None = None,
+                 deadlock_tick: float = 0.2) -> None:
         from .clock import Clock
         from .output import Output
         from .permits import Permits
@@ -118,7 +164,6 @@ class Runtime:
         self.stopping = False            # [g] set once; read racily as a fast check
         self.attention = False           # [g] stopping or permits.want_yield: one racy read
         #                                  at reservation entry instead of two
-        self.root_done = False           # [g]
         self.changed = threading.Condition(self.glock)   # quiescence / stop, for run_main
         self.wait_set = 0                # [g] number of blocked threads of kind 'wait'
         self.idlock = threading.Lock()
@@ -139,14 +184,14 @@ class Runtime:
         self._outside = threading.local()  # .exec: the Exec of an outside thread (run_here)
 
     # -- identities ------------------------------------------------------------------
-    def register(self, proc):
+    def register(self, proc: Processor) -> int:
         with self.idlock:
             pid = next(self.ids)
             self.procs[pid] = proc
         return pid
 
     # -- the pool --------------------------------------------------------------------
-    def schedule(self, p):
+    def schedule(self, p: Processor) -> None:
         """`p` was set SCHEDULED under its lock: make sure some thread will run it."""
         with self.glock:
             if not self.runnable:
@@ -156,7 +201,7 @@ class Runtime:
         if spawn is not None:
             spawn.thread.start()
 
-    def _want_worker(self):
+    def _want_worker(self) -> bool:
         """[g] Should one more worker come for the runnable queue? Not if one is already on
         its way. When every permit is taken and threads wait for one, a worker would only
         wait too, and the permit usually comes back to the runnable queue soon (a waiter
@@ -170,14 +215,14 @@ class Runtime:
             return True
         return time.monotonic() - self.runnable_since > STARVE_AFTER
 
-    def overdue_worker_locked(self):
+    def overdue_worker_locked(self) -> Worker | None:
         """[g] A worker for the runnable queue if its head has waited too long (permit
         waiters call this on every slice; returned: start it unlocked)."""
         if self.runnable and self._want_worker():
             return self._wake_one_locked()
         return None
 
-    def _wake_one_locked(self):
+    def _wake_one_locked(self) -> Worker | None:
         """[g] Wake a parked worker, or make a new one (returned: start it unlocked)."""
         self.n_waking += 1
         self.n_running += 1
@@ -192,7 +237,7 @@ class Runtime:
         self.workers.append(w)
         return w
 
-    def next_work(self, w, fresh):
+    def next_work(self, w: Worker, fresh: bool) -> Processor | None:
         """The next runnable processor for worker `w`, parking it while there is none.
         A worker taking work while more is waiting wakes another one first: a processor
         that runs for long (or blocks outside the runtime) never holds up the others."""
@@ -231,14 +276,14 @@ class Runtime:
             spawn.thread.start()
         return p
 
-    def outside_exec(self):
+    def outside_exec(self) -> Exec:
         """The Exec of the calling thread, which runs no processor (a transport's own)."""
         ex = getattr(self._outside, "exec", None)
         if ex is None:
             ex = self._outside.exec = Exec(f"outside-{threading.current_thread().name}")
         return ex
 
-    def run_here(self, p, s, ex):
+    def run_here(self, p: Processor, s: Session, ex: Exec) -> None:
         """An outside thread (Exec `ex`) runs the leaf calls of its closed session `s`, the head
         of `p`, which it has set RUNNING on its behalf (OutsideClient.call): as a worker would,
         counted running and holding a permit, minus the thread switch. Then it ends the session
@@ -266,7 +311,7 @@ class Runtime:
                 p.settle_locked(None)    # end `s` (wakes waiters); the pool takes the rest
             self.leave_running(ex)
 
-    def leave_running(self, ex):
+    def leave_running(self, ex: Exec) -> None:
         with self.glock:
             spawn = self._release_permit_locked(ex)
             self.n_running -= 1
@@ -274,7 +319,7 @@ class Runtime:
         if spawn is not None:
             spawn.thread.start()
 
-    def _release_permit_locked(self, ex):
+    def _release_permit_locked(self, ex: Exec) -> Worker | None:
         """[g] Give up `ex`'s permit; if it is now free and processors wait in the
         runnable queue with no worker coming, wake one (returned: start it unlocked)."""
         self.permits.release_locked(ex)
@@ -282,7 +327,7 @@ class Runtime:
             return self._wake_one_locked()
         return None
 
-    def _check_quiet(self):
+    def _check_quiet(self) -> None:
         """[g held] Wake run_main on quiescence; advance the virtual clock when all wait."""
         if self.n_running == len(self.blocked) and not self.runnable:
             if self.n_running == 0:
@@ -290,7 +335,7 @@ class Runtime:
             if self.clock.virtual:
                 self.clock.advance_locked()
 
-    def attend(self, ex):
+    def attend(self, ex: Exec) -> None:
         """Reservation entry found `attention` set: a safe point to yield the permit to a
         waiter that asked; a stop point when shutting down."""
         if self.permits.want_yield:
@@ -299,7 +344,7 @@ class Runtime:
             raise Shutdown()
 
     # -- blocking --------------------------------------------------------------------
-    def block(self, ex, blk):
+    def block(self, ex: Exec, blk: Block) -> None:
         """Block thread `ex` until `blk.lock` is released (by `unblock`); raise Shutdown
         when the runtime stops. The re-check under glock pairs with `unblock`, so a thread
         is never counted blocked after its waker ran (the virtual clock relies on it)."""
@@ -344,7 +389,7 @@ class Runtime:
         if queued:
             self.permits.wait_turn(ex)
 
-    def watch_blocks(self, predicate):
+    def watch_blocks(self, predicate: Callable[[Block], object]) -> threading.Event:
         """Scheduling hook: an Event set when a thread blocks on a Block for which
         `predicate(block)` is true (tests wait on it instead of sleeping)."""
         ev = threading.Event()
@@ -355,17 +400,17 @@ class Runtime:
                     ev.set()
         return ev
 
-    def _notify_watchers(self, blk):
+    def _notify_watchers(self, blk: Block) -> None:
         for pred, ev in self.watchers:
             if pred(blk):
                 ev.set()
 
-    def unblock(self, blk):
+    def unblock(self, blk: Block) -> None:
         """Wake the thread blocked (or about to block) on `blk`; at most once matters."""
         with self.glock:
             self.unblock_locked(blk)
 
-    def unblock_locked(self, blk):
+    def unblock_locked(self, blk: Block) -> None:
         ex = blk.exec
         if ex is not None and ex.blocked is blk:
             self.blocked.discard(ex)
@@ -373,21 +418,22 @@ class Runtime:
         wake(blk.lock)
 
     # -- failures and stopping -------------------------------------------------------
-    def fail(self, message, exc=None):
+    def fail(self, message: str, exc: BaseException | None = None) -> None:
         with self.glock:
             self.failures.append((message, exc))
         self.stop()
 
-    def report_lost(self, proc, s):
+    def report_lost(self, proc: Processor, s: Session) -> None:
         """[proc.lock held] An asynchronous call failed and no client ever saw it."""
         e = s.dirty
+        assert e is not None, "a lost exception is a dirty session's"
         detail = self.describe(e, proc) if self.describe is not None else f"{type(e).__name__}: {e}"
         self.stderr.write(f"scoopc: exception lost in an asynchronous call on {proc!r} "
                           f"(client {s.client!r}, reservation at {fmt_where(s.where)}): {detail}\n")
         if self.strict:
             self.fail(f"lost exception on {proc!r}: {detail}", e)
 
-    def stop(self):
+    def stop(self) -> None:
         """Stop every processor at its next runtime call and wake every blocked thread."""
         with self.glock:
             if self.stopping:
@@ -395,7 +441,9 @@ class Runtime:
             self.stopping = True
             self.attention = True
             for ex in list(self.blocked):
-                self.unblock_locked(ex.blocked)
+                blk = ex.blocked
+                assert blk is not None, "[g] a thread in `blocked` has its Block"
+                self.unblock_locked(blk)
             self.permits.stop_locked()
             for w in self.parked:      # counted as woken, as `schedule` does
                 self.n_waking += 1
@@ -405,7 +453,7 @@ class Runtime:
             self.changed.notify_all()
         self.clock.stop()
 
-    def join_workers(self, timeout=2.0):
+    def join_workers(self, timeout: float = 2.0) -> list[str]:
         """Join every worker (structured ownership) within `timeout` seconds in all, not each: a
         worker busy in a computation that makes no runtime call does not notice the stop, and
         fifty of them must not cost fifty timeouts. Returns the names of those still alive (daemon
@@ -421,7 +469,7 @@ class Runtime:
                     alive.append(w.exec.name)
         return alive
 
-    def wait_quiet(self):
+    def wait_quiet(self) -> None:
         """Block the main thread until quiescence or stop; interruptible by Ctrl-C."""
         with self.glock:
             while not self.stopping and not (self.n_running == 0 and not self.runnable

@@ -10,6 +10,18 @@ queue is at the head. The claim is dropped (under the supplier's lock) when a ca
 queued for the supplier's own thread (a non-leaf command, a lock-passing call) and at
 release.
 """
+from __future__ import annotations
+
+from types import TracebackType
+from typing import TYPE_CHECKING
+
+from .protocols import Call, Where
+
+if TYPE_CHECKING:
+    from .outside import OutsideClient
+    from .processor import Processor
+    from .sched import Block, Exec
+
 IDLE, SCHEDULED, RUNNING = 0, 1, 2
 
 
@@ -19,8 +31,20 @@ class Session:
     wait condition (`Processor.reserve`): `with` enters and releases it."""
     __slots__ = ("client", "proc", "calls", "closed", "dirty", "delivered", "changed",
                  "turn", "where", "heavy", "claimed")
+    client: Processor | OutsideClient
+    proc: Processor
+    calls: list[Call]
+    closed: bool
+    dirty: BaseException | None
+    delivered: bool
+    changed: bool
+    turn: Block | None
+    where: Where | None
+    heavy: bool
+    claimed: bool
 
-    def __init__(self, client, proc, where=None):
+    def __init__(self, client: Processor | OutsideClient, proc: Processor,
+                 where: Where | None = None) -> None:
         self.client = client      # Processor or OutsideClient (immutable)
         self.proc = proc          # the supplier (set by the client before it enqueues the
         #                           session; a reused spare is re-targeted, see `__exit__`)
@@ -40,8 +64,8 @@ class Session:
         #   time: its client, or the supplier it passed its locks to while it waits.
 
     # -- the one-supplier reservation (Processor.reserve) ------------------------------
-    def __enter__(self):
-        here = self.client
+    def __enter__(self) -> Session:
+        here: Processor = self.client  # type: ignore[assignment]  # outside clients never enter one
         rt = here.rt
         p = self.proc
         held = here.held
@@ -51,10 +75,10 @@ class Session:
             # behind a client waiting for a permit) and a Shutdown raised here would skip
             # `__exit__`.
             if rt.attention and held[p] is not self:
-                rt.attend(here.exec)
+                rt.attend(here.exec)  # type: ignore[arg-type]  # running: its exec is set
         else:
             if rt.attention:              # a permit waiter asked to yield, or stopping
-                rt.attend(here.exec)
+                rt.attend(here.exec)  # type: ignore[arg-type]  # running: its exec is set
             lock = p.lock                 # `enqueue_claim`, inlined (the hottest path)
             lock.acquire()
             if p.head is None:
@@ -69,8 +93,10 @@ class Session:
             held[p] = self
         return self
 
-    def __exit__(self, et=None, ev=None, tb=None):
-        held = self.client.held
+    def __exit__(self, et: type[BaseException] | None = None, ev: BaseException | None = None,
+                 tb: TracebackType | None = None) -> None:
+        client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
+        held = client.held
         p = self.proc
         if held.get(p) is self:
             del held[p]
@@ -87,7 +113,7 @@ class Session:
                 lock.release()
                 # Nothing refers to us any more (not queued, no call, not held, not
                 # dirty): the client's next `reserve1` may reuse us.
-                self.client.spare = self
+                client.spare = self
                 return
             close_locked(p, self)
 
@@ -95,12 +121,13 @@ class Session:
     exit = __exit__
 
     @property
-    def taken(self):
+    def taken(self) -> tuple[tuple[Processor, Session]] | None:
         """As `Reservation.taken`: the (region, session) pairs held by this reservation."""
-        return ((self.proc, self),) if self.client.held.get(self.proc) is self else None
+        client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
+        return ((self.proc, self),) if client.held.get(self.proc) is self else None
 
 
-def enqueue(p, s):
+def enqueue(p: Processor, s: Session) -> None:
     """[p.lock] Put session `s` in `p`'s queue of queues."""
     if p.head is None:
         p.head = s
@@ -108,7 +135,7 @@ def enqueue(p, s):
         p.qoq.append(s)
 
 
-def enqueue_claim(p, s, ex):
+def enqueue_claim(p: Processor, s: Session, ex: Exec | None) -> None:
     """[p.lock] Put a new reservation's session `s` in `p`'s queue of queues; if it is the
     head of an idle `p`, claim `p` for the client's thread `ex` at once (a reservation is
     usually followed by calls the client runs itself)."""
@@ -122,14 +149,14 @@ def enqueue_claim(p, s, ex):
         p.qoq.append(s)
 
 
-def drop_claim_locked(p, s):
+def drop_claim_locked(p: Processor, s: Session) -> None:
     """[p.lock] `s` gives up its claim on `p`: `p` is idle again, `s` still its head."""
     s.claimed = False
     p.exec = None
     p.state = IDLE
 
 
-def close(s):
+def close(s: Session) -> None:
     """The client releases its reservation `s`. If nobody runs the supplier, the client
     finishes the session itself and serves the leaf calls queued behind it (see `settle`)."""
     p = s.proc
@@ -137,7 +164,7 @@ def close(s):
     close_locked(p, s)
 
 
-def close_locked(p, s):
+def close_locked(p: Processor, s: Session) -> None:
     """[p.lock held; releases it] `close` after taking the lock."""
     lock = p.lock
     s.closed = True

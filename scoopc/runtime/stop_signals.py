@@ -13,10 +13,14 @@ from __future__ import annotations
 
 import signal
 import threading
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from typing import Iterator
+from types import FrameType
 
 STOP_SIGNALS = ("SIGINT", "SIGTERM", "SIGHUP")
+
+# What `signal.signal` takes and gives back: a handler, SIG_DFL/SIG_IGN, or None (not set from Python).
+_Handler = Callable[[int, FrameType | None], object] | int | signal.Handlers | None
 
 
 class Stopped(KeyboardInterrupt):
@@ -54,7 +58,7 @@ def stop_on_signals() -> Iterator[None]:
     if threading.current_thread() is not threading.main_thread():
         yield
         return
-    previous: dict[int, object] = {}
+    previous: dict[int, _Handler] = {}
     for name in STOP_SIGNALS:
         number = getattr(signal, name, None)
         if number is not None:

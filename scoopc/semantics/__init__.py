@@ -18,7 +18,7 @@ VOID_LEVELS = {"none": 0, "conformance": 1, "initialization": 2, "transitional":
 
 @dataclass
 class Checked:
-    universe: object
+    universe: universe_module.Universe
     tables: Tables
     diagnostics: list = field(default_factory=list)
 

@@ -3,8 +3,6 @@ are PROCEDURE / FUNCTION / PREDICATE [TUPLE [open operand types]].
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from .. import syntax
 from .features import member_signature
 from .resolve import declare_routine_entities
@@ -13,7 +11,7 @@ from .values import UNCONTROLLED, Value
 
 
 class AgentChecks:
-    def agent(self, node: syntax.Agent, expected: Optional[Ty] = None) -> Optional[Value]:
+    def agent(self, node: syntax.Agent, expected: Ty | None = None) -> Value | None:
         open_types: list[Ty] = []
         handler = None
         if node.target is None:
@@ -63,7 +61,7 @@ class AgentChecks:
             return Value(agent.with_marks(separate=True), handler or UNCONTROLLED)
         return Value(agent)
 
-    def _from_context(self, open_types: tuple, expected: Optional[Ty]) -> tuple:
+    def _from_context(self, open_types: tuple, expected: Ty | None) -> tuple:
         """Open operand types taken from the expected agent type when each of them conforms to
         the routine's own (an agent accepting READABLE_STRING_8 serves as a PROCEDURE [STRING])."""
         from .conformance import conforms
@@ -76,7 +74,7 @@ class AgentChecks:
             return tuple(wanted)
         return open_types
 
-    def inline_agent(self, node: syntax.InlineAgent) -> Optional[Value]:
+    def inline_agent(self, node: syntax.InlineAgent) -> Value | None:
         arguments = tuple(self.resolve_type(a.type) for a in node.arguments)
         result = self.resolve_type(node.type) if node.type is not None else None
         saved = self.enter_nested()
@@ -105,7 +103,7 @@ class AgentChecks:
         return Value(routine_type(node.type is not None, result, arguments))
 
 
-def routine_type(is_query: bool, result: Optional[Ty], open_types: tuple) -> Ty:
+def routine_type(is_query: bool, result: Ty | None, open_types: tuple) -> Ty:
     operands = Ty("TUPLE", open_types)
     if not is_query or result is None:
         return Ty("PROCEDURE", (operands,))

@@ -73,7 +73,7 @@ def _collect_ancestors(universe, info) -> None:
     own = info.own_type()
     info.ancestors = {info.name: own}
     info.all_ancestors = {info.name: own}
-    for parent, ty, conforming in info.parents:
+    for _parent, ty, conforming in info.parents:
         other = universe.get(ty.name)
         if other is None or not other.all_ancestors:
             continue

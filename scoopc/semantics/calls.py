@@ -4,8 +4,6 @@ VDPR(1), VDPR(2), and the SCOOP rules through scoop.py. Records the feature of e
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from . import scoop, walk
 from .conformance import base_type
 from .features import member_signature
@@ -14,7 +12,7 @@ from .values import UNCONTROLLED, Value
 
 
 class CallChecks:
-    def unqualified_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+    def unqualified_call(self, node, as_instruction: bool = False) -> Value | None:
         name = node.name.key
         entity = self.scopes.lookup(name)
         if entity is not None:
@@ -38,7 +36,7 @@ class CallChecks:
             value = Value(value.ty.with_marks(attached=True), value.handler)
         return value
 
-    def agent_call(self, node, agent: Value, as_instruction: bool) -> Optional[Value]:
+    def agent_call(self, node, agent: Value, as_instruction: bool) -> Value | None:
         """`f (a, b)` where f is an agent: its "()" feature applied to the tuple [a, b]."""
         base = base_type(self.universe, agent.ty, self.info)
         info = self.universe.get(base.name)
@@ -66,21 +64,21 @@ class CallChecks:
             return None
         return Value(NONE)
 
-    def entity_value(self, node, entity) -> Optional[Value]:
+    def entity_value(self, node, entity) -> Value | None:
         if entity.ty is None:
             return None
         self.use_entity(node, entity.name)
         attached = entity.ty.attached or entity.name in self.facts.attached
         return Value(entity.ty.with_marks(attached=attached), entity.handler)
 
-    def qualified_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+    def qualified_call(self, node, as_instruction: bool = False) -> Value | None:
         target = self.expr(node.target)
         if target is None:
             self.evaluate(node.arguments)
             return None
         return self.call_on(node, node.target, target, node.name, node.arguments, as_instruction)
 
-    def call_on(self, node, target_node, target: Value, name, arguments, as_instruction=False) -> Optional[Value]:
+    def call_on(self, node, target_node, target: Value, name, arguments, as_instruction=False) -> Value | None:
         ty = target.ty
         if ty.is_none or (not ty.attached and self.void_level >= 3 and not scoop.is_expanded(self.universe, ty)):
             self.report("VUTA(2)", target_node.span, target=walk.describe(target_node), type=str(ty))
@@ -118,7 +116,7 @@ class CallChecks:
         return bounds[0].with_marks(attached=True), None
 
     def call_feature(self, node, target_node, target: Value, feature, arguments, name_span,
-                     as_instruction: bool = False, known=None, current=None) -> Optional[Value]:
+                     as_instruction: bool = False, known=None, current=None) -> Value | None:
         """Arguments, exports and result of a call of `feature` on `target` (target_node None:
         the call is on Current, unqualified)."""
         self.tables.features[node] = feature
@@ -145,7 +143,7 @@ class CallChecks:
             return None
         return Value(NONE)
 
-    def actuals(self, node, arguments, formals, separate_target: Optional[Value], known=None) -> list:
+    def actuals(self, node, arguments, formals, separate_target: Value | None, known=None) -> list:
         if not arguments and len(formals) == 1 and _no_operands(formals[0]) and \
                 self.tables.features.get(node) is not None and self.tables.features[node].written_in in AGENT_CLASSES:
             self.tables.agent_calls.add(node)     # `p.call` for `p.call ([])`, as EiffelStudio accepts
@@ -208,7 +206,7 @@ class CallChecks:
             return True
         return any(name in self.info.ancestors for name in feature.exports)
 
-    def bracket_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+    def bracket_call(self, node, as_instruction: bool = False) -> Value | None:
         target = self.expr(node.target)
         if target is None:
             self.evaluate(node.arguments)
@@ -226,7 +224,7 @@ class CallChecks:
         return self.call_feature(node, node.target, Value(base.with_marks(attached=True), target.handler), feature,
                                  node.arguments, node.span, as_instruction)
 
-    def static_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+    def static_call(self, node, as_instruction: bool = False) -> Value | None:
         ty = self.resolve_type(node.type)
         if ty is None:
             self.evaluate(node.arguments)
@@ -239,7 +237,7 @@ class CallChecks:
             return None
         return self.call_feature(node, None, Value(ty), feature, node.arguments, node.name.span, as_instruction)
 
-    def precursor_call(self, node, as_instruction: bool = False) -> Optional[Value]:
+    def precursor_call(self, node, as_instruction: bool = False) -> Value | None:
         precursors = self.feature.precursors if self.feature is not None else ()
         if node.parent is not None:
             wanted = self.universe.canonical(node.parent.text)

@@ -5,12 +5,10 @@ Input: the universe with ancestors computed. Output: yes/no answers and the reas
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from .types import RANGES, STRINGS, Ty, substitute
 
 
-def ancestor(universe, ty: Ty, name: str) -> Optional[Ty]:
+def ancestor(universe, ty: Ty, name: str) -> Ty | None:
     """`ty` seen as its ancestor class `name` (generics substituted), or None."""
     info = universe.get(ty.name)
     if info is None:
@@ -41,7 +39,7 @@ def conforms(universe, source: Ty, target: Ty, context=None) -> bool:
     return why_not(universe, source, target, context) is None
 
 
-def why_not(universe, source: Ty, target: Ty, context=None) -> Optional[str]:
+def why_not(universe, source: Ty, target: Ty, context=None) -> str | None:
     """None when `source` conforms to `target`; else "separate", "detachable" or "type"."""
     if source.is_none:
         expanded = (info := universe.get(target.name)) is not None and info.is_expanded
@@ -100,7 +98,7 @@ def _constraint_conforms(universe, source: Ty, target: Ty, context) -> bool:
     return any(_class_conforms(universe, c, target, context) for c in constraints)
 
 
-def converts(universe, source: Ty, target: Ty) -> Optional[str]:
+def converts(universe, source: Ty, target: Ty) -> str | None:
     """The name of the feature that converts `source` to `target` (a `convert` clause of either
     class), or None."""
     if source.is_formal or target.is_formal or source.is_none:

@@ -4,8 +4,6 @@ new object's processor receives the arguments: the separate-argument rules apply
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from .. import syntax
 from .features import member_signature
 from .types import Ty
@@ -13,7 +11,7 @@ from .values import Value
 
 
 class CreationChecks:
-    def creation(self, node, ty: Ty, procedure: Optional[syntax.Identifier], arguments) -> None:
+    def creation(self, node, ty: Ty, procedure: syntax.Identifier | None, arguments) -> None:
         if ty.is_formal:
             self._formal_creation(node, ty, procedure, arguments)
             return

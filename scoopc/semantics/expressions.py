@@ -6,8 +6,6 @@ A method returns a Value, or None after an error has been reported (callers stay
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from .. import syntax
 from . import scoop, walk
 from .conformance import conforms, manifest_fits
@@ -20,7 +18,7 @@ EQUALITY = ("=", "/=", "~", "/~")
 
 
 class ExpressionChecks:
-    def expr(self, node, expected: Optional[Ty] = None) -> Optional[Value]:
+    def expr(self, node, expected: Ty | None = None) -> Value | None:
         value = getattr(self, "e_" + type(node).__name__)(node, expected) if expected is not None \
             else getattr(self, "e_" + type(node).__name__)(node)
         if value is not None:
@@ -92,7 +90,7 @@ class ExpressionChecks:
             items.append(self._manifest_typed(item, value, wanted[index] if index < len(wanted) else None))
         return Value(Ty("TUPLE", tuple(items)))
 
-    def _manifest_typed(self, node, value: Value, wanted: Optional[Ty]) -> Ty:
+    def _manifest_typed(self, node, value: Value, wanted: Ty | None) -> Ty:
         if wanted is not None and self.meets(node, value, wanted) is None:
             return wanted
         return value.ty
@@ -192,7 +190,7 @@ class ExpressionChecks:
             return None
         return self.operator_call(node, node.operand, operand, node.operator, [], node.span)
 
-    def operator_call(self, node, target_node, target: Value, op: str, arguments, where) -> Optional[Value]:
+    def operator_call(self, node, target_node, target: Value, op: str, arguments, where) -> Value | None:
         """`a op b` or `op a`: the feature of a's class with that alias, or of the type that a
         converts to when only that one accepts b (target conversion, as for `1 + x` with x: REAL_64)."""
         candidates = self._operator_candidates(target.ty, op, len(arguments))

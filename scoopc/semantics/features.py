@@ -4,7 +4,6 @@ signature of a feature (argument and result types) in the context of a class.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Optional
 
 from .. import syntax
 from .types import Ty, substitute
@@ -19,19 +18,19 @@ class Feature:
     decl: object                            # syntax.Routine, Attribute or Constant
     fname: syntax.FeatureName               # the name's declaration (span, aliases)
     written_in: str                         # the class that declares this version
-    exports: Optional[frozenset] = None     # client class names; None: every class
+    exports: frozenset | None = None     # client class names; None: every class
     deferred: bool = False
     seed: str = ""                          # "CLASS.name" where the feature was introduced
     precursors: tuple = ()                  # (parent class name, Feature) this version redeclares
     shared: dict = field(default_factory=dict)  # shared by renamed/re-exported copies: the signature
 
     @property
-    def signature(self) -> Optional["Signature"]:
+    def signature(self) -> Signature | None:
         """Cached, in the context of written_in (set by the signatures pass)."""
         return self.shared.get("signature")
 
     @signature.setter
-    def signature(self, value: "Signature") -> None:
+    def signature(self, value: Signature) -> None:
         self.shared["signature"] = value
 
     @property
@@ -76,7 +75,7 @@ class Feature:
         return self.body.body.once_keys if self.is_once else ()
 
     @property
-    def assigner(self) -> Optional[str]:
+    def assigner(self) -> str | None:
         a = getattr(self.decl, "assigner", None)
         return a.key if a is not None else None
 
@@ -87,14 +86,14 @@ class Feature:
             found |= precursor.seeds()
         return frozenset(found)
 
-    def renamed(self, name: syntax.FeatureName) -> "Feature":
+    def renamed(self, name: syntax.FeatureName) -> Feature:
         return replace(self, name=name.name.key, text=name.name.text, fname=name)
 
 
 @dataclass(frozen=True)
 class Signature:
-    arguments: tuple[Optional[Ty], ...]
-    result: Optional[Ty]
+    arguments: tuple[Ty | None, ...]
+    result: Ty | None
     # For each argument then the result: (feature name, attachment mark) when the type is
     # `like feature`, re-anchored at each call to the target class's version of that feature.
     anchors: tuple = ()
@@ -104,7 +103,7 @@ class Signature:
         return all(a is not None for a in self.arguments)
 
 
-def member_signature(universe, target: Ty, feature: Feature, current: Optional[Ty] = None,
+def member_signature(universe, target: Ty, feature: Feature, current: Ty | None = None,
                      depth: int = 0) -> Signature:
     """The signature of `feature` at a call on `target` (a type whose class has the feature);
     `like Current` becomes `current` (default: the target; a formal generic when the target is
@@ -125,7 +124,7 @@ def member_signature(universe, target: Ty, feature: Feature, current: Optional[T
     return Signature(tuple(types[:-1]), types[-1], written.anchors)
 
 
-def _reanchored(universe, info, target: Ty, current: Ty, anchor, depth: int) -> Optional[Ty]:
+def _reanchored(universe, info, target: Ty, current: Ty, anchor, depth: int) -> Ty | None:
     """`like name` seen from the target's class, which may have redeclared `name`."""
     name, mark = anchor
     other = info.features.get(name)

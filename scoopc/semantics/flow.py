@@ -13,17 +13,17 @@ class Facts:
     attached: frozenset = frozenset()     # entity names known attached here
     unset: frozenset = frozenset()        # attached locals (and Result) not yet given a value
 
-    def with_attached(self, names) -> "Facts":
+    def with_attached(self, names) -> Facts:
         return replace(self, attached=self.attached | frozenset(names)) if names else self
 
-    def without(self, name: str) -> "Facts":
+    def without(self, name: str) -> Facts:
         return replace(self, attached=self.attached - {name}) if name in self.attached else self
 
-    def set(self, name: str, attached: bool) -> "Facts":
+    def set(self, name: str, attached: bool) -> Facts:
         facts = replace(self, unset=self.unset - {name})
         return facts.with_attached((name,)) if attached else facts.without(name)
 
-    def join(self, other: "Facts") -> "Facts":
+    def join(self, other: Facts) -> Facts:
         return Facts(self.attached & other.attached, self.unset | other.unset)
 
 

@@ -13,7 +13,6 @@ import pickle
 import sys
 from dataclasses import replace
 from pathlib import Path
-from typing import Optional
 
 from .. import syntax
 from ..version import __version__
@@ -83,7 +82,7 @@ def _without_body(feature):
     return replace(feature, body=replace(body, body=inner, locals=(), rescue=None))
 
 
-def _read(key: str) -> Optional[list]:
+def _read(key: str) -> list | None:
     path = cache_dir() / f"stdlib-{key}.pickle"
     enabled = gc.isenabled()
     gc.disable()                # a load creates many objects and no garbage: collections only cost time

@@ -4,8 +4,6 @@ declaring names: VRFA, VRLE(1), VRLE(2), VREG, and the clash test used by VUOT(1
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from .tables import Entity
 
 
@@ -16,7 +14,7 @@ class Scopes:
     def __init__(self):
         self.frames: list[dict[str, Entity]] = [{}]
 
-    def lookup(self, name: str) -> Optional[Entity]:
+    def lookup(self, name: str) -> Entity | None:
         for frame in reversed(self.frames):
             found = frame.get(name)
             if found is not None:

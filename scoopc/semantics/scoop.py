@@ -7,8 +7,6 @@ its expression (Value.handler names the controlling entity; "?" means not contro
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from .. import syntax
 from .types import Ty
 from .values import UNCONTROLLED, Value
@@ -80,7 +78,7 @@ def adapt_result(ctx, call_node, result: Ty, target: Value) -> Value:
     return Value(result.with_marks(separate=True), target.handler)
 
 
-def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Optional[Value], clashes: bool) -> bool:
+def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Value | None, clashes: bool) -> bool:
     """V1SE(1) (Gobo V1SE-1G): the block's local must not clash with another name;
     V1SE(2): the expression must be of a reference type."""
     if clashes:
@@ -97,7 +95,7 @@ def assign_to_separate_local(ctx, target_node, name: str) -> None:
     ctx.report("V1SE(3)", target_node.span, name=name)
 
 
-def check_process_once(ctx, feature, result: Optional[Ty]) -> None:
+def check_process_once(ctx, feature, result: Ty | None) -> None:
     """VFFD(8): a `once ("PROCESS")` function is shared by all processors, so its result must be
     separate (or expanded): a non-separate reference would be reachable from other processors."""
     if result is None or not any(k.upper() == "PROCESS" for k in feature.once_keys):
@@ -106,7 +104,7 @@ def check_process_once(ctx, feature, result: Optional[Ty]) -> None:
         ctx.report("VFFD(8)", feature.fname.name.span, name=feature.text, type=str(result))
 
 
-def check_processor_tag(ctx, processor: Optional[syntax.Identifier]) -> None:
+def check_processor_tag(ctx, processor: syntax.Identifier | None) -> None:
     """`create <NONE> x` makes a passive region; no other processor tag is supported."""
     if processor is not None and processor.key != "none":
         ctx.report("PROCESSOR-TAG", processor.span, tag=processor.text)

@@ -5,8 +5,6 @@ Input: flattened classes. Output: Feature.signature for every feature.
 """
 from __future__ import annotations
 
-from typing import Optional
-
 from .. import syntax
 from .conformance import conforms
 from .features import CURRENT, Feature, Signature, member_signature
@@ -28,7 +26,7 @@ def signature_of(universe, info, feature: Feature, report=None) -> Signature:
     silent = report or (lambda *a, **k: None)
     arguments = {a.name.key: a for a in feature.arguments}
 
-    def anchor(name: str) -> Optional[Ty]:
+    def anchor(name: str) -> Ty | None:
         if name in arguments:
             return resolver.resolve(arguments[name].type)
         other = info.features.get(name)
@@ -46,7 +44,7 @@ def signature_of(universe, info, feature: Feature, report=None) -> Signature:
     return feature.signature
 
 
-def _feature_anchor(node, arguments) -> Optional[tuple]:
+def _feature_anchor(node, arguments) -> tuple | None:
     """(name, attachment mark) for a type `like name` where name is a feature (not an argument)."""
     if isinstance(node, syntax.AnchoredType) and isinstance(node.anchor, syntax.UnqualifiedCall) \
             and not node.anchor.arguments and node.anchor.name.key not in arguments:
@@ -54,13 +52,13 @@ def _feature_anchor(node, arguments) -> Optional[tuple]:
     return None
 
 
-def _resolve(resolver, node) -> Optional[Ty]:
+def _resolve(resolver, node) -> Ty | None:
     if isinstance(node, syntax.AnchoredType) and isinstance(node.anchor, syntax.Current):
         return CURRENT.with_marks(attached=node.attachment != "detachable", separate=node.separate)
     return resolver.resolve(node)
 
 
-def feature_type_in(universe, base: Ty, name: str) -> Optional[Ty]:
+def feature_type_in(universe, base: Ty, name: str) -> Ty | None:
     info = universe.get(base.name)
     feature = info.features.get(name) if info is not None else None
     if feature is None or not feature.is_query:

@@ -5,7 +5,6 @@ Nothing here decides validity; the passes fill these tables as they prove things
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Optional
 
 from .types import Ty
 
@@ -16,9 +15,9 @@ class Entity:
 
     name: str
     kind: str                  # argument, local, result, object_test, across, separate, attribute, feature
-    ty: Optional[Ty]
+    ty: Ty | None
     span: object = None
-    handler: Optional[str] = None   # the controlling entity's name for controlled separate values
+    handler: str | None = None   # the controlling entity's name for controlled separate values
 
 
 @dataclass

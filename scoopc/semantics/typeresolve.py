@@ -5,7 +5,7 @@ Input: a syntax type, the class it is written in, a way to resolve anchors. Outp
 """
 from __future__ import annotations
 
-from typing import Callable, Optional
+from collections.abc import Callable
 
 from .. import syntax
 from .types import Ty
@@ -16,7 +16,7 @@ Report = Callable[..., None]
 class TypeResolver:
     """Resolves types written in one class. `anchor(name)` gives the type of `like name`."""
 
-    def __init__(self, universe, info, report: Report, anchor: Optional[Callable[[str], Optional[Ty]]] = None,
+    def __init__(self, universe, info, report: Report, anchor: Callable[[str], Ty | None] | None = None,
                  constraints: bool = True, current_anchor: bool = False):
         self.universe = universe
         self.info = info
@@ -25,7 +25,7 @@ class TypeResolver:
         self.constraints = constraints
         self.current_anchor = current_anchor    # `like Current` stays open (features.CURRENT) for call sites
 
-    def resolve(self, node) -> Optional[Ty]:
+    def resolve(self, node) -> Ty | None:
         if isinstance(node, syntax.ClassType):
             return self._class_type(node)
         if isinstance(node, syntax.TupleType):
@@ -37,7 +37,7 @@ class TypeResolver:
         attached = expanded or node.attachment != "detachable"
         return ty.with_marks(attached=attached, separate=node.separate or (ty.separate and not expanded))
 
-    def _class_type(self, node: syntax.ClassType) -> Optional[Ty]:
+    def _class_type(self, node: syntax.ClassType) -> Ty | None:
         key = node.name.key.upper()
         if key in self.info.formals:
             if node.generics:
@@ -100,16 +100,16 @@ class TypeResolver:
         creators = info.creators if info.creators is not None else {"default_create": None}
         return [name for name in wanted if name not in creators]
 
-    def _tuple_type(self, node: syntax.TupleType) -> Optional[Ty]:
+    def _tuple_type(self, node: syntax.TupleType) -> Ty | None:
         generics = tuple(self.resolve(g) for g in node.generics)
         if any(g is None for g in generics):
             return None
         labels = tuple(label.key for label in node.labels)
         return self._marks(node, Ty("TUPLE", generics, labels=labels))
 
-    def _anchored(self, node: syntax.AnchoredType) -> Optional[Ty]:
+    def _anchored(self, node: syntax.AnchoredType) -> Ty | None:
         anchor = node.anchor
-        found: Optional[Ty] = None
+        found: Ty | None = None
         if isinstance(anchor, syntax.Current):
             from .features import CURRENT
 
@@ -126,11 +126,10 @@ class TypeResolver:
         attached = found.attached if node.attachment is None else node.attachment != "detachable"
         return found.with_marks(attached=attached, separate=found.separate or node.separate)
 
-    def _static_anchor(self, anchor: syntax.StaticCall) -> Optional[Ty]:
+    def _static_anchor(self, anchor: syntax.StaticCall) -> Ty | None:
         """`like {T}.f`: the type of T's feature f."""
-        from .signatures import feature_type_in
-
         from .conformance import constraint_types
+        from .signatures import feature_type_in
 
         base = self.resolve(anchor.type)
         if base is None:
@@ -141,7 +140,7 @@ class TypeResolver:
                 return found
         return None
 
-    def _qualified_anchor(self, anchor: syntax.QualifiedCall) -> Optional[Ty]:
+    def _qualified_anchor(self, anchor: syntax.QualifiedCall) -> Ty | None:
         from .signatures import feature_type_in
 
         if isinstance(anchor.target, syntax.UnqualifiedCall):

@@ -5,7 +5,6 @@ Input: none (a value module). Output: Ty values used by every later pass and rec
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
-from typing import Optional
 
 # Class-name aliases EiffelStudio's configuration maps onto kernel classes.
 ALIASES = {
@@ -35,7 +34,7 @@ class Ty:
     """
 
     name: str
-    generics: tuple["Ty", ...] = ()
+    generics: tuple[Ty, ...] = ()
     attached: bool = True
     separate: bool = False
     formal: int = -1
@@ -49,7 +48,7 @@ class Ty:
     def is_none(self) -> bool:
         return self.name == "NONE"
 
-    def with_marks(self, attached: Optional[bool] = None, separate: Optional[bool] = None) -> "Ty":
+    def with_marks(self, attached: bool | None = None, separate: bool | None = None) -> Ty:
         a = self.attached if attached is None else attached
         s = self.separate if separate is None else separate
         return self if (a, s) == (self.attached, self.separate) else replace(self, attached=a, separate=s)

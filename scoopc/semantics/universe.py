@@ -7,7 +7,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Optional
 
 from .. import diagnostics, syntax
 from ..diagnostics import Diagnostic
@@ -28,7 +27,7 @@ class ClassInfo:
     all_ancestors: dict = field(default_factory=dict) # every ancestor, conforming or not
     features: dict = field(default_factory=dict)      # final name -> Feature
     aliases: dict = field(default_factory=dict)       # (operator, arity) -> Feature
-    creators: Optional[dict] = None                    # name -> clients (None: default_create)
+    creators: dict | None = None                    # name -> clients (None: default_create)
     constraints: tuple = ()                            # per formal: tuple of constraint Ty
     formal_creators: tuple = ()                        # per formal: creation procedure names
     joins: list = field(default_factory=list)          # (name, features) inherited versions joined into one
@@ -53,7 +52,7 @@ class Universe:
     shadowed: dict[str, str] = field(default_factory=dict)   # library class name -> its key when a user class has the name
     operator_memo: dict = field(default_factory=dict)      # (type, operator, arity, context) -> candidate features
 
-    def get(self, name: str) -> Optional[ClassInfo]:
+    def get(self, name: str) -> ClassInfo | None:
         key = name.upper()
         return self.classes.get(ALIASES.get(key, key))
 
@@ -61,7 +60,7 @@ class Universe:
         key = name.upper()
         return ALIASES.get(key, key)
 
-    def name_in(self, name: str, info: Optional[ClassInfo]) -> str:
+    def name_in(self, name: str, info: ClassInfo | None) -> str:
         """The key of class `name` as written in `info`: library code keeps seeing its own classes
         when a user class has the same name."""
         key = self.canonical(name)
@@ -83,7 +82,7 @@ def stdlib_files(clusters: tuple[str, ...] = ("base", "roboscoop")) -> list[Path
 
 
 def build(trees: list[tuple[syntax.ClassDeclaration, bool]], found: list[Diagnostic],
-          base: Optional[Universe] = None) -> Universe:
+          base: Universe | None = None) -> Universe:
     """The class table of `trees` (declaration, from_library); the user's classes first.
     `base`: classes already prepared (the library's, from the cache) to start from."""
     universe = Universe(dict(base.classes) if base is not None else {})

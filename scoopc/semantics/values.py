@@ -3,7 +3,7 @@ value, which controlled entity's processor it lives on), and how a value meets a
 """
 from __future__ import annotations
 
-from typing import NamedTuple, Optional
+from typing import NamedTuple
 
 from .. import syntax
 from .conformance import converts, manifest_fits, why_not
@@ -14,14 +14,14 @@ UNCONTROLLED = "?"
 
 class Value(NamedTuple):
     ty: Ty
-    handler: Optional[str] = None        # None: not separate; a name: controlled through it; "?": not controlled
+    handler: str | None = None        # None: not separate; a name: controlled through it; "?": not controlled
 
     @property
     def controlled(self) -> bool:
         return not self.ty.separate or self.handler != UNCONTROLLED
 
 
-def manifest_kind(node) -> Optional[tuple[str, object]]:
+def manifest_kind(node) -> tuple[str, object] | None:
     """The kind and value of a manifest constant whose type comes from its context."""
     if isinstance(node, syntax.ManifestInteger):
         return "integer", node.value
@@ -42,7 +42,7 @@ def manifest_kind(node) -> Optional[tuple[str, object]]:
     return None
 
 
-def meet(universe, node, value: Value, target: Ty, context, tables) -> Optional[str]:
+def meet(universe, node, value: Value, target: Ty, context, tables) -> str | None:
     """None when `value` (of expression `node`) may be attached to an entity of type `target`:
     conformance, a manifest constant typed by context, or a conversion (recorded); else the
     reason: "separate", "detachable" or "type"."""

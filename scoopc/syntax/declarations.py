@@ -1,7 +1,7 @@
 """Syntax tree, declarations: features (routines, attributes, constants) and classes."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Optional, Union
+from typing import TYPE_CHECKING
 
 from ..source import Span
 from .base import Identifier, node
@@ -47,7 +47,7 @@ class EntityDeclaration:
 @node
 class Note:
     tag: Identifier
-    values: tuple[Union[Identifier, Expression], ...]
+    values: tuple[Identifier | Expression, ...]
     span: Span
 
 
@@ -68,7 +68,7 @@ class DeferredBody:
 @node
 class ExternalBody:
     language: str                  # e.g. "C", "Python", "built_in"
-    alias: Optional[str]
+    alias: str | None
     span: Span
 
 
@@ -82,12 +82,12 @@ class AttributeBody:
 @node
 class RoutineBody:
     """Everything from `obsolete`/`require` to `end` of a routine, attribute body or agent."""
-    obsolete: Optional[str]
-    precondition: Optional[Precondition]
+    obsolete: str | None
+    precondition: Precondition | None
     locals: tuple[EntityDeclaration, ...]
-    body: Union[InternalBody, DeferredBody, ExternalBody, AttributeBody]
-    postcondition: Optional[Postcondition]
-    rescue: Optional[tuple[Instruction, ...]]
+    body: InternalBody | DeferredBody | ExternalBody | AttributeBody
+    postcondition: Postcondition | None
+    rescue: tuple[Instruction, ...] | None
     span: Span
 
 
@@ -95,8 +95,8 @@ class RoutineBody:
 class Routine:
     names: tuple[FeatureName, ...]
     arguments: tuple[EntityDeclaration, ...]
-    type: Optional[Type]           # None for a procedure
-    assigner: Optional[Identifier]
+    type: Type | None           # None for a procedure
+    assigner: Identifier | None
     notes: tuple[Note, ...]
     body: RoutineBody
     span: Span
@@ -106,9 +106,9 @@ class Routine:
 class Attribute:
     names: tuple[FeatureName, ...]
     type: Type
-    assigner: Optional[Identifier]
+    assigner: Identifier | None
     notes: tuple[Note, ...]
-    body: Optional[RoutineBody]    # with an AttributeBody, or None for a plain attribute
+    body: RoutineBody | None    # with an AttributeBody, or None for a plain attribute
     span: Span
 
 
@@ -121,13 +121,13 @@ class Constant:
     span: Span
 
 
-Feature = Union[Routine, Attribute, Constant]
+Feature = Routine | Attribute | Constant
 
 
 @node
 class FeatureClause:
     """`feature {A, B}`; clients None when unrestricted."""
-    clients: Optional[tuple[Identifier, ...]]
+    clients: tuple[Identifier, ...] | None
     features: tuple[Feature, ...]
     span: Span
 
@@ -143,7 +143,7 @@ class Rename:
 class ExportItem:
     """`{A, B} f, g`; features None for `all`."""
     clients: tuple[Identifier, ...]
-    features: Optional[tuple[Identifier, ...]]
+    features: tuple[Identifier, ...] | None
     span: Span
 
 
@@ -169,7 +169,7 @@ class InheritClause:
 @node
 class CreationClause:
     """`create {A} make, make_from`; clients None when unrestricted."""
-    clients: Optional[tuple[Identifier, ...]]
+    clients: tuple[Identifier, ...] | None
     procedures: tuple[Identifier, ...]
     span: Span
 
@@ -188,7 +188,7 @@ class ClassDeclaration:
     name: Identifier
     marks: tuple[str, ...]         # "deferred", "expanded", "frozen", "external"
     formal_generics: tuple[FormalGeneric, ...]
-    obsolete: Optional[str]
+    obsolete: str | None
     inherit_clauses: tuple[InheritClause, ...]
     creation_clauses: tuple[CreationClause, ...]
     converters: tuple[Converter, ...]

@@ -1,7 +1,7 @@
 """Syntax tree, expressions: calls, operators, manifest constants, agents, object tests."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Optional, Union
+from typing import TYPE_CHECKING
 
 from ..source import Span
 from .base import Identifier, node
@@ -26,15 +26,15 @@ __all__ = [
 class UnqualifiedCall:
     """`f` or `f (args)`: a feature, local, argument or object-test local (resolved later)."""
     name: Identifier
-    arguments: tuple["Expression", ...]
+    arguments: tuple[Expression, ...]
     span: Span
 
 
 @node
 class QualifiedCall:
-    target: "Expression"
+    target: Expression
     name: Identifier
-    arguments: tuple["Expression", ...]
+    arguments: tuple[Expression, ...]
     span: Span
 
 
@@ -43,22 +43,22 @@ class StaticCall:
     """`{T}.f (args)`."""
     type: Type
     name: Identifier
-    arguments: tuple["Expression", ...]
+    arguments: tuple[Expression, ...]
     span: Span
 
 
 @node
 class Precursor:
-    parent: Optional[Identifier]
-    arguments: tuple["Expression", ...]
+    parent: Identifier | None
+    arguments: tuple[Expression, ...]
     span: Span
 
 
 @node
 class BracketExpression:
     """`target [arguments]`: a call of the feature aliased `[]`."""
-    target: "Expression"
-    arguments: tuple["Expression", ...]
+    target: Expression
+    arguments: tuple[Expression, ...]
     span: Span
 
 
@@ -79,7 +79,7 @@ class Void:
 
 @node
 class Parenthesized:
-    expression: "Expression"
+    expression: Expression
     span: Span
 
 
@@ -87,8 +87,8 @@ class Parenthesized:
 class BinaryExpression:
     """`left operator right`; operator lowercased, `and then`/`or else` as two words."""
     operator: str
-    left: "Expression"
-    right: "Expression"
+    left: Expression
+    right: Expression
     operator_span: Span
     span: Span
 
@@ -96,13 +96,13 @@ class BinaryExpression:
 @node
 class UnaryExpression:
     operator: str                  # "not", "-", "+" or a free operator
-    operand: "Expression"
+    operand: Expression
     span: Span
 
 
 @node
 class Old:
-    expression: "Expression"
+    expression: Expression
     span: Span
 
 
@@ -144,7 +144,7 @@ class ManifestBoolean:
 class TypedConstant:
     """`{INTEGER_64} 1`: a manifest constant with an explicit type."""
     type: Type
-    constant: "Expression"
+    constant: Expression
     span: Span
 
 
@@ -163,29 +163,29 @@ class ManifestType:
 
 @node
 class TupleExpression:
-    items: tuple["Expression", ...]
+    items: tuple[Expression, ...]
     span: Span
 
 
 @node
 class ManifestArray:
-    items: tuple["Expression", ...]
+    items: tuple[Expression, ...]
     span: Span
 
 
 @node
 class ObjectTest:
     """`attached [{T}] expression [as local]`."""
-    type: Optional[Type]
-    expression: "Expression"
-    local: Optional[Identifier]
+    type: Type | None
+    expression: Expression
+    local: Identifier | None
     span: Span
 
 
 @node
 class OpenOperand:
     """`?` or `{T}` among an agent's operands; `type` is None for `?`."""
-    type: Optional[Type]
+    type: Type | None
     span: Span
 
 
@@ -193,55 +193,55 @@ class OpenOperand:
 class Agent:
     """`agent [target.]f [(operands)]`. target None: unqualified (Current); a ManifestType
     target is an open target of that type. arguments None: every argument open."""
-    target: Optional["Expression"]
+    target: Expression | None
     name: Identifier
-    arguments: Optional[tuple["Expression", ...]]
+    arguments: tuple[Expression, ...] | None
     span: Span
 
 
 @node
 class InlineAgent:
-    arguments: tuple["EntityDeclaration", ...]
-    type: Optional[Type]
-    body: "RoutineBody"
-    actuals: Optional[tuple["Expression", ...]]
+    arguments: tuple[EntityDeclaration, ...]
+    type: Type | None
+    body: RoutineBody
+    actuals: tuple[Expression, ...] | None
     span: Span
 
 
 @node
 class CreationExpression:
-    processor: Optional[Identifier]   # `create <NONE> {T}`
+    processor: Identifier | None   # `create <NONE> {T}`
     type: Type
-    procedure: Optional[Identifier]
-    arguments: tuple["Expression", ...]
+    procedure: Identifier | None
+    arguments: tuple[Expression, ...]
     span: Span
 
 
 @node
 class ConditionalExpression:
-    condition: "Expression"
-    then_part: "Expression"
-    elseif_parts: tuple["ElseifExpression", ...]
-    else_part: "Expression"
+    condition: Expression
+    then_part: Expression
+    elseif_parts: tuple[ElseifExpression, ...]
+    else_part: Expression
     span: Span
 
 
 @node
 class ElseifExpression:
-    condition: "Expression"
-    then_part: "Expression"
+    condition: Expression
+    then_part: Expression
     span: Span
 
 
 @node
 class AcrossExpression:
     """`across e as c ... all|some expression end`."""
-    iteration: "Iteration"
-    invariant: tuple["AssertionClause", ...]
-    until: Optional["Expression"]
+    iteration: Iteration
+    invariant: tuple[AssertionClause, ...]
+    until: Expression | None
     quantifier: str                # "all" or "some"
-    body: "Expression"
-    variant: Optional["Variant"]
+    body: Expression
+    variant: Variant | None
     span: Span
 
 
@@ -258,9 +258,9 @@ class ClassAssertion:
     span: Span
 
 
-Expression = Union[UnqualifiedCall, QualifiedCall, StaticCall, Precursor, BracketExpression,
-                   Current, Result, Void, Parenthesized, BinaryExpression, UnaryExpression,
-                   Old, ManifestInteger, ManifestReal, ManifestString, ManifestCharacter,
-                   ManifestBoolean, TypedConstant, ManifestType, TupleExpression, ManifestArray,
-                   ObjectTest, OpenOperand, Agent, InlineAgent, CreationExpression,
-                   ConditionalExpression, AcrossExpression, Address]
+Expression = (UnqualifiedCall | QualifiedCall | StaticCall | Precursor | BracketExpression
+              | Current | Result | Void | Parenthesized | BinaryExpression | UnaryExpression
+              | Old | ManifestInteger | ManifestReal | ManifestString | ManifestCharacter
+              | ManifestBoolean | TypedConstant | ManifestType | TupleExpression | ManifestArray
+              | ObjectTest | OpenOperand | Agent | InlineAgent | CreationExpression
+              | ConditionalExpression | AcrossExpression | Address)

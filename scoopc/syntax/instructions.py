@@ -2,7 +2,7 @@
 separate blocks, assertion clauses."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Optional, Union
+from typing import TYPE_CHECKING
 
 from ..source import Span
 from .base import Identifier, node
@@ -52,10 +52,10 @@ class CallInstruction:
 
 @node
 class CreationInstruction:
-    processor: Optional[Identifier]   # `create <NONE> x`
-    type: Optional[Type]
+    processor: Identifier | None   # `create <NONE> x`
+    type: Type | None
     target: Expression                # UnqualifiedCall without arguments, or Result
-    procedure: Optional[Identifier]
+    procedure: Identifier | None
     arguments: tuple[Expression, ...]
     span: Span
 
@@ -63,16 +63,16 @@ class CreationInstruction:
 @node
 class Conditional:
     condition: Expression
-    then_part: tuple["Instruction", ...]
-    elseif_parts: tuple["ElseifPart", ...]
-    else_part: Optional[tuple["Instruction", ...]]
+    then_part: tuple[Instruction, ...]
+    elseif_parts: tuple[ElseifPart, ...]
+    else_part: tuple[Instruction, ...] | None
     span: Span
 
 
 @node
 class ElseifPart:
     condition: Expression
-    then_part: tuple["Instruction", ...]
+    then_part: tuple[Instruction, ...]
     span: Span
 
 
@@ -80,15 +80,15 @@ class ElseifPart:
 class MultiBranch:
     """`inspect`."""
     expression: Expression
-    when_parts: tuple["WhenPart", ...]
-    else_part: Optional[tuple["Instruction", ...]]
+    when_parts: tuple[WhenPart, ...]
+    else_part: tuple[Instruction, ...] | None
     span: Span
 
 
 @node
 class WhenPart:
-    choices: tuple["Choice", ...]
-    then_part: tuple["Instruction", ...]
+    choices: tuple[Choice, ...]
+    then_part: tuple[Instruction, ...]
     span: Span
 
 
@@ -96,17 +96,17 @@ class WhenPart:
 class Choice:
     """One value, or an interval `lower..upper`."""
     lower: Expression
-    upper: Optional[Expression]
+    upper: Expression | None
     span: Span
 
 
 @node
 class Loop:
-    initialization: tuple["Instruction", ...]
-    invariant: tuple["AssertionClause", ...]
+    initialization: tuple[Instruction, ...]
+    invariant: tuple[AssertionClause, ...]
     until: Expression
-    body: tuple["Instruction", ...]
-    variant: Optional["Variant"]
+    body: tuple[Instruction, ...]
+    variant: Variant | None
     span: Span
 
 
@@ -122,33 +122,33 @@ class Iteration:
 @node
 class Across:
     iteration: Iteration
-    initialization: tuple["Instruction", ...]
-    invariant: tuple["AssertionClause", ...]
-    until: Optional[Expression]
-    body: tuple["Instruction", ...]
-    variant: Optional["Variant"]
+    initialization: tuple[Instruction, ...]
+    invariant: tuple[AssertionClause, ...]
+    until: Expression | None
+    body: tuple[Instruction, ...]
+    variant: Variant | None
     span: Span
 
 
 @node
 class Check:
-    assertions: tuple["AssertionClause", ...]
-    then_part: Optional[tuple["Instruction", ...]]
+    assertions: tuple[AssertionClause, ...]
+    then_part: tuple[Instruction, ...] | None
     span: Span
 
 
 @node
 class Debug:
     keys: tuple[str, ...]
-    body: tuple["Instruction", ...]
+    body: tuple[Instruction, ...]
     span: Span
 
 
 @node
 class SeparateInstruction:
     """`separate e as x, f as y do ... end`."""
-    arguments: tuple["SeparateArgument", ...]
-    body: tuple["Instruction", ...]
+    arguments: tuple[SeparateArgument, ...]
+    body: tuple[Instruction, ...]
     span: Span
 
 
@@ -164,16 +164,16 @@ class Retry:
     span: Span
 
 
-Instruction = Union[Assignment, AssignerCall, AssignmentAttempt, CallInstruction,
-                    CreationInstruction, Conditional, MultiBranch, Loop, Across, Check, Debug,
-                    SeparateInstruction, Retry]
+Instruction = (Assignment | AssignerCall | AssignmentAttempt | CallInstruction
+               | CreationInstruction | Conditional | MultiBranch | Loop | Across | Check | Debug
+               | SeparateInstruction | Retry)
 
 
 @node
 class AssertionClause:
     """`[tag:] expression`; expression None for a tag followed only by a comment."""
-    tag: Optional[Identifier]
-    expression: Optional[Expression]
+    tag: Identifier | None
+    expression: Expression | None
     span: Span
 
 
@@ -193,6 +193,6 @@ class Postcondition:
 
 @node
 class Variant:
-    tag: Optional[Identifier]
+    tag: Identifier | None
     expression: Expression
     span: Span

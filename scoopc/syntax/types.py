@@ -1,7 +1,7 @@
 """Syntax tree, types: class types, tuple types, anchored types, formal generics."""
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Optional, Union
+from typing import TYPE_CHECKING
 
 from ..source import Span
 from .base import Identifier, node
@@ -20,48 +20,48 @@ __all__ = [
 class ClassType:
     """`NAME [generics]`; formal generic parameters are ClassTypes too (the checker tells)."""
     name: Identifier
-    generics: tuple["Type", ...]
-    attachment: Optional[str]      # "attached", "detachable" or None
+    generics: tuple[Type, ...]
+    attachment: str | None      # "attached", "detachable" or None
     separate: bool
-    variance: Optional[str]        # "frozen", "variant" or None
+    variance: str | None        # "frozen", "variant" or None
     span: Span
 
 
 @node
 class TupleType:
     """`TUPLE [...]`; `labels` is empty or has one label per generic (`TUPLE [a: X; b: Y]`)."""
-    generics: tuple["Type", ...]
+    generics: tuple[Type, ...]
     labels: tuple[Identifier, ...]
-    attachment: Optional[str]
+    attachment: str | None
     separate: bool
-    variance: Optional[str]
+    variance: str | None
     span: Span
 
 
 @node
 class AnchoredType:
     """`like anchor`: anchor is Current, an UnqualifiedCall, a QualifiedCall chain or a StaticCall."""
-    anchor: "Expression"
-    attachment: Optional[str]
+    anchor: Expression
+    attachment: str | None
     separate: bool
-    variance: Optional[str]
+    variance: str | None
     span: Span
 
 
-Type = Union[ClassType, TupleType, AnchoredType]
+Type = ClassType | TupleType | AnchoredType
 
 
 @node
 class FormalGeneric:
     name: Identifier
-    mark: Optional[str]            # "frozen", "expanded" or None
-    constraints: tuple["Constraint", ...]
-    creators: Optional[tuple[Identifier, ...]]   # `create make end`; None when absent
+    mark: str | None            # "frozen", "expanded" or None
+    constraints: tuple[Constraint, ...]
+    creators: tuple[Identifier, ...] | None   # `create make end`; None when absent
     span: Span
 
 
 @node
 class Constraint:
     type: Type
-    renames: tuple["Rename", ...]
+    renames: tuple[Rename, ...]
     span: Span

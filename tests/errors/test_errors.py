@@ -5,9 +5,10 @@ from pathlib import Path
 
 import pytest
 
-from harness import assert_markers, case_id
 from scoopc import pipeline
 from scoopc.project import collect
+
+from harness import assert_markers, case_id
 
 HERE = Path(__file__).resolve().parent
 CASES = sorted(p for p in HERE.glob("*/*") if p.is_dir() and any(p.glob("*.e")))

@@ -4,7 +4,6 @@ virtual clock. Outputs of concurrent programs are checked by their properties (p
 counts, mutual exclusion), never as one interleaving."""
 from pathlib import Path
 
-
 from scoopc import cli
 
 HERE = Path(__file__).resolve().parent

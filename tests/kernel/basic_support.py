@@ -5,7 +5,7 @@ import math
 
 import pytest
 
-from scoopc.kernel import basic as B
+from scoopc.kernel import basic as B, basic_ops
 
 
 class Str:
@@ -23,10 +23,10 @@ class Str:
 
 @pytest.fixture(autouse=True)
 def fake_strings():
-    saved = B._S8[0]
-    B._S8[0] = Str
+    saved = basic_ops._S8[0]
+    basic_ops._S8[0] = Str
     yield
-    B._S8[0] = saved
+    basic_ops._S8[0] = saved
 
 
 # --- Evaluating inline expressions ---------------------------------------------------------

@@ -6,9 +6,7 @@ import math
 from pathlib import Path
 
 import scoopc.kernel as kernel
-from scoopc.kernel.ext import immutable_string_8, immutable_string_32
-from scoopc.kernel.ext import readable_string_general as g
-from scoopc.kernel.ext import string_8, string_32
+from scoopc.kernel.ext import immutable_string_8, immutable_string_32, readable_string_general as g, string_8, string_32
 
 ROOT = Path(__file__).resolve().parents[2]
 GENERAL = {"READABLE_STRING_GENERAL", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "ANY"}

@@ -9,10 +9,8 @@ import pytest
 
 import scoopc.kernel as kernel
 from scoopc.kernel import types
-from scoopc.kernel.ext import function, procedure, routine
-from scoopc.kernel.ext import tuple as tup
+from scoopc.kernel.ext import function, procedure, routine, tuple as tup
 from scoopc.kernel.tuples import new_tuple
-
 
 # --- Fakes ---------------------------------------------------------------------------------
 

@@ -9,12 +9,12 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given
-from hypothesis import strategies as st
+from hypothesis import given, strategies as st
 
-from basic_support import Str, ev, same_value, fake_strings as _fake_strings
 from scoopc.kernel import basic as B
 from scoopc.kernel.basic_inline import INTEGER_CLASSES
+
+from basic_support import Str, ev, fake_strings as _fake_strings, same_value
 
 fake_strings = _fake_strings
 

@@ -6,11 +6,11 @@ import math
 import struct
 
 import pytest
-from hypothesis import given
-from hypothesis import strategies as st
+from hypothesis import given, strategies as st
+
+from scoopc.kernel import basic as B, basic_dispatch
 
 from basic_support import Str, ev, fake_strings as _fake_strings
-from scoopc.kernel import basic as B
 
 fake_strings = _fake_strings
 NAN, INF = math.nan, math.inf
@@ -205,7 +205,7 @@ def test_types_of_values():
 def test_generating_type_uses_the_hook(monkeypatch):
     with pytest.raises(NotImplementedError):
         B.query(5, "generating_type")
-    monkeypatch.setattr(B, "GENERATING_TYPE", lambda region, desc: ("TYPE", region, desc.name))
+    monkeypatch.setattr(basic_dispatch, "GENERATING_TYPE", lambda region, desc: ("TYPE", region, desc.name))
     assert B.query(5, "generating_type", "R") == ("TYPE", "R", "INTEGER_32")
     assert B.query(0.5, "generating_type", "R")[2] == "REAL_64"
 

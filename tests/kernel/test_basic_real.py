@@ -8,11 +8,11 @@ import struct
 
 import numpy as np
 import pytest
-from hypothesis import given
-from hypothesis import strategies as st
+from hypothesis import given, strategies as st
 
-from basic_support import ev, same_value, fake_strings as _fake_strings
 from scoopc.kernel import basic as B
+
+from basic_support import ev, fake_strings as _fake_strings, same_value
 
 fake_strings = _fake_strings
 NAN, INF = math.nan, math.inf

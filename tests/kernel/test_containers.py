@@ -5,9 +5,7 @@ import pytest
 
 import scoopc.kernel as kernel
 from scoopc.kernel import tuples, types
-from scoopc.kernel.ext import special
-from scoopc.kernel.ext import tuple as tup
-
+from scoopc.kernel.ext import special, tuple as tup
 
 # --- Fakes ---------------------------------------------------------------------------------
 

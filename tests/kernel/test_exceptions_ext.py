@@ -2,8 +2,7 @@
 import pytest
 
 from scoopc import kernel
-from scoopc.kernel import support
-from scoopc.kernel import types as TY
+from scoopc.kernel import support, types as TY
 from scoopc.kernel.errors import EiffelFailure
 from scoopc.kernel.ext import exception, exception_manager as EM, exceptions
 

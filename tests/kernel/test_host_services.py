@@ -12,11 +12,19 @@ import pytest
 
 from scoopc import kernel
 from scoopc.kernel import strings as K
-from scoopc.kernel.ext import arguments, arguments_32, c_date, double_math as D
-from scoopc.kernel.ext import execution_environment as E
-from scoopc.kernel.ext import ise_scoop_runtime, memory, operating_environment, platform
-from scoopc.kernel.ext import single_math as S
-from scoopc.kernel.ext import time as T
+from scoopc.kernel.ext import (
+    arguments,
+    arguments_32,
+    c_date,
+    double_math as D,
+    execution_environment as E,
+    ise_scoop_runtime,
+    memory,
+    operating_environment,
+    platform,
+    single_math as S,
+    time as T,
+)
 from scoopc.runtime.main import finish, start
 
 

@@ -7,9 +7,7 @@ import pytest
 
 from scoopc import kernel
 from scoopc.kernel import strings as K
-from scoopc.kernel.ext import console as C
-from scoopc.kernel.ext import file as F
-from scoopc.kernel.ext import io_medium as M
+from scoopc.kernel.ext import console as C, file as F, io_medium as M
 from scoopc.runtime.main import finish, start
 
 

@@ -7,8 +7,7 @@ import pytest
 from scoopc import kernel
 from scoopc.kernel import strings as K
 from scoopc.kernel.errors import EiffelFailure
-from scoopc.kernel.ext import file as F
-from scoopc.kernel.ext import io_medium as M
+from scoopc.kernel.ext import file as F, io_medium as M
 
 
 class Region:
@@ -155,7 +154,7 @@ def test_read_real_rounds_to_single_precision(region, tmp_path):
 
 def test_read_word_character_and_stream(region, tmp_path):
     path = tmp_path / "w.txt"
-    path.write_bytes("  hello\tw\u00f6rld\nabcdef".encode("utf-8"))
+    path.write_bytes("  hello\tw\u00f6rld\nabcdef".encode())
     f = new_file(region, path, F.make_open_read)
     M.read_word(f)
     assert last(f) == "hello"
@@ -163,7 +162,7 @@ def test_read_word_character_and_stream(region, tmp_path):
     assert M.last_character(f) == "\t"
     M.read_word(f)
     assert last(f) == "w\u00f6rld"
-    assert F.position(f) == len("  hello\tw\u00f6rld".encode("utf-8"))   # bytes
+    assert F.position(f) == len("  hello\tw\u00f6rld".encode())   # bytes
     F.next_line(f)
     M.read_stream(f, 4)
     assert last(f) == "abcd" and M.bytes_read(f) == 4 and not F.end_of_file(f)

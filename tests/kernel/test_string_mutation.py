@@ -3,12 +3,16 @@ string_8.py, string_32.py), with EiffelBase's capacities."""
 import pytest
 
 from scoopc.kernel import strings as K
-from scoopc.kernel.ext import immutable_string_32
-from scoopc.kernel.ext import readable_string_32 as r32
-from scoopc.kernel.ext import readable_string_general as g
-from scoopc.kernel.ext import string_8, string_32
-from scoopc.kernel.ext import string_general as sg
-from string_fakes import R, S8, S32, created, ise_hash_reference, registered
+from scoopc.kernel.ext import (
+    immutable_string_32,
+    readable_string_32 as r32,
+    readable_string_general as g,
+    string_8,
+    string_32,
+    string_general as sg,
+)
+
+from string_fakes import S8, S32, R, created, ise_hash_reference, registered
 
 
 @pytest.fixture(autouse=True)

@@ -7,8 +7,8 @@ import pytest
 from hypothesis import given, strategies as st
 
 from scoopc.kernel import strings as K
-from scoopc.kernel.ext import _string_numbers as N
-from scoopc.kernel.ext import readable_string_general as g
+from scoopc.kernel.ext import _string_numbers as N, readable_string_general as g
+
 from string_fakes import R, registered
 
 

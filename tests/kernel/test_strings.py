@@ -8,13 +8,27 @@ import pytest
 from hypothesis import given, strategies as st
 
 from scoopc.kernel import strings as K
-from scoopc.kernel.ext import readable_string_8 as r8
-from scoopc.kernel.ext import readable_string_32 as r32
-from scoopc.kernel.ext import readable_string_general as g
-from scoopc.kernel.ext import string_8
-from scoopc.kernel.ext import string_general as sg
+from scoopc.kernel.ext import (
+    readable_string_8 as r8,
+    readable_string_32 as r32,
+    readable_string_general as g,
+    string_8,
+    string_general as sg,
+)
+
 from string_fakes import (
-    I8, I32, R, ROOT, S8, S32, MyString, Region, created, ise_hash_reference, registered, twin,
+    I8,
+    I32,
+    ROOT,
+    S8,
+    S32,
+    MyString,
+    R,
+    Region,
+    created,
+    ise_hash_reference,
+    registered,
+    twin,
 )
 
 

@@ -122,8 +122,8 @@ def test_every_field_kind_from_a_msg_definition():
 
 
 def test_alignment_is_relative_to_the_end_of_the_header():
-    msg = ros_messages.new("std_msgs/msg/Header", stamp=ros_messages.new("builtin_interfaces/msg/Time", sec=1, nanosec=2),
-                       frame_id="ab")
+    stamp = ros_messages.new("builtin_interfaces/msg/Time", sec=1, nanosec=2)
+    msg = ros_messages.new("std_msgs/msg/Header", stamp=stamp, frame_id="ab")
     data = cdr.serialize(msg)
     assert data[:4] == b"\x00\x01\x00\x00"
     assert data[4:] == struct.pack("<iII", 1, 2, 3) + b"ab\x00"
@@ -165,4 +165,5 @@ def test_new_fills_defaults_and_rejects_unknown_fields():
         ros_messages.new("geometry_msgs/msg/Twist", speed=1)
     with pytest.raises(KeyError):
         ros_messages.fields("nope_msgs/msg/Nothing")
-    assert ros_messages.nested_types("geometry_msgs/msg/Twist") == ["geometry_msgs/msg/Twist", "geometry_msgs/msg/Vector3"]
+    nested = ros_messages.nested_types("geometry_msgs/msg/Twist")
+    assert nested == ["geometry_msgs/msg/Twist", "geometry_msgs/msg/Vector3"]

@@ -3,7 +3,6 @@ SIMPLE_CONTROLLER, run in-process with `scoopc run --virtual-clock` against the 
 import threading
 from pathlib import Path
 
-
 from scoopc import cli
 from scoopc.robots import ros_messages
 

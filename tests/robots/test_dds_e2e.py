@@ -18,7 +18,7 @@ import pytest
 
 pytest.importorskip("cyclonedds")
 
-from scoopc.robots import dds, ros_messages, record  # noqa: E402
+from scoopc.robots import dds, record, ros_messages  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 WORLD = """name: e2e

@@ -11,6 +11,7 @@ import pytest
 
 from scoopc import cli
 from scoopc.robots import ros_messages
+
 from harness import run_on_simulator
 
 ROOT = Path(__file__).parents[2]

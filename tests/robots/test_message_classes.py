@@ -2,7 +2,6 @@
 `scoopc msg` writes, and compiled programs publish Eiffel message objects as ROS 2 ros_messages."""
 from pathlib import Path
 
-
 from scoopc import cli
 from scoopc.robots import eiffel_messages
 from scoopc.semantics.universe import stdlib_root

@@ -17,6 +17,7 @@ import pytest
 from scoopc import cli
 from scoopc.robots import ros_messages, transport
 from scoopc.robots.bus import Bus
+
 from harness import run_on_simulator
 
 ROOT = Path(__file__).parents[2]

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from mcap.reader import make_reader
 
-from scoopc.robots import cdr, ros_messages, record
+from scoopc.robots import cdr, record, ros_messages
 from scoopc.robots.bus import Bus
 from scoopc.robots.sim import Simulator
 

@@ -26,7 +26,9 @@ def new(typename, **fields):
 
 
 def odometry(x, y=0.0, theta=0.0, vx=0.0, vtheta=0.0, stamp=0):
-    vec = lambda a=0.0, b=0.0, c=0.0: new("geometry_msgs/msg/Vector3", x=a, y=b, z=c)
+    def vec(a=0.0, b=0.0, c=0.0):
+        return new("geometry_msgs/msg/Vector3", x=a, y=b, z=c)
+
     header = new("std_msgs/msg/Header", stamp=new("builtin_interfaces/msg/Time", sec=stamp, nanosec=0),
                  frame_id="odom")
     pose = new("geometry_msgs/msg/Pose", position=new("geometry_msgs/msg/Point", x=x, y=y, z=0.0),

@@ -10,6 +10,7 @@ from pathlib import Path
 import pytest
 
 from scoopc import cli
+
 from harness import run_on_simulator
 
 PROGRAMS = Path(__file__).parent / "programs"

@@ -8,7 +8,7 @@ import threading
 import pytest
 from PIL import Image
 
-from scoopc.robots import ros_messages, record, simnode
+from scoopc.robots import record, ros_messages, simnode
 from scoopc.robots.bus import Bus
 
 WORLD = {"name": "strip", "size": [3.0, 1.0], "duration": 60,

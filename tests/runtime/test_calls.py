@@ -4,6 +4,7 @@ interleaved with another client's."""
 import threading
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, Runner, cell_inc, result_of, spawn
 
 

@@ -9,6 +9,7 @@ import threading
 import pytest
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, spawn
 
 

@@ -4,6 +4,7 @@ a lost exception is reported on stderr, and strict mode makes it a run-time fail
 import pytest
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell
 
 

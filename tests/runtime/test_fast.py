@@ -5,10 +5,11 @@ as the general entry point: these tests repeat the general guarantees through th
 import threading
 
 import pytest
+from test_claim import LCell, leaf_add, leaf_fail, leaf_items
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, spawn
-from test_claim import LCell, leaf_add, leaf_fail, leaf_items
 
 W = ("TEST", "routine", "test.e", 1)
 

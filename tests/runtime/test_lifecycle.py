@@ -9,6 +9,7 @@ import time
 import pytest
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, spawn
 
 W_A = ("NODE", "ping", "ring.e", 10)

@@ -6,6 +6,7 @@ import threading
 import pytest
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, spawn
 
 

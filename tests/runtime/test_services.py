@@ -2,6 +2,7 @@
 import threading
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, spawn
 
 counter = {"n": 0}
@@ -101,7 +102,7 @@ def test_trace_processors_prefixes_every_line(harness):
     assert h.finish() == 0
     lines = h.out.getvalue().splitlines()
     pid = p._region_.id
-    assert [l for l in lines if l.startswith(f"[P{pid}] ")] == [f"[P{pid}] a", f"[P{pid}] bc"]
+    assert [line for line in lines if line.startswith(f"[P{pid}] ")] == [f"[P{pid}] a", f"[P{pid}] bc"]
     assert "[P1] root line" in lines and lines[-1] == "[P1] unfinished"
 
 

@@ -2,6 +2,7 @@
 import threading
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, gated_cell
 
 SECOND = 1_000_000_000

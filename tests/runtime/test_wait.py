@@ -6,6 +6,7 @@ re-evaluate; wake-ups are targeted and nothing polls."""
 import pytest
 
 import scoopc.runtime as rt
+
 from rt_helpers import Cell, spawn
 
 W = ("TEST", "routine", "test.e", 1)

@@ -8,10 +8,11 @@ import re
 
 from hypothesis import HealthCheck, given, settings, strategies as st
 
-from harness import ROOT
-from scoopc.parse import parser
 from scoopc import messages
+from scoopc.parse import parser
 from scoopc.source import SourceFile
+
+from harness import ROOT
 
 TOKEN = re.compile(r'"(?:%.|[^"%\n])*"|\'(?:%.|[^\'%\n])*\'|--[^\n]*|\s+|\w+|[^\w\s]{1,3}')
 EXTRA_TOKENS = ["end", "do", "if", "then", "loop", "(", ")", "[", "]", ":=", ";", ",", ".", "\"", "'",

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from scoopc.parse import parser
 from scoopc import diagnostics, syntax as s
+from scoopc.parse import parser
 from scoopc.source import SourceFile
 
 

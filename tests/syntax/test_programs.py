@@ -4,10 +4,11 @@ from pathlib import Path
 
 import pytest
 
-from harness import assert_markers, case_id, check_golden
-from scoopc.parse import parser
 from scoopc import diagnostics, syntax
+from scoopc.parse import parser
 from scoopc.source import SourceFile
+
+from harness import assert_markers, case_id, check_golden
 
 HERE = Path(__file__).resolve().parent
 VALID = sorted((HERE / "valid").rglob("*.e"))

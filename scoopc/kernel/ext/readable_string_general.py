@@ -8,6 +8,7 @@ Indices are 1-based; preconditions are the Eiffel contracts' business.
 from __future__ import annotations
 
 from scoopc.kernel import strings as K
+
 from . import _string_numbers as N
 
 # --- Initialization ----------------------------------------------------------------------------

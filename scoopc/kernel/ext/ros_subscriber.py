@@ -198,8 +198,8 @@ def listen_battery(current, listener):
 
 
 def close(current):
-    for link in _links(current):
-        link.close()
+    for each in _links(current):
+        each.close()
 
 
 def received_count(current):

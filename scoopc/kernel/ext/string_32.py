@@ -6,12 +6,32 @@ space is CHARACTER_PROPERTY.is_space (Unicode White_Space) instead of CHARACTER_
 from __future__ import annotations
 
 from scoopc.kernel import strings as K
+
 from .string_8 import (
-    _center_justify, _left_justify, _right_justify,
-    append, append_character, append_substring, extend, fill_character, fill_with,
-    insert_character, insert_string, item, precede, prepend, prepend_character, prune,
-    prune_all, prune_all_leading, prune_all_trailing, put, replace_substring,
-    replace_substring_all, set, share,
+    _center_justify,
+    _left_justify,
+    _right_justify,
+    append,
+    append_character,
+    append_substring,
+    extend,
+    fill_character,
+    fill_with,
+    insert_character,
+    insert_string,
+    item,
+    precede,
+    prepend,
+    prepend_character,
+    prune,
+    prune_all,
+    prune_all_leading,
+    prune_all_trailing,
+    put,
+    replace_substring,
+    replace_substring_all,
+    set,
+    share,
 )
 
 # Bound by name from this module (codegen: `scoopc.kernel.ext.string_32.<feature>`).

@@ -40,7 +40,7 @@ class Keyworded(tuple):
     keyword: Any = None
 
     @classmethod
-    def of(cls, keyword: Any, items: Any) -> "Keyworded":
+    def of(cls, keyword: Any, items: Any) -> Keyworded:
         result = cls(items)
         result.keyword = keyword
         return result

@@ -6,7 +6,7 @@ Input: the children of one rule. Output: ClassDeclaration and its parts.
 from __future__ import annotations
 
 import dataclasses
-from typing import Any, Optional
+from typing import Any
 
 from ... import syntax as s
 from .base import BuilderBase, Keyworded
@@ -32,7 +32,7 @@ class ClassBuilder(BuilderBase):
             inherits, creators, converters or (), tuple(clauses), invariant or (), notes,
             self.span(start, c[-1]))
 
-    def _trailing_notes(self, clauses: list) -> Optional[tuple]:
+    def _trailing_notes(self, clauses: list) -> tuple | None:
         """A `note` clause at the end of a class whose last feature is an attribute is first
         read as that attribute's note (the grammar shifts); give it back to the class."""
         last = clauses[-1]

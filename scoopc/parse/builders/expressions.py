@@ -4,7 +4,7 @@ Input: the children of one grammar rule (tokens and built nodes). Output: an Exp
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from lark import Token
 
@@ -13,7 +13,7 @@ from .base import BuilderBase
 from .literals import character_value, integer_value, real_value, string_value
 
 
-def _arguments(actuals: Optional[tuple]) -> tuple:
+def _arguments(actuals: tuple | None) -> tuple:
     return actuals[0] if actuals is not None else ()
 
 

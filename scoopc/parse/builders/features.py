@@ -5,7 +5,7 @@ assertion and agent nodes.
 """
 from __future__ import annotations
 
-from typing import Any, Optional
+from typing import Any
 
 from ... import syntax as s
 from .base import BuilderBase, Tag
@@ -17,7 +17,7 @@ def _first(*items: Any) -> Any:
 
 class FeatureBuilder(BuilderBase):
     # ---- declarations ----------------------------------------------------------------
-    def query_declaration(self, c: list) -> Optional[s.Feature]:
+    def query_declaration(self, c: list) -> s.Feature | None:
         names = tuple(c[:-5])
         arguments, (type_, assigner), constant, notes, body = c[-5:]
         notes = tuple(notes or ())
@@ -126,7 +126,7 @@ class FeatureBuilder(BuilderBase):
 
     def assertion(self, c: list) -> tuple:
         clauses: list[s.AssertionClause] = []
-        tag: Optional[s.Identifier] = None
+        tag: s.Identifier | None = None
         for item in c:
             if isinstance(item, Tag):
                 if tag is not None:
@@ -165,7 +165,7 @@ class FeatureBuilder(BuilderBase):
         arguments = self._agent_operands(call)
         return s.Agent(target, call.name, arguments, self.span(keyword, call))
 
-    def _agent_operands(self, call: Any) -> Optional[tuple]:
+    def _agent_operands(self, call: Any) -> tuple | None:
         if call.span.end_line == call.name.span.end_line \
                 and call.span.end_column == call.name.span.end_column:
             return None

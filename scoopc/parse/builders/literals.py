@@ -6,7 +6,6 @@ of problems (offset in the text, length, reason) for the caller to report.
 from __future__ import annotations
 
 import re
-from typing import Optional
 
 # ECMA-367 special character codes (`%N` and so on); letters are accepted in either case.
 ESCAPES = {
@@ -19,7 +18,7 @@ _CONTINUATION = re.compile(r"%[ \t]*\n[ \t]*%")
 Problem = tuple[int, int, str]
 
 
-def integer_value(text: str) -> Optional[int]:
+def integer_value(text: str) -> int | None:
     """The value of an integer literal (decimal, 0x hex, 0c octal, 0b binary); None if malformed."""
     digits = text.replace("_", "")
     base = {"x": 16, "c": 8, "b": 2}.get(digits[1:2].lower(), 10) if len(digits) > 1 and digits[0] == "0" else 10
@@ -35,7 +34,7 @@ def real_value(text: str) -> float:
     return float(text.replace("_", ""))
 
 
-def _code_value(code: str) -> Optional[int]:
+def _code_value(code: str) -> int | None:
     value = integer_value(code)
     return value if value is not None and value <= 0x10FFFF else None
 

@@ -5,6 +5,7 @@ Input: the children of one type rule. Output: ClassType, TupleType or AnchoredTy
 from __future__ import annotations
 
 import dataclasses
+
 from ... import syntax as s
 from .base import BuilderBase
 

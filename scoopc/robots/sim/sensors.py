@@ -7,43 +7,9 @@ Ground sensors: 0.01 m over the floor, +inf over a hole (nothing reflects).
 import math
 
 import numpy as np
-from rosbags.typesys import Stores, get_typestore
 
+from ..ros_messages import new
 from .world import ray_cast
-
-_STORE = get_typestore(Stores.ROS2_HUMBLE)
-_NUMPY = {"float32": np.float32, "float64": np.float64, "int8": np.int8, "uint8": np.uint8, "int16": np.int16,
-          "uint16": np.uint16, "int32": np.int32, "uint32": np.uint32, "int64": np.int64, "uint64": np.uint64}
-
-try:  # helper M's message model when present: same type store classes
-    from scoopc.robots.ros_messages import new as _new_external
-except Exception:  # pragma: no cover - depends on the other module's presence
-    _new_external = None
-
-
-def _default(nodetype, detail):
-    nt = int(nodetype)
-    if nt == 1:  # BASE
-        base = detail[0]
-        return "" if base == "string" else (False if base == "bool" else (0.0 if base.startswith("float") else 0))
-    if nt == 2:  # NAME
-        return new(detail)
-    (inner_nt, inner), length = detail
-    if int(inner_nt) == 1 and inner[0] in _NUMPY:
-        return np.zeros(length if nt == 3 else 0, dtype=_NUMPY[inner[0]])
-    return [_default(inner_nt, inner) for _ in range(length if nt == 3 else 0)]
-
-
-def new(typename, **fields):
-    """A message of `typename` with defaults for the omitted fields."""
-    if _new_external is not None:
-        return _new_external(typename, **fields)
-    args = {}
-    for name, (nodetype, detail) in _STORE.fielddefs[typename][1]:
-        args[name] = fields.pop(name) if name in fields else _default(nodetype, detail)
-    if fields:
-        raise TypeError(f"{typename} has no field(s) {sorted(fields)}")
-    return _STORE.types[typename](**args)
 
 
 def stamp(t_ns):
