@@ -16,7 +16,7 @@ feature {NONE} -- Initialization
 		do
 			create l_first.make (1)
 			create l_second.make (2)
-			separate l_first as f, l_second as f do -- E: V1SE(1)
+			separate l_first as f, l_second as f do -- E: FRESH_IDENTIFIER
 				print ("forks reserved%N")
 			end
 			separate l_first as f1, l_second as f2 do

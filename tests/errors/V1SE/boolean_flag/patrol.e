@@ -13,7 +13,7 @@ feature {NONE} -- Initialization
 			-- Create the robot and start it.
 		do
 			create robot.make
-			separate is_running as r do -- E: V1SE(2)
+			separate is_running as r do -- E: V1SE
 				print (r)
 			end
 			separate robot as b do

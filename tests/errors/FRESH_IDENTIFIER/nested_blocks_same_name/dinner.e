@@ -15,7 +15,7 @@ feature {NONE} -- Initialization
 			create left_fork.make (1)
 			create right_fork.make (2)
 			separate left_fork as f do
-				separate right_fork as f do -- E: V1SE(1)
+				separate right_fork as f do -- E: FRESH_IDENTIFIER
 					print ("both forks reserved%N")
 				end
 				f.pick_up

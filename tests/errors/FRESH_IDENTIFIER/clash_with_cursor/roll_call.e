@@ -20,7 +20,7 @@ feature {NONE} -- Initialization
 			create l_robot.make (2)
 			robots.extend (l_robot)
 			across robots as c loop
-				separate c.item as c do -- E: V1SE(1)
+				separate c.item as c do -- E: FRESH_IDENTIFIER
 					print ("robot reserved%N")
 				end
 				separate c.item as r do

@@ -14,7 +14,7 @@ feature {NONE} -- Initialization
 		do
 			create server.make
 			origin.set (1.5, 2.5)
-			separate origin as o do -- E: V1SE(2)
+			separate origin as o do -- E: V1SE
 				print (o.x)
 			end
 			separate server as s do

@@ -23,7 +23,7 @@ feature -- Basic operations
 	report (a_robot: separate ROBOT)
 			-- Print the battery level and the position of `a_robot'.
 		do
-			separate a_robot.battery_level as level do -- E: V1SE(2)
+			separate a_robot.battery_level as level do -- E: V1SE
 				print (level)
 			end
 			separate a_robot.pose as p do

@@ -16,7 +16,7 @@ feature {NONE} -- Initialization
 		do
 			create motor.make (1)
 			m := 5
-			separate motor as m do -- E: V1SE(1)
+			separate motor as m do -- E: FRESH_IDENTIFIER
 				print ("motor reserved%N")
 			end
 			separate motor as l_motor do

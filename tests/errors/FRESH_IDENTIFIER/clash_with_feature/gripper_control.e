@@ -13,7 +13,7 @@ feature {NONE} -- Initialization
 			-- Create the gripper and close it.
 		do
 			create gripper.make
-			separate gripper as gripper do -- E: V1SE(1)
+			separate gripper as gripper do -- E: FRESH_IDENTIFIER
 				print ("gripper reserved%N")
 			end
 			separate gripper as g do

@@ -24,7 +24,7 @@ feature -- Basic operations
 	balance (a_left, a_right: separate WHEEL)
 			-- Give `a_left' and `a_right' the same speed.
 		do
-			separate a_right as a_left do -- E: V1SE(1)
+			separate a_right as a_left do -- E: FRESH_IDENTIFIER
 				print ("right wheel reserved%N")
 			end
 			a_left.set_speed (10)

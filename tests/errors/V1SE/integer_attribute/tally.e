@@ -14,7 +14,7 @@ feature {NONE} -- Initialization
 		do
 			create counter.make
 			count := 3
-			separate count as c do -- E: V1SE(2)
+			separate count as c do -- E: V1SE
 				print (c)
 			end
 			separate counter as k do
