@@ -902,6 +902,21 @@ EXPLANATIONS: dict[str, Explanation] = {
         worker.take (my_list)
         """,
         "Declare the formal argument `separate` in the supplier, so it treats the object as remote."),
+    "FORMAL-TRAITOR": _x(
+        """A warning, not an error. In a call on a separate target, a value whose type is a formal
+        generic `G` is passed to a non-separate formal argument, or a `G` result of the call is
+        used as non-separate. EiffelStudio accepts both (it applies VUAR(3) and result type
+        adaptation only to a generic declared `reference G`), but if some actual generic
+        parameter is a reference type, a non-separate reference crosses processors (a traitor).""",
+        """
+        class NODE [G]  ...  put (v: G) ...
+        class TREE [G]  ...  node.put (value)     -- node: separate NODE [G], value: G
+        """,
+        """
+        class TREE [expanded G]  ...  node.put (value)
+        """,
+        """Constrain the generic to expanded types (`expanded G`) when only values such as INTEGER
+        are meant, or declare the supplier's formal argument separate."""),
     "VUAR(4)": _x(
         """In a call on a separate target, an expanded actual argument is copied to the other
         processor. It must not contain, directly or through other expanded fields, attributes of
@@ -929,7 +944,7 @@ EXPLANATIONS: dict[str, Explanation] = {
         print (sensor.value)
         """,
         "Across processors, query basic values or separate references, not expanded objects with references."),
-    "V1SE(1)": _x(
+    "FRESH_IDENTIFIER": _x(
         """The name introduced by `separate e as x` is fresh: not a feature, an argument, a local, an
         object-test or iteration local in scope, nor another name of the same or an enclosing
         separate block.""",
@@ -942,10 +957,11 @@ EXPLANATIONS: dict[str, Explanation] = {
         separate buffer as b do b.put (1) end
         """,
         "Give the separate-block local a name of its own."),
-    "V1SE(2)": _x(
+    "V1SE": _x(
         """A separate block reserves the processors of the objects its expressions denote, so each
-        expression must be of a reference type: a value of expanded type (INTEGER, BOOLEAN, ...) has
-        no processor to reserve.""",
+        expression must be of a separate type (EiffelStudio 21.11+): a value of expanded type
+        (INTEGER, BOOLEAN, ...) has no processor to reserve, and a non-separate object is already
+        on the current processor.""",
         """
         separate count as c do print (c) end      -- count: INTEGER
         """,
@@ -1156,10 +1172,10 @@ ALIASES: dict[str, str] = {
     "VUTA-4G": "VUTA(3)",   # call on an uncontrolled separate target
     "VUAR-3G": "VUAR(3)",   # reference actual of a separate call needs a separate formal
     "VUAR-4G": "VUAR(4)",   # expanded actual of a separate call holds non-separate references
-    "V1SE-G1": "V1SE(1)",   # two names of one separate block are the same
-    "V1SE-1G": "V1SE(1)",
-    "V1SE-G2": "V1SE(1)",   # a separate-block name clashes with another entity
-    "V1SE-2G": "V1SE(1)",
-    "V1SE-G3": "V1SE(2)",   # a separate-block expression is not of a separate (reference) type
-    "V1SE-3G": "V1SE(2)",
+    "V1SE-G1": "FRESH_IDENTIFIER",   # two names of one separate block are the same
+    "V1SE-1G": "FRESH_IDENTIFIER",
+    "V1SE-G2": "FRESH_IDENTIFIER",   # a separate-block name clashes with another entity
+    "V1SE-2G": "FRESH_IDENTIFIER",
+    "V1SE-G3": "V1SE",   # a separate-block expression is not of a separate (reference) type
+    "V1SE-3G": "V1SE",
 }

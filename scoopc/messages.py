@@ -15,6 +15,10 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - SOURCE: a file that cannot be read (missing, not UTF-8).
 - ECF: a problem in an .ecf project file; ECF-NOTE: an .ecf setting we ignore.
 - ONCE-KEY: a once key other than "PROCESS", "THREAD" or "OBJECT".
+- FORMAL-TRAITOR (a warning): a value of an unmarked formal generic type `G` passed to a
+  non-separate formal in a call on a separate target, or a `G` result of such a call used as
+  non-separate. EiffelStudio accepts both (it applies VUAR(3) and result adaptation to
+  `reference G` only); if an actual generic is a reference type, the value is a traitor.
 - PROCESSOR-TAG: `create <X>` with a processor tag other than NONE (explicit processor tags
   are not supported; `<NONE>` makes a passive region).
 
@@ -171,14 +175,19 @@ MESSAGES: dict[str, Message] = {
                        "non-separate type {type}: the supplier would hold a reference into this processor (a traitor)",
                        "declare the formal `separate`; when the supplier needs its own copy of a STRING it "
                        "makes one with `create s.make_from_separate (the_formal)`"),
+    "FORMAL-TRAITOR": Message(
+        "{what} of formal generic type {formal} {how}: if an actual generic for {formal} is a reference type, "
+        "{risk} (a traitor)",
+        "declare {formal} `expanded` in the class header when only values such as INTEGER are meant, or use "
+        "separate types; EiffelStudio accepts this, so it is a warning"),
     "VUAR(4)": Message("expanded actual of type {type} holds non-separate references and is passed to another processor",
                        "make the expanded class's reference attributes `separate`, or pass the values separately"),
     "VUER": Message("the result of type {type} holds non-separate references and would come from another processor",
                     "return the values as separate references, or copy them explicitly"),
-    "V1SE(1)": Message("separate block local `{name}` has the name of another entity or feature",
+    "FRESH_IDENTIFIER": Message("separate block local `{name}` has the name of another entity or feature",
                        "choose another name, for example `l_{name}`"),
-    "V1SE(2)": Message("a separate block needs a reference expression, this is {type}",
-                       "values of expanded types are copied anyway: use them directly"),
+    "V1SE": Message("an expression used in a separate instruction must be of a separate type, this is {type}",
+                    "{hint}"),
     "V1SE(3)": Message("separate block local `{name}` cannot be assigned",
                        "it stands for the reserved object; assign to a local declared in the routine instead"),
     "VFFD(7)": Message("once function `{name}` has a type that depends on the object (a formal generic or `like Current`), "

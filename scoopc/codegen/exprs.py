@@ -203,6 +203,29 @@ class Expressions:
             result = ast.IfExp(self.x(part.condition), self.x(part.then_part), result)
         return ast.IfExp(self.x(node.condition), self.x(node.then_part), result)
 
+    def x_InspectExpression(self, node):
+        """`(b1 if (t := e) == c1 else b2 if t == c2 else ... )`: the subject evaluated once; no
+        matching branch and no `else` raises as the instruction does."""
+        subject = self.temp("inspect")
+        if node.else_part is not None:
+            result = self.x(node.else_part)
+        else:
+            result = P.call("S.bad_inspect", [P.name(subject), self.where(node)])
+        first = True
+        tests = []
+        for part in node.when_parts:
+            part_tests = []
+            for choice in part.choices:
+                value = ast.NamedExpr(P.name(subject, store=True), self.x(node.expression)) if first else P.name(subject)
+                first = False
+                part_tests.append(self.choice(value, choice))
+            tests.append(P.boolop(ast.Or(), part_tests) if len(part_tests) > 1 else part_tests[0])
+        for part, test in reversed(list(zip(node.when_parts, tests))):
+            result = ast.IfExp(test, self.x(part.then_part), result)
+        if first:                        # no `when`: the subject is still evaluated, then the rest
+            result = ast.Subscript(P.tup([self.x(node.expression), result]), P.const(1), ast.Load())
+        return result
+
     def x_ObjectTest(self, node):
         value = self.x(node.expression)
         if node.local is not None:

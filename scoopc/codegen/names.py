@@ -20,13 +20,24 @@ def py_identifier(name: str) -> str:
     return name + "_" if name in RESERVED or name.startswith("_") else name
 
 
+# Names every generated module imports (HEADER_IMPORTS of classes.py): an Eiffel class with one
+# of them (EiffelStudio's partree example has a class S) gets a trailing underscore in Python.
+HEADER_NAMES = frozenset({"B", "KS", "S", "T", "P", "rt", "ast"})
+
+
 def class_name(key: str) -> str:
     """The Python class of an Eiffel class key (`CELL@BASE` is the library's CELL)."""
+    name = key.split("@")[0]
+    return name + "_" if name in HEADER_NAMES else name
+
+
+def eiffel_class_name(key: str) -> str:
+    """The Eiffel name of a class key, for traces and documentation."""
     return key.split("@")[0]
 
 
 def module_name(key: str) -> str:
-    return class_name(key).lower()
+    return eiffel_class_name(key).lower()
 
 
 def seed_class(seed: str) -> str:

@@ -12,7 +12,7 @@ from .assertions import InheritedAssertions
 from .calls import Calls
 from .exprs import Expressions
 from .instrs import Instructions
-from .names import class_name, py_identifier
+from .names import eiffel_class_name, py_identifier
 
 LOCAL_RESERVED = frozenset({"s", "b", "k", "t", "ks", "rt", "here", "self", "all", "any", "object",
                             "result", "len", "range", "isinstance", "type"})
@@ -52,7 +52,7 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
 
     def where(self, node) -> ast.expr:
         span = node.span
-        value = P.tup([P.const(class_name(self.info.name)), P.const(self.routine_name),
+        value = P.tup([P.const(eiffel_class_name(self.info.name)), P.const(self.routine_name),
                        P.const(span.file), P.const(span.line)])
         return self.module.constant("W", value, key=("where", self.routine_name, span.file, span.line))
 

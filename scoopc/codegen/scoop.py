@@ -54,7 +54,8 @@ PLAIN = frozenset({
     "MultiBranch", "WhenPart", "Choice", "Check", "Parenthesized", "Old", "ManifestInteger",
     "ManifestReal", "ManifestString", "ManifestCharacter", "ManifestBoolean", "TypedConstant",
     "ManifestType", "TupleExpression", "ObjectTest", "Current", "Result", "Void",
-    "ConditionalExpression", "ElseifExpression", "Address", "AssertionClause", "Precondition",
+    "ConditionalExpression", "ElseifExpression", "InspectExpression", "WhenExpression", "Address",
+    "AssertionClause", "Precondition",
     "Postcondition", "OpenOperand", "ClassAssertion",
 })
 TYPES = frozenset({"ClassType", "TupleType", "AnchoredType", "FormalGeneric", "EntityDeclaration"})

@@ -301,7 +301,7 @@ def expected_phrase(expected: set, patterns: dict[str, str]) -> str:
     if len(remaining & OPERATORS) >= 4:
         remaining -= OPERATORS | {"DOT", "LPAR", "LSQB", "ASSIGNMENT", "ASSIGNMENT_ATTEMPT", "INTERVAL"}
         categories.append("an operator")
-    if len(remaining & INSTRUCTION_KEYWORDS) >= 4:
+    if len(remaining & (INSTRUCTION_KEYWORDS - EXPRESSION_STARTS)) >= 3:
         remaining -= INSTRUCTION_KEYWORDS | EXPRESSION_STARTS
         categories.append("an instruction")
     elif len(remaining & EXPRESSION_STARTS) >= 6:

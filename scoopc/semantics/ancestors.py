@@ -23,12 +23,17 @@ def compute(universe, report, infos=None) -> list:
 
 def _resolve_parents(universe, info, report) -> None:
     resolver = TypeResolver(universe, info, report, constraints=False)
-    constraints, creators = [], []
+    constraints, creators, renames = [], [], []
     for formal in info.decl.formal_generics:
-        bounds = tuple(t for t in (resolver.resolve(c.type) for c in formal.constraints) if t is not None)
+        resolved = [(c, resolver.resolve(c.type)) for c in formal.constraints]
+        bounds = tuple(t for _, t in resolved if t is not None)
         constraints.append(bounds)
         creators.append(tuple(c.key for c in formal.creators or ()))
+        # `G -> A rename f as g end`: on a G, A's `f` is called `g` (and no longer `f`).
+        renames.append({t.name: {r.new_name.name.key: r.old_name.key for r in c.renames}
+                        for c, t in resolved if t is not None and c.renames})
     info.constraints, info.formal_creators = tuple(constraints), tuple(creators)
+    info.constraint_renames = tuple(renames)
     for clause in info.decl.inherit_clauses:
         for parent in clause.parents:
             ty = resolver.resolve(parent.type)

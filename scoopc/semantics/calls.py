@@ -108,9 +108,15 @@ class CallChecks:
         from .conformance import constraint_types
 
         bounds = constraint_types(self.universe, ty, self.info)
+        renamed = self.info.constraint_renames
+        renamed = renamed[ty.formal] if ty.is_formal and ty.formal < len(renamed) else {}
         for bound in bounds:
             info = self.universe.get(bound.name)
-            feature = info.features.get(name.key) if info is not None and name is not None else None
+            key = name.key if name is not None else None
+            renames = renamed.get(bound.name)
+            if renames and key is not None:
+                key = renames.get(key, None if key in renames.values() else key)
+            feature = info.features.get(key) if info is not None and key is not None else None
             if feature is not None:
                 return bound.with_marks(attached=True), feature
         return bounds[0].with_marks(attached=True), None

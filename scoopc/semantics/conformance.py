@@ -17,12 +17,30 @@ def ancestor(universe, ty: Ty, name: str) -> Ty | None:
     return None if found is None else substitute(found, ty.generics)
 
 
+def _constraints(context, formal: int, visiting: frozenset = frozenset()) -> list:
+    """The class-type constraints of formal generic `formal`, a constraint naming another formal
+    replaced by that formal's own (`[G -> H, H -> STRING]`: G's bound is STRING); none when there
+    is none, or when the constraints only lead round a cycle (`[G -> H, H -> G]`)."""
+    constraints = context.constraints[formal] if formal < len(context.constraints) else ()
+    found = []
+    for c in constraints:
+        if not c.is_formal:
+            found.append(c)
+        elif c.formal not in visiting and c.formal != formal:
+            found.extend(b.with_marks(separate=b.separate or c.separate)
+                         for b in _constraints(context, c.formal, visiting | {formal}))
+    return found
+
+
+def _bounds(context, formal: int) -> list:
+    return _constraints(context, formal) or [Ty("ANY")]
+
+
 def base_type(universe, ty: Ty, context) -> Ty:
     """For a formal generic, the (first) constraint in `context`'s class; else ty itself."""
     if not ty.is_formal or context is None:
         return ty
-    constraints = context.constraints[ty.formal] if ty.formal < len(context.constraints) else ()
-    bound = constraints[0] if constraints else Ty("ANY")
+    bound = _bounds(context, ty.formal)[0]
     return bound.with_marks(attached=ty.attached, separate=ty.separate or bound.separate)
 
 
@@ -30,8 +48,7 @@ def constraint_types(universe, ty: Ty, context) -> list:
     """For a formal generic, each of its constraints (ANY when unconstrained); else [ty]."""
     if not ty.is_formal or context is None:
         return [ty]
-    constraints = context.constraints[ty.formal] if ty.formal < len(context.constraints) else ()
-    bounds = list(constraints) or [Ty("ANY")]
+    bounds = _bounds(context, ty.formal)
     return [b.with_marks(attached=ty.attached, separate=ty.separate or b.separate) for b in bounds]
 
 
@@ -59,15 +76,21 @@ def _is_expanded(universe, ty: Ty) -> bool:
     return info is not None and info.is_expanded and not ty.is_formal
 
 
-def _class_conforms(universe, source: Ty, target: Ty, context) -> bool:
+def _class_conforms(universe, source: Ty, target: Ty, context, visiting: frozenset = frozenset()) -> bool:
     if source.is_none:                  # NONE conforms to every reference type
         return not _is_expanded(universe, target)
     if source.is_formal or target.is_formal:
         if source.is_formal and target.is_formal and source.formal == target.formal:
             return True
-        if target.is_formal:
+        if not source.is_formal:
             return False
-        return _constraint_conforms(universe, source, target, context)
+        # A formal conforms to what its constraints conform to; constraints may name other
+        # formals, even in a cycle (`[G -> H, H -> G]`), so each formal is followed once.
+        if target.name == "ANY" and not target.generics:
+            return True                 # every type conforms to ANY, a cyclic constraint too
+        if source.formal in visiting:
+            return False
+        return _constraint_conforms(universe, source, target, context, visiting | {source.formal})
     if target.name == "TUPLE" and source.name == "TUPLE":
         return len(source.generics) >= len(target.generics) and all(
             _generic_conforms(universe, s, t, context) for s, t in zip(source.generics, target.generics))
@@ -89,13 +112,13 @@ def _generic_conforms(universe, source: Ty, target: Ty, context) -> bool:
     return _class_conforms(universe, source, target, context)
 
 
-def _constraint_conforms(universe, source: Ty, target: Ty, context) -> bool:
+def _constraint_conforms(universe, source: Ty, target: Ty, context, visiting: frozenset) -> bool:
     if context is None:
-        return target.name == "ANY"
+        return target.name == "ANY" and not target.is_formal
     constraints = context.constraints[source.formal] if source.formal < len(context.constraints) else ()
     if not constraints:
-        return target.name == "ANY" and not target.generics
-    return any(_class_conforms(universe, c, target, context) for c in constraints)
+        return target.name == "ANY" and not target.generics and not target.is_formal
+    return any(_class_conforms(universe, c, target, context, visiting) for c in constraints)
 
 
 def converts(universe, source: Ty, target: Ty) -> str | None:

@@ -281,6 +281,27 @@ class ExpressionChecks:
             return None
         return Value(self._common(values), values[0].handler)
 
+    def e_InspectExpression(self, node, expected=None):
+        """The expression form of `inspect` (EiffelStudio 22.05+): the rules of the instruction
+        (VOMB(1)..(3)) for the subject and choices; its type is the branches' common type."""
+        from .instructions import _inspectable
+
+        subject = self.expr(node.expression)
+        if subject is not None and not _inspectable(subject.ty):
+            self.report("VOMB(1)", node.expression.span, type=str(subject.ty))
+            subject = None
+        seen = {}
+        values = []
+        for part in node.when_parts:
+            for choice in part.choices:
+                self._choice(choice, subject, seen)
+            values.append(self.expr(part.then_part, expected))
+        if node.else_part is not None:
+            values.append(self.expr(node.else_part, expected))
+        if not values or any(v is None for v in values):
+            return None
+        return Value(self._common(values), values[0].handler)
+
     def e_AcrossExpression(self, node, expected=None):
         with self.iteration(node.iteration):
             for clause in node.invariant:

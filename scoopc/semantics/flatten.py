@@ -85,10 +85,22 @@ def _adapt(universe, info, parent, parent_info, report) -> dict:
         feature = feature.renamed(new) if new is not None else feature
         inherited[feature.name] = feature
     _check_names(parent, parent_info, inherited, report)
+    # ECMA-367 8.7.10/8.7.12: a feature named in export items is exported to the union of their
+    # clients, wherever the items stand; `all` sets the export status of the features no item
+    # names (several `all` items: the union). EiffelStudio reads the clause the same way.
+    named: dict = {}
+    everything = None
     for item in parent.exports:
         clients = _clients(universe, item.clients, info)
-        names = inherited.keys() if item.features is None else [i.key for i in item.features if i.key in inherited]
-        for name in list(names):
+        if item.features is None:
+            everything = clients if everything is None else everything | clients
+            continue
+        for ident in item.features:
+            if ident.key in inherited:
+                named[ident.key] = clients if ident.key not in named else named[ident.key] | clients
+    for name in list(inherited):
+        clients = named.get(name, everything)
+        if name in named or everything is not None:
             inherited[name] = replace(inherited[name], exports=clients)
     for ident in parent.undefines:
         feature = inherited.get(ident.key)

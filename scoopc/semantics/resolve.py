@@ -1,6 +1,6 @@
 """Checker, name resolution: what an unqualified name denotes in a routine (argument, local,
 Result, object-test/across/separate-block local, or a feature of the class), and the rules on
-declaring names: VRFA, VRLE(1), VRLE(2), VREG, and the clash test used by VUOT(1), VOIT(2), V1SE(1).
+declaring names: VRFA, VRLE(1), VRLE(2), VREG, and the clash test used by VUOT(1), VOIT(2), FRESH_IDENTIFIER.
 """
 from __future__ import annotations
 

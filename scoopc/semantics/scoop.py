@@ -34,6 +34,17 @@ def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> 
     if formal.separate or actual.ty.is_none:
         return True
     if not actual.ty.separate:
+        mark = _formal_mark(ctx.info, actual.ty.formal) if actual.ty.is_formal else None
+        if mark == "expanded":
+            return True
+        if actual.ty.is_formal and mark != "reference":
+            # EiffelStudio takes an unmarked formal generic as possibly expanded and accepts
+            # the call (its partree example relies on it); an actual generic that is a reference
+            # type would be a traitor, so we warn (docs/LANGUAGE.md).
+            ctx.warn("FORMAL-TRAITOR", actual_node.span, what=f"`{describe(actual_node)}`", formal=str(actual.ty),
+                     how=f"is passed in a call on a separate target to a formal of non-separate type {formal}",
+                     risk="the supplier would hold a reference into this processor")
+            return True
         ctx.report("VUAR(3)", actual_node.span, actual=describe(actual_node), type=str(formal))
         return False
     if actual.handler is not None and actual.handler != UNCONTROLLED and actual.handler == target.handler:
@@ -41,6 +52,12 @@ def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> 
     ctx.report("VUAR(2)", actual_node.span, actual=str(actual.ty), formal=str(formal),
                reason="it is separate and the formal is not", **SEPARATE_ACTUAL)
     return False
+
+
+def _formal_mark(info, formal: int):
+    """The mark (`reference`, `expanded`, `frozen` or None) of formal generic `formal` of `info`'s class."""
+    generics = info.decl.formal_generics
+    return generics[formal].mark if formal < len(generics) else None
 
 
 SEPARATE_ACTUAL = {"hint": "declare the formal argument `separate`, or pass a non-separate copy "
@@ -75,17 +92,28 @@ def adapt_result(ctx, call_node, result: Ty, target: Value) -> Value:
         return Value(result)
     if result.separate:
         return Value(result, UNCONTROLLED)
+    if result.is_formal and _formal_mark(ctx.info, result.formal) != "reference":
+        # EiffelStudio does not make an unmarked formal generic result separate (G may be
+        # expanded); partree relies on it. We follow and warn (docs/LANGUAGE.md).
+        ctx.warn("FORMAL-TRAITOR", call_node.span, what="this result", formal=str(result),
+                 how="comes from a call on a separate target and is used as non-separate",
+                 risk="this processor would hold a non-separate reference to an object of another one")
+        return Value(result)
     return Value(result.with_marks(separate=True), target.handler)
 
 
 def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Value | None, clashes: bool) -> bool:
-    """V1SE(1) (Gobo V1SE-1G): the block's local must not clash with another name;
-    V1SE(2): the expression must be of a reference type."""
+    """FRESH_IDENTIFIER (EiffelStudio's code; Gobo V1SE-G1/G2): the block's local must not clash
+    with another name; V1SE (Gobo V1SE-G3): the expression must be of a separate type, so an
+    expanded value or a non-separate reference is rejected as EiffelStudio 21.11+ does."""
     if clashes:
-        ctx.report("V1SE(1)", argument.name.span, name=argument.name.text)
+        ctx.report("FRESH_IDENTIFIER", argument.name.span, name=argument.name.text)
         return False
-    if value is not None and is_expanded(ctx.universe, value.ty):
-        ctx.report("V1SE(2)", argument.expression.span, type=str(value.ty))
+    if value is not None and (is_expanded(ctx.universe, value.ty) or not value.ty.separate):
+        expanded = is_expanded(ctx.universe, value.ty)
+        ctx.report("V1SE", argument.expression.span, type=str(value.ty),
+                   hint="values of expanded types are copied anyway: use them directly" if expanded else
+                   "a non-separate object needs no reservation: use it directly, or declare it `separate`")
         return False
     return True
 

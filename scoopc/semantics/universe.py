@@ -30,6 +30,7 @@ class ClassInfo:
     creators: dict | None = None                    # name -> clients (None: default_create)
     constraints: tuple = ()                            # per formal: tuple of constraint Ty
     formal_creators: tuple = ()                        # per formal: creation procedure names
+    constraint_renames: tuple = ()                     # per formal: {constraint class: {new name: old name}}
     joins: list = field(default_factory=list)          # (name, features) inherited versions joined into one
 
     @property

@@ -18,6 +18,7 @@ __all__ = [
     "ManifestInteger", "ManifestReal", "ManifestString", "ManifestCharacter", "ManifestBoolean",
     "TypedConstant", "Unique", "ManifestType", "TupleExpression", "ManifestArray", "ObjectTest",
     "OpenOperand", "Agent", "InlineAgent", "CreationExpression", "ConditionalExpression",
+    "InspectExpression", "WhenExpression",
     "ElseifExpression", "AcrossExpression", "Address", "ClassAssertion", "Expression",
 ]
 
@@ -234,6 +235,22 @@ class ElseifExpression:
 
 
 @node
+class InspectExpression:
+    """`inspect e when 1 then x when 2, 3 then y else z end` (EiffelStudio 22.05+)."""
+    expression: Expression
+    when_parts: tuple[WhenExpression, ...]
+    else_part: Expression | None
+    span: Span
+
+
+@node
+class WhenExpression:
+    choices: tuple                 # of instructions.Choice
+    then_part: Expression
+    span: Span
+
+
+@node
 class AcrossExpression:
     """`across e as c ... all|some expression end`."""
     iteration: Iteration
@@ -263,4 +280,4 @@ Expression = (UnqualifiedCall | QualifiedCall | StaticCall | Precursor | Bracket
               | Old | ManifestInteger | ManifestReal | ManifestString | ManifestCharacter
               | ManifestBoolean | TypedConstant | ManifestType | TupleExpression | ManifestArray
               | ObjectTest | OpenOperand | Agent | InlineAgent | CreationExpression
-              | ConditionalExpression | AcrossExpression | Address)
+              | ConditionalExpression | InspectExpression | AcrossExpression | Address)

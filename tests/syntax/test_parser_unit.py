@@ -258,8 +258,8 @@ def test_unterminated_string_at_its_quote():
 
 
 def test_bad_character_at_its_position():
-    text = "class A\nfeature\n\tf do x := 6 \u00d7 7 end\nend\n"
-    assert only_error(text) == "t.e:3:14: error SYNTAX-LEXICAL: `\u00d7` (U+00D7) is not part of any Eiffel token"
+    text = "class A\nfeature\n\tf do x := 6 \u00e9 7 end\nend\n"
+    assert only_error(text) == "t.e:3:14: error SYNTAX-LEXICAL: `\u00e9` (U+00E9) is not part of any Eiffel token"
 
 
 def test_bad_escape_points_at_the_percent():

@@ -176,6 +176,16 @@ class ExpressionBuilder(BuilderBase):
     def elseif_expression(self, c: list) -> s.ElseifExpression:
         return s.ElseifExpression(c[1], c[3], self.span(c[0], c[3]))
 
+    def inspect_expression(self, c: list) -> s.InspectExpression:
+        keyword, subject, *parts, else_part, end = c
+        return s.InspectExpression(subject, tuple(parts), else_part, self.span(keyword, end))
+
+    def when_expression(self, c: list) -> s.WhenExpression:
+        return s.WhenExpression(tuple(c[1:-2]), c[-1], self.span(c[0], c[-1]))
+
+    def else_expression(self, c: list) -> s.Expression:
+        return c[0]
+
     def quantifier(self, c: list) -> s.AcrossExpression:
         """`∀ x: s ¦ e` is `across s is x all e end`; `∃` is `some`."""
         symbol, iteration, _, body = c

@@ -48,6 +48,10 @@ class FeatureBuilder(BuilderBase):
     def alias(self, c: list) -> s.Alias:
         keyword, name, convert = c
         text = self.manifest_string([name]).value
+        if not is_alias_name(text):
+            self.report("SYNTAX", name, found=f"the alias name `{text}`",
+                        expected="an operator (`+`, `<`, `and then`, a free operator such as `|>` or `⊕`), `[]` or `()`"
+                        " (`=`, `/=`, `~` and `/~` cannot be redefined)")
         return s.Alias(text, convert is not None, self.span(keyword, convert or name))
 
     def query_mark(self, c: list) -> tuple:
@@ -190,3 +194,26 @@ class FeatureBuilder(BuilderBase):
 
     def unopened_operands(self) -> list:
         return list(self.open_operands.values())
+
+
+# Operators a feature may take as its alias (EiffelStudio's OPERATOR_SYNTAX_CHECKER, ECMA-367
+# 8.32.20): the standard unary and binary operators, brackets, parentheses and free operators;
+# never the equality and conformance operators `=`, `/=`, `~`, `/~`.
+STANDARD_ALIASES = (frozenset("""not + - * / // \\\\ ^ < > <= >= and or xor implies .. |..|""".split())
+                    | {"and then", "or else", "[]", "()"})
+_FREE_START = "@#|&"
+_FREE_CHARS = ":\\?=~/!#$%&*+-<>@^`|"
+
+
+def _free_symbol(ch: str) -> bool:
+    return ch in _FREE_CHARS or ch in "\u00ac\u00b1\u00d7\u00f7" or "\u2190" <= ch <= "\u2bff"
+
+
+def is_alias_name(text: str) -> bool:
+    if text.lower() in STANDARD_ALIASES:
+        return True
+    if not text or text in ("=", "/=", "~", "/~"):
+        return False
+    if text[0] in _FREE_START or not text[0].isascii():
+        return all(_free_symbol(ch) for ch in text)
+    return False

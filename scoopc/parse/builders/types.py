@@ -35,6 +35,13 @@ class TypeBuilder(BuilderBase):
             return s.ClassType(self.ident(name), (), None, False, None, self.tspan(name))
         groups, closing = generics
         span = self.span(name, closing)
+        if len(groups) > 1:
+            # Groups (each optionally ended by `;`) are only TUPLE's labelled declarations.
+            for group_types, label_type in groups:
+                if label_type is None:
+                    self.report("SYNTAX", group_types[-1], found="a type without a label",
+                                expected="`,` between actual generic parameters")
+                    break
         if name.value.lower() == "tuple":
             return self._tuple_type(groups, span)
         if not groups:

@@ -1,5 +1,5 @@
 note
-	description: "A multiplication sign copied from a document is not an Eiffel operator."
+	description: "A typographic quote copied from a document does not open an Eiffel string."
 
 class
 	BAD_CHARACTER_UNICODE
@@ -10,12 +10,9 @@ create
 feature {NONE} -- Initialization
 
 	make
-			-- Compute an area.
-		local
-			area: INTEGER
+			-- Greet.
 		do
-			area := 6 × 7 -- E: SYNTAX-LEXICAL
-			print (area)
+			print (“hello”) -- E: SYNTAX-LEXICAL
 		end
 
 end

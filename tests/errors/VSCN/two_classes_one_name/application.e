@@ -1,0 +1,14 @@
+class
+	APPLICATION
+
+create
+	make
+
+feature {NONE} -- Initialization
+
+	make
+			-- Nothing.
+		do
+		end
+
+end

@@ -1,0 +1,4 @@
+class
+	TOOL -- E: VSCN
+
+end

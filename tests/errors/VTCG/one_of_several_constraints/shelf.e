@@ -1,0 +1,8 @@
+class
+	SHELF [G -> {COMPARABLE, SIZED}]
+
+feature -- Access
+
+	item: detachable G
+
+end

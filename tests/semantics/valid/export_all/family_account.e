@@ -1,0 +1,7 @@
+class
+	FAMILY_ACCOUNT
+
+inherit
+	SHARED_ACCOUNT
+
+end
