@@ -78,9 +78,14 @@ def report(error, debug: bool = False) -> str:
 
 
 def describe_error(error) -> str:
+    if isinstance(error, DirtyRegionError):
+        # EiffelStudio's client raises its dirty processor exception (private_queue.c); the
+        # supplier's own failure follows, which EiffelStudio does not show but a user needs.
+        text = str(error)
+        if error.__cause__ is not None:
+            text += ": " + describe_error(error.__cause__)
+        return text
     cause = error
-    while isinstance(cause, DirtyRegionError) and cause.__cause__ is not None:
-        cause = cause.__cause__
     if isinstance(cause, ContractViolation):
         text = f"{cause.kind.replace('_', ' ')} violated: `{cause.tag or '(untagged)'}`"
         return text + _at(cause.where)
