@@ -158,7 +158,7 @@ class ClassGen:
         params = ["self"] + [self.local(a.name.key) for a in feature.decl.arguments]
         property_ = feature.is_query and not feature.arguments
         if isinstance(inner, syntax.ExternalBody):
-            return self.external(pyname, feature, property_)
+            return self.external(pyname, feature, property_, body, params)
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
         signature = feature.signature
         arguments = [(a.name.key, t) for a, t in zip(feature.decl.arguments, signature.arguments)]
@@ -185,7 +185,7 @@ class ClassGen:
         outer = P.at(P.function(pyname, params, [ast.Return(value)], decorators), feature.decl.span)
         return [inner, outer]
 
-    def external(self, pyname, feature, property_) -> list:
+    def external(self, pyname, feature, property_, body=None, params=()) -> list:
         if self.info.name in BASIC:
             return []                    # inlined at each call (kernel.basic)
         module = self.info.name.split("@")[0].lower()
@@ -200,9 +200,30 @@ class ClassGen:
             value = P.attr(P.name(f"X_{module}"), fname)
         else:
             value = P.call("S.missing_external", [P.const(self.info.name), P.const(fname)])
+        checks = self.external_precondition(feature, body)
+        if checks:
+            # The precondition is the generated code's, as for any routine (EiffelBase's
+            # SPECIAL and the strings guard their externals so): misuse is a violation.
+            # Checked when the host refuses the call (the external raises): the host functions
+            # refuse every input their precondition excludes, and the common case pays no check.
+            call = P.call(value, [P.name(p) for p in params])
+            caught = ast.ExceptHandler(P.dotted("Exception"), None, checks + [ast.Raise(None, None)])
+            body = [ast.Try([ast.Return(call)], [caught], [], [])]
+            decorators = [P.name("property")] if property_ else []
+            fn = P.function(pyname, list(params), body, decorators + [P.dotted("S.guard")])
+            return [P.at(fn, feature.decl.span)]
         if property_:
             value = P.call("property", [value])
         return [P.at(P.assign(P.name(pyname), value), feature.decl.span)]
+
+    def external_precondition(self, feature, body) -> list:
+        if body is None or body.precondition is None:
+            return []
+        gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
+        checks = gen.precondition(body.precondition.clauses)
+        if not checks:
+            return []
+        return [P.assign(P.name("here"), P.attr(P.name("self"), "_region_"))] + checks
 
     def local(self, name: str) -> str:
         from .routines import local_identifier

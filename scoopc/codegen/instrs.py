@@ -10,6 +10,9 @@ from ..semantics.types import BASIC
 from .context import fail
 
 
+_VALUE_COPIES = frozenset({"copy", "standard_copy", "deep_copy"})
+
+
 class Instructions:
     def block(self, instructions) -> list:
         out = []
@@ -86,7 +89,24 @@ class Instructions:
 
     # --- calls and creation ----------------------------------------------------------------------------
     def s_CallInstruction(self, node):
-        return [P.expr_stmt(self.x(node.call))]
+        call = node.call
+        if isinstance(call, syntax.QualifiedCall) and call.name.key in _VALUE_COPIES and len(call.arguments) == 1 \
+                and self.is_basic(self.tables.types.get(call.target)) and self.is_variable(call.target):
+            # `i.copy (j)` on an entity of a basic (expanded) type copies into the entity
+            # itself (ECMA-367 8.21: a call on an expanded entity works on its value)
+            return [P.assign(self.target(call.target), self.x(call.arguments[0]))]
+        return [P.expr_stmt(self.x(call))]
+
+    def is_variable(self, node) -> bool:
+        """A local, Result or attribute of Current: an entity `copy` may write."""
+        if isinstance(node, syntax.Result):
+            return True
+        entity = self.tables.entities.get(node)
+        if entity is not None:
+            return entity.kind in ("local", "argument", "result", "attribute")
+        feature = self.tables.features.get(node)
+        return isinstance(node, syntax.UnqualifiedCall) and not node.arguments and feature is not None \
+            and feature.kind == "attribute"
 
     def s_CreationInstruction(self, node):
         ty = self.tables.types.get(node)
@@ -103,6 +123,8 @@ class Instructions:
         """`create x.make (a)` into a local or Result, spelled out: `x = here.new(C)`, then
         `x.make(a)` (the common case, and the cheapest: no helper call)."""
         info = self.universe.get(ty.name)
+        if self.is_tuple_class(info):
+            return [P.assign(target, self.new_tuple_object(ty))]
         args = [self.argument(a) for a in arguments]
         out = [P.assign(target, P.call("here.new", [self.class_ref(info.name)]))]
         if info.formals:

@@ -460,14 +460,12 @@ def out_text(value):
 
 # --- ANY for Python values -----------------------------------------------------------------
 
-GENERATING_TYPE = None      # hook set by the code generator's support: fn(region, TypeDesc) -> TYPE
-
-
-def generating_type(region, value):
-    if GENERATING_TYPE is None:
-        raise NotImplementedError("generating_type of a basic value: scoopc.kernel.basic.GENERATING_TYPE is unset")
-    from .types import of
-    return GENERATING_TYPE(region, of(value))
+def generating_type(region, value, kind=None):
+    """ANY.generating_type of a basic value: the TYPE object of its basic class (`kind`, the
+    static class when known: a NATURAL_8 is a Python int too)."""
+    from .support import type_object
+    from .types import of, t
+    return type_object(region, t(kind) if kind is not None else of(value))
 
 
 from .basic_dispatch import call, call_as, equal, query, query_as, same  # noqa: E402

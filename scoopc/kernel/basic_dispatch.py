@@ -148,7 +148,7 @@ def _make_table(kind):
         "tagged_out": out,
         "debug_output": out,
         "generator": lambda r, x: B.s8(r, kind),
-        "generating_type": lambda r, x: B.generating_type(r, x),
+        "generating_type": lambda r, x: B.generating_type(r, x, kind),
         "twin": lambda r, x: x, "standard_twin": lambda r, x: x, "deep_twin": lambda r, x: x,
         "copy": lambda r, x, other: None, "standard_copy": lambda r, x, other: None,
         "deep_copy": lambda r, x, other: None,

@@ -14,7 +14,7 @@ from pathlib import Path
 from ..runtime import DeadlockError, DirtyRegionError, PreconditionViolation
 from . import CLASSES
 from .errors import EiffelFailure
-from .support import ContractViolation, EiffelRuntimeError
+from .support import GUARDS, ContractViolation, EiffelRuntimeError
 
 _LINE_MAPS: dict = {}
 
@@ -129,7 +129,7 @@ def eiffel_frames(error) -> list:
     frames = []
     for frame, lineno in traceback.walk_tb(error.__traceback__):
         place = eiffel_place(frame.f_code.co_filename, lineno)
-        if place is None:
+        if place is None or frame.f_code in GUARDS:
             continue
         module = frame.f_globals.get("__name__", "")
         cls = module.rsplit(".", 1)[-1].upper()

@@ -115,6 +115,16 @@ def exception_object(here, error):
     return EiffelFailure(exception)
 
 
+GUARDS = set()          # code objects of the precondition checks generated around externals
+
+
+def guard(fn):
+    """Decorates the precondition check generated around an `external "Python"` routine: its
+    frame is the external's own, so Eiffel traces leave it out, as they leave out the host's."""
+    GUARDS.add(fn.__code__)
+    return fn
+
+
 def last_caught(here):
     return _LAST.get(here)
 
@@ -144,6 +154,8 @@ def create_formal(here, desc, creator, args):
     """`create x.make` where x's type is a formal generic: the actual type's class at run time."""
     if desc.is_basic:
         return desc.default()
+    if desc.pyclass is CLASSES.get("TUPLE"):
+        return new_default_tuple(here, tuple(desc.generics or ()))
     return create(here, desc.pyclass, desc.generics or None, creator, args)
 
 
@@ -312,6 +324,12 @@ def new_tuple(here, items, gen):
     obj._items = items
     obj._gen_ = gen
     return obj
+
+
+def new_default_tuple(here, gen):
+    """`create t` of a TUPLE type: one item per declared type, each its default value (as
+    EiffelStudio's TUPLE creation)."""
+    return new_tuple(here, [g.default(here) for g in gen], gen)
 
 
 def tuple_item(t, index):
