@@ -100,7 +100,10 @@ class Calls:
 
     # --- the call itself ---------------------------------------------------------------------------
     def call_feature(self, node, target_node, target, feature, arguments, conversion=None, static_type=None):
-        args = [self.argument(a) for a in arguments]
+        if feature.name in _OWN_ARGUMENT:
+            args = [self.x(a) for a in arguments]    # `other` itself: see _OWN_ARGUMENT
+        else:
+            args = [self.argument(a) for a in arguments]
         if not args and feature.arguments and node in self.tables.agent_calls:
             args = [P.const(None)]                # `p.call` for `p.call ([])`: no open operands
         if conversion is not None:
@@ -341,6 +344,13 @@ class Calls:
 
     def class_ref(self, key: str):
         return self.module.class_ref(key)
+
+
+# ANY's duplication and comparison features work on `other` itself: an expanded actual argument
+# is not copied to be passed (a redefined `copy` would otherwise run to pass the argument of
+# `copy`, and `standard_copy`, `standard_is_equal` would see the fields a redefined copy made).
+_OWN_ARGUMENT = frozenset({"copy", "standard_copy", "deep_copy", "is_equal", "standard_is_equal",
+                           "is_deep_equal"})
 
 
 def _constant_desc(node) -> bool:
