@@ -196,7 +196,14 @@ class Instructions:
         if node.until is not None:
             body = [P.if_(self.x(node.until), [ast.Break()])] + body
         checks, _ = self.loop_checks(node)
-        loop = ast.For(P.name(var, store=True), self.iteration_source(iteration), checks + body or [ast.Pass()], [], None)
+        body = checks + body
+        source = self.iteration_source(iteration)
+        if not iteration.cursor_mode:
+            # `across s is x` (and `⟳ x: s ¦ ... ⟲`) is `across s as c` with each `x` read as
+            # `c.item` at the point of use, as the unfolded `new_cursor` loop reads it
+            source = P.call("S.cursors", [self.x(iteration.expression)])
+            body = [_ItemReads(var).visit(stmt) for stmt in body]
+        loop = ast.For(P.name(var, store=True), source, body or [ast.Pass()], [], None)
         return out + [loop]
 
     def s_Check(self, node):
@@ -229,3 +236,15 @@ class Instructions:
         tag = clause.tag.text if clause.tag is not None else None
         failure = P.call("S.assertion_failed", [P.const(kind), P.const(tag), self.where(clause)])
         return P.at(P.if_(P.not_(self.x(clause.expression)), [P.expr_stmt(failure)]), clause.span)
+
+
+class _ItemReads(ast.NodeTransformer):
+    """Every read of the cursor variable `var` becomes `var.item`."""
+
+    def __init__(self, var: str):
+        self.var = var
+
+    def visit_Name(self, node):
+        if node.id == self.var and isinstance(node.ctx, ast.Load):
+            return ast.copy_location(P.attr(P.name(self.var), "item"), node)
+        return node
