@@ -128,16 +128,31 @@ class ClassGen:
         result = feature.signature.result if feature.signature else None
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
         body = feature.decl.body
-        if body is not None:                     # `attribute ... end`: self-initialising
+        if body is not None and self.self_initialising(result):
+            # `attribute ... end` of an attached reference type: the body runs when the attribute
+            # is read while still Void (ECMA-367 8.19.21, EiffelStudio's self-initializing
+            # attributes); a detachable or expanded attribute starts at its default instead
             fn = P.function(f"{pyname}_init_", ["self"], gen.routine_body(body, [], result))
-            return [P.at(fn, feature.decl.span),
-                    P.assign(P.name(pyname), P.call("S.SelfInitialising", [P.name(f"{pyname}_init_"), P.const(pyname)]))]
+            if result.is_formal:
+                value = P.call("S.SelfInitialisingFormal", [P.name(f"{pyname}_init_"), P.const(pyname),
+                                                            P.const(self.info.name), P.const(result.formal)])
+            else:
+                value = P.call("S.SelfInitialising", [P.name(f"{pyname}_init_"), P.const(pyname)])
+            return [P.at(fn, feature.decl.span), P.assign(P.name(pyname), value)]
         if result is not None and result.is_formal:
             return [P.assign(P.name(pyname), P.call("S.FormalDefault", [P.const(self.info.name), P.const(result.formal), P.const(pyname)]))]
         info = self.program.universe.get(result.name) if result is not None else None
         if info is not None and info.is_expanded and info.name not in BASIC:
             return [P.assign(P.name(pyname), P.call("S.ExpandedDefault", [gen.type_desc(result), P.const(pyname)]))]
         return [P.at(P.assign(P.name(pyname), gen.default_value(result)), feature.decl.span)]
+
+    def self_initialising(self, result) -> bool:
+        if result is None or not result.attached:
+            return False
+        if result.is_formal:
+            return True                          # the actual generic decides at run time
+        info = self.program.universe.get(result.name)
+        return info is None or not (info.is_expanded or info.name in BASIC)
 
     def constant(self, pyname, feature) -> list:
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)

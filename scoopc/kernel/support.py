@@ -212,7 +212,9 @@ def conforms(value, desc):
 
 
 class SelfInitialising:
-    """An attribute with an `attribute` body: computed by the body on the first read when unset."""
+    """An attached attribute with an `attribute` body: the body runs when the attribute is read
+    while still Void (never set, or its body left it Void), and its result is kept. An actual
+    generic that is expanded is never Void: the attribute starts at its default."""
 
     def __init__(self, init, name):
         self.init, self.name = init, name
@@ -221,8 +223,28 @@ class SelfInitialising:
         if obj is None:
             return self
         value = self.init(obj)
-        obj.__dict__[self.name] = value
+        if value is not None:
+            obj.__dict__[self.name] = value
         return value
+
+
+class SelfInitialisingFormal(SelfInitialising):
+    """`x: G attribute ... end`: self-initialising only when the actual generic of G is a
+    reference type (an expanded one is never Void: its default is kept)."""
+
+    def __init__(self, init, name, written_in, index):
+        super().__init__(init, name)
+        self.written_in, self.index = written_in, index
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        desc = T.formal(obj, self.written_in, self.index)
+        default = desc.default(obj._region_)
+        if default is not None:
+            obj.__dict__[self.name] = default
+            return default
+        return super().__get__(obj, owner)
 
 
 class FormalDefault:
