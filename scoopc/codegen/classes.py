@@ -130,7 +130,7 @@ class ClassGen:
         body = feature.decl.body
         if body is not None and self.self_initialising(result):
             # `attribute ... end` of an attached reference type: the body runs when the attribute
-            # is read while still Void (ECMA-367 8.19.21, EiffelStudio's self-initializing
+            # is read while still Void (ECMA-367's and EiffelStudio's self-initializing
             # attributes); a detachable or expanded attribute starts at its default instead
             fn = P.function(f"{pyname}_init_", ["self"], gen.routine_body(body, [], result))
             if result.is_formal:

@@ -93,7 +93,7 @@ class Instructions:
         if isinstance(call, syntax.QualifiedCall) and call.name.key in _VALUE_COPIES and len(call.arguments) == 1 \
                 and self.is_basic(self.tables.types.get(call.target)) and self.is_variable(call.target):
             # `i.copy (j)` on an entity of a basic (expanded) type copies into the entity
-            # itself (ECMA-367 8.21: a call on an expanded entity works on its value)
+            # itself (a call on an entity of an expanded type works on the entity's value)
             return [P.assign(self.target(call.target), self.x(call.arguments[0]))]
         return [P.expr_stmt(self.x(call))]
 
