@@ -219,11 +219,16 @@ class ClassGen:
         if checks:
             # The precondition is the generated code's, as for any routine (EiffelBase's
             # SPECIAL and the strings guard their externals so): misuse is a violation.
-            # Checked when the host refuses the call (the external raises): the host functions
-            # refuse every input their precondition excludes, and the common case pays no check.
             call = P.call(value, [P.name(p) for p in params])
-            caught = ast.ExceptHandler(P.dotted("Exception"), None, checks + [ast.Raise(None, None)])
-            body = [ast.Try([ast.Return(call)], [caught], [], [])]
+            host = self.info.name.split("@")[0]
+            if host in REFUSING_HOSTS or (host, fname) in REFUSING_HOSTS:
+                # checked when the host refuses the call (the external raises): these host
+                # functions refuse every input their precondition excludes, and the common
+                # case (SPECIAL's item and put, under every ARRAY and list) pays no check
+                caught = ast.ExceptHandler(P.dotted("Exception"), None, checks + [ast.Raise(None, None)])
+                body = [ast.Try([ast.Return(call)], [caught], [], [])]
+            else:
+                body = checks + [ast.Return(call)]
             decorators = [P.name("property")] if property_ else []
             fn = P.function(pyname, list(params), body, decorators + [P.dotted("S.guard")])
             return [P.at(fn, feature.decl.span)]
@@ -232,10 +237,12 @@ class ClassGen:
         return [P.at(P.assign(P.name(pyname), value), feature.decl.span)]
 
     def external_precondition(self, feature, body) -> list:
-        if body is None or body.precondition is None:
+        """The checks of the routine's precondition, its own and inherited ones."""
+        if body is None:
             return []
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
-        checks = gen.precondition(body.precondition.clauses)
+        gen.library_versions = True          # an external's precondition may be all inherited
+        checks = gen.precondition(body.precondition.clauses if body.precondition is not None else ())
         if not checks:
             return []
         return [P.assign(P.name("here"), P.attr(P.name("self"), "_region_"))] + checks
@@ -257,6 +264,14 @@ class ClassGen:
         body += [gen.assertion(c, "invariant") for c in clauses]
         fn = P.function("_invariant_", ["self"], body)
         return P.at(fn, self.info.decl.span)
+
+
+# Classes (or (class, feature) pairs) whose `external "Python"` functions (scoopc/kernel/ext/)
+# refuse, by raising, every input their Eiffel precondition excludes: their preconditions are
+# evaluated only then (the hot accessors under every array, list and string).
+REFUSING_HOSTS = frozenset({"SPECIAL", ("STRING_8", "item"), ("STRING_32", "item"),
+                            ("IMMUTABLE_STRING_8", "item"), ("IMMUTABLE_STRING_32", "item"),
+                            ("READABLE_STRING_GENERAL", "code")})
 
 
 def _unique_values(decl) -> dict:

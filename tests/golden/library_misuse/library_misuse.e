@@ -1,7 +1,7 @@
 note
 	description: "[
 		Misusing the library is a precondition violation, as in EiffelBase (ARRAY.item and put
-		require `valid_index', SPECIAL guards its bounds, TUPLE creation gives one default item per
+		require `valid_index', SPECIAL and STRING guard their bounds, TUPLE creation gives one default item per
 		type), never an exception of the host; ANY's features on basic values.
 	]"
 
@@ -24,7 +24,7 @@ feature {NONE} -- Initialization
 			n: NATURAL_8
 			r: REAL_64
 		do
-			from kind := 1 until kind > 8 loop
+			from kind := 1 until kind > 11 loop
 				attempt (kind)
 				kind := kind + 1
 			end
@@ -47,10 +47,12 @@ feature {NONE} -- Implementation
 			failed: BOOLEAN
 			a: ARRAY [INTEGER]
 			s: SPECIAL [INTEGER]
+			str: STRING
 		do
 			if not failed then
 				create a.make_filled (0, 1, 3)
 				create s.make_filled (0, 2)
+				str := "abc"
 				inspect kind
 				when 1 then
 					print (a.item (4))
@@ -68,6 +70,12 @@ feature {NONE} -- Implementation
 					s.extend (3)
 				when 8 then
 					s.keep_head (3)
+				when 9 then
+					str.put ('x', 0)
+				when 10 then
+					print (str.item (0))
+				when 11 then
+					str.insert_character ('x', 5)
 				end
 				print ("kind " + kind.out + ": no failure%N")
 			end

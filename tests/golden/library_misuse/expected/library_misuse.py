@@ -5,7 +5,7 @@ from eiffel_base.exception_manager_factory import EXCEPTION_MANAGER_FACTORY
 T_1 = T.t('INTEGER_32', (), True)
 T_2 = T.t('STRING_8', (), True)
 T_3 = T.t('BOOLEAN', (), True)
-W_4 = ('LIBRARY_MISUSE', 'attempt', 'tests/golden/library_misuse/library_misuse.e', 54)
+W_4 = ('LIBRARY_MISUSE', 'attempt', 'tests/golden/library_misuse/library_misuse.e', 56)
 
 class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
     """Eiffel class LIBRARY_MISUSE (tests/golden/library_misuse/library_misuse.e)."""
@@ -20,7 +20,7 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
         n = 0
         r = 0.0
         kind = 1
-        while not kind > 8:
+        while not kind > 11:
             self.attempt(kind)
             kind = _t if (_t := (kind + 1)) <= 2147483647 else B.wrap_i32(_t)
         t_ = S.new_default_tuple(here, (T_1, T_2, T_3))
@@ -38,6 +38,7 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
         failed = False
         a = None
         s_ = None
+        str = None
         while True:
             try:
                 if not failed:
@@ -47,6 +48,7 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
                     s_ = here.new(SPECIAL)
                     s_._gen_ = (T_1,)
                     s_.make_filled(0, 2)
+                    str = KS.s8(here, 'abc')
                     _inspect1 = kind
                     if _inspect1 == 1:
                         self.print_(a.item(4))
@@ -64,6 +66,12 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
                         s_.extend(3)
                     elif _inspect1 == 8:
                         s_.keep_head(3)
+                    elif _inspect1 == 9:
+                        str.put('x', 0)
+                    elif _inspect1 == 10:
+                        self.print_(str.item__readable_string_8(0))
+                    elif _inspect1 == 11:
+                        str.insert_character('x', 5)
                     else:
                         S.bad_inspect(_inspect1, W_4)
                     self.print_(KS.s8(here, 'kind ').plus(B.out_int(here, kind)).plus(KS.s8(here, ': no failure\n')))
