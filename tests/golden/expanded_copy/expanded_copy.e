@@ -48,7 +48,7 @@ feature {NONE} -- Initialization
 			b.set (8)
 			b.copy (a)
 			print ("copy: " + b.out + "%N")
-			print ("standard_is_equal: " + b.standard_is_equal (a).out + ", is_equal: " + b.is_equal (a).out + "%N")
+			print ("standard_is_equal: " + b.standard_is_equal (a).out + ", is_equal: " + b.is_equal (a).out + ", =: " + (b = a).out + "%N")
 			b.standard_copy (a)
 			print ("after standard_copy, standard_is_equal: " + b.standard_is_equal (a).out + "%N")
 		end

@@ -43,7 +43,7 @@ class EXPANDED_COPY(ANY):
         b_.set(8)
         b_.copy(a)
         self.print_(KS.s8(here, 'copy: ').plus(b_.out).plus(KS.s8(here, '\n')))
-        self.print_(KS.s8(here, 'standard_is_equal: ').plus(B.out_bool(here, b_.standard_is_equal(a))).plus(KS.s8(here, ', is_equal: ')).plus(B.out_bool(here, b_.is_equal(a))).plus(KS.s8(here, '\n')))
+        self.print_(KS.s8(here, 'standard_is_equal: ').plus(B.out_bool(here, b_.standard_is_equal(a))).plus(KS.s8(here, ', is_equal: ')).plus(B.out_bool(here, b_.is_equal(a))).plus(KS.s8(here, ', =: ')).plus(B.out_bool(here, B.equal(b_, a))).plus(KS.s8(here, '\n')))
         b_.standard_copy(a)
         self.print_(KS.s8(here, 'after standard_copy, standard_is_equal: ').plus(B.out_bool(here, b_.standard_is_equal(a))).plus(KS.s8(here, '\n')))
 
