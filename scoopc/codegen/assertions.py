@@ -39,7 +39,8 @@ class InheritedAssertions:
         """(class info, routine body, renames) of a redeclared version, None if not compilable."""
         info = self.universe.get(version.written_in)
         body = getattr(version.decl, "body", None)
-        if info is None or info.from_library or not isinstance(body, syntax.RoutineBody):
+        if info is None or (info.from_library and not getattr(self, "library_versions", False)) \
+                or not isinstance(body, syntax.RoutineBody):
             return None
         own = [a.name.key for a in self.feature.decl.arguments]
         theirs = [a.name.key for a in getattr(version.decl, "arguments", ())]

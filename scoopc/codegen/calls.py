@@ -100,7 +100,10 @@ class Calls:
 
     # --- the call itself ---------------------------------------------------------------------------
     def call_feature(self, node, target_node, target, feature, arguments, conversion=None, static_type=None):
-        args = [self.argument(a) for a in arguments]
+        if feature.name in _OWN_ARGUMENT:
+            args = [self.x(a) for a in arguments]    # `other` itself: see _OWN_ARGUMENT
+        else:
+            args = [self.argument(a) for a in arguments]
         if not args and feature.arguments and node in self.tables.agent_calls:
             args = [P.const(None)]                # `p.call` for `p.call ([])`: no open operands
         if conversion is not None:
@@ -117,6 +120,14 @@ class Calls:
             from ..kernel import basic
 
             return basic.inline(feature.written_in, declared_name(feature), target, args)
+        if target_node is not None and self.is_basic(target_ty) and feature.written_in not in BASIC:
+            # ANY's features on a basic value (`i.twin`, `i.is_equal (j)`): the basic class's
+            # own versions, by its static class (kernel/basic_dispatch.py)
+            if self.is_property(feature) or feature.kind in ("attribute", "constant"):
+                return P.call("B.query_as", [P.const(target_ty.name), target, P.const(self.py_name(feature)),
+                                             P.name("here")])
+            return P.call("B.call_as", [P.const(target_ty.name), target, P.const(self.py_name(feature)),
+                                        P.tup(args), P.name("here")])
         if target_node is not None and target_ty is not None and self.may_hold_basic(target_ty) \
                 and not self.is_basic(target_ty):
             if self.is_property(feature) or feature.kind in ("attribute", "constant"):
@@ -225,6 +236,8 @@ class Calls:
 
     def new_object(self, ty: Ty, feature, args, separate: bool, passive: bool):
         info = self.universe.get(ty.name)
+        if self.is_tuple_class(info) and not (separate or passive):
+            return self.new_tuple_object(ty)
         cls = self.class_ref(info.name)
         gen = self.generics_desc(ty) if info.formals else None
         creator = self.py_name(feature) if feature is not None else None
@@ -236,6 +249,13 @@ class Calls:
         invariant = self.assertions == "all" and self.program_has_invariant(info)
         return P.call("S.create", [P.name("here"), cls, gen if gen is not None else P.const(None),
                                    P.const(creator), P.tup(args)] + ([P.const(True)] if invariant else []))
+
+    def is_tuple_class(self, info) -> bool:
+        return info is not None and info.name.split("@")[0] == "TUPLE" and info.from_library
+
+    def new_tuple_object(self, ty: Ty):
+        """`create t` of a TUPLE type: its items are the defaults of its item types."""
+        return P.call("S.new_default_tuple", [P.name("here"), self.generics_desc(ty)])
 
     def program_has_invariant(self, info) -> bool:
         """Is there an invariant to check after creating an `info` object? (The library runs
@@ -324,6 +344,13 @@ class Calls:
 
     def class_ref(self, key: str):
         return self.module.class_ref(key)
+
+
+# ANY's duplication and comparison features work on `other` itself: an expanded actual argument
+# is not copied to be passed (a redefined `copy` would otherwise run to pass the argument of
+# `copy`, and `standard_copy`, `standard_is_equal` would see the fields a redefined copy made).
+_OWN_ARGUMENT = frozenset({"copy", "standard_copy", "deep_copy", "is_equal", "standard_is_equal",
+                           "is_deep_equal"})
 
 
 def _constant_desc(node) -> bool:

@@ -128,16 +128,31 @@ class ClassGen:
         result = feature.signature.result if feature.signature else None
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
         body = feature.decl.body
-        if body is not None:                     # `attribute ... end`: self-initialising
+        if body is not None and self.self_initialising(result):
+            # `attribute ... end` of an attached reference type: the body runs when the attribute
+            # is read while still Void (ECMA-367's and EiffelStudio's self-initializing
+            # attributes); a detachable or expanded attribute starts at its default instead
             fn = P.function(f"{pyname}_init_", ["self"], gen.routine_body(body, [], result))
-            return [P.at(fn, feature.decl.span),
-                    P.assign(P.name(pyname), P.call("S.SelfInitialising", [P.name(f"{pyname}_init_"), P.const(pyname)]))]
+            if result.is_formal:
+                value = P.call("S.SelfInitialisingFormal", [P.name(f"{pyname}_init_"), P.const(pyname),
+                                                            P.const(self.info.name), P.const(result.formal)])
+            else:
+                value = P.call("S.SelfInitialising", [P.name(f"{pyname}_init_"), P.const(pyname)])
+            return [P.at(fn, feature.decl.span), P.assign(P.name(pyname), value)]
         if result is not None and result.is_formal:
             return [P.assign(P.name(pyname), P.call("S.FormalDefault", [P.const(self.info.name), P.const(result.formal), P.const(pyname)]))]
         info = self.program.universe.get(result.name) if result is not None else None
         if info is not None and info.is_expanded and info.name not in BASIC:
             return [P.assign(P.name(pyname), P.call("S.ExpandedDefault", [gen.type_desc(result), P.const(pyname)]))]
         return [P.at(P.assign(P.name(pyname), gen.default_value(result)), feature.decl.span)]
+
+    def self_initialising(self, result) -> bool:
+        if result is None or not result.attached:
+            return False
+        if result.is_formal:
+            return True                          # the actual generic decides at run time
+        info = self.program.universe.get(result.name)
+        return info is None or not (info.is_expanded or info.name in BASIC)
 
     def constant(self, pyname, feature) -> list:
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
@@ -158,7 +173,7 @@ class ClassGen:
         params = ["self"] + [self.local(a.name.key) for a in feature.decl.arguments]
         property_ = feature.is_query and not feature.arguments
         if isinstance(inner, syntax.ExternalBody):
-            return self.external(pyname, feature, property_)
+            return self.external(pyname, feature, property_, body, params)
         gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
         signature = feature.signature
         arguments = [(a.name.key, t) for a, t in zip(feature.decl.arguments, signature.arguments)]
@@ -185,7 +200,7 @@ class ClassGen:
         outer = P.at(P.function(pyname, params, [ast.Return(value)], decorators), feature.decl.span)
         return [inner, outer]
 
-    def external(self, pyname, feature, property_) -> list:
+    def external(self, pyname, feature, property_, body=None, params=()) -> list:
         if self.info.name in BASIC:
             return []                    # inlined at each call (kernel.basic)
         module = self.info.name.split("@")[0].lower()
@@ -200,9 +215,37 @@ class ClassGen:
             value = P.attr(P.name(f"X_{module}"), fname)
         else:
             value = P.call("S.missing_external", [P.const(self.info.name), P.const(fname)])
+        checks = self.external_precondition(feature, body)
+        if checks:
+            # The precondition is the generated code's, as for any routine (EiffelBase's
+            # SPECIAL and the strings guard their externals so): misuse is a violation.
+            call = P.call(value, [P.name(p) for p in params])
+            host = self.info.name.split("@")[0]
+            if host in REFUSING_HOSTS or (host, fname) in REFUSING_HOSTS:
+                # checked when the host refuses the call (the external raises): these host
+                # functions refuse every input their precondition excludes, and the common
+                # case (SPECIAL's item and put, under every ARRAY and list) pays no check
+                caught = ast.ExceptHandler(P.dotted("Exception"), None, checks + [ast.Raise(None, None)])
+                body = [ast.Try([ast.Return(call)], [caught], [], [])]
+            else:
+                body = checks + [ast.Return(call)]
+            decorators = [P.name("property")] if property_ else []
+            fn = P.function(pyname, list(params), body, decorators + [P.dotted("S.guard")])
+            return [P.at(fn, feature.decl.span)]
         if property_:
             value = P.call("property", [value])
         return [P.at(P.assign(P.name(pyname), value), feature.decl.span)]
+
+    def external_precondition(self, feature, body) -> list:
+        """The checks of the routine's precondition, its own and inherited ones."""
+        if body is None:
+            return []
+        gen = RoutineGen(self.program, self.module, self.info, feature, feature.name)
+        gen.library_versions = True          # an external's precondition may be all inherited
+        checks = gen.precondition(body.precondition.clauses if body.precondition is not None else ())
+        if not checks:
+            return []
+        return [P.assign(P.name("here"), P.attr(P.name("self"), "_region_"))] + checks
 
     def local(self, name: str) -> str:
         from .routines import local_identifier
@@ -221,6 +264,14 @@ class ClassGen:
         body += [gen.assertion(c, "invariant") for c in clauses]
         fn = P.function("_invariant_", ["self"], body)
         return P.at(fn, self.info.decl.span)
+
+
+# Classes (or (class, feature) pairs) whose `external "Python"` functions (scoopc/kernel/ext/)
+# refuse, by raising, every input their Eiffel precondition excludes: their preconditions are
+# evaluated only then (the hot accessors under every array, list and string).
+REFUSING_HOSTS = frozenset({"SPECIAL", ("STRING_8", "item"), ("STRING_32", "item"),
+                            ("IMMUTABLE_STRING_8", "item"), ("IMMUTABLE_STRING_32", "item"),
+                            ("READABLE_STRING_GENERAL", "code")})
 
 
 def _unique_values(decl) -> dict:

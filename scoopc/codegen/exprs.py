@@ -85,13 +85,13 @@ class Expressions:
 
     def x_TupleExpression(self, node):
         ty = self.type_of(node)
-        items = [self.x(item) for item in node.items]
+        items = [self.copied(item, self.x(item)) for item in node.items]
         return P.call("S.new_tuple", [P.name("here"), P.lst(items), self.generics_desc(ty)])
 
     def x_ManifestArray(self, node):
         ty = self.type_of(node)
         element = ty.generics[0] if ty.generics else None
-        items = [self.reattached(item, self.x(item), element) for item in node.items]
+        items = [self.reattached(item, self.copied(item, self.x(item)), element) for item in node.items]
         return P.call("S.manifest_array", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.lst(items)])
 
     # --- entities ------------------------------------------------------------------------------

@@ -9,6 +9,8 @@ from ..semantics.types import BASIC
 from . import pyast as P
 from .context import fail
 
+_VALUE_COPIES = frozenset({"copy", "standard_copy", "deep_copy"})
+
 
 class Instructions:
     def block(self, instructions) -> list:
@@ -86,7 +88,24 @@ class Instructions:
 
     # --- calls and creation ----------------------------------------------------------------------------
     def s_CallInstruction(self, node):
-        return [P.expr_stmt(self.x(node.call))]
+        call = node.call
+        if isinstance(call, syntax.QualifiedCall) and call.name.key in _VALUE_COPIES and len(call.arguments) == 1 \
+                and self.is_basic(self.tables.types.get(call.target)) and self.is_variable(call.target):
+            # `i.copy (j)` on an entity of a basic (expanded) type copies into the entity
+            # itself (a call on an entity of an expanded type works on the entity's value)
+            return [P.assign(self.target(call.target), self.x(call.arguments[0]))]
+        return [P.expr_stmt(self.x(call))]
+
+    def is_variable(self, node) -> bool:
+        """A local, Result or attribute of Current: an entity `copy` may write."""
+        if isinstance(node, syntax.Result):
+            return True
+        entity = self.tables.entities.get(node)
+        if entity is not None:
+            return entity.kind in ("local", "argument", "result", "attribute")
+        feature = self.tables.features.get(node)
+        return isinstance(node, syntax.UnqualifiedCall) and not node.arguments and feature is not None \
+            and feature.kind == "attribute"
 
     def s_CreationInstruction(self, node):
         ty = self.tables.types.get(node)
@@ -103,6 +122,8 @@ class Instructions:
         """`create x.make (a)` into a local or Result, spelled out: `x = here.new(C)`, then
         `x.make(a)` (the common case, and the cheapest: no helper call)."""
         info = self.universe.get(ty.name)
+        if self.is_tuple_class(info):
+            return [P.assign(target, self.new_tuple_object(ty))]
         args = [self.argument(a) for a in arguments]
         out = [P.assign(target, P.call("here.new", [self.class_ref(info.name)]))]
         if info.formals:
@@ -174,7 +195,14 @@ class Instructions:
         if node.until is not None:
             body = [P.if_(self.x(node.until), [ast.Break()])] + body
         checks, _ = self.loop_checks(node)
-        loop = ast.For(P.name(var, store=True), self.iteration_source(iteration), checks + body or [ast.Pass()], [], None)
+        body = checks + body
+        source = self.iteration_source(iteration)
+        if not iteration.cursor_mode:
+            # `across s is x` (and `⟳ x: s ¦ ... ⟲`) is `across s as c` with each `x` read as
+            # `c.item` at the point of use, as the unfolded `new_cursor` loop reads it
+            source = P.call("S.cursors", [self.x(iteration.expression)])
+            body = [_ItemReads(var).visit(stmt) for stmt in body]
+        loop = ast.For(P.name(var, store=True), source, body or [ast.Pass()], [], None)
         return out + [loop]
 
     def s_Check(self, node):
@@ -207,3 +235,15 @@ class Instructions:
         tag = clause.tag.text if clause.tag is not None else None
         failure = P.call("S.assertion_failed", [P.const(kind), P.const(tag), self.where(clause)])
         return P.at(P.if_(P.not_(self.x(clause.expression)), [P.expr_stmt(failure)]), clause.span)
+
+
+class _ItemReads(ast.NodeTransformer):
+    """Every read of the cursor variable `var` becomes `var.item`."""
+
+    def __init__(self, var: str):
+        self.var = var
+
+    def visit_Name(self, node):
+        if node.id == self.var and isinstance(node.ctx, ast.Load):
+            return ast.copy_location(P.attr(P.name(self.var), "item"), node)
+        return node

@@ -7,6 +7,7 @@ import ast
 
 from .. import syntax
 from ..semantics import scoop as scoop_rules
+from ..semantics.conformance import base_type
 from . import pyast as P
 from .assertions import InheritedAssertions
 from .calls import Calls
@@ -94,8 +95,13 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         return out
 
     def separate_arguments(self, arguments) -> list:
+        """The arguments the routine reserves: those of a separate type, a formal generic with
+        a separate constraint included (`w: G` with `G -> separate T`: the checker takes calls
+        on `w` as separate calls, so `w` is reserved as EiffelStudio reserves it)."""
         found = []
         for name, ty in arguments:
+            if ty is not None and ty.is_formal:
+                ty = base_type(self.universe, ty, self.universe.get(self.info.name))
             if ty is not None and ty.separate and not scoop_rules.is_expanded(self.universe, ty):
                 found.append((name, ty))
         return found

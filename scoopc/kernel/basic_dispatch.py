@@ -19,7 +19,6 @@ _KINDS = {bool: "BOOLEAN", int: "INTEGER_32", float: "REAL_64", str: "CHARACTER_
 _KINDS.update(BOXES)                      # values boxed on reattachment (scoopc/kernel/boxes.py)
 _TABLES = {}        # basic class name -> {seed name: function (region, current, *arguments)}
 
-GENERATING_TYPE = None      # hook set by the code generator's support: fn(region, TypeDesc) -> TYPE
 
 
 def call(target, name, arguments=(), region=None):
@@ -63,13 +62,12 @@ def _feature(kind, name):
         raise AttributeError(f"a {kind} value has no feature `{name}'") from None
 
 
-def generating_type(region, value):
-    """ANY.generating_type of a basic value, through the hook `GENERATING_TYPE`."""
-    if GENERATING_TYPE is None:
-        raise NotImplementedError("generating_type of a basic value: "
-                                  "scoopc.kernel.basic_dispatch.GENERATING_TYPE is unset")
-    from .types import of
-    return GENERATING_TYPE(region, of(value))
+def generating_type(region, value, kind=None):
+    """ANY.generating_type of a basic value: the TYPE object of its basic class (`kind`, the
+    static class when known: a NATURAL_8 is a Python int too)."""
+    from .support import type_object  # deferred: a cycle (support imports this module's B)
+    from .types import of, t
+    return type_object(region, t(kind) if kind is not None else of(value))
 
 
 # --- Equality ------------------------------------------------------------------------------
@@ -161,7 +159,7 @@ def _make_table(kind):
         "tagged_out": out,
         "debug_output": out,
         "generator": lambda r, x: B.s8(r, kind),
-        "generating_type": generating_type,
+        "generating_type": lambda r, x: generating_type(r, x, kind),
         "twin": lambda r, x: x, "standard_twin": lambda r, x: x, "deep_twin": lambda r, x: x,
         "copy": lambda r, x, other: None, "standard_copy": lambda r, x, other: None,
         "deep_copy": lambda r, x, other: None,

@@ -15,7 +15,7 @@ from ..exits import Exit
 from ..runtime import DeadlockError, DirtyRegionError, PreconditionViolation
 from . import CLASSES
 from .errors import EiffelFailure
-from .support import ContractViolation, EiffelRuntimeError
+from .support import GUARDS, ContractViolation, EiffelRuntimeError
 
 _LINE_MAPS: dict = {}
 PROGRAM = [sys.argv[0] if sys.argv and sys.argv[0] else "program"]    # the command line ARGUMENTS reads
@@ -86,9 +86,14 @@ def report(error, debug: bool = False) -> str:
 
 
 def describe_error(error) -> str:
+    if isinstance(error, DirtyRegionError):
+        # EiffelStudio's client raises its dirty processor exception (private_queue.c); the
+        # supplier's own failure follows, which EiffelStudio does not show but a user needs.
+        text = str(error)
+        if error.__cause__ is not None:
+            text += ": " + describe_error(error.__cause__)
+        return text
     cause = error
-    while isinstance(cause, DirtyRegionError) and cause.__cause__ is not None:
-        cause = cause.__cause__
     if isinstance(cause, ContractViolation):
         text = f"{cause.kind.replace('_', ' ')} violated: `{cause.tag or '(untagged)'}`"
         return text + _at(cause.where)
@@ -132,7 +137,7 @@ def eiffel_frames(error) -> list:
     frames = []
     for frame, lineno in traceback.walk_tb(error.__traceback__):
         place = eiffel_place(frame.f_code.co_filename, lineno)
-        if place is None:
+        if place is None or frame.f_code in GUARDS:
             continue
         module = frame.f_globals.get("__name__", "")
         cls = module.rsplit(".", 1)[-1].upper()

@@ -114,6 +114,16 @@ def exception_object(here, error):
     return EiffelFailure(exception)
 
 
+GUARDS = set()          # code objects of the precondition checks generated around externals
+
+
+def guard(fn):
+    """Decorates the precondition check generated around an `external "Python"` routine: its
+    frame is the external's own, so Eiffel traces leave it out, as they leave out the host's."""
+    GUARDS.add(fn.__code__)
+    return fn
+
+
 def last_caught(here):
     return _LAST.get(here)
 
@@ -143,6 +153,8 @@ def create_formal(here, desc, creator, args):
     """`create x.make` where x's type is a formal generic: the actual type's class at run time."""
     if desc.is_basic:
         return desc.default()
+    if desc.pyclass is CLASSES.get("TUPLE"):
+        return new_default_tuple(here, tuple(desc.generics or ()))
     return create(here, desc.pyclass, desc.generics or None, creator, args)
 
 
@@ -199,7 +211,9 @@ def conforms(value, desc):
 
 
 class SelfInitialising:
-    """An attribute with an `attribute` body: computed by the body on the first read when unset."""
+    """An attached attribute with an `attribute` body: the body runs when the attribute is read
+    while still Void (never set, or its body left it Void), and its result is kept. An actual
+    generic that is expanded is never Void: the attribute starts at its default."""
 
     def __init__(self, init, name):
         self.init, self.name = init, name
@@ -208,8 +222,28 @@ class SelfInitialising:
         if obj is None:
             return self
         value = self.init(obj)
-        obj.__dict__[self.name] = value
+        if value is not None:
+            obj.__dict__[self.name] = value
         return value
+
+
+class SelfInitialisingFormal(SelfInitialising):
+    """`x: G attribute ... end`: self-initialising only when the actual generic of G is a
+    reference type (an expanded one is never Void: its default is kept)."""
+
+    def __init__(self, init, name, written_in, index):
+        super().__init__(init, name)
+        self.written_in, self.index = written_in, index
+
+    def __get__(self, obj, owner=None):
+        if obj is None:
+            return self
+        desc = T.formal(obj, self.written_in, self.index)
+        default = desc.default(obj._region_)
+        if default is not None:
+            obj.__dict__[self.name] = default
+            return default
+        return super().__get__(obj, owner)
 
 
 class FormalDefault:
@@ -311,6 +345,12 @@ def new_tuple(here, items, gen):
     obj._items = items
     obj._gen_ = gen
     return obj
+
+
+def new_default_tuple(here, gen):
+    """`create t` of a TUPLE type: one item per declared type, each its default value (as
+    EiffelStudio's TUPLE creation)."""
+    return new_tuple(here, [g.default(here) for g in gen], gen)
 
 
 def tuple_item(t, index):

@@ -15,8 +15,19 @@ class PreconditionViolation(ScoopError):
 
 
 class DirtyRegionError(ScoopError):
-    """A synchronous call on a region where an earlier asynchronous call of this
-    reservation failed; `__cause__` is that failure."""
+    """EiffelStudio's dirty processor exception: a synchronous call on a region where an
+    earlier asynchronous call of this reservation failed (the call is not executed);
+    `__cause__` is that failure."""
+
+
+DIRTY_TAG = "EVE/Qs dirty processor exception"
+
+
+def dirty_error(proc: object, failure: BaseException | None) -> DirtyRegionError:
+    """The exception a client gets instead of its synchronous call on dirty `proc`."""
+    error = DirtyRegionError(f"{DIRTY_TAG}: an earlier asynchronous call on {proc} failed")
+    error.__cause__ = failure
+    return error
 
 
 class UncontrolledTarget(ScoopError):

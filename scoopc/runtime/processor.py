@@ -17,7 +17,7 @@ from collections import deque
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TypeVar
 
-from .errors import PASS_THROUGH, DirtyRegionError, Shutdown, UncontrolledTarget
+from .errors import PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error
 from .fast import FastPaths
 from .once import once_in
 from .protocols import Args, Call, Clause, OnceKey, OnceTable, Routine, Separate, Where
@@ -208,11 +208,11 @@ class Processor(FastPaths):
             lock.acquire()
             if s.claimed:            # queued or passing calls need `p` free for its thread
                 drop_claim_locked(p, s)
-            if s.dirty is not None:
-                s.delivered = True
+            if s.dirty is not None:          # not executed; delivering cleans the region
                 err = s.dirty
+                s.dirty = None
                 lock.release()
-                raise DirtyRegionError(f"an earlier call on {p} failed: {err!r}") from err
+                raise dirty_error(p, err)
             if p.state != RUNNING:
                 if p.head is s and not s.calls and passer is None:     # the fast path
                     return self._query_now(p, s, routine, target, args, is_cmd)
@@ -302,9 +302,9 @@ class Processor(FastPaths):
                     if is_cmd and passer is None:
                         return None                  # skipped: the region is dirty
                     with p.lock:
-                        s.delivered = True
-                    raise DirtyRegionError(f"an earlier call on {p} failed: {s.dirty!r}") \
-                        from s.dirty
+                        err = s.dirty
+                        s.dirty = None
+                    raise dirty_error(p, err)
             if is_cmd:
                 s.changed = True
                 if passer is None and not p.passive:   # a leaf command: failure dirties
@@ -416,11 +416,11 @@ class Processor(FastPaths):
         rt = self.rt
         for routine, target, args, blk, passer in batch:
             if s.dirty is not None:
-                if blk is not None:
+                if blk is not None:          # not executed; delivering cleans the region
                     with self.lock:
-                        s.delivered = True
-                    blk.error = DirtyRegionError(f"an earlier call on {self} failed: {s.dirty!r}")
-                    blk.error.__cause__ = s.dirty
+                        err = s.dirty
+                        s.dirty = None
+                    blk.error = dirty_error(self, err)
                     rt.unblock(blk)
                 continue
             try:
@@ -488,7 +488,7 @@ class Processor(FastPaths):
     def _advance_locked(self) -> Session | None:
         """[lock] The head session is finished: report, wake waiters, move to the next."""
         s: Session = self.head  # type: ignore[assignment]  # called only with a head
-        if s.dirty is not None and not s.delivered:
+        if s.dirty is not None:
             self.rt.report_lost(self, s)
         if s.changed and self.waiters:
             self.wake_waiters_locked(s)

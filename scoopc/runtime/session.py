@@ -29,7 +29,7 @@ class Session:
     """A private queue: the calls of one client to one supplier within one reservation.
     It is also the reservation object of the common one-supplier reservation without
     wait condition (`Processor.reserve`): `with` enters and releases it."""
-    __slots__ = ("client", "proc", "calls", "closed", "dirty", "delivered", "changed",
+    __slots__ = ("client", "proc", "calls", "closed", "dirty", "changed",
                  "turn", "where", "heavy", "claimed")
     client: Processor | OutsideClient
     proc: Processor
@@ -50,8 +50,8 @@ class Session:
         #                           session; a reused spare is re-targeted, see `__exit__`)
         self.calls = []           # [proc.lock] (routine, target, args, Block|None, passer|None)
         self.closed = False       # [proc.lock] the client released the reservation
-        self.dirty = None         # [proc.lock] exception of a failed asynchronous call
-        self.delivered = False    # [proc.lock] the dirty exception reached the client
+        self.dirty = None         # [proc.lock] exception of a failed asynchronous call, until
+        #                           the next synchronous call delivers it (then None again)
         self.changed = False      # [executor of proc] a command ran (wakes wait conditions)
         self.turn = None          # [proc.lock] passive only: Block of the client awaiting its turn
         self.where = where        # reservation position, for reports

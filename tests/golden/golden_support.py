@@ -18,6 +18,7 @@ integers, booleans or lists of strings):
 from __future__ import annotations
 
 import ast
+import builtins
 import importlib
 import io
 import re
@@ -154,6 +155,23 @@ def _run_program(compiled, config: Config) -> Outcome:
         sys.stdin = saved_stdin
         sys.path.remove(str(compiled.folder))
     return Outcome(status, out.getvalue(), relative_text(err.getvalue()))
+
+
+# What the user sees must never name a Python exception: every built-in exception class (from
+# `builtins`, as whole words) and the header of a Python traceback.
+HOST_EXCEPTION_NAMES = sorted(name for name, value in vars(builtins).items()
+                              if isinstance(value, type) and issubclass(value, BaseException))
+HOST_EXCEPTION = re.compile(r"\b(?:" + "|".join(HOST_EXCEPTION_NAMES) + r")\b|Traceback \(most recent call last\)")
+
+
+def host_exceptions(text: str) -> list:
+    """The lines of `text` that show a Python exception to the user."""
+    return [line for line in text.splitlines() if HOST_EXCEPTION.search(line)]
+
+
+def assert_no_host_exception(out: str, err: str, where: str) -> None:
+    shown = host_exceptions(out) + host_exceptions(err)
+    assert not shown, f"{where}: a Python exception reaches the user:\n" + "\n".join(shown)
 
 
 def per_processor(text: str) -> dict:

@@ -1,7 +1,8 @@
 """Golden compile-and-run cases (tests/golden/README.md): for each tests/golden/<case>/, the
 generated Python of the case's own classes equals expected/*.py and the run's output equals
 expected.out (exactly, per processor or sorted, as case.toml says); the exit status and the first
-lines of stderr (expected.err) are checked too. `pytest --update-golden` rewrites expected/ and
+lines of stderr (expected.err) are checked too, and neither stream may show a Python exception
+(a built-in exception class's name, a traceback). `pytest --update-golden` rewrites expected/ and
 the outputs from the current compiler: review the diff, the outputs are EiffelStudio's."""
 from __future__ import annotations
 
@@ -12,7 +13,7 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
-from golden_support import assert_output, compile_program, read_config, run_program  # noqa: E402
+from golden_support import assert_no_host_exception, assert_output, compile_program, read_config, run_program  # noqa: E402
 
 GOLDEN = Path(__file__).parent
 CASES = sorted(p for p in GOLDEN.iterdir() if p.is_dir() and any(p.glob("*.e")))
@@ -43,6 +44,7 @@ def test_golden(case: Path, tmp_path: Path, request):
         for name, text in texts.items():
             assert text == (expected_dir / name).read_text(), f"{case.name}: generated {name} differs"
     outcome = run_program(compiled, config)
+    assert_no_host_exception(outcome.out, outcome.err, case.name)
     out_path, err_path = case / "expected.out", case / "expected.err"
     if update:
         out_path.write_text(outcome.out)

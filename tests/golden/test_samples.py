@@ -2,7 +2,8 @@
 its output equals tests/golden/samples_expected/<sample>.out per processor (each processor's lines
 in order) and satisfies the invariants the sample is about, read from the output. The samples'
 own contracts (a buffer never exceeds its capacity, a fork is never picked up while held, ...)
-are checked at run time: a violation would fail the run (exit 3, stderr)."""
+are checked at run time: a violation would fail the run (exit 3, stderr). Neither stream may name
+a Python exception; robot samples run 5 simulated seconds for that check alone."""
 from __future__ import annotations
 
 import re
@@ -12,11 +13,15 @@ from pathlib import Path
 import pytest
 
 sys.path.insert(0, str(Path(__file__).parent))
-from golden_support import REPO, Config, assert_output, compile_program, run_program  # noqa: E402
+from golden_support import REPO, Config, assert_no_host_exception, assert_output, compile_program, run_program  # noqa: E402
 
-# Robot samples (a world.yaml beside the program) run on the simulator: tests/robots checks them.
+# Robot samples (a world.yaml beside the program) run on the simulator: tests/robots checks what
+# they do; here only that a short run shows no Python exception.
 SAMPLES = sorted(p for p in (REPO / "samples").iterdir()
                  if p.is_dir() and any(p.glob("*.e")) and not (p / "world.yaml").exists())
+ROBOT_SAMPLES = sorted(p for p in (REPO / "samples").iterdir()
+                       if p.is_dir() and any(p.glob("*.e")) and (p / "world.yaml").exists())
+ROBOT_SECONDS = 5           # simulated: start-up, the first sensor readings and commands
 EXPECTED = Path(__file__).parent / "samples_expected"
 
 
@@ -105,6 +110,7 @@ def test_sample(sample: Path, tmp_path: Path, request):
     config = Config(compare="per_processor", virtual_clock=True)
     compiled, _ = compile_program(sample, tmp_path)
     outcome = run_program(compiled, config)
+    assert_no_host_exception(outcome.out, outcome.err, sample.name)
     assert outcome.status == 0, f"{sample.name}: exit status {outcome.status}\n{outcome.err}"
     assert outcome.err == "", f"{sample.name}: unexpected stderr:\n{outcome.err}"
     expected = EXPECTED / f"{sample.name}.out"
@@ -116,3 +122,26 @@ def test_sample(sample: Path, tmp_path: Path, request):
     check = CHECKS.get(sample.name)
     if check is not None:
         check(outcome.out)
+
+
+@pytest.mark.parametrize("sample", ROBOT_SAMPLES, ids=[s.name for s in ROBOT_SAMPLES])
+def test_robot_sample_shows_no_host_exception(sample: Path):
+    """A robot sample, run briefly on the simulator: what the user sees names no Python exception."""
+    import io
+
+    from scoopc.robots.runner import run_on_simulator
+
+    out, err = io.StringIO(), io.StringIO()
+    result = run_on_simulator(sample, duration=ROBOT_SECONDS, stdout=out, stderr=err)
+    assert_no_host_exception(out.getvalue(), err.getvalue(), sample.name)
+    assert result.status == 0, f"{sample.name}: exit status {result.status}\n{err.getvalue()}"
+
+
+def test_host_exception_check_catches_what_it_must():
+    from golden_support import host_exceptions
+
+    assert host_exceptions("scoopc: run-time failure: IndexError: list index out of range") != []
+    assert host_exceptions("'TUPLE' object has no attribute '_items' (AttributeError)") != []
+    assert host_exceptions("Traceback (most recent call last):") != []
+    assert host_exceptions("precondition violated: `valid_key` (in ARRAY.item, array.e:115)") == []
+    assert host_exceptions("KeyErrors and MyValueError are words of the program") == []

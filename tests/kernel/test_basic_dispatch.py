@@ -8,7 +8,7 @@ import struct
 import pytest
 from hypothesis import given, strategies as st
 
-from scoopc.kernel import basic as B, basic_dispatch
+from scoopc.kernel import basic as B
 
 from basic_support import Str, ev, fake_strings as _fake_strings
 
@@ -202,12 +202,12 @@ def test_types_of_values():
     assert B.call(1, "conforms_to", (any_class(),)) is True
 
 
-def test_generating_type_uses_the_hook(monkeypatch):
-    with pytest.raises(NotImplementedError):
-        B.query(5, "generating_type")
-    monkeypatch.setattr(basic_dispatch, "GENERATING_TYPE", lambda region, desc: ("TYPE", region, desc.name))
+def test_generating_type_is_the_type_object_of_the_basic_class(monkeypatch):
+    from scoopc.kernel import support
+    monkeypatch.setattr(support, "type_object", lambda region, desc: ("TYPE", region, desc.name))
     assert B.query(5, "generating_type", "R") == ("TYPE", "R", "INTEGER_32")
     assert B.query(0.5, "generating_type", "R")[2] == "REAL_64"
+    assert B.query_as("NATURAL_8", 5, "generating_type", "R")[2] == "NATURAL_8"
 
 
 def test_call_as_a_known_basic_class():

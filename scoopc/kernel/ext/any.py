@@ -59,7 +59,11 @@ def _blank(current):
 
 def standard_copy(current, other):
     region = current._region_
-    current.__dict__.update({k: (list(v) if isinstance(v, list) else v) for k, v in _fields(other).items()})
+    theirs = _fields(other)
+    for name in _fields(current):         # a field `other` never set holds its class default
+        if name not in theirs and not name.startswith("_"):
+            theirs[name] = getattr(type(other), name, None)
+    current.__dict__.update({k: (list(v) if isinstance(v, list) else v) for k, v in theirs.items()})
     current._region_ = region
 
 

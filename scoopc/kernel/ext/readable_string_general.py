@@ -25,6 +25,8 @@ def make(current, n):
 
 
 def code(current, i):
+    if i < 1:                             # refused (the caller reports `valid_index')
+        raise IndexError(i)
     return ord(current._s[i - 1])
 
 

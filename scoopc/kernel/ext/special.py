@@ -5,9 +5,10 @@ beyond `count` do not exist in the host); `_cap`, the capacity; `_gen_[0]`, the 
 (`.default(region)` gives T's default value, a fresh object made in `region` for a user
 expanded type).
 
-Preconditions are the generated code's business; these functions only refuse what would
-otherwise silently misbehave in Python (a negative index reading from the end, or the count
-growing past the capacity), with IndexError.
+Preconditions (special.e's) are checked by the generated code when one of these functions
+raises: so each refuses, with IndexError or ValueError, every input its precondition excludes
+(a negative index would otherwise read from the end, a count grow past the capacity), and the
+caller sees the precondition violation, never the host's exception.
 """
 
 _IMMUTABLE = (int, float, str, bool, type(None))
@@ -84,10 +85,10 @@ def fill_with(current, v, start_index, end_index):
     beyond `count` if needed (`start_index` <= `count`)."""
     items = current._items
     n = end_index + 1 - start_index
-    if n <= 0:
-        return
-    if start_index < 0 or start_index > len(items):
+    if start_index < 0 or start_index > len(items) or n < 0:
         _bad_index(current, start_index)
+    if n == 0:
+        return
     _check_room(current, max(len(items), end_index + 1))
     items[start_index:end_index + 1] = [v] * n
 
@@ -98,10 +99,10 @@ def fill_with_default(current, start_index, end_index):
     (an expanded object must be a fresh object in every slot)."""
     items = current._items
     n = end_index + 1 - start_index
-    if n <= 0:
-        return
-    if start_index < 0 or start_index > len(items):
+    if start_index < 0 or start_index > len(items) or n < 0:
         _bad_index(current, start_index)
+    if n == 0:
+        return
     _check_room(current, max(len(items), end_index + 1))
     desc = current._gen_[0]
     region = current._region_
@@ -118,12 +119,10 @@ def copy_data(current, other, source_index, destination_index, n):
     """Copy the `n` items of `other` from `source_index` to this block from `destination_index` on
     (`destination_index` <= `count`; the count grows when the copy goes past it). `other` may be
     `current` (overlapping ranges are then handled like `move_data`)."""
-    if n <= 0:
-        return
     items = current._items
     if destination_index < 0 or destination_index > len(items):
         _bad_index(current, destination_index)
-    if source_index < 0 or source_index + n > len(other._items):
+    if n < 0 or source_index < 0 or source_index + n > len(other._items):
         raise IndexError(f"SPECIAL.copy_data: {n} items from {source_index} "
                          f"not in a source of count {len(other._items)}")
     _check_room(current, destination_index + n)
@@ -140,15 +139,15 @@ def move_data(current, source_index, destination_index, n):
 
 def keep_head(current, n):
     """Keep only the first `n` items (0 <= `n` <= `count`)."""
-    if n < 0:
-        raise ValueError(f"SPECIAL.keep_head: negative count {n}")
+    if n < 0 or n > len(current._items):
+        raise ValueError(f"SPECIAL.keep_head: count {n} not in 0 .. {len(current._items)}")
     del current._items[n:]
 
 
 def keep_tail(current, n):
     """Keep only the last `n` items (0 <= `n` <= `count`), moved to the front."""
-    if n < 0:
-        raise ValueError(f"SPECIAL.keep_tail: negative count {n}")
+    if n < 0 or n > len(current._items):
+        raise ValueError(f"SPECIAL.keep_tail: count {n} not in 0 .. {len(current._items)}")
     items = current._items
     if n < len(items):
         del items[:len(items) - n]

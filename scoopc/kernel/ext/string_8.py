@@ -12,6 +12,8 @@ from scoopc.kernel import strings as K
 
 
 def item(current, i):
+    if i < 1:                             # refused (the caller reports `valid_index')
+        raise IndexError(i)
     return current._s[i - 1]
 
 

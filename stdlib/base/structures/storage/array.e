@@ -111,6 +111,8 @@ feature -- Access
 
 	item alias "[]", at alias "@" (i: INTEGER_32): G assign put
 			-- Item at index `i'.
+		require
+			valid_key: valid_index (i)
 		do
 			Result := area.item (i - lower)
 		end

@@ -55,6 +55,8 @@ feature -- Access
 
 	item alias "[]" (i: INTEGER_32): T assign put
 			-- Item at index `i' (indices start at 0).
+		require
+			valid_index: valid_index (i)
 		external
 			"Python"
 		end

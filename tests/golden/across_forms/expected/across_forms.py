@@ -29,8 +29,8 @@ class ACROSS_FORMS(ANY):
         list = here.new(LINKED_LIST)
         list._gen_ = (T_1,)
         list.make()
-        for x in S.items(S.manifest_array(here, ARRAY, (T_1,), [4, 8, 15, 16, 23, 42])):
-            list.extend(x)
+        for x in S.cursors(S.manifest_array(here, ARRAY, (T_1,), [4, 8, 15, 16, 23, 42])):
+            list.extend(x.item)
         list.start()
         for c in S.cursors(list):
             self.print_(B.out_int(here, c.item).plus(KS.s8(here, '@')).plus(B.out_int(here, c.cursor_index)).plus(KS.s8(here, ' ')))
@@ -56,8 +56,8 @@ class ACROSS_FORMS(ANY):
         for t_ in S.cursors(table):
             self.print_(t_.key.plus(KS.s8(here, '->')).plus(t_.item).plus(KS.s8(here, ' ')))
         self.print_(KS.s8(here, '\n'))
-        for w in S.items(table):
-            self.print_(w.plus(KS.s8(here, ' ')))
+        for w in S.cursors(table):
+            self.print_(w.item.plus(KS.s8(here, ' ')))
         self.print_(KS.s8(here, '\n'))
         for ch in S.cursors(KS.s8(here, 'abc')):
             self.print_(B.out_c8(here, B.UPPER8[ch.item]))

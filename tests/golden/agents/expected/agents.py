@@ -63,8 +63,8 @@ class AGENTS(ANY):
         self.print_(KS.s8(here, '\n'))
         self.show(KS.s8(here, 'for_all even'), B.out_bool(here, list.for_all(even)))
         self.show(KS.s8(here, 'there_exists even'), B.out_bool(here, list.there_exists(even)))
-        for x in S.items(list):
-            total = _t if -2147483648 <= (_t := (total + S.new_agent(here, FUNCTION, (T_3, T_1), S.dispatcher('double', False), [self, None], (1,)).item(S.new_tuple(here, [x], (T_1,))))) <= 2147483647 else B.wrap_i32(_t)
+        for x in S.cursors(list):
+            total = _t if -2147483648 <= (_t := (total + S.new_agent(here, FUNCTION, (T_3, T_1), S.dispatcher('double', False), [self, None], (1,)).item(S.new_tuple(here, [x.item], (T_1,))))) <= 2147483647 else B.wrap_i32(_t)
         self.show(KS.s8(here, 'total'), B.out_int(here, total))
         self.show(KS.s8(here, 'inline with closed'), B.out_int(here, S.new_agent(here, FUNCTION, (T_3, T_1), _agent_10, [self, 6, None], (2,)).item(S.new_tuple(here, [7], (T_1,)))))
         self.show(KS.s8(here, 'attribute agent'), B.out_int(here, S.new_agent(here, FUNCTION, (T_6, T_1), S.dispatcher('counter', True), [self], ()).item(S.new_tuple(here, [], ()))))

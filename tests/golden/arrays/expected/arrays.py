@@ -67,10 +67,10 @@ class ARRAYS(ANY):
     def image(self, a):
         here = self._region_
         Result = KS.s8(here, '[')
-        for x in S.items(a):
+        for x in S.cursors(a):
             if Result.count > 1:
                 Result.append__string_8(KS.s8(here, ', '))
-            Result.append__string_8(B.out_int(here, x))
+            Result.append__string_8(B.out_int(here, x.item))
         Result.append__string_8(KS.s8(here, ']'))
         return Result
 

@@ -35,8 +35,8 @@ class CONTAINERS_MORE(ANY):
         pq = here.new(HEAP_PRIORITY_QUEUE)
         pq._gen_ = (T_1,)
         pq.make(10)
-        for x in S.items(S.manifest_array(here, ARRAY, (T_1,), [5, 1, 9, 3, 7])):
-            pq.put(x)
+        for x in S.cursors(S.manifest_array(here, ARRAY, (T_1,), [5, 1, 9, 3, 7])):
+            pq.put(x.item)
         self.print_(KS.s8(here, 'priority queue:'))
         while not pq.is_empty:
             self.print_(KS.s8(here, ' ').plus(B.out_int(here, pq.item)))
@@ -45,8 +45,8 @@ class CONTAINERS_MORE(ANY):
         sorted = here.new(SORTED_TWO_WAY_LIST)
         sorted._gen_ = (T_1,)
         sorted.make()
-        for x in S.items(S.manifest_array(here, ARRAY, (T_1,), [5, 2, 8, 2, 6])):
-            sorted.extend(x)
+        for x in S.cursors(S.manifest_array(here, ARRAY, (T_1,), [5, 2, 8, 2, 6])):
+            sorted.extend(x.item)
         self.print_(KS.s8(here, 'sorted: ').plus(self.image(sorted)).plus(KS.s8(here, ' min ')).plus(B.out_int(here, sorted.min)).plus(KS.s8(here, ' max ')).plus(B.out_int(here, sorted.max)).plus(KS.s8(here, '\n')))
         set = here.new(ARRAYED_SET)
         set._gen_ = (T_2,)

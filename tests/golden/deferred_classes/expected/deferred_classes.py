@@ -16,9 +16,9 @@ class DEFERRED_CLASSES(ANY):
         c = here.new(COUNTER_SENSOR)
         c.default_create()
         sensors = S.manifest_array(here, ARRAY, (T_1,), [S.create(here, THERMOMETER, None, 'make', (21,)), c])
-        for s_ in S.items(sensors):
-            self.print_(s_.reading.plus(KS.s8(here, ' calibrated: ')).plus(B.out_bool(here, s_.is_calibrated)).plus(KS.s8(here, '\n')))
-        for s_ in S.items(sensors):
-            self.print_(s_.reading.plus(KS.s8(here, ' calibrated: ')).plus(B.out_bool(here, s_.is_calibrated)).plus(KS.s8(here, '\n')))
+        for s_ in S.cursors(sensors):
+            self.print_(s_.item.reading.plus(KS.s8(here, ' calibrated: ')).plus(B.out_bool(here, s_.item.is_calibrated)).plus(KS.s8(here, '\n')))
+        for s_ in S.cursors(sensors):
+            self.print_(s_.item.reading.plus(KS.s8(here, ' calibrated: ')).plus(B.out_bool(here, s_.item.is_calibrated)).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'count ').plus(B.out_int(here, c.count)).plus(KS.s8(here, '\n')))
 S.register('DEFERRED_CLASSES', DEFERRED_CLASSES)

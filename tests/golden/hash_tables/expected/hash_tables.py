@@ -59,8 +59,8 @@ class HASH_TABLES(ANY):
         n = here.new(HASH_TABLE)
         n._gen_ = (T_2, T_1)
         n.make(10)
-        for k_ in S.items(S.manifest_array(here, ARRAY, (T_1,), [10, 3, 0, 25, 100003, 7])):
-            n.put(KS.s8(here, 'v').plus(B.out_int(here, k_)), k_)
+        for k_ in S.cursors(S.manifest_array(here, ARRAY, (T_1,), [10, 3, 0, 25, 100003, 7])):
+            n.put(KS.s8(here, 'v').plus(B.out_int(here, k_.item)), k_.item)
         n.remove(3)
         n.put(KS.s8(here, 'again'), 3)
         for c in S.cursors(n):

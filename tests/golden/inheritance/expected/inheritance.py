@@ -25,8 +25,8 @@ class INHERITANCE(ANY):
         cs = here.new(COLORED_SQUARE)
         cs.make_colored(1.5, KS.s8(here, 'red'))
         shapes.extend(cs)
-        for s_ in S.items(shapes):
-            self.print_(s_.describe__shape.plus(KS.s8(here, '\n')))
+        for s_ in S.cursors(shapes):
+            self.print_(s_.item.describe__shape.plus(KS.s8(here, '\n')))
         c = cs
         self.print_(KS.s8(here, 'as COLORED: ').plus(c.describe).plus(KS.s8(here, ' / ')).plus(c.name).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, 'color_description: ').plus(cs.describe).plus(KS.s8(here, '\n')))

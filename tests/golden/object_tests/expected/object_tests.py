@@ -56,10 +56,10 @@ class OBJECT_TESTS(ANY):
         zoo.extend(a)
         zoo.extend(S.create(here, CAT, None, 'default_create', ()))
         zoo.extend(S.create(here, DOG, None, 'default_create', ()))
-        for z in S.items(zoo):
-            if S.conforms(z, T_1):
+        for z in S.cursors(zoo):
+            if S.conforms(z.item, T_1):
                 dogs = _t if (_t := (dogs + 1)) <= 2147483647 else B.wrap_i32(_t)
-            self.print_(z.describe.plus(KS.s8(here, ' (')).plus(z.generator).plus(KS.s8(here, ')\n')))
+            self.print_(z.item.describe.plus(KS.s8(here, ' (')).plus(z.item.generator).plus(KS.s8(here, ')\n')))
         self.print_(KS.s8(here, 'dogs: ').plus(B.out_int(here, dogs)).plus(KS.s8(here, '\n')))
         n = S.attempt(zoo.i_th(2), T_6)
         self.print_(KS.s8(here, 'attempt on a cat: ').plus(B.out_bool(here, n is None)).plus(KS.s8(here, '\n')))

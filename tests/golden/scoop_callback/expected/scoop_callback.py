@@ -18,8 +18,8 @@ class SCOOP_CALLBACK(ANY):
         h = here.new_separate(HELPER, HELPER.default_create, ())
         self.delegate(h)
         self.print_(KS.s8(here, 'log has ').plus(B.out_int(here, self.count)).plus(KS.s8(here, ' entries\n')))
-        for entry in S.items(self.log):
-            self.print_(entry.plus(KS.s8(here, '\n')))
+        for entry in S.cursors(self.log):
+            self.print_(entry.item.plus(KS.s8(here, '\n')))
 
     def record(self, s_):
         here = self._region_

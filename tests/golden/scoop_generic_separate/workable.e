@@ -1,0 +1,5 @@
+class WORKABLE
+feature
+	done: INTEGER
+	work (n: INTEGER) do done := done + n end
+end

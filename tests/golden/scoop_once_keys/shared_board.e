@@ -1,0 +1,7 @@
+class SHARED_BOARD
+feature
+	board: separate TALLY_BOARD
+		once ("PROCESS")
+			create Result
+		end
+end

@@ -1,0 +1,5 @@
+class TALLY_BOARD
+feature
+	count: INTEGER
+	add (n: INTEGER) do count := count + n end
+end
