@@ -129,7 +129,7 @@ def test_robot_sample_shows_no_host_exception(sample: Path):
     """A robot sample, run briefly on the simulator: what the user sees names no Python exception."""
     import io
 
-    from scoopc.robots.runner import run_on_simulator
+    from harness import run_on_simulator
 
     out, err = io.StringIO(), io.StringIO()
     result = run_on_simulator(sample, duration=ROBOT_SECONDS, stdout=out, stderr=err)
