@@ -46,3 +46,33 @@ def once_object(obj, key, fn, args=()):
     """Per-object once; `obj`'s routines run only on its region, which owns the table."""
     table = obj.__dict__.setdefault("_onces_", {})
     return once_in(table, key, fn, args)
+
+
+# --- once per thread (EiffelThread) ----------------------------------------------------------
+# A thread launched by an Eiffel THREAD runs its routines on behalf of the region of the THREAD
+# object, but EiffelStudio gives each thread its own once values ("THREAD", the default in a
+# thread system). Such a thread has its own table here; every other thread has none and keeps
+# the region's (a processor's thread is its region's thread).
+
+_thread = threading.local()
+
+
+def thread_onces():
+    """The once table of the calling thread if an Eiffel THREAD launched it, else None."""
+    return getattr(_thread, "onces", None)
+
+
+def begin_thread_onces():
+    """Give the calling thread (launched by an Eiffel THREAD) once values of its own, and make
+    `Processor.once` look for them (the first launch only: programs without threads keep the
+    plain per-region lookup)."""
+    _thread.onces = {}
+    from . import processor   # deferred: processor.py imports this module
+    if processor.Processor.once is not _once_per_thread:
+        processor.Processor.once = _once_per_thread
+
+
+def _once_per_thread(self, key, fn, args=()):
+    """Processor.once once threads exist: the calling thread's table if it has one."""
+    table = getattr(_thread, "onces", None)
+    return once_in(self.onces if table is None else table, key, fn, args)
