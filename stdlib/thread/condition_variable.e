@@ -36,16 +36,16 @@ feature -- Status setting
 			-- Wake one thread waiting on the condition variable, if any.
 		require
 			is_set: is_set
-		external
-			"Python"
+		do
+			host_signal
 		end
 
 	broadcast
 			-- Wake every thread waiting on the condition variable.
 		require
 			is_set: is_set
-		external
-			"Python"
+		do
+			host_broadcast
 		end
 
 	wait (a_mutex: MUTEX)
@@ -55,8 +55,8 @@ feature -- Status setting
 			a_mutex_not_void: a_mutex /= Void
 			is_mutex_set: a_mutex.is_set
 			mutex_locked: a_mutex.is_locked_by_current_thread
-		external
-			"Python"
+		do
+			host_wait (a_mutex)
 		ensure
 			mutex_locked: a_mutex.is_locked_by_current_thread
 		end
@@ -69,8 +69,8 @@ feature -- Status setting
 			is_mutex_set: a_mutex.is_set
 			mutex_locked: a_mutex.is_locked_by_current_thread
 			timeout_positive: a_timeout >= 0
-		external
-			"Python"
+		do
+			Result := host_wait_with_timeout (a_mutex, a_timeout)
 		ensure
 			mutex_locked: a_mutex.is_locked_by_current_thread
 		end
@@ -79,8 +79,8 @@ feature -- Status setting
 			-- Give the condition variable up: it may not be used any more.
 		require
 			is_set: is_set
-		external
-			"Python"
+		do
+			host_destroy
 		ensure
 			not_set: not is_set
 		end
@@ -89,6 +89,38 @@ feature {NONE} -- Implementation
 
 	initialize
 			-- Make the host's condition variable.
+		external
+			"Python"
+		end
+
+feature {NONE} -- Host
+
+	host_signal
+			-- `signal' on the host.
+		external
+			"Python"
+		end
+
+	host_broadcast
+			-- `broadcast' on the host.
+		external
+			"Python"
+		end
+
+	host_wait (a_mutex: MUTEX)
+			-- `wait' on the host.
+		external
+			"Python"
+		end
+
+	host_wait_with_timeout (a_mutex: MUTEX; a_timeout: INTEGER_32): BOOLEAN
+			-- `wait_with_timeout' on the host.
+		external
+			"Python"
+		end
+
+	host_destroy
+			-- `destroy' on the host.
 		external
 			"Python"
 		end

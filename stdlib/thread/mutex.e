@@ -51,8 +51,8 @@ feature -- Access
 			-- Does the calling thread hold the mutex?
 		require
 			is_set: is_set
-		external
-			"Python"
+		do
+			Result := host_is_locked_by_current_thread
 		end
 
 feature -- Status setting
@@ -61,8 +61,8 @@ feature -- Status setting
 			-- Lock the mutex, waiting until no other thread holds it.
 		require
 			is_set: is_set
-		external
-			"Python"
+		do
+			host_lock
 		ensure
 			locked: is_locked_by_current_thread
 		end
@@ -71,8 +71,8 @@ feature -- Status setting
 			-- Lock the mutex if no other thread holds it; did it?
 		require
 			is_set: is_set
-		external
-			"Python"
+		do
+			Result := host_try_lock
 		ensure
 			locked_if_true: Result implies is_locked_by_current_thread
 		end
@@ -82,16 +82,16 @@ feature -- Status setting
 		require
 			is_set: is_set
 			locked_by_caller: is_locked_by_current_thread
-		external
-			"Python"
+		do
+			host_unlock
 		end
 
 	destroy
 			-- Give the mutex up: it may not be used any more.
 		require
 			is_set: is_set
-		external
-			"Python"
+		do
+			host_destroy
 		ensure
 			not_set: not is_set
 		end
@@ -100,6 +100,38 @@ feature {NONE} -- Implementation
 
 	initialize
 			-- Make the host's mutex.
+		external
+			"Python"
+		end
+
+feature {NONE} -- Host
+
+	host_is_locked_by_current_thread: BOOLEAN
+			-- `is_locked_by_current_thread' on the host.
+		external
+			"Python"
+		end
+
+	host_lock
+			-- `lock' on the host.
+		external
+			"Python"
+		end
+
+	host_try_lock: BOOLEAN
+			-- `try_lock' on the host.
+		external
+			"Python"
+		end
+
+	host_unlock
+			-- `unlock' on the host.
+		external
+			"Python"
+		end
+
+	host_destroy
+			-- `destroy' on the host.
 		external
 			"Python"
 		end

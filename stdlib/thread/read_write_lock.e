@@ -49,16 +49,16 @@ feature -- Access
 			-- Does the calling thread hold the read lock?
 		require
 			exists: is_set
-		external
-			"Python"
+		do
+			Result := host_is_read_locked_by_current_thread
 		end
 
 	is_write_locked_by_current_thread: BOOLEAN
 			-- Does the calling thread hold the write lock?
 		require
 			exists: is_set
-		external
-			"Python"
+		do
+			Result := host_is_write_locked_by_current_thread
 		end
 
 feature -- Status setting
@@ -68,8 +68,8 @@ feature -- Status setting
 		require
 			exists: is_set
 			not_holding: not is_read_locked_by_current_thread and not is_write_locked_by_current_thread
-		external
-			"Python"
+		do
+			host_acquire_read_lock
 		ensure
 			read_locked: is_read_locked_by_current_thread
 		end
@@ -79,8 +79,8 @@ feature -- Status setting
 		require
 			exists: is_set
 			not_holding: not is_read_locked_by_current_thread and not is_write_locked_by_current_thread
-		external
-			"Python"
+		do
+			host_acquire_write_lock
 		ensure
 			write_locked: is_write_locked_by_current_thread
 		end
@@ -90,8 +90,8 @@ feature -- Status setting
 		require
 			exists: is_set
 			read_locked: is_read_locked_by_current_thread
-		external
-			"Python"
+		do
+			host_release_reader_lock
 		end
 
 	release_writer_lock
@@ -99,16 +99,16 @@ feature -- Status setting
 		require
 			exists: is_set
 			write_locked: is_write_locked_by_current_thread
-		external
-			"Python"
+		do
+			host_release_writer_lock
 		end
 
 	destroy
 			-- Give the lock up: it may not be used any more.
 		require
 			exists: is_set
-		external
-			"Python"
+		do
+			host_destroy
 		ensure
 			not_set: not is_set
 		end
@@ -117,6 +117,50 @@ feature {NONE} -- Implementation
 
 	initialize
 			-- Make the host's lock.
+		external
+			"Python"
+		end
+
+feature {NONE} -- Host
+
+	host_is_read_locked_by_current_thread: BOOLEAN
+			-- `is_read_locked_by_current_thread' on the host.
+		external
+			"Python"
+		end
+
+	host_is_write_locked_by_current_thread: BOOLEAN
+			-- `is_write_locked_by_current_thread' on the host.
+		external
+			"Python"
+		end
+
+	host_acquire_read_lock
+			-- `acquire_read_lock' on the host.
+		external
+			"Python"
+		end
+
+	host_acquire_write_lock
+			-- `acquire_write_lock' on the host.
+		external
+			"Python"
+		end
+
+	host_release_reader_lock
+			-- `release_reader_lock' on the host.
+		external
+			"Python"
+		end
+
+	host_release_writer_lock
+			-- `release_writer_lock' on the host.
+		external
+			"Python"
+		end
+
+	host_destroy
+			-- `destroy' on the host.
 		external
 			"Python"
 		end

@@ -38,32 +38,32 @@ feature -- Status setting
 			-- Decrement the count, waiting until it is positive.
 		require
 			valid_semaphore: is_set
-		external
-			"Python"
+		do
+			host_wait
 		end
 
 	try_wait: BOOLEAN
 			-- Decrement the count if it is positive, without waiting; did it?
 		require
 			valid_semaphore: is_set
-		external
-			"Python"
+		do
+			Result := host_try_wait
 		end
 
 	post
 			-- Increment the count (a thread waiting in `wait' may go on).
 		require
 			valid_semaphore: is_set
-		external
-			"Python"
+		do
+			host_post
 		end
 
 	destroy
 			-- Give the semaphore up: it may not be used any more.
 		require
 			valid_semaphore: is_set
-		external
-			"Python"
+		do
+			host_destroy
 		ensure
 			not_set: not is_set
 		end
@@ -72,6 +72,32 @@ feature {NONE} -- Implementation
 
 	initialize (a_count: INTEGER_32)
 			-- Make the host's semaphore with count `a_count'.
+		external
+			"Python"
+		end
+
+feature {NONE} -- Host
+
+	host_wait
+			-- `wait' on the host.
+		external
+			"Python"
+		end
+
+	host_try_wait: BOOLEAN
+			-- `try_wait' on the host.
+		external
+			"Python"
+		end
+
+	host_post
+			-- `post' on the host.
+		external
+			"Python"
+		end
+
+	host_destroy
+			-- `destroy' on the host.
 		external
 			"Python"
 		end

@@ -67,8 +67,8 @@ feature -- Basic operations
 		require
 			is_exit_supported: is_exit_supported
 			self: current_thread_id = thread_id
-		external
-			"Python"
+		do
+			host_exit
 		end
 
 feature -- Status report
@@ -119,6 +119,14 @@ feature {NONE} -- Implementation
 
 	reset_launch_state
 			-- Forget any earlier launch of Current.
+		external
+			"Python"
+		end
+
+feature {NONE} -- Host
+
+	host_exit
+			-- `exit' on the host.
 		external
 			"Python"
 		end

@@ -35,6 +35,14 @@ feature -- Basic operations
 			-- Suspend the calling thread for `nanoseconds' (10^-9 second).
 		require
 			non_negative_nanoseconds: nanoseconds >= 0
+		do
+			host_sleep (nanoseconds)
+		end
+
+feature {NONE} -- Host
+
+	host_sleep (nanoseconds: INTEGER_64)
+			-- `sleep' on the host.
 		external
 			"Python"
 		end

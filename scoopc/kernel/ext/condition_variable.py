@@ -17,13 +17,13 @@ def is_set(current):
     return current.__dict__.get("_waiters_") is not None
 
 
-def signal(current):
+def host_signal(current):
     with current._waiters_lock_:
         if current._waiters_:
             current._waiters_.popleft().release()
 
 
-def broadcast(current):
+def host_broadcast(current):
     with current._waiters_lock_:
         while current._waiters_:
             current._waiters_.popleft().release()
@@ -51,13 +51,13 @@ def _wait(current, a_mutex, timeout):
     return signalled
 
 
-def wait(current, a_mutex):
+def host_wait(current, a_mutex):
     _wait(current, a_mutex, None)
 
 
-def wait_with_timeout(current, a_mutex, a_timeout):
+def host_wait_with_timeout(current, a_mutex, a_timeout):
     return _wait(current, a_mutex, a_timeout / 1000.0)
 
 
-def destroy(current):
+def host_destroy(current):
     current._waiters_ = None

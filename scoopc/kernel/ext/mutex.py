@@ -15,21 +15,21 @@ def is_set(current):
     return _mutex(current) is not None
 
 
-def is_locked_by_current_thread(current):
+def host_is_locked_by_current_thread(current):
     return current._mutex_.held_here()
 
 
-def lock(current):
+def host_lock(current):
     current._mutex_.acquire(threads.runtime_of(current))
 
 
-def try_lock(current):
+def host_try_lock(current):
     return current._mutex_.try_acquire()
 
 
-def unlock(current):
+def host_unlock(current):
     current._mutex_.release()
 
 
-def destroy(current):
+def host_destroy(current):
     current._mutex_ = None

@@ -24,11 +24,11 @@ def is_set(current):
     return current.__dict__.get("_rwlock_") is not None
 
 
-def is_read_locked_by_current_thread(current):
+def host_is_read_locked_by_current_thread(current):
     return threading.get_ident() in current._rwlock_.readers
 
 
-def is_write_locked_by_current_thread(current):
+def host_is_write_locked_by_current_thread(current):
     return current._rwlock_.writer == threading.get_ident()
 
 
@@ -49,13 +49,13 @@ def _acquire(current, ready, take):
         threads.wait_for(attempt, rt)
 
 
-def acquire_read_lock(current):
+def host_acquire_read_lock(current):
     me = threading.get_ident()
     _acquire(current, lambda lock: lock.writer == 0 and lock.writers_waiting == 0,
              lambda lock: lock.readers.__setitem__(me, 1))
 
 
-def acquire_write_lock(current):
+def host_acquire_write_lock(current):
     me = threading.get_ident()
     lock = current._rwlock_
     with lock.condition:
@@ -73,19 +73,19 @@ def acquire_write_lock(current):
         raise
 
 
-def release_reader_lock(current):
+def host_release_reader_lock(current):
     lock = current._rwlock_
     with lock.condition:
         del lock.readers[threading.get_ident()]
         lock.condition.notify_all()
 
 
-def release_writer_lock(current):
+def host_release_writer_lock(current):
     lock = current._rwlock_
     with lock.condition:
         lock.writer = 0
         lock.condition.notify_all()
 
 
-def destroy(current):
+def host_destroy(current):
     current._rwlock_ = None

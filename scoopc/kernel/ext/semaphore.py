@@ -13,18 +13,18 @@ def is_set(current):
     return current.__dict__.get("_semaphore_") is not None
 
 
-def wait(current):
+def host_wait(current):
     semaphore = current._semaphore_
     threads.wait_for(lambda seconds: semaphore.acquire(timeout=seconds), threads.runtime_of(current))
 
 
-def try_wait(current):
+def host_try_wait(current):
     return current._semaphore_.acquire(False)
 
 
-def post(current):
+def host_post(current):
     current._semaphore_.release()
 
 
-def destroy(current):
+def host_destroy(current):
     current._semaphore_ = None

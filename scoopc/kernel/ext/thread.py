@@ -27,7 +27,7 @@ def reset_launch_state(current):
     current.__dict__["_thread_state_"] = threads.ThreadState()
 
 
-def exit(current):
+def host_exit(current):
     raise threads.ThreadExit()
 
 

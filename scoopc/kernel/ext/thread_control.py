@@ -17,5 +17,5 @@ def join_all(current):
     threads.join_all(current)
 
 
-def sleep(current, nanoseconds):
+def host_sleep(current, nanoseconds):
     threads.sleep(current, nanoseconds)
