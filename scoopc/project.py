@@ -165,7 +165,8 @@ def _read_ecf(project: Project, path: Path, target_name: Optional[str],
         project.errors.append(diagnostics.make("ECF", _ecf_span(path), reason=f"{path}: {problem}"))
         return
     except OSError as problem:
-        project.errors.append(diagnostics.make("ECF", named_at or _ecf_span(path), reason=f"cannot read {path}: {problem}"))
+        reason = problem.strerror or "unreadable"
+        project.errors.append(diagnostics.make("ECF", named_at or _ecf_span(path), reason=f"cannot read {path}: {reason}"))
         return
     project.ecf_files.append(path.resolve())
     targets = {t.get("name", ""): t for t in _children(system, "target")}
