@@ -52,6 +52,31 @@ EXPLANATIONS: dict[str, Explanation] = {
         <!-- nothing to change: the setting is simply not needed by scoopc -->
         """,
         "Leave the setting if the project is also built with EiffelStudio; scoopc just says it skips it."),
+    "ECF-LIBRARY": _x(
+        """An .ecf file names a library that scoopc cannot load: one of EiffelStudio's that scoopc does
+        not have (scoopc has EiffelBase, EiffelThread, EiffelTime and Roboscoop, found through
+        `$ISE_LIBRARY/library/<name>/<name>.ecf` or by name), or a library of your own whose `location`
+        is not an .ecf file. A library of your own is read from its .ecf file, with the libraries it names.""",
+        """
+        <library name="shapes" location="../shape/shapes.ecf"/>
+        """,
+        """
+        <library name="shapes" location="../shapes/shapes.ecf"/>
+        """,
+        "Give the location of the library's .ecf file, relative to the .ecf file that names it."),
+    "ECF-CYCLE": _x(
+        """A warning: libraries name each other in a cycle (a library's .ecf names a library whose .ecf,
+        directly or through others, names the first). scoopc reads each library once and goes on;
+        the cycle is reported because it usually is a mistake in a location.""",
+        """
+        <!-- a.ecf -->  <library name="b" location="../b/b.ecf"/>
+        <!-- b.ecf -->  <library name="a" location="../a/a.ecf"/>
+        """,
+        """
+        <!-- a.ecf -->  <library name="b" location="../b/b.ecf"/>
+        <!-- b.ecf -->  (no library a: move what both need into a third library)
+        """,
+        "Make the libraries depend on each other in one direction only."),
     # --- syntax -----------------------------------------------------------------------------------
     "SYNTAX": _x(
         """The text does not follow Eiffel's grammar at this point: a token appears where the language

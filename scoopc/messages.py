@@ -14,6 +14,8 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
   constant declared with arguments.
 - SOURCE: a file that cannot be read (missing, not UTF-8).
 - ECF: a problem in an .ecf project file; ECF-NOTE: an .ecf setting we ignore.
+- ECF-LIBRARY: an .ecf names a library scoopc does not have, or a library .ecf file that is missing.
+- ECF-CYCLE: (a warning) libraries whose .ecf files name each other in a cycle.
 - ONCE-KEY: a once key other than "PROCESS", "THREAD" or "OBJECT".
 - FORMAL-TRAITOR (a warning): a value of an unmarked formal generic type `G` passed to a
   non-separate formal in a call on a separate target, or a `G` result of such a call used as
@@ -42,6 +44,9 @@ MESSAGES: dict[str, Message] = {
     "SOURCE": Message("cannot read {path}: {reason}"),
     "ECF": Message("{reason}"),
     "ECF-NOTE": Message("{reason}"),
+    "ECF-LIBRARY": Message("library `{name}`{location}: {reason}", "{hint}"),
+    "ECF-CYCLE": Message("library `{name}` closes a cycle of libraries: {cycle}",
+                         "each library is read once; break the cycle if EiffelStudio should build the libraries"),
     # --- syntax ---------------------------------------------------------------------------
     "SYNTAX": Message("{found} is not allowed here; expected {expected}", "{hint}"),
     "SYNTAX-END": Message(

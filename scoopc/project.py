@@ -10,16 +10,23 @@ import re
 import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path
+from xml.parsers import expat
 
 from . import diagnostics
 from .diagnostics import Diagnostic
 from .exits import UsageError
 from .source import Span
 
-# Libraries whose classes our stdlib provides (EiffelBase/FreeELKS and the SCOOP support around it).
-BASE_LIBRARIES = {"base", "base_extension", "free_elks", "elks", "thread", "time", "api_wrapper"}
-# Libraries that are our own stdlib's clusters.
-OWN_LIBRARIES = {"roboscoop"}
+# The .ecf libraries our stdlib provides, by the name EiffelStudio gives each (its `name`, or the
+# folder under $ISE_LIBRARY/library/ of its `location`), and the stdlib cluster that is each one:
+# EiffelBase (FreeELKS is its kernel, `base-safe`/`base-scoop-safe` are its older .ecf files),
+# EiffelThread, EiffelTime and Roboscoop.
+STDLIB_LIBRARIES = {"base": "base", "free_elks": "base", "elks": "base", "thread": "thread",
+                    "time": "time", "roboscoop": "roboscoop"}
+# Libraries of EiffelStudio that we are going to provide, named in a note rather than an error.
+PLANNED_LIBRARIES = {"testing": "EiffelStudio's testing library (EQA_TEST_SET) is not available yet"}
+# Variables naming EiffelStudio's installation in library locations.
+_ISE_VARIABLES = ("ISE_LIBRARY", "ISE_EIFFEL")
 
 
 @dataclass
@@ -44,6 +51,8 @@ class Project:
     settings: Settings = field(default_factory=Settings)
     notes: list[Diagnostic] = field(default_factory=list)
     errors: list[Diagnostic] = field(default_factory=list)
+    libraries: list[str] = field(default_factory=list)      # the stdlib clusters the .ecf names
+    ecf_files: list[Path] = field(default_factory=list)     # every .ecf read (libraries' included)
 
     def add_file(self, path: Path) -> None:
         resolved = path.resolve()
@@ -100,30 +109,80 @@ def _children(element: ElementTree.Element, name: str) -> list[ElementTree.Eleme
     return [child for child in element if _local(child.tag) == name]
 
 
-def _ecf_span(path: Path) -> Span:
-    return Span(str(path), 1, 1, 1, 2)
+def _ecf_span(path: Path, element: ElementTree.Element | None = None, positions=None) -> Span:
+    """Where `element` starts in the .ecf file (its first line when unknown)."""
+    line, column = (positions or {}).get(element, (1, 1)) if element is not None else (1, 1)
+    width = len(_local(element.tag)) + 1 if element is not None else 1
+    return Span(str(path), line, column, line, column + width)
 
 
-def _read_ecf(project: Project, path: Path, target_name: str | None) -> None:
+class _Refused(Exception):
+    """A construct an .ecf file may not use (entity declarations)."""
+
+
+def _parse_xml(path: Path):
+    """(root element, {element: (line, column)}) of an .ecf file, with expat directly so that
+    every element keeps its position. Entity declarations (and so entity expansion, internal or
+    external) are refused: an .ecf file never needs them."""
+    builder = ElementTree.TreeBuilder()
+    positions: dict = {}
+    parser = expat.ParserCreate()
+    parser.SetParamEntityParsing(expat.XML_PARAM_ENTITY_PARSING_NEVER)
+
+    def start(tag, attributes):
+        element = builder.start(tag, attributes)
+        positions[element] = (parser.CurrentLineNumber, parser.CurrentColumnNumber + 1)
+
+    def refuse(*_):
+        raise _Refused("entity declarations are not accepted in an .ecf file")
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = builder.end
+    parser.CharacterDataHandler = builder.data
+    parser.EntityDeclHandler = refuse
+    parser.UnparsedEntityDeclHandler = refuse
+    parser.ExternalEntityRefHandler = refuse
+    with open(path, "rb") as handle:
+        parser.ParseFile(handle)
+    return builder.close(), positions
+
+
+def _read_ecf(project: Project, path: Path, target_name: str | None,
+              chain: tuple = (), named_at: Span | None = None) -> None:
+    """Read the .ecf file `path`: the application's (chain empty) or a library's, named at
+    `named_at` by the last of `chain` (the .ecf files naming each other down to this one)."""
     try:
-        system = ElementTree.parse(path).getroot()
-    except ElementTree.ParseError as problem:
-        line, column = problem.position
+        system, positions = _parse_xml(path)
+    except expat.ExpatError as problem:
+        line, column = problem.lineno, problem.offset
         span = Span(str(path), line, column + 1, line, column + 2)
-        project.errors.append(diagnostics.make("ECF", span, reason=f"{path} is not well-formed XML: {problem}"))
+        reason = expat.ErrorString(problem.code)
+        project.errors.append(diagnostics.make("ECF", span, reason=f"{path} is not well-formed XML: {reason}: "
+                                                                   f"line {line}, column {column}"))
+        return
+    except _Refused as problem:
+        project.errors.append(diagnostics.make("ECF", _ecf_span(path), reason=f"{path}: {problem}"))
         return
     except OSError as problem:
-        project.errors.append(diagnostics.make("ECF", _ecf_span(path), reason=f"cannot read {path}: {problem}"))
+        reason = problem.strerror or "unreadable"
+        span = named_at or _ecf_span(path)
+        project.errors.append(diagnostics.make("ECF", span, reason=f"cannot read {path}: {reason}"))
         return
+    project.ecf_files.append(path.resolve())
     targets = {t.get("name", ""): t for t in _children(system, "target")}
     if not targets:
         project.errors.append(diagnostics.make("ECF", _ecf_span(path), reason=f"{path} defines no target"))
         return
+    if chain and target_name is None:
+        target_name = system.get("library_target") or None    # a library's own target, if it names one
+        if target_name not in targets:
+            target_name = None
     chosen = _choose_target(project, path, targets, target_name)
     if chosen is None:
         return
+    reader = _EcfReader(project, path, positions, chain + (path.resolve(),), library=bool(chain))
     for element in _target_chain(chosen, targets):
-        _read_target(project, path, element)
+        reader.read_target(element)
 
 
 def _choose_target(project: Project, path: Path, targets: dict, wanted: str | None):
@@ -155,30 +214,132 @@ def _expand_location(location: str, base: Path) -> Path:
 
 
 _IGNORED_QUIETLY = {"note", "description", "file_rule", "version", "uuid"}
+# What a library's .ecf holds that applies to the library alone (its root, its options): the
+# application's settings govern every class (docs/LANGUAGE.md, Libraries).
+_LIBRARY_ONLY = {"root", "option", "capability", "setting", "external_include", "external_object",
+                 "external_library", "external_cflag", "external_linker_flag", "variable", "mapping",
+                 "pre_compile_action", "post_compile_action", "debug", "assertions", "warning"}
 
 
-def _read_target(project: Project, ecf: Path, target: ElementTree.Element) -> None:
-    base = ecf.parent
-    for element in target:
-        kind = _local(element.tag)
-        if kind == "root":
-            _read_root(project, element)
-        elif kind in ("cluster", "override"):  # an override cluster's classes replace library ones
-            _read_cluster(project, ecf, element, base)
-        elif kind in ("library", "precompile"):
-            _read_library(project, ecf, element)
-        elif kind == "option":
-            _read_option(project, element)
-        elif kind == "capability":
-            _read_capability(project, element)
-        elif kind == "setting":
-            _note(project, ecf, f"setting `{element.get('name')}` is ignored")
-        elif kind not in _IGNORED_QUIETLY:
-            _note(project, ecf, f"<{kind}> is not supported and is ignored")
+class _EcfReader:
+    """One .ecf file's target: its clusters, libraries, root and settings."""
+
+    def __init__(self, project: Project, ecf: Path, positions: dict, chain: tuple, library: bool):
+        self.project, self.ecf, self.positions, self.chain, self.library = project, ecf, positions, chain, library
+
+    def span(self, element) -> Span:
+        return _ecf_span(self.ecf, element, self.positions)
+
+    def read_target(self, target: ElementTree.Element) -> None:
+        project, ecf = self.project, self.ecf
+        for element in target:
+            kind = _local(element.tag)
+            if self.library and kind in _LIBRARY_ONLY:
+                continue
+            if kind == "root":
+                _read_root(project, element)
+            elif kind in ("cluster", "override"):  # an override cluster's classes replace library ones
+                self.read_cluster(element, ecf.parent)
+            elif kind in ("library", "precompile"):
+                self.read_library(element)
+            elif kind == "option":
+                _read_option(project, element)
+            elif kind == "capability":
+                _read_capability(project, element)
+            elif kind == "setting":
+                _note(project, ecf, f"setting `{element.get('name')}` is ignored", self.span(element))
+            elif kind not in _IGNORED_QUIETLY:
+                _note(project, ecf, f"<{kind}> is not supported and is ignored", self.span(element))
+
+    def read_cluster(self, element: ElementTree.Element, base: Path) -> None:
+        location = _expand_location(element.get("location", "."), base)
+        if not location.is_dir():
+            self.project.errors.append(diagnostics.make(
+                "ECF", self.span(element), reason=f"cluster `{element.get('name')}`: no directory {location}"))
+            return
+        recursive = element.get("recursive", "false").lower() == "true"
+        _add_cluster(self.project, location, recursive, _patterns(element, "exclude"), _patterns(element, "include"))
+        for sub in _children(element, "cluster"):
+            self.read_cluster(sub, location)
+
+    def read_library(self, element: ElementTree.Element) -> None:
+        """A library: one of the stdlib's (by name or by an $ISE_LIBRARY location), or a user's
+        library read from its own .ecf, recursively."""
+        project = self.project
+        name = element.get("name") or ""
+        raw = (element.get("location") or "").strip()
+        ours = _stdlib_library(name, raw)
+        if ours is not None:
+            if ours not in project.libraries:
+                project.libraries.append(ours)
+            return
+        planned = _planned_library(name, raw)
+        if planned is not None:
+            _note(project, self.ecf, f"library `{name}` ({raw}): {planned}", self.span(element))
+            return
+        if not raw or _ise_folder(raw) is not None:
+            known = ", ".join(sorted(set(STDLIB_LIBRARIES) - {"free_elks", "elks"}))
+            where = f" ({raw})" if raw else ""
+            project.errors.append(diagnostics.make(
+                "ECF-LIBRARY", self.span(element), name=name, location=where,
+                reason="scoopc does not have this library", hint=f"the libraries scoopc has are: {known}"))
+            return
+        path = Path(os.path.normpath(_expand_location(raw, self.ecf.parent)))
+        if path.is_dir():
+            path = path / f"{name}.ecf"
+        if not path.is_file():
+            project.errors.append(diagnostics.make(
+                "ECF-LIBRARY", self.span(element), name=name, location=f" ({raw})",
+                reason=f"no .ecf file {path}",
+                hint="a library's location names its .ecf file, relative to the .ecf file naming it"))
+            return
+        resolved = path.resolve()
+        if resolved in self.chain:
+            cycle = self.chain[self.chain.index(resolved):] + (resolved,)
+            project.notes.append(diagnostics.make(
+                "ECF-CYCLE", self.span(element), severity=diagnostics.WARNING, name=name,
+                cycle=" -> ".join(p.name for p in cycle)))
+            return
+        if resolved in project.ecf_files:
+            return                      # named by two libraries: read once
+        _read_ecf(project, path, None, self.chain, self.span(element))
 
 
-def _note(project: Project, ecf: Path, reason: str) -> None:
-    project.notes.append(diagnostics.make("ECF-NOTE", _ecf_span(ecf), severity=diagnostics.NOTE, reason=reason))
+def _ise_folder(location: str) -> str | None:
+    """The library folder of an $ISE_LIBRARY/library/<folder>/... location (also $ISE_EIFFEL,
+    $(ISE_LIBRARY)); None for any other location."""
+    text = location.replace("\\", "/")
+    match = re.match(r"\$\(?(\w+)\)?/(.*)$", text)
+    if match is None or match.group(1).upper() not in _ISE_VARIABLES:
+        return None
+    parts = [p for p in match.group(2).split("/") if p and p != "."]
+    if len(parts) >= 2 and parts[0].lower() == "library":
+        return parts[1].lower()
+    return parts[0].lower() if parts else ""
+
+
+def _stdlib_library(name: str, location: str) -> str | None:
+    """The stdlib cluster an .ecf <library> (or <precompile>) names, or None."""
+    precompiled = re.match(r"\$\(?ISE_PRECOMP\)?[/\\](.*)$", location, re.IGNORECASE)
+    if precompiled is not None:         # $ISE_PRECOMP/base-scoop-safe.ecf: EiffelBase precompiled
+        stem = Path(precompiled.group(1).replace("\\", "/")).stem.lower()
+        return STDLIB_LIBRARIES.get(re.split(r"[-_.]", stem)[0])
+    folder = _ise_folder(location) if location else None
+    if folder is not None:
+        return STDLIB_LIBRARIES.get(folder)
+    if not location:
+        return STDLIB_LIBRARIES.get(name.lower())
+    return None
+
+
+def _planned_library(name: str, location: str) -> str | None:
+    folder = _ise_folder(location) if location else name.lower()
+    return PLANNED_LIBRARIES.get(folder or "")
+
+
+def _note(project: Project, ecf: Path, reason: str, span: Span | None = None) -> None:
+    project.notes.append(diagnostics.make("ECF-NOTE", span or _ecf_span(ecf), severity=diagnostics.NOTE,
+                                          reason=reason))
 
 
 def _read_root(project: Project, element: ElementTree.Element) -> None:
@@ -196,30 +357,6 @@ def _patterns(element: ElementTree.Element, kind: str) -> tuple[re.Pattern, ...]
             except re.error:
                 continue
     return tuple(found)
-
-
-def _read_cluster(project: Project, ecf: Path, element: ElementTree.Element, base: Path) -> None:
-    location = _expand_location(element.get("location", "."), base)
-    if not location.is_dir():
-        project.errors.append(diagnostics.make(
-            "ECF", _ecf_span(ecf), reason=f"cluster `{element.get('name')}`: no directory {location}"))
-        return
-    recursive = element.get("recursive", "false").lower() == "true"
-    _add_cluster(project, location, recursive, _patterns(element, "exclude"), _patterns(element, "include"))
-    for sub in _children(element, "cluster"):
-        _read_cluster(project, ecf, sub, location)
-
-
-def _read_library(project: Project, ecf: Path, element: ElementTree.Element) -> None:
-    name = (element.get("name") or "").lower()
-    location = (element.get("location") or "").replace("\\", "/").lower()
-    stem = Path(location).stem
-    if name in BASE_LIBRARIES or stem in BASE_LIBRARIES or stem.startswith("base"):
-        return  # the standard library is always available
-    if name in OWN_LIBRARIES or stem in OWN_LIBRARIES:
-        return
-    _note(project, ecf, f"library `{element.get('name')}` ({element.get('location')}) is not available; "
-                        "only EiffelBase (our stdlib) and Roboscoop are")
 
 
 def _read_option(project: Project, element: ElementTree.Element) -> None:

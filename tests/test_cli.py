@@ -101,7 +101,7 @@ ECF = """<?xml version="1.0" encoding="ISO-8859-1"?>
 		<setting name="console_application" value="true"/>
 		<capability><concurrency support="scoop"/></capability>
 		<library name="base" location="$ISE_LIBRARY\\library\\base\\base.ecf"/>
-		<library name="vision2" location="$ISE_LIBRARY\\library\\vision2\\vision2.ecf"/>
+		<library name="thread" location="$ISE_LIBRARY\\library\\thread\\thread.ecf"/>
 		<cluster name="pc" location=".\\" recursive="true">
 			<file_rule><exclude>/skipped$</exclude></file_rule>
 		</cluster>
@@ -127,7 +127,8 @@ def test_ecf_reads_root_clusters_and_notes_ignored_settings(capsys, tmp_path):
     assert sorted(p.name for p in project.files) == sorted(p.name for p in SAMPLE.glob("*.e"))
     assert project.settings.concurrency == "scoop"
     notes = [d.message for d in project.notes]
-    assert any("console_application" in n for n in notes) and any("vision2" in n for n in notes)
+    assert any("console_application" in n for n in notes) and project.libraries == ["base", "thread"]
+    assert not project.errors
     code, out, err = run(capsys, "check", "--format", "short", str(tmp_path / "pc.ecf"))
     assert code == 0 and "note ECF-NOTE" in err
 

@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 from .protocols import Args, OnceKey, OnceTable, Separate
 
 if TYPE_CHECKING:
+    from .processor import Processor
     from .sched import Runtime
 
 
@@ -55,3 +56,33 @@ def once_object(obj: Separate, key: OnceKey, fn: Callable[..., object], args: Ar
     """Per-object once; `obj`'s routines run only on its region, which owns the table."""
     table: OnceTable = obj.__dict__.setdefault("_onces_", {})
     return once_in(table, key, fn, args)
+
+
+# --- once per thread (EiffelThread) ----------------------------------------------------------
+# A thread launched by an Eiffel THREAD runs its routines on behalf of the region of the THREAD
+# object, but EiffelStudio gives each thread its own once values ("THREAD", the default in a
+# thread system). Such a thread has its own table here; every other thread has none and keeps
+# the region's (a processor's thread is its region's thread).
+
+_thread = threading.local()
+
+
+def thread_onces() -> OnceTable | None:
+    """The once table of the calling thread if an Eiffel THREAD launched it, else None."""
+    return getattr(_thread, "onces", None)
+
+
+def begin_thread_onces() -> None:
+    """Give the calling thread (launched by an Eiffel THREAD) once values of its own, and make
+    `Processor.once` look for them (the first launch only: programs without threads keep the
+    plain per-region lookup)."""
+    _thread.onces = {}
+    from . import processor  # deferred: processor.py imports this module
+    if processor.Processor.once is not _once_per_thread:
+        processor.Processor.once = _once_per_thread  # type: ignore[method-assign]  # swapped once threads exist
+
+
+def _once_per_thread(self: Processor, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
+    """Processor.once once threads exist: the calling thread's table if it has one."""
+    table = getattr(_thread, "onces", None)
+    return once_in(self.onces if table is None else table, key, fn, args)

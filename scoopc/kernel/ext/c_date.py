@@ -1,4 +1,4 @@
-"""C_DATE's `external "Python"` features (stdlib/base/time/c_date.e): the clock and the calendar.
+"""C_DATE's `external "Python"` features (stdlib/time/c_date.e): the clock and the calendar.
 
 `current_timestamp` reads the wall clock (seconds since 1970-01-01 UTC). With the runtime's
 virtual clock (`run_main(..., virtual_clock=True)`) it is the wall time when the program first

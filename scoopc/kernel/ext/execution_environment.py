@@ -77,7 +77,11 @@ def change_working_directory(current, path):
 
 
 def sleep(current, nanoseconds):
-    current._region_.sleep(nanoseconds)
+    from .. import threads  # deferred: only programs that sleep need it
+    if threads.in_eiffel_thread():       # a thread launched by an Eiffel THREAD is no processor
+        threads.sleep(current, nanoseconds)
+    else:
+        current._region_.sleep(nanoseconds)
 
 
 def _flush_all(current):

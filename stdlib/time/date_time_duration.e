@@ -9,7 +9,7 @@ class
 	DATE_TIME_DURATION
 
 inherit
-	PART_COMPARABLE
+	DURATION
 		redefine
 			is_equal,
 			copy

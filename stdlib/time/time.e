@@ -1,7 +1,8 @@
 note
 	description: "[
 		Times of day, to a fraction of a second: hour, minute, second. Arithmetic
-		(`second_add', ...) wraps around midnight. `out' gives "hh:mm:ss".
+		(`second_add', ...) wraps around midnight. `out' writes EiffelTime's English
+		default format "hh12:[0]mi:[0]ss.ff3 AM" (e.g. "3:07:09.250 PM").
 	]"
 	implementation: "Plain Eiffel; `make_now' asks the host for the time of day (`external %"Python%"')."
 
@@ -233,15 +234,33 @@ feature -- Basic operations
 
 feature -- Output
 
+	time_default_format_string: STRING_8 = "hh12:[0]mi:[0]ss.ff3 AM"
+			-- How `out' writes a time (EiffelTime's English default).
+
 	out: STRING_8
-			-- The time as "hh:mm:ss".
+			-- The time as `time_default_format_string' says: the hour on the 12-hour clock
+			-- without a leading zero, minutes and seconds on two digits, milliseconds
+			-- (rounded) on three, then AM or PM.
+		local
+			l_hour: INTEGER_32
 		do
-			create Result.make (8)
-			append_two_digits (Result, hour)
+			create Result.make (15)
+			l_hour := hour \\ 12
+			if l_hour = 0 then
+				l_hour := 12
+			end
+			Result.append_integer (l_hour)
 			Result.append_character (':')
 			append_two_digits (Result, minute)
 			Result.append_character (':')
 			append_two_digits (Result, second)
+			Result.append_character ('.')
+			append_milliseconds (Result, (fractional_second * 1000).rounded)
+			if hour < 12 then
+				Result.append (" AM")
+			else
+				Result.append (" PM")
+			end
 		end
 
 feature {NONE} -- Implementation
@@ -270,6 +289,15 @@ feature {NONE} -- Implementation
 				s.append_character ('0')
 			end
 			s.append_integer (n)
+		end
+
+	append_milliseconds (s: STRING_8; n: INTEGER_32)
+			-- Append `n' to `s' on at least three digits.
+		do
+			if n < 100 then
+				s.append_character ('0')
+			end
+			append_two_digits (s, n)
 		end
 
 	fine_seconds_now (a_utc: BOOLEAN): REAL_64

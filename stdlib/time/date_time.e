@@ -371,43 +371,12 @@ feature -- Basic operations
 feature -- Output
 
 	out: STRING_8
-			-- The moment as "mm/dd/yyyy h:mm:ss.fff AM" (see `default_format_string').
-		local
-			l_hour, l_milliseconds: INTEGER_32
+			-- The moment as `default_format_string' says: `date.out', a space, `time.out'
+			-- (e.g. "01/05/2024 3:07:09.000 PM").
 		do
 			Result := date.out
 			Result.append_character (' ')
-			l_hour := hour \\ 12
-			if l_hour = 0 then
-				l_hour := 12
-			end
-			Result.append_integer (l_hour)
-			Result.append_character (':')
-			append_padded (Result, minute, 2)
-			Result.append_character (':')
-			append_padded (Result, second, 2)
-			Result.append_character ('.')
-			l_milliseconds := (fractional_second * 1000).rounded
-			append_padded (Result, l_milliseconds, 3)
-			if hour < 12 then
-				Result.append (" AM")
-			else
-				Result.append (" PM")
-			end
-		end
-
-feature {NONE} -- Implementation
-
-	append_padded (s: STRING_8; n, width: INTEGER_32)
-			-- Append `n' to `s' with zeros before it to fill `width' digits.
-		local
-			l_digits: STRING_8
-		do
-			l_digits := n.out
-			if l_digits.count < width then
-				s.append (create {STRING_8}.make_filled ('0', width - l_digits.count))
-			end
-			s.append (l_digits)
+			Result.append (time.out)
 		end
 
 end

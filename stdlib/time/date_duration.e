@@ -9,7 +9,7 @@ class
 	DATE_DURATION
 
 inherit
-	PART_COMPARABLE
+	DURATION
 		redefine
 			is_equal
 		end

@@ -1,0 +1,14 @@
+class
+	APPLICATION
+
+create
+	make
+
+feature
+
+	make
+		do
+			print ((create {LEFT_PART}).name + " " + (create {RIGHT_PART}).name + "%N")
+		end
+
+end

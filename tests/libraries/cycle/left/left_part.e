@@ -1,0 +1,8 @@
+class
+	LEFT_PART
+
+feature
+
+	name: STRING = "left"
+
+end

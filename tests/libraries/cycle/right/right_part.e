@@ -1,0 +1,8 @@
+class
+	RIGHT_PART
+
+feature
+
+	name: STRING = "right"
+
+end
