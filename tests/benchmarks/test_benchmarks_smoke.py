@@ -9,6 +9,8 @@ import threading
 
 import pytest
 
+pytestmark = pytest.mark.slow        # long: outside the quick selection (pytest -m "not slow")
+
 RUN = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "run.py")
 NAMES = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
 NUMBER = r"\d+\.\d+"

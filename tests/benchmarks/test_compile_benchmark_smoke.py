@@ -5,6 +5,10 @@ import re
 import subprocess
 import sys
 
+import pytest
+
+pytestmark = pytest.mark.slow        # long: outside the quick selection (pytest -m "not slow")
+
 COMPILE = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "compile.py")
 
 

@@ -20,6 +20,8 @@ pytest.importorskip("cyclonedds")
 
 from scoopc.robots import dds, record, ros_messages  # noqa: E402
 
+pytestmark = pytest.mark.slow        # long: outside the quick selection (pytest -m "not slow")
+
 ROOT = Path(__file__).resolve().parents[2]
 WORLD = """name: e2e
 size: [3.0, 2.0]

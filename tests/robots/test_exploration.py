@@ -19,6 +19,8 @@ import yaml
 
 from harness import run_on_simulator
 
+pytestmark = pytest.mark.slow        # long: outside the quick selection (pytest -m "not slow")
+
 ROOT = Path(__file__).parents[2]
 EXPLORATION = ROOT / "samples" / "exploration"
 WORLDS = sorted((ROOT / "samples" / "worlds").glob("explore_*.yaml"))

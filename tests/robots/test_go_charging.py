@@ -16,6 +16,8 @@ import pytest
 
 from harness import run_on_simulator
 
+pytestmark = pytest.mark.slow        # long: outside the quick selection (pytest -m "not slow")
+
 SAMPLE = Path(__file__).resolve().parents[2] / "samples" / "go_charging"
 WORLDS = SAMPLE.parent / "worlds"
 

@@ -20,6 +20,8 @@ from scoopc.robots.bus import Bus
 
 from harness import run_on_simulator
 
+pytestmark = pytest.mark.slow        # long: outside the quick selection (pytest -m "not slow")
+
 ROOT = Path(__file__).parents[2]
 PROGRAMS = Path(__file__).parent / "programs"
 TANGENT_BUG = ROOT / "samples" / "tangent_bug"

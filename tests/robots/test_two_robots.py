@@ -17,6 +17,8 @@ import yaml
 
 from harness import run_on_simulator
 
+pytestmark = pytest.mark.slow        # long: outside the quick selection (pytest -m "not slow")
+
 SAMPLE = Path(__file__).resolve().parents[2] / "samples" / "two_robots"
 PASSAGE = (2.0, 1.5)          # centre of the passage (samples/worlds/two_robots.yaml)
 HALF_LENGTH = 0.2             # the walls are 0.4 m thick

@@ -4,6 +4,7 @@ import os
 import re
 from pathlib import Path
 
+import pytest
 from hypothesis import given, settings, strategies as st
 
 from scoopc import pipeline
@@ -39,6 +40,7 @@ def mutate(lines: list, edit) -> None:
 EXAMPLES = 1000 if os.environ.get("SCOOPC_HYPOTHESIS_PROFILE") == "thorough" else 40
 
 
+@pytest.mark.slow
 @settings(max_examples=EXAMPLES)
 @given(program=st.sampled_from(PROGRAMS), which=st.integers(0, 100), changes=edits)
 def test_a_mutated_program_gets_diagnostics_not_a_crash(tmp_path_factory, program, which, changes):
