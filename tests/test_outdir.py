@@ -97,3 +97,17 @@ def test_a_marker_cannot_name_files_outside_its_folder(project, capsys):
     (package / outdir.MARKER).write_text(f'{{"files": ["../../hello/hello.e", "{victim}"]}}')
     assert compile_(capsys, "hello", "out")[0] == 0
     assert victim.read_text() == HELLO
+
+
+@pytest.mark.parametrize("root", ["JSON", "THREADING", "EIFFEL_BASE"])
+def test_a_root_named_like_a_python_module_gets_a_package_of_its_own(tmp_path, capsys, root):
+    import subprocess
+    import sys
+
+    (tmp_path / f"{root.lower()}.e").write_text(HELLO.replace("HELLO", root))
+    code, err = compile_(capsys, tmp_path / f"{root.lower()}.e", tmp_path / "out")
+    package = f"{root.lower()}_program"
+    assert code == 0 and f"python -m {package}" in err
+    done = subprocess.run([sys.executable, "-m", package], cwd=tmp_path / "out", capture_output=True, text=True,
+                          timeout=120)
+    assert (done.returncode, done.stdout) == (0, "hi\n"), done.stderr

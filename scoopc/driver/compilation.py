@@ -8,9 +8,11 @@ from __future__ import annotations
 
 import ast
 import json
+import keyword
 import os
 import re
 import shutil
+import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
@@ -157,7 +159,7 @@ class Compilation:
         """`scoopc compile -o OUT`: OUT/<root> and OUT/eiffel_base, replacing only what scoopc wrote
         there before (outdir)."""
         out = Path(out)
-        package = self.root.key.lower()
+        package = package_name(self.root.key)
         library = out / BASE_PACKAGE
         outdir.prepare(out)
         for folder in (out / package, library):        # both checked before either is touched
@@ -212,6 +214,15 @@ class Compilation:
         except OSError:                      # another process put its copy in place first: use it
             shutil.rmtree(staging, ignore_errors=True)
         return CompiledProgram.from_meta(folder, compiled.meta())
+
+
+def package_name(root_key: str) -> str:
+    """The package `scoopc compile` writes for a root class: its name in lower case, unless that
+    would shadow a module Python or scoopc needs (`json`, `threading`, `eiffel_base`, ...), then
+    with `_program` after it."""
+    name = root_key.lower()
+    taken = name in sys.stdlib_module_names or name in (BASE_PACKAGE, "scoopc", "program") or keyword.iskeyword(name)
+    return f"{name}_program" if taken else name
 
 
 def _read_cached(folder: Path) -> CompiledProgram | None:
