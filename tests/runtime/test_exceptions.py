@@ -1,4 +1,5 @@
-"""Exceptions: synchronous calls re-raise; a failed asynchronous call makes the region dirty
+"""Exceptions: a failed synchronous call raises the dirty processor exception in the client
+(its cause the supplier's failure; passive regions re-raise it as is); a failed asynchronous call makes the region dirty
 for that client (later calls skipped; the next synchronous call is not executed, raises and
 cleans it; release cleans it too), as EiffelStudio's processor.c;
 a lost exception is reported on stderr, and strict mode makes it a run-time failure."""
@@ -9,13 +10,38 @@ import scoopc.runtime as rt
 from rt_helpers import Cell
 
 
-def test_sync_call_reraises_the_suppliers_exception(h):
+def test_failed_sync_call_raises_the_dirty_processor_exception(h):
+    """EiffelStudio (processor.c, rt_processor_execute_call): a synchronous call that fails
+    marks the supplier dirty, which, the call being synchronous, cleans itself and answers
+    SCOOP_MESSAGE_DIRTY; the client raises "EVE/Qs dirty processor exception"
+    (private_queue.c, rt_private_queue_log_call). Whoever runs the query (the client on a
+    claimed supplier, or the supplier's thread while another client's calls run first)."""
     root = h.root
     c = root.new_separate(Cell, Cell.make)
     with root.reserve((c,)):
-        with pytest.raises(ValueError, match="bad query"):
-            root.query(c, Cell.fail, ("bad query",))
-        assert root.query(c, Cell.get) == 0            # a sync failure is not dirt
+        with pytest.raises(rt.DirtyRegionError) as info:
+            root.query(c, Cell.fail, ("bad query",))    # claimed: run by the client
+        assert isinstance(info.value.__cause__, ValueError)
+        assert str(info.value.__cause__) == "bad query"
+        assert str(info.value) == f"EVE/Qs dirty processor exception: a synchronous call on {c._region_} failed"
+        assert root.query(c, Cell.get) == 0            # delivered: the region is clean
+        root.call(c, Cell.add, ("queued",))            # not a leaf: for the supplier's thread
+        with pytest.raises(rt.DirtyRegionError) as info:
+            root.query(c, Cell.fail, ("on its thread",))
+        assert str(info.value.__cause__) == "on its thread"
+        assert root.query(c, Cell.items) == ["queued"]
+    assert h.finish() == 0
+
+
+def test_failed_call_on_a_passive_region_reraises_the_same_exception(h):
+    """Calls on a passive region are plain calls (EiffelStudio impersonates it): no wrapping."""
+    root = h.root
+    c = root.new_passive(Cell, Cell.make)
+    with root.reserve((c,)):
+        with pytest.raises(ValueError, match="passive"):
+            root.query(c, Cell.fail, ("passive",))
+        assert root.query(c, Cell.get) == 0
+    assert h.finish() == 0
 
 
 def test_async_failure_dirties_until_the_next_synchronous_call(h):
