@@ -11,7 +11,7 @@ from . import pyast as P
 from .calls import declared_name, is_external
 from .context import ModuleContext
 from .layout import impl_id, lookup
-from .names import class_name, eiffel_class_name
+from .names import ONCE_CELL, class_name, eiffel_class_name
 from .routines import RoutineGen
 
 HEADER_IMPORTS = [
@@ -187,7 +187,7 @@ class ClassGen:
     def once_routine(self, pyname, feature, params, statements, decorators) -> list:
         keys = [k.upper() for k in feature.once_keys]
         body_name = f"{pyname}_once_"
-        inner = P.at(P.function(body_name, params, statements), feature.decl.span)
+        inner = P.at(P.function(body_name, [*params, ONCE_CELL], statements), feature.decl.span)
         key = P.const(f"{feature.written_in}.{feature.name}")
         args = P.tup([P.name(p) for p in params])
         target = P.attr(P.name(class_name(self.info.name)), body_name)

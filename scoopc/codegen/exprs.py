@@ -99,7 +99,7 @@ class Expressions:
         return P.name("self")
 
     def x_Result(self, node):
-        return P.name("Result")
+        return self.result_ref()
 
     def x_Void(self, node):
         return P.const(None)

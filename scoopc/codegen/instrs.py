@@ -55,7 +55,7 @@ class Instructions:
 
     def target(self, node):
         if isinstance(node, syntax.Result):
-            return P.name("Result")
+            return self.result_ref()
         entity = self.tables.entities.get(node)
         if entity is not None and entity.kind != "attribute":
             return P.name(self.local_name(entity.name))

@@ -12,6 +12,7 @@ import keyword
 
 from ..semantics.types import ALIASES
 
+ONCE_CELL = "_once_"             # a once routine body's last parameter: its cell (runtime once.py)
 RESERVED = frozenset(keyword.kwlist) | {"self", "here", "Result", "print", "type", "super", "object"}
 
 

@@ -13,7 +13,7 @@ from .assertions import InheritedAssertions
 from .calls import Calls
 from .exprs import Expressions
 from .instrs import Instructions
-from .names import eiffel_class_name, py_identifier
+from .names import ONCE_CELL, eiffel_class_name, py_identifier
 
 LOCAL_RESERVED = frozenset({"s", "b", "k", "t", "ks", "rt", "here", "self", "all", "any", "object",
                             "result", "len", "range", "isinstance", "type"})
@@ -38,6 +38,13 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         self.olds: dict = {}
         self.temps = 0
         self.result_type = feature.signature.result if feature is not None and feature.signature else None
+        # a once routine's body keeps `Result` in its once cell (the runtime's `Running`, its
+        # last parameter `_once_`), so a call during its first execution returns it so far
+        self.once_cell = feature is not None and feature.is_once
+
+    def result_ref(self) -> ast.expr:
+        """Where `Result` lives: a local, or the once cell's `result`."""
+        return P.attr(P.name(ONCE_CELL), "result") if self.once_cell else P.name("Result")
 
     # --- names ------------------------------------------------------------------------------------
     def py_name(self, feature, owner=None) -> str:
@@ -79,8 +86,8 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         for decl in body.locals:
             ty = self.tables.types.get(decl.type)
             out.append(P.at(P.assign(P.name(self.local_name(decl.name.key)), self.default_value(ty)), decl.span))
-        if result_type is not None and not _sets_result_first(body):
-            out.append(P.assign(P.name("Result"), self.default_value(result_type)))
+        if result_type is not None and (self.once_cell or not _sets_result_first(body)):
+            out.append(P.assign(self.result_ref(), self.default_value(result_type)))
         separate = self.separate_arguments(arguments)
         pre = body.precondition.clauses if body.precondition is not None else ()
         main = self.olds_at_entry(body) + self.main_body(body)
@@ -91,7 +98,7 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         else:
             out += self.precondition(pre) + main
         if result_type is not None:
-            out.append(ast.Return(P.name("Result")))
+            out.append(ast.Return(self.result_ref()))
         return out
 
     def separate_arguments(self, arguments) -> list:

@@ -469,8 +469,12 @@ def formal_query(target, name, here, desc):
     return basic.query(target, name, here)
 
 
+def _make_once_string(here, text, maker, cell):
+    return maker(here, text)
+
+
 def once_string(here, key, text, maker):
-    return here.once(key, maker, (here, text))
+    return here.once(key, _make_once_string, (here, text, maker))
 
 
 __all__ = ["EiffelFailure", "T", "box"]

@@ -16,8 +16,8 @@ class PreconditionViolation(ScoopError):
 
 class DirtyRegionError(ScoopError):
     """EiffelStudio's dirty processor exception: a synchronous call on a region where an
-    earlier asynchronous call of this reservation failed (the call is not executed);
-    `__cause__` is that failure."""
+    earlier asynchronous call of this reservation failed (the call is not executed), or a
+    synchronous call that failed itself; `__cause__` is that failure."""
 
 
 DIRTY_TAG = "EVE/Qs dirty processor exception"
@@ -26,6 +26,20 @@ DIRTY_TAG = "EVE/Qs dirty processor exception"
 def dirty_error(proc: object, failure: BaseException | None) -> DirtyRegionError:
     """The exception a client gets instead of its synchronous call on dirty `proc`."""
     error = DirtyRegionError(f"{DIRTY_TAG}: an earlier asynchronous call on {proc} failed")
+    error.__cause__ = failure
+    return error
+
+
+def sync_failure(proc: object, failure: Exception) -> Exception:
+    """What a client gets when its synchronous call (query, lock-passing call, callback) on
+    the active region `proc` fails: EiffelStudio's supplier marks itself dirty, then, the
+    call being synchronous, cleans itself and answers SCOOP_MESSAGE_DIRTY, on which the
+    client raises its dirty processor exception (processor.c, `rt_processor_execute_call`;
+    private_queue.c, `rt_private_queue_log_call`). Calls on passive regions and on the
+    client's own region are plain calls there too: their failures are not wrapped."""
+    if isinstance(failure, DeadlockError):
+        return failure
+    error = DirtyRegionError(f"{DIRTY_TAG}: a synchronous call on {proc} failed")
     error.__cause__ = failure
     return error
 

@@ -23,7 +23,7 @@ from collections.abc import Sequence
 from types import TracebackType
 from typing import TYPE_CHECKING
 
-from .errors import PASS_THROUGH, PreconditionViolation
+from .errors import PASS_THROUGH, PreconditionViolation, sync_failure
 from .protocols import Args, Clause, Routine, Separate, Where
 from .sched import Block
 from .session import IDLE, RUNNING, SCHEDULED, Session, close_locked, enqueue
@@ -238,9 +238,15 @@ class FastPaths:
     def leaf_query(self: Processor, target: Separate, routine: Routine, args: Args = (),  # type: ignore[misc]
                    where: Where | None = None) -> object:
         """`query` of a `@leaf` routine whose arguments cannot pass locks (as `leaf_call`)."""
-        s = self.held.get(target._region_)
+        p = target._region_
+        s = self.held.get(p)
         if s.__class__ is Session and s.claimed and s.dirty is None \
                 and not self.rt.stopping:
-            return routine(target, *args)
+            try:
+                return routine(target, *args)
+            except Exception as e:
+                if p.passive:
+                    raise
+                raise sync_failure(p, e)    # noqa: B904 (its cause is set)
         return self.query(target, routine, args, where)
 

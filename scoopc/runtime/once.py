@@ -1,7 +1,13 @@
 """`once` routines: per region (the Eiffel default), process-wide, or per object.
 
 Values are keyed by region, never by thread: a call run on another thread on a region's
-behalf (client executes, callbacks) sees that region's values."""
+behalf (client executes, callbacks) sees that region's values.
+
+The body of a once routine gets, as its last argument, the `Running` cell of its first call:
+a once function keeps its `Result` in `cell.result`, so a call of the routine during its own
+first execution returns the value of `Result` so far (ECMA-367 8.23.22; EiffelStudio keeps
+the once's result in its once data, which `Result` designates), and a once procedure's
+recursive call does nothing."""
 from __future__ import annotations
 
 import threading
@@ -15,6 +21,14 @@ if TYPE_CHECKING:
     from .sched import Runtime
 
 
+class Running:
+    """The entry of a once routine whose first call is under way: `result` is its `Result`."""
+    __slots__ = ("result",)
+
+    def __init__(self) -> None:
+        self.result: object = None
+
+
 class _Failed:
     """A once routine whose first call raised: later calls raise the same exception."""
     __slots__ = ("exc",)
@@ -24,12 +38,16 @@ class _Failed:
 
 
 def once_in(table: OnceTable, key: OnceKey, fn: Callable[..., object], args: Args) -> object:
-    """Run `fn(*args)` the first time `key` is seen in `table`; the caller owns `table`."""
+    """Run `fn(*args, cell)` the first time `key` is seen in `table` (`cell`: a new `Running`,
+    the entry meanwhile); the caller owns `table`. A call during that first run returns
+    `cell.result`."""
     try:
         v = table[key]
     except KeyError:
+        cell = Running()
+        table[key] = cell
         try:
-            v = fn(*args)
+            v = fn(*args, cell)
         except BaseException as e:
             table[key] = _Failed(e)
             raise
@@ -37,6 +55,8 @@ def once_in(table: OnceTable, key: OnceKey, fn: Callable[..., object], args: Arg
         return v
     if v.__class__ is _Failed:
         raise v.exc
+    if v.__class__ is Running:
+        return v.result
     return v
 
 
@@ -46,7 +66,7 @@ _process_lock = threading.RLock()     # serialises first calls of process-wide o
 def once_process(rt: Runtime, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
     table = rt.process_onces
     v = table.get(key, table)          # fast path: a plain dict read once computed
-    if v is not table and v.__class__ is not _Failed:
+    if v is not table and v.__class__ is not _Failed and v.__class__ is not Running:
         return v
     with _process_lock:
         return once_in(table, key, fn, args)

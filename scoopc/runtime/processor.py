@@ -17,7 +17,7 @@ from collections import deque
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TypeVar
 
-from .errors import PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error
+from .errors import PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error, sync_failure
 from .fast import FastPaths
 from .once import once_in
 from .protocols import Args, Call, Clause, OnceKey, OnceTable, Routine, Separate, Where
@@ -178,7 +178,12 @@ class Processor(FastPaths):
         if s.__class__ is Session:
             if s.claimed and s.dirty is None and not self.rt.stopping \
                     and (not args or not self._passes(args)):
-                return routine(target, *args)   # `p` is ours until we release it
+                try:
+                    return routine(target, *args)   # `p` is ours until we release it
+                except Exception as e:
+                    if p.passive:
+                        raise
+                    raise sync_failure(p, e)        # noqa: B904 (its cause is set)
             return self._sync(s, p, routine, target, args, where, False)
         if s is p:
             if p is self:
@@ -282,12 +287,16 @@ class Processor(FastPaths):
         synchronous call ourselves on `p`'s behalf (client executes)."""
         if is_cmd:
             s.changed = True
-        if self._claim_locked(p, s):
-            return routine(target, *args)
+        kept = self._claim_locked(p, s)
         try:
             return routine(target, *args)
+        except Exception as e:
+            if p.passive:
+                raise
+            raise sync_failure(p, e)        # noqa: B904 (its cause is set)
         finally:
-            p.release_claim()
+            if not kept:
+                p.release_claim()
 
     def _inline(self, p: Processor, s: Session, batches: Batches, routine: Routine,
                 target: Separate, args: Args, passer: Processor | None, is_cmd: bool) -> object:
@@ -316,9 +325,14 @@ class Processor(FastPaths):
                         with p.lock:
                             s.dirty = e
                         return None
-            if passer is None:
-                return routine(target, *args)
-            return p._invoke_passing(passer, routine, target, args)
+            try:
+                if passer is None:
+                    return routine(target, *args)
+                return p._invoke_passing(passer, routine, target, args)
+            except Exception as e:
+                if p.passive:
+                    raise
+                raise sync_failure(p, e)    # noqa: B904 (its cause is set)
         finally:
             p.unclaim()
 
@@ -329,6 +343,10 @@ class Processor(FastPaths):
         p.exec = self.exec
         try:
             return routine(target, *args)
+        except Exception as e:
+            if p.passive:
+                raise
+            raise sync_failure(p, e)        # noqa: B904 (its cause is set)
         finally:
             p.exec = saved
 
@@ -435,7 +453,7 @@ class Processor(FastPaths):
                     with self.lock:
                         s.dirty = e
                 else:
-                    blk.error = e
+                    blk.error = sync_failure(self, e) if isinstance(e, Exception) else e
                     rt.unblock(blk)
                 continue
             if blk is None or passer is not None:

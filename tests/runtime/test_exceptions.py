@@ -1,21 +1,82 @@
-"""Exceptions: synchronous calls re-raise; a failed asynchronous call makes the region dirty
-for that client (later calls skipped; the next synchronous call is not executed, raises and
+"""Exceptions: a failed synchronous call raises the dirty processor exception in the client
+(its cause the supplier's failure; passive regions re-raise it as is); a failed asynchronous
+call makes the region dirty for that client (later calls skipped; the next synchronous call is not executed, raises and
 cleans it; release cleans it too), as EiffelStudio's processor.c;
 a lost exception is reported on stderr, and strict mode makes it a run-time failure."""
+import threading
+
 import pytest
 
 import scoopc.runtime as rt
 
-from rt_helpers import Cell
+from rt_helpers import GATE_TIMEOUT, Cell
 
 
-def test_sync_call_reraises_the_suppliers_exception(h):
+class LCell(Cell):
+    @rt.leaf
+    def make(self, value=0):
+        Cell.make(self, value)
+
+
+@rt.leaf
+def leaf_fail(cell, message):
+    raise ValueError(message)
+
+
+def test_failed_sync_call_raises_the_dirty_processor_exception(h):
+    """EiffelStudio (processor.c, rt_processor_execute_call): a synchronous call that fails
+    marks the supplier dirty, which, the call being synchronous, cleans itself and answers
+    SCOOP_MESSAGE_DIRTY; the client raises "EVE/Qs dirty processor exception"
+    (private_queue.c, rt_private_queue_log_call)."""
     root = h.root
     c = root.new_separate(Cell, Cell.make)
     with root.reserve((c,)):
-        with pytest.raises(ValueError, match="bad query"):
+        with pytest.raises(rt.DirtyRegionError) as info:
             root.query(c, Cell.fail, ("bad query",))
-        assert root.query(c, Cell.get) == 0            # a sync failure is not dirt
+        assert isinstance(info.value.__cause__, ValueError)
+        assert str(info.value.__cause__) == "bad query"
+        assert str(info.value) == f"EVE/Qs dirty processor exception: a synchronous call on {c._region_} failed"
+        assert root.query(c, Cell.get) == 0            # delivered: the region is clean
+    lc = root.new_separate(LCell, LCell.make)          # a leaf creation: run here, lc idle
+    with root.reserve((lc,)):
+        assert root.held[lc._region_].claimed          # claimed: the client runs its queries
+        with pytest.raises(rt.DirtyRegionError) as info:
+            root.query(lc, Cell.fail, ("claimed",))
+        assert str(info.value.__cause__) == "claimed"
+        with pytest.raises(rt.DirtyRegionError) as info:
+            root.leaf_query(lc, leaf_fail, ("leaf",))   # the fast entry point likewise
+        assert str(info.value.__cause__) == "leaf"
+        assert root.query(lc, Cell.get) == 0
+    assert h.finish() == 0
+
+
+def test_failed_sync_call_run_by_the_suppliers_thread_raises_the_same(h):
+    """The same when the supplier's own thread runs the query (queued behind a command)."""
+    root = h.root
+    c = root.new_separate(Cell, Cell.make)
+    gate = threading.Event()
+    queued = h.rt.watch_blocks(lambda b: b.kind == "sync")
+    opener = threading.Thread(target=lambda: queued.wait(GATE_TIMEOUT) and gate.set())
+    opener.start()
+    with root.reserve((c,)):
+        root.call(c, Cell.gate, (gate,))               # not a leaf: for the supplier's thread
+        with pytest.raises(rt.DirtyRegionError) as info:
+            root.query(c, Cell.fail, ("on its thread",))   # waits behind the gate
+        assert str(info.value.__cause__) == "on its thread"
+        assert root.query(c, Cell.get) == 0
+    opener.join()
+    assert h.finish() == 0
+
+
+def test_failed_call_on_a_passive_region_reraises_the_same_exception(h):
+    """Calls on a passive region are plain calls (EiffelStudio impersonates it): no wrapping."""
+    root = h.root
+    c = root.new_passive(Cell, Cell.make)
+    with root.reserve((c,)):
+        with pytest.raises(ValueError, match="passive"):
+            root.query(c, Cell.fail, ("passive",))
+        assert root.query(c, Cell.get) == 0
+    assert h.finish() == 0
 
 
 def test_async_failure_dirties_until_the_next_synchronous_call(h):

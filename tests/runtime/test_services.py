@@ -8,7 +8,7 @@ from rt_helpers import Cell, spawn
 counter = {"n": 0}
 
 
-def _fresh():
+def _fresh(cell):
     counter["n"] += 1
     return counter["n"]
 
@@ -57,7 +57,7 @@ def test_once_process_and_object(h):
 
 
 def test_once_failure_is_remembered(h):
-    def boom():
+    def boom(cell):
         raise ValueError("once failed")
     for _ in range(2):
         try:
@@ -66,6 +66,31 @@ def test_once_failure_is_remembered(h):
             assert str(e) == "once failed"
         else:
             raise AssertionError("no exception")
+
+
+def test_once_called_during_its_first_execution_returns_result_so_far(h):
+    """ECMA-367 8.23.22: the once's cell stands for it while its first call runs."""
+    seen = []
+
+    def body(depth, cell):
+        cell.result = 5
+        seen.append(h.root.once("rec", body, (depth + 1,)))     # recursive: not run again
+        seen.append(rt.once_object(obj, "rec", body, (depth + 1,)) if depth == 0 else None)
+        cell.result = cell.result + 1
+        return cell.result
+    obj = h.root.new(Holder)
+    assert h.root.once("rec", body, (0,)) == 6
+    assert h.root.once("rec", body, (0,)) == 6
+    # the recursive call gave 5; the object's once ran its own first call, in which the
+    # region's once (still running) gave 5 again; it returned its own 6
+    assert seen == [5, 5, None, 6]
+
+    def proc(cell):
+        seen.append("ran")
+        rt.once_process("proc", proc)          # a once procedure's recursive call does nothing
+    seen.clear()
+    assert rt.once_process("proc", proc) is None
+    assert seen == ["ran"]
 
 
 class Printer:

@@ -50,30 +50,30 @@ class CONSTANTS_ONCE(ANY):
     evaluations = 0
     setups = 0
 
-    def next_id_once_(self):
-        Result = 0
+    def next_id_once_(self, _once_):
+        _once_.result = 0
         self.evaluations = _t if (_t := (self.evaluations + 1)) <= 2147483647 else B.wrap_i32(_t)
-        Result = 42
-        return Result
+        _once_.result = 42
+        return _once_.result
 
     @property
     def next_id(self):
         return self._region_.once('CONSTANTS_ONCE.next_id', CONSTANTS_ONCE.next_id_once_, (self,))
 
-    def setup_once_(self):
+    def setup_once_(self, _once_):
         self.setups = _t if (_t := (self.setups + 1)) <= 2147483647 else B.wrap_i32(_t)
 
     def setup(self):
         return self._region_.once('CONSTANTS_ONCE.setup', CONSTANTS_ONCE.setup_once_, (self,))
     attempts = 0
 
-    def failing_once_(self):
-        Result = 0
+    def failing_once_(self, _once_):
+        _once_.result = 0
         self.attempts = _t if (_t := (self.attempts + 1)) <= 2147483647 else B.wrap_i32(_t)
         if not False:
             S.assertion_failed('check', 'never', W_1)
-        Result = 1
-        return Result
+        _once_.result = 1
+        return _once_.result
 
     @property
     def failing(self):

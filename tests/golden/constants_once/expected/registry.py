@@ -9,25 +9,21 @@ class REGISTRY(ANY):
     _key_ = 'REGISTRY'
     _conforms_ = frozenset(['ANY', 'REGISTRY'])
 
-    def shared_list_once_(self):
+    def shared_list_once_(self, _once_):
         here = self._region_
-        Result = None
-        Result = here.new(ARRAYED_LIST)
-        Result._gen_ = (T_1,)
-        Result.make(4)
-        return Result
+        _once_.result = None
+        _once_.result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
+        return _once_.result
 
     @property
     def shared_list(self):
         return self._region_.once('REGISTRY.shared_list', REGISTRY.shared_list_once_, (self,))
 
-    def own_list_once_(self):
+    def own_list_once_(self, _once_):
         here = self._region_
-        Result = None
-        Result = here.new(ARRAYED_LIST)
-        Result._gen_ = (T_1,)
-        Result.make(4)
-        return Result
+        _once_.result = None
+        _once_.result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
+        return _once_.result
 
     @property
     def own_list(self):

@@ -9,28 +9,28 @@ class STAMPER(ANY):
     _key_ = 'STAMPER'
     _conforms_ = frozenset(['ANY', 'STAMPER'])
 
-    def stamps_once_(self):
+    def stamps_once_(self, _once_):
         here = self._region_
-        Result = None
-        Result = here.new(ARRAYED_LIST)
-        Result._gen_ = (T_1,)
-        Result.make(4)
-        return Result
+        _once_.result = None
+        _once_.result = S.create(here, ARRAYED_LIST, (T_1,), 'make', (4,))
+        return _once_.result
 
     @property
     def stamps(self):
         return self._region_.once('STAMPER.stamps', STAMPER.stamps_once_, (self,))
 
-    def region_tag_once_(self, t_):
-        Result = t_
-        return Result
+    def region_tag_once_(self, t_, _once_):
+        _once_.result = 0
+        _once_.result = t_
+        return _once_.result
 
     def region_tag(self, t_):
         return self._region_.once('STAMPER.region_tag', STAMPER.region_tag_once_, (self, t_))
 
-    def process_tag_once_(self, t_):
-        Result = t_
-        return Result
+    def process_tag_once_(self, t_, _once_):
+        _once_.result = 0
+        _once_.result = t_
+        return _once_.result
 
     def process_tag(self, t_):
         return rt.once_process('STAMPER.process_tag', STAMPER.process_tag_once_, (self, t_))

@@ -8,11 +8,11 @@ class SHARED_BOARD(ANY):
     _key_ = 'SHARED_BOARD'
     _conforms_ = frozenset(['ANY', 'SHARED_BOARD'])
 
-    def board_once_(self):
+    def board_once_(self, _once_):
         here = self._region_
-        Result = None
-        Result = here.new_separate(TALLY_BOARD, TALLY_BOARD.default_create, ())
-        return Result
+        _once_.result = None
+        _once_.result = here.new_separate(TALLY_BOARD, TALLY_BOARD.default_create, ())
+        return _once_.result
 
     @property
     def board(self):

@@ -14,35 +14,37 @@ class WORKER(SHARED_BOARD):
         b_ = self.board
         here.command1(b_, TALLY_BOARD.add, (n,), W_1)
 
-    def own_board_once_(self):
+    def own_board_once_(self, _once_):
         here = self._region_
-        Result = None
-        Result = here.new(TALLY_BOARD)
-        Result.default_create()
-        return Result
+        _once_.result = None
+        _once_.result = S.create(here, TALLY_BOARD, None, 'default_create', ())
+        return _once_.result
 
     @property
     def own_board(self):
         return rt.once_object(self, 'WORKER.own_board', WORKER.own_board_once_, (self,))
 
-    def first_tag_once_(self, t_):
-        Result = t_
-        return Result
+    def first_tag_once_(self, t_, _once_):
+        _once_.result = 0
+        _once_.result = t_
+        return _once_.result
 
     def first_tag(self, t_):
         return rt.once_object(self, 'WORKER.first_tag', WORKER.first_tag_once_, (self, t_))
 
-    def process_tag_once_(self, t_):
-        Result = t_
-        return Result
+    def process_tag_once_(self, t_, _once_):
+        _once_.result = 0
+        _once_.result = t_
+        return _once_.result
 
     def process_tag(self, t_):
         return rt.once_process('WORKER.process_tag', WORKER.process_tag_once_, (self, t_))
 
-    def stamp_once_(self):
+    def stamp_once_(self, _once_):
         here = self._region_
-        Result = KS.s8(here, 'stamp of ').plus(B.out_int(here, self.tag))
-        return Result
+        _once_.result = None
+        _once_.result = KS.s8(here, 'stamp of ').plus(B.out_int(here, self.tag))
+        return _once_.result
 
     @property
     def stamp(self):

@@ -19,13 +19,11 @@ class ADDER(THREAD):
     times = 0
     turns_seen = 0
 
-    def turns_once_(self):
+    def turns_once_(self, _once_):
         here = self._region_
-        Result = None
-        Result = here.new(CELL)
-        Result._gen_ = (T_1,)
-        Result.put(0)
-        return Result
+        _once_.result = None
+        _once_.result = S.create(here, CELL, (T_1,), 'put', (0,))
+        return _once_.result
 
     @property
     def turns(self):

@@ -34,15 +34,15 @@ class THREADS_MUTEX(ANY):
         for i in range(1, 4 + 1):
             adders.extend(S.create(here, ADDER, None, 'make__adder', (counter, mutex, _t if -2147483648 <= (_t := (250 * i)) <= 2147483647 else B.wrap_i32(_t))))
         self.print_(KS.s8(here, 'launchable before: ').plus(B.out_bool(here, adders.first.is_launchable)).plus(KS.s8(here, '\n')))
-        for a in S.items(adders):
-            a.launch()
+        for a in S.cursors(adders):
+            a.item.launch()
         self.print_(KS.s8(here, 'launchable after: ').plus(B.out_bool(here, adders.first.is_launchable)).plus(KS.s8(here, '\n')))
         control = here.new(THREAD_CONTROL)
         control.default_create()
         control.join_all()
         self.print_(KS.s8(here, 'counter: ').plus(B.out_int(here, counter.value)).plus(KS.s8(here, '\n')))
-        for a in S.items(adders):
-            self.print_(KS.s8(here, 'turns seen: ').plus(B.out_int(here, a.turns_seen)).plus(KS.s8(here, ', terminated: ')).plus(B.out_bool(here, a.terminated)).plus(KS.s8(here, '\n')))
+        for a in S.cursors(adders):
+            self.print_(KS.s8(here, 'turns seen: ').plus(B.out_int(here, a.item.turns_seen)).plus(KS.s8(here, ', terminated: ')).plus(B.out_bool(here, a.item.terminated)).plus(KS.s8(here, '\n')))
         self.print_(KS.s8(here, "main's own turns: ").plus(B.out_int(here, adders.first.turns.item)).plus(KS.s8(here, '\n')))
 
     def probing(self):
