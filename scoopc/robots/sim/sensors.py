@@ -7,11 +7,9 @@ Ground sensors: 0.01 m over the floor, +inf over a hole (nothing reflects).
 import math
 
 import numpy as np
-from rosbags.typesys import Stores, get_typestore
 
 from .world import ray_cast
 
-_STORE = get_typestore(Stores.ROS2_HUMBLE)
 _NUMPY = {"float32": np.float32, "float64": np.float64, "int8": np.int8, "uint8": np.uint8, "int16": np.int16,
           "uint16": np.uint16, "int32": np.int32, "uint32": np.uint32, "int64": np.int64, "uint64": np.uint64}
 
@@ -38,12 +36,14 @@ def new(typename, **fields):
     """A message of `typename` with defaults for the omitted fields."""
     if _new_external is not None:
         return _new_external(typename, **fields)
+    from scoopc.robots.ros_messages import typestore      # the process's ROS 2 distribution
+    store = typestore()
     args = {}
-    for name, (nodetype, detail) in _STORE.fielddefs[typename][1]:
+    for name, (nodetype, detail) in store.fielddefs[typename][1]:
         args[name] = fields.pop(name) if name in fields else _default(nodetype, detail)
     if fields:
         raise TypeError(f"{typename} has no field(s) {sorted(fields)}")
-    return _STORE.types[typename](**args)
+    return store.types[typename](**args)
 
 
 def stamp(t_ns):
