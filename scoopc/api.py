@@ -45,7 +45,8 @@ def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: Optional
         stdout: Optional[TextIO] = None, stderr: Optional[TextIO] = None, robot: Optional[str] = None,
         world: Any = None, namespace: Optional[str] = None, realtime: bool = False,
         duration: Optional[float] = None, goal: Optional[tuple] = None, png: Union[PathLike, bool, None] = None,
-        gif: Optional[PathLike] = None, record: Optional[PathLike] = None) -> RunResult:
+        gif: Optional[PathLike] = None, record: Optional[PathLike] = None, ros_distro: Optional[str] = None,
+        use_sim_time: bool = False, wait_robot: float = 3.0, require_robot: bool = False) -> RunResult:
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
     simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in
@@ -56,7 +57,9 @@ def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: Optional
     except SourceErrors as errors:
         return RunResult(Exit.SOURCE, errors.diagnostics)
     options = RunOptions(trace_processors, strict, virtual_clock, debug, stdout, stderr)
-    robot_options = RobotOptions(robot, world, namespace, realtime, duration, goal, png, gif, record)
+    robot_options = RobotOptions(robot, world, namespace, realtime, duration, goal, png, gif, record,
+                                 ros_distro=ros_distro, use_sim_time=use_sim_time, wait_robot=wait_robot,
+                                 require_robot=require_robot)
     result = run_program(program, args, options, robot_options, compilation.paths)
     if "checked" in vars(compilation):                # compiled now, not taken from the cache
         result.diagnostics = compilation.checked.diagnostics

@@ -73,6 +73,14 @@ def dds_type_name(typename: str) -> str:
     return f"{package}::{kind}::dds_::{name}_"
 
 
+def ros_type_name(dds_name: str) -> str:
+    """`geometry_msgs::msg::dds_::Twist_` -> `geometry_msgs/msg/Twist` (other names unchanged)."""
+    parts = dds_name.split("::")
+    if len(parts) == 4 and parts[2] == "dds_" and parts[3].endswith("_"):
+        return f"{parts[0]}/{parts[1]}/{parts[3][:-1]}"
+    return dds_name
+
+
 def _parts(topic: str) -> list[str]:
     return [part for part in topic.split("/") if part]
 
@@ -506,20 +514,34 @@ class DdsBus(Tapped):
             entries = list(self._readers.values())
         return {e.topic: (e.reader.get_subscription_matched_status().current_count, e.count) for e in entries}
 
-    def graph_topics(self) -> dict:
-        """{ROS topic: DDS type name} of every writer discovery knows of (other participants' too)."""
-        from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication
+    def graph_topics(self, readers: bool = False) -> dict:
+        """{ROS topic: ROS type name} of every writer (`readers`: reader) discovery knows of, in any
+        participant (this one's too)."""
+        from cyclonedds.builtin import (BuiltinDataReader, BuiltinTopicDcpsPublication,
+                                        BuiltinTopicDcpsSubscription)
         with self._lock:
             self._check_open()
-            if getattr(self, "_graph", None) is None:
-                self._graph = BuiltinDataReader(self.participant, BuiltinTopicDcpsPublication)
-            reader = self._graph
+            graph = self.__dict__.setdefault("_graph", {})
+            if readers not in graph:
+                graph[readers] = BuiltinDataReader(
+                    self.participant, BuiltinTopicDcpsSubscription if readers else BuiltinTopicDcpsPublication)
             found = {}
-            for sample in reader.read(N=1024) or ():
+            for sample in graph[readers].read(N=4096) or ():
                 name = getattr(sample, "topic_name", "")
                 if name.startswith("rt/"):
-                    found[name[2:]] = getattr(sample, "type_name", "")
+                    found[name[2:]] = ros_type_name(getattr(sample, "type_name", ""))
         return found
+
+    def unmatched_writers(self) -> list[tuple[str, str, str]]:
+        """[(topic, our type, the type a reader of the graph asks)] for our writers that no reader
+        matched while some node reads the topic with another type (Twist against TwistStamped)."""
+        with self._lock:
+            writers = [(t, w, self._topics[t][0]) for t, w in self._writers.items()]
+        lonely = [(t, typename) for t, w, typename in writers if w.get_publication_matched_status().current_count == 0]
+        if not lonely:
+            return []
+        graph = self.graph_topics(readers=True)
+        return [(t, typename, graph[t]) for t, typename in lonely if t in graph and graph[t] != typename]
 
     def check_qos(self) -> list[str]:
         """New QoS incompatibilities (each topic once), told through `report` and returned:
@@ -651,9 +673,8 @@ class DdsBus(Tapped):
             for _, entity in self._topics.values():
                 entity.__del__()
             self._topics.clear()
-            graph, self._graph = getattr(self, "_graph", None), None
-            if graph is not None:
-                graph.__del__()
+            for reader in self.__dict__.pop("_graph", {}).values():
+                reader.__del__()
             self.participant.__del__()
         _release_domain(self.domain)
 
