@@ -224,8 +224,13 @@ def _acquire_domain(domain: int, config: str):
                 raise DiscoveryError(f"domain {domain} is already open in this process with other "
                                      f"discovery settings")
             entry[1] += 1
-            return
-        _domains[domain] = [Domain(domain, config), 1, config]
+            return True
+        try:
+            made = Domain(domain, config)
+        except Exception:                    # noqa: BLE001 - a participant made without us holds it
+            return False
+        _domains[domain] = [made, 1, config]
+        return True
 
 
 def _release_domain(domain: int) -> None:
@@ -374,11 +379,14 @@ class DdsBus(Tapped):
         self.errors = []                      # exceptions raised by callbacks (the first few)
         self.reported = set()                 # topics whose QoS incompatibility was told
         config, self.discovery, self.discovery_warnings = discovery_config(self.distro, environ)
-        _acquire_domain(self.domain, config)
+        self._held = _acquire_domain(self.domain, config)
+        if not self._held:
+            self.discovery += " (not applied: another participant of this process opened the domain first)"
         try:
             self.participant = DomainParticipant(self.domain, qos=Qos(Policy.Userdata(data=b"enclave=/;")))
         except Exception:
-            _release_domain(self.domain)
+            if self._held:
+                _release_domain(self.domain)
             raise
         self._lock = threading.RLock()
         self._topics = {}                     # [_lock] ROS topic -> (typename, Topic)
@@ -676,7 +684,8 @@ class DdsBus(Tapped):
             for reader in self.__dict__.pop("_graph", {}).values():
                 reader.__del__()
             self.participant.__del__()
-        _release_domain(self.domain)
+        if self._held:
+            _release_domain(self.domain)
 
     def __enter__(self):
         return self
