@@ -179,6 +179,8 @@ def discovery_config(distro: str, environ=None, pid: int | None = None) -> tuple
         config = ('<CycloneDDS><Domain><General><Interfaces><NetworkInterface address="127.0.0.1"/>'
                   '</Interfaces></General></Domain></CycloneDDS>,')
         text = "localhost only (ROS_LOCALHOST_ONLY=1)"
+    elif distro == "humble":                  # humble: nothing but CYCLONEDDS_URI
+        config, text = "", "discovery as Cyclone DDS's configuration says"
     else:
         localhost_peer = rng == "LOCALHOST"
         add_peers = rng in ("SUBNET", "LOCALHOST")
