@@ -380,6 +380,7 @@ class DdsBus(Tapped):
         self.report = report or (lambda text: log.warning("%s", text))
         self.errors = []                      # exceptions raised by callbacks (the first few)
         self.reported = set()                 # topics whose QoS incompatibility was told
+        self._history = {}                    # [_lock] topic -> (publishers, samples) of closed readers
         config, self.discovery, self.discovery_warnings = discovery_config(self.distro, environ)
         self._held = _acquire_domain(self.domain, config)
         if not self._held:
@@ -491,6 +492,7 @@ class DdsBus(Tapped):
                 return
             entry.subs.remove(sub)
             if not entry.subs and not self._closed:
+                self._remember(entry)
                 del self._readers[sub.topic]
                 self._waitset.detach(entry.condition)
                 entry.condition.__del__()
@@ -518,11 +520,25 @@ class DdsBus(Tapped):
         return self._wait_matched(lambda: entry.reader.get_subscription_matched_status().current_count > 0, timeout)
 
     # -- what the graph holds (the "nothing heard" report) ----------------------------------------
+    def _remember(self, entry) -> None:
+        """Keep what a reader heard once it is deleted (the report at the end of a run) [_lock]."""
+        try:
+            publishers = entry.reader.get_subscription_matched_status().current_count
+        except Exception:                    # noqa: BLE001 - being deleted
+            publishers = 0
+        before = self._history.get(entry.topic, (0, 0))
+        self._history[entry.topic] = (max(publishers, before[0]), entry.count + before[1])
+
     def heard(self) -> dict:
-        """{subscribed ROS topic: (matched publishers, samples received)}."""
+        """{ROS topic subscribed (now or before): (matched publishers, samples received)}."""
         with self._lock:
             entries = list(self._readers.values())
-        return {e.topic: (e.reader.get_subscription_matched_status().current_count, e.count) for e in entries}
+            found = dict(self._history)
+        for e in entries:
+            publishers = e.reader.get_subscription_matched_status().current_count
+            before = found.get(e.topic, (0, 0))
+            found[e.topic] = (max(publishers, before[0]), e.count + before[1])
+        return found
 
     def graph_topics(self, readers: bool = False) -> dict:
         """{ROS topic: ROS type name} of every writer (`readers`: reader) discovery knows of, in any

@@ -220,6 +220,8 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
                 last_report = now
                 _say(stderr, _progress(sim, now - start, commands))
         commands += node.drain()
+        if hasattr(bus, "check_qos"):
+            bus.check_qos()
         why = f"stopped by {flag.requested}" if flag.requested else \
             "stopped" if stop is not None and stop.is_set() else "duration reached"
         sim.stop_all()
