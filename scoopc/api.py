@@ -46,14 +46,17 @@ def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: str | No
         stdout: TextIO | None = None, stderr: TextIO | None = None, robot: str | None = None,
         world: Any = None, namespace: str | None = None, realtime: bool = False,
         duration: float | None = None, goal: tuple | None = None, png: PathLike | bool | None = None,
-        gif: PathLike | None = None, record: PathLike | None = None) -> RunResult:
+        gif: PathLike | None = None, record: PathLike | None = None, ros_distro: str | None = None,
+        use_sim_time: bool = False, wait_robot: float = 3.0, require_robot: bool = False) -> RunResult:
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
     simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in
     <root>.png. The result's `status` is the program's exit status."""
     compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
     options = RunOptions(trace_processors, strict, virtual_clock, debug, stdout, stderr)
-    robot_options = RobotOptions(robot, world, namespace, realtime, duration, goal, png, gif, record)
+    robot_options = RobotOptions(robot, world, namespace, realtime, duration, goal, png, gif, record,
+                                 ros_distro=ros_distro, use_sim_time=use_sim_time, wait_robot=wait_robot,
+                                 require_robot=require_robot)
     try:
         result = run_compilation(compilation, args, options, robot_options, use_cache=cache)
     except SourceErrors as errors:

@@ -127,17 +127,31 @@ def _add_run_options(command: argparse.ArgumentParser) -> None:
     robot.add_argument("--gif", metavar="FILE", help="also write an animation of the run")
     robot.add_argument("--record", metavar="FILE.mcap",
                        help="record every topic of the run in an MCAP file (ROS 2 schemas; opens in Foxglove)")
+    _add_distro_option(robot)
+    robot.add_argument("--use-sim-time", action="store_true",
+                       help="ROS 2: stamp commands with the latest /clock (use_sim_time) instead of the system clock")
+    robot.add_argument("--wait-robot", type=_non_negative, default=3.0, metavar="S",
+                       help="ROS 2: seconds before the topics still silent are reported (default 3)")
+    robot.add_argument("--require-robot", action="store_true",
+                       help="ROS 2: fail (exit 3) when a subscribed topic is still silent after --wait-robot seconds")
+
+
+def _add_distro_option(group) -> None:
+    group.add_argument("--ros-distro", type=str.lower, choices=("humble", "jazzy", "lyrical"), metavar="DISTRO",
+                       help="the ROS 2 distribution whose message definitions and type hashes are used: "
+                            "humble, jazzy or lyrical (default: ROS_DISTRO, else jazzy)")
 
 
 def _add_robot_commands(commands) -> None:
     msg = commands.add_parser("msg", help="generate Eiffel classes for a ROS 2 message type",
                               description="Write one Eiffel class per message type: the given ROS 2 type "
-                                          "(pkg/msg/Name, from the ROS 2 Humble type store or --file) and, "
-                                          "recursively, the message types its fields use.")
+                                          "(pkg/msg/Name, from the type store of the ROS 2 distribution, or "
+                                          "--file) and, recursively, the message types its fields use.")
     msg.add_argument("typename", nargs="?", metavar="TYPE", help="e.g. geometry_msgs/msg/Twist")
     msg.add_argument("--file", metavar="MSG", help="a .msg definition of the type (needs --type)")
     msg.add_argument("--type", metavar="TYPE", help="the type name the --file defines (pkg/msg/Name)")
     msg.add_argument("-o", "--output", default=".", metavar="DIR", help="where to write the .e files (default: .)")
+    _add_distro_option(msg)
     msg.add_argument("--all", action="store_true",
                      help="also write the classes the Roboscoop library already has (std_msgs/Header, ...)")
     msg.set_defaults(handler=_command_msg)
@@ -226,7 +240,9 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
     compilation = _compilation(args, root=args.root, assertions=args.assertions)
     options = RunOptions(args.trace_processors, args.strict, args.virtual_clock, args.debug)
     robot = RobotOptions(args.robot, args.world, args.namespace, args.realtime, args.duration, args.goal,
-                         None if args.no_png else (args.png or True), args.gif, args.record)
+                         None if args.no_png else (args.png or True), args.gif, args.record,
+                         ros_distro=args.ros_distro, use_sim_time=args.use_sim_time, wait_robot=args.wait_robot,
+                         require_robot=args.require_robot)
     try:
         compilation.cached_program(use_cache=not args.no_cache)
     finally:

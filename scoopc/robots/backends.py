@@ -58,13 +58,15 @@ def resolve(backend: str | None = None) -> str:
     return "rclpy" if problem is None else "dds"
 
 
-def open_ros2_bus(domain: int | None = None, *, backend: str | None = None, types: dict | None = None):
-    """A ROS 2 bus on `domain` (None: ROS_DOMAIN_ID, default 0), through the chosen backend."""
+def open_ros2_bus(domain: int | None = None, *, backend: str | None = None, types: dict | None = None,
+                  writer_qos: dict | None = None, report=None):
+    """A ROS 2 bus on `domain` (None: ROS_DOMAIN_ID, default 0), through the chosen backend;
+    `writer_qos` ({topic: (reliability, depth)}) and `report` (QoS incompatibilities) are DdsBus's."""
     if resolve(backend) == "rclpy":
         from .rclpy_bus import RclpyBus
         return RclpyBus(domain=domain, types=types)
     from .dds import DdsBus
-    return DdsBus(domain=domain, types=types)
+    return DdsBus(domain=domain, types=types, writer_qos=writer_qos, report=report)
 
 
 def describe(bus) -> str:

@@ -72,6 +72,14 @@ def dds_type_name(typename: str) -> str:
     return f"{package}::{kind}::dds_::{name}_"
 
 
+def ros_type_name(dds_name: str) -> str:
+    """`geometry_msgs::msg::dds_::Twist_` -> `geometry_msgs/msg/Twist` (other names unchanged)."""
+    parts = dds_name.split("::")
+    if len(parts) == 4 and parts[2] == "dds_" and parts[3].endswith("_"):
+        return f"{parts[0]}/{parts[1]}/{parts[3][:-1]}"
+    return dds_name
+
+
 def _parts(topic: str) -> list[str]:
     return [part for part in topic.split("/") if part]
 
@@ -86,13 +94,20 @@ def topic_kind(topic: str) -> str:
     return "command"
 
 
-def qos_policies(topic: str) -> list:
+def qos_policies(topic: str, reliability: str | None = None, depth: int | None = None) -> list:
+    """The QoS of `topic`'s readers and writers by its family (see the module's docstring);
+    `reliability` ("reliable" or "best_effort") and `depth` override the family's (a writer
+    standing for a driver that publishes reliably, a profile's QoS)."""
     kind = topic_kind(topic)
     if kind == "command":
-        return [Policy.Reliability.Reliable(max_blocking_time=duration(milliseconds=100)),
-                Policy.Durability.Volatile, Policy.History.KeepLast(10)]
-    depth = 5 if kind == "sensor" else 1
-    return [Policy.Reliability.BestEffort, Policy.Durability.Volatile, Policy.History.KeepLast(depth)]
+        reliability, depth = reliability or "reliable", depth or 10
+    else:
+        reliability, depth = reliability or "best_effort", depth or (5 if kind == "sensor" else 1)
+    if reliability == "reliable":
+        rel = Policy.Reliability.Reliable(max_blocking_time=duration(milliseconds=100))
+    else:
+        rel = Policy.Reliability.BestEffort
+    return [rel, Policy.Durability.Volatile, Policy.History.KeepLast(depth)]
 
 
 def default_type(topic: str) -> str | None:
@@ -105,6 +120,140 @@ def default_type(topic: str) -> str | None:
 
 def domain_id() -> int:
     return int(os.environ.get("ROS_DOMAIN_ID", "0") or 0)
+
+
+# ---- discovery, as rmw_cyclonedds_cpp configures its domain ----------------------------------
+
+RANGES = ("SUBNET", "LOCALHOST", "OFF", "SYSTEM_DEFAULT")
+
+
+class DiscoveryError(ValueError):
+    """Discovery settings that cannot be used (two buses of one process asking different ones)."""
+
+
+def discovery_settings(distro: str, environ=None) -> tuple[str, list[str], list[str]]:
+    """(range, static peers, warnings) from the environment, as rcl reads it for `distro`.
+
+    Humble (rcl/src/rcl/localhost.c, rcl_get_localhost_only, humble branch): only
+    ROS_LOCALHOST_ONLY exists; "1" is "LOCALHOST_ONLY", else "SUBNET" (Humble's default).
+    Jazzy and later (rcl/src/rcl/init.c rcl_init and discovery_options.c, rcl 9.2):
+    ROS_LOCALHOST_ONLY=1 still wins (deprecated) and means LOCALHOST without static peers;
+    else ROS_AUTOMATIC_DISCOVERY_RANGE ("" is SUBNET, an unknown value LOCALHOST with a warning)
+    and ROS_STATIC_PEERS (";"-separated, not read when the range is OFF)."""
+    environ = os.environ if environ is None else environ
+    warnings = []
+    localhost = environ.get("ROS_LOCALHOST_ONLY", "")
+    if distro == "humble":
+        if "ROS_AUTOMATIC_DISCOVERY_RANGE" in environ or "ROS_STATIC_PEERS" in environ:
+            warnings.append("ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS do not exist in Humble: "
+                            "ignored (ROS_LOCALHOST_ONLY=1 keeps discovery on this machine)")
+        return ("LOCALHOST_ONLY" if localhost == "1" else "SUBNET"), [], warnings
+    if localhost.startswith("1"):
+        warnings.append("ROS_LOCALHOST_ONLY is deprecated but still honored: discovery range LOCALHOST, "
+                        "ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS ignored")
+        return "LOCALHOST", [], warnings
+    value = environ.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "")
+    if value == "":
+        rng = "SUBNET"
+    elif value in RANGES:
+        rng = value
+    else:
+        warnings.append(f"invalid ROS_AUTOMATIC_DISCOVERY_RANGE={value!r}: assuming LOCALHOST "
+                        f"(valid: {', '.join(RANGES)})")
+        rng = "LOCALHOST"
+    peers = [] if rng == "OFF" else [p for p in environ.get("ROS_STATIC_PEERS", "").split(";") if p]
+    if peers and rng == "SYSTEM_DEFAULT":
+        warnings.append(f"{len(peers)} static peers were given, but the discovery range is SYSTEM_DEFAULT: ignored")
+    return rng, peers, warnings
+
+
+def discovery_config(distro: str, environ=None, pid: int | None = None) -> tuple[str, str, list[str]]:
+    """(Cyclone DDS configuration, a short description, warnings) of a participant's domain, built
+    as rmw_cyclonedds_cpp builds it (rmw_cyclonedds_cpp/src/rmw_node.cpp, check_create_domain:
+    humble branch for ROS_LOCALHOST_ONLY, jazzy branch for the discovery range and static peers),
+    CYCLONEDDS_URI appended after our fragment (so its settings win where both set one)."""
+    environ = os.environ if environ is None else environ
+    rng, peers, warnings = discovery_settings(distro, environ)
+    if rng == "LOCALHOST_ONLY":               # humble: bind to the loopback interface
+        config = ('<CycloneDDS><Domain><General><Interfaces><NetworkInterface address="127.0.0.1"/>'
+                  '</Interfaces></General></Domain></CycloneDDS>,')
+        text = "localhost only (ROS_LOCALHOST_ONLY=1)"
+    elif distro == "humble":                  # humble: nothing but CYCLONEDDS_URI
+        config, text = "", "discovery as Cyclone DDS's configuration says"
+    else:
+        localhost_peer = rng == "LOCALHOST"
+        add_peers = rng in ("SUBNET", "LOCALHOST")
+        no_multicast = rng in ("LOCALHOST", "OFF")
+        config = ""
+        if localhost_peer or add_peers or no_multicast:
+            config = "<CycloneDDS><Domain>"
+            if no_multicast:
+                config += "<General><AllowMulticast>false</AllowMulticast></General>"
+            if no_multicast and not localhost_peer and not add_peers:     # OFF
+                pid = os.getpid() if pid is None else pid
+                config += f"<Discovery><ParticipantIndex>none</ParticipantIndex><Tag>ros_discovery_off_{pid}</Tag>"
+            else:
+                config += "<Discovery><ParticipantIndex>auto</ParticipantIndex>"
+                config += "<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex>"
+            if (add_peers and peers) or localhost_peer:
+                config += "<Peers>"
+                if localhost_peer:
+                    config += '<Peer address="localhost"/>'
+                config += "".join(f'<Peer address="{peer}"/>' for peer in peers if add_peers)
+                config += "</Peers>"
+            config += "</Discovery></Domain></CycloneDDS>,"
+        text = f"discovery {rng}" + (f", static peers {', '.join(peers)}" if peers and add_peers else "")
+    uri = environ.get("CYCLONEDDS_URI", "")
+    config += uri
+    if uri:
+        text += ", CYCLONEDDS_URI"
+    return config, text, warnings
+
+
+_domains: dict = {}                 # [_domains_lock] domain id -> [Domain, refcount, config]
+_domains_lock = threading.Lock()
+
+
+def _acquire_domain(domain: int, config: str):
+    """Create the DDS domain with `config` (once per process and id, reference counted; a second
+    bus asking other settings is refused, as rmw_cyclonedds_cpp's check_create_domain does)."""
+    from cyclonedds.domain import Domain
+    with _domains_lock:
+        entry = _domains.get(domain)
+        if entry is not None:
+            if entry[2] != config:
+                raise DiscoveryError(f"domain {domain} is already open in this process with other "
+                                     f"discovery settings")
+            entry[1] += 1
+            return True
+        try:
+            made = Domain(domain, config)
+        except Exception:                    # noqa: BLE001 - a participant made without us holds it
+            return False
+        _domains[domain] = [made, 1, config]
+        return True
+
+
+def _release_domain(domain: int) -> None:
+    with _domains_lock:
+        entry = _domains.get(domain)
+        if entry is None:
+            return
+        entry[1] -= 1
+        if entry[1] == 0:
+            del _domains[domain]
+            entry[0].__del__()
+
+
+#: DDS QoS policy ids (Cyclone DDS's dds_qos_policy_id_t) named in incompatibility reports
+_POLICIES = {2: "durability", 4: "deadline", 8: "liveliness", 11: "reliability", 12: "destination order",
+             13: "history", 23: "data representation", 24: "type consistency"}
+
+
+def reliability_of(topic: str, override: str | None = None) -> str:
+    """"reliable" or "best effort": the reliability `qos_policies` gives `topic`."""
+    chosen = override or ("reliable" if topic_kind(topic) == "command" else "best_effort")
+    return "reliable" if chosen == "reliable" else "best effort"
 
 
 #: Cyclone DDS settings that keep every participant on 127.0.0.1 (no multicast, unicast discovery)
@@ -178,10 +327,15 @@ def type_hash(typename: str, store=None) -> str:
     return (ros_messages.typestore() if store is None else store).hash_rihs01(typename)
 
 
-def qos_for(topic: str, typename: str, store=None) -> Qos:
-    """The QoS of a ROS topic's readers and writers (with the type hash in the user data)."""
+def qos_for(topic: str, typename: str, store=None, reliability=None, depth=None, distro=None) -> Qos:
+    """The QoS of a ROS topic's readers and writers, with the type hash in the user data from
+    Iron on (rmw_cyclonedds_cpp/src/rmw_node.cpp create_readwrite_qos, jazzy branch; Humble's
+    create_readwrite_qos sets no endpoint user data)."""
+    policies = qos_policies(topic, reliability, depth)
+    if (distro or ros_messages.distro()) == "humble":
+        return Qos(*policies)
     userdata = f"typehash={type_hash(typename, store)};".encode()
-    return Qos(*qos_policies(topic), Policy.Userdata(data=userdata))
+    return Qos(*policies, Policy.Userdata(data=userdata))
 
 
 def frame(payload: bytes) -> bytes:
@@ -202,6 +356,7 @@ class _Reader:
         self.reader = reader
         self.condition = condition
         self.subs = []           # [DdsBus._lock] open Subscriptions, in subscription order
+        self.count = 0           # samples received (read by the "nothing heard" report)
 
 
 class DdsBus(Tapped):
@@ -209,12 +364,32 @@ class DdsBus(Tapped):
 
     own_thread_callbacks = True               # the reader thread (see bus.Bus)
 
-    def __init__(self, domain: int | None = None, types: dict | None = None, store=None):
+    def __init__(self, domain: int | None = None, types: dict | None = None, store=None, *,
+                 writer_qos=None, reader_qos=None, environ=None, report=None):
+        """`writer_qos`/`reader_qos`: {ROS topic: (reliability, depth)} overriding the topic family's
+        QoS ("reliable" or "best_effort"; depth None keeps the family's); `environ`: where the
+        discovery variables are read (default os.environ); `report(text)`: where QoS
+        incompatibilities are told, once per topic (default: the log)."""
         self.domain = domain_id() if domain is None else domain
         self.store = store
+        self.distro = ros_messages.distro()
         self.types = dict(types or {})
+        self.writer_qos = dict(writer_qos or {})
+        self.reader_qos = dict(reader_qos or {})
+        self.report = report or (lambda text: log.warning("%s", text))
         self.errors = []                      # exceptions raised by callbacks (the first few)
-        self.participant = DomainParticipant(self.domain)
+        self.reported = set()                 # topics whose QoS incompatibility was told
+        self._history = {}                    # [_lock] topic -> (publishers, samples) of closed readers
+        config, self.discovery, self.discovery_warnings = discovery_config(self.distro, environ)
+        self._held = _acquire_domain(self.domain, config)
+        if not self._held:
+            self.discovery += " (not applied: another participant of this process opened the domain first)"
+        try:
+            self.participant = DomainParticipant(self.domain, qos=Qos(Policy.Userdata(data=b"enclave=/;")))
+        except Exception:
+            if self._held:
+                _release_domain(self.domain)
+            raise
         self._lock = threading.RLock()
         self._topics = {}                     # [_lock] ROS topic -> (typename, Topic)
         self._writers = {}                    # [_lock] ROS topic -> DataWriter
@@ -247,7 +422,8 @@ class DdsBus(Tapped):
             writer = self._writers.get(topic)
             if writer is None:
                 dds_topic = self._topic(topic, typename)
-                writer = DataWriter(self.participant, dds_topic, qos=qos_for(topic, typename, self.store))
+                writer = DataWriter(self.participant, dds_topic,
+                                    qos=qos_for(topic, typename, self.store, *self.writer_qos.get(topic, (None, None))))
                 self._writers[topic] = writer
                 self._own.add(writer.get_instance_handle() & _HANDLE_MASK)    # as SampleInfo has it: unsigned
             elif self._topics[topic][0] != typename:
@@ -294,7 +470,8 @@ class DdsBus(Tapped):
             entry = self._readers.get(topic)
             if entry is None:
                 dds_topic = self._topic(topic, typename)
-                reader = DataReader(self.participant, dds_topic, qos=qos_for(topic, typename, self.store))
+                reader = DataReader(self.participant, dds_topic,
+                                    qos=qos_for(topic, typename, self.store, *self.reader_qos.get(topic, (None, None))))
                 condition = ReadCondition(reader, SampleState.NotRead | ViewState.Any | InstanceState.Any)
                 entry = _Reader(topic, typename, dds_topic, reader, condition)
                 self._readers[topic] = entry
@@ -314,6 +491,7 @@ class DdsBus(Tapped):
                 return
             entry.subs.remove(sub)
             if not entry.subs and not self._closed:
+                self._remember(entry)
                 del self._readers[sub.topic]
                 self._waitset.detach(entry.condition)
                 entry.condition.__del__()
@@ -339,6 +517,97 @@ class DdsBus(Tapped):
         with self._lock:
             entry = self._readers[topic]
         return self._wait_matched(lambda: entry.reader.get_subscription_matched_status().current_count > 0, timeout)
+
+    # -- what the graph holds (the "nothing heard" report) ----------------------------------------
+    def _remember(self, entry) -> None:
+        """Keep what a reader heard once it is deleted (the report at the end of a run) [_lock]."""
+        try:
+            publishers = entry.reader.get_subscription_matched_status().current_count
+        except Exception:                    # noqa: BLE001 - being deleted
+            publishers = 0
+        before = self._history.get(entry.topic, (0, 0))
+        self._history[entry.topic] = (max(publishers, before[0]), entry.count + before[1])
+
+    def heard(self) -> dict:
+        """{ROS topic subscribed (now or before): (matched publishers, samples received)}."""
+        with self._lock:
+            entries = list(self._readers.values())
+            found = dict(self._history)
+        for e in entries:
+            publishers = e.reader.get_subscription_matched_status().current_count
+            before = found.get(e.topic, (0, 0))
+            found[e.topic] = (max(publishers, before[0]), e.count + before[1])
+        return found
+
+    def graph_topics(self, readers: bool = False) -> dict:
+        """{ROS topic: ROS type name} of every writer (`readers`: reader) discovery knows of, in any
+        participant (this one's too)."""
+        from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication, BuiltinTopicDcpsSubscription
+        with self._lock:
+            self._check_open()
+            graph = self.__dict__.setdefault("_graph", {})
+            if readers not in graph:
+                graph[readers] = BuiltinDataReader(
+                    self.participant, BuiltinTopicDcpsSubscription if readers else BuiltinTopicDcpsPublication)
+            found = {}
+            for sample in graph[readers].read(N=4096) or ():
+                name = getattr(sample, "topic_name", "")
+                if name.startswith("rt/"):
+                    found[name[2:]] = ros_type_name(getattr(sample, "type_name", ""))
+        return found
+
+    def unmatched_writers(self) -> list[tuple[str, str, str]]:
+        """[(topic, our type, the type a reader of the graph asks)] for our writers that no reader
+        matched while some node reads the topic with another type (Twist against TwistStamped)."""
+        with self._lock:
+            writers = [(t, w, self._topics[t][0]) for t, w in self._writers.items()]
+        lonely = [(t, typename) for t, w, typename in writers if w.get_publication_matched_status().current_count == 0]
+        if not lonely:
+            return []
+        graph = self.graph_topics(readers=True)
+        return [(t, typename, graph[t]) for t, typename in lonely if t in graph and graph[t] != typename]
+
+    def check_qos(self) -> list[str]:
+        """New QoS incompatibilities (each topic once), told through `report` and returned:
+        "/robot1/odom: the publisher is best effort, this reader asks reliable"."""
+        found = []
+        with self._lock:
+            if self._closed:
+                return found
+            readers = [(t, e.reader, self.reader_qos.get(t, (None, None))) for t, e in self._readers.items()]
+            writers = [(t, w, self.writer_qos.get(t, (None, None))) for t, w in self._writers.items()]
+        for topic, reader, override in readers:
+            if topic in self.reported:
+                continue
+            status = reader.get_requested_incompatible_qos_status()
+            if status.total_count:
+                mine = reliability_of(topic, override[0])
+                policy = int(status.last_policy_id)
+                if policy == 11:
+                    other = "best effort" if mine == "reliable" else "reliable"
+                    found.append((topic, f"{topic}: the publisher is {other}, this reader asks {mine}"))
+                else:
+                    found.append((topic, f"{topic}: a publisher's QoS is incompatible with this reader's "
+                                         f"({_POLICIES.get(policy, f'policy {policy}')})"))
+        for topic, writer, override in writers:
+            if topic in self.reported:
+                continue
+            status = writer.get_offered_incompatible_qos_status()
+            if status.total_count:
+                mine = reliability_of(topic, override[0])
+                policy = int(status.last_policy_id)
+                if policy == 11:
+                    found.append((topic, f"{topic}: a subscriber asks reliable, this publisher is {mine}"))
+                else:
+                    found.append((topic, f"{topic}: a subscriber's QoS is incompatible with this publisher's "
+                                         f"({_POLICIES.get(policy, f'policy {policy}')})"))
+        texts = []
+        for topic, text in found:
+            if topic not in self.reported:
+                self.reported.add(topic)
+                texts.append(text)
+                self.report(text)
+        return texts
 
     @staticmethod
     def _wait_matched(matched, timeout):
@@ -377,6 +646,7 @@ class DdsBus(Tapped):
                 return
             if not samples:
                 return
+            entry.count += len(samples)
             for data, info in samples:
                 if not info.valid_data:
                     continue
@@ -427,7 +697,11 @@ class DdsBus(Tapped):
             for _, entity in self._topics.values():
                 entity.__del__()
             self._topics.clear()
+            for reader in self.__dict__.pop("_graph", {}).values():
+                reader.__del__()
             self.participant.__del__()
+        if self._held:
+            _release_domain(self.domain)
 
     def __enter__(self):
         return self

@@ -56,8 +56,10 @@ def _host(desc: tuple, value: Any, store) -> Any:
 def to_message(obj: Any, typename: str | None = None, store=None) -> Any:
     """The type-store message with the field values of an Eiffel object of a generated class."""
     typename = typename or typename_of_class(type(obj).__name__, store)
+    # exactly the chosen distribution's layout: a field the class lacks (a class generated for
+    # another distribution) keeps its default, one the distribution lacks is left out
     values = {field: _host(desc, getattr(obj, python_name(field)), store)
-              for field, desc in ros_messages.fields(typename, store)}
+              for field, desc in ros_messages.fields(typename, store) if hasattr(obj, python_name(field))}
     return ros_messages.new(typename, store, **values)
 
 
@@ -93,6 +95,12 @@ def from_message(msg: Any, region, store=None) -> Any:
     from .. import kernel
     typename = ros_messages.typename_of(msg)
     obj = region.new(kernel.cls(class_name(typename)))
-    for field, desc in ros_messages.fields(typename, store):
+    described = ros_messages.fields(typename, store)
+    for field, desc in described:
         setattr(obj, python_name(field), _eiffel(desc, getattr(msg, field), region, store))
+    if store is None:                        # fields of other distributions the class carries: defaults
+        present = {field for field, _ in described}
+        for field, desc in ros_messages.union_fields(typename):
+            if field not in present and desc[0] == BASE:
+                setattr(obj, python_name(field), _eiffel(desc, ros_messages.default_value(desc), region, store))
     return obj

@@ -12,6 +12,7 @@ Naming scheme (documented in docs/ROBOTS.md, "ROS 2 messages"):
 """
 from __future__ import annotations
 
+import functools
 import os
 import re
 import sys
@@ -84,10 +85,26 @@ def _manifest(base: str, value) -> str | None:
     return str(int(value)) if type_ else None
 
 
+def _fields_and_constants(typename: str, store):
+    """The fields and constants a class carries: the library's classes (store None) those of every
+    supported distribution (Jazzy's sensor_msgs/Range `variance` too), so that one compiled
+    program runs on each; other types those of `store` (the chosen distribution's by default)."""
+    if store is None and typename in library_types():
+        constants: dict = {}
+        for distro in reversed(list(ros_messages.DISTROS)):
+            each = ros_messages.store_of(distro)
+            if typename in each.fielddefs:
+                for const, base, value in each.fielddefs[typename][0]:
+                    constants.setdefault(const, (const, base, value))
+        return ros_messages.union_fields(typename), list(constants.values())
+    return ros_messages.fields(typename, store), ros_messages.constants(typename, store)
+
+
 def generate_class(typename: str, store=None) -> str:
     """The text of the Eiffel class for one message type."""
     name = class_name(typename)
-    fields = [(attribute_name(f), desc) for f, desc in ros_messages.fields(typename, store)]
+    described, constants = _fields_and_constants(typename, store)
+    fields = [(attribute_name(f), desc) for f, desc in described]
     attrs = {a for a, _ in fields}
     body_make, needs_index = [], False
     for attr, desc in fields:
@@ -119,12 +136,12 @@ def generate_class(typename: str, store=None) -> str:
                                                                           "feature -- Constants", "",
                                                                           f'\tRos_type: STRING = "{typename}"',
                                                                           "\t\t\t-- The ROS 2 type name."]
-    for const, base, value in ros_messages.constants(typename, store):
+    for const, base, value in constants:
         manifest = _manifest(base, value)
         if manifest is not None:
             lines += ["", f"\t{_constant_name(const, attrs)}: {BASIC[base]} = {manifest}"]
     lines += ["", "feature -- Access"]
-    for (attr, desc), (field, _) in zip(fields, ros_messages.fields(typename, store)):
+    for (attr, desc), (field, _) in zip(fields, described):
         lines += ["", f"\t{attr}: {eiffel_type(desc)}", f"\t\t\t-- Field `{field}'."]
     lines += ["", "feature -- Element change"]
     for attr, desc in fields:
@@ -144,14 +161,19 @@ LIBRARY_TYPES = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped", "g
                  "std_msgs/msg/Header", "rosgraph_msgs/msg/Clock")
 
 
-def library_types() -> list[str]:
-    """Every type with a class in the library (LIBRARY_TYPES and the types their fields use)."""
+@functools.cache
+def _library_types(distro: str) -> tuple:
     found = []
     for typename in LIBRARY_TYPES:
         for each in ros_messages.nested_types(typename):
             if each not in found:
                 found.append(each)
-    return found
+    return tuple(found)
+
+
+def library_types() -> list[str]:
+    """Every type with a class in the library (LIBRARY_TYPES and the types their fields use)."""
+    return list(_library_types(ros_messages.distro()))
 
 
 def generate_library(output: str) -> list[str]:
@@ -180,6 +202,12 @@ def generate_types(typenames, output: str, store=None) -> list[str]:
 
 def command_msg(args) -> int:
     """`scoopc msg TYPE [-o DIR]` / `scoopc msg --file X.msg --type pkg/msg/X [-o DIR]`."""
+    try:
+        distro, source = ros_messages.resolve_distro(getattr(args, "ros_distro", None))
+    except ros_messages.DistroError as e:
+        raise UsageError(str(e)) from None
+    ros_messages.use_distro(distro)
+    print(f"scoopc: ROS 2 {distro} ({source})", file=sys.stderr)
     store = None
     typename = args.type or args.typename
     if not typename:

@@ -1,4 +1,9 @@
-"""The message model: ROS 2 message types come from rosbags' type store (ROS 2 Humble).
+"""The message model: ROS 2 message types come from rosbags' type store of one ROS 2 distribution.
+
+The distribution (`DISTROS`: humble, jazzy, lyrical) is chosen once per process, before the first
+message is made: `use_distro(name)` (scoopc run/sim/msg with `--ros-distro`, else `ROS_DISTRO`, else
+jazzy: `resolve_distro`). `typestore()` is that distribution's store; message definitions, CDR
+layouts and type hashes follow it (Jazzy's sensor_msgs/Range has `variance`, Humble's has not).
 
 A message object IS an instance of the type store's dataclass. `new(typename, **fields)` builds one
 with ROS 2 default values for every omitted field (0, 0.0, False, "", zero-filled fixed arrays,
@@ -10,7 +15,7 @@ A field description is rosbags' `(Nodetype, detail)` pair: `(BASE, (name, bound)
 """
 from __future__ import annotations
 
-from functools import lru_cache
+from functools import cache
 from typing import Any
 
 import numpy as np
@@ -32,16 +37,71 @@ DTYPES = {
 STRING_TYPES = ("string", "wstring")
 
 
-@lru_cache(maxsize=1)
+#: the supported ROS 2 distributions and rosbags' type store of each
+DISTROS = {"humble": Stores.ROS2_HUMBLE, "jazzy": Stores.ROS2_JAZZY, "lyrical": Stores.ROS2_LYRICAL}
+DEFAULT_DISTRO = "jazzy"
+_distro = [DEFAULT_DISTRO]            # the process's distribution (set by use_distro)
+
+
+class DistroError(ValueError):
+    """An unknown ROS 2 distribution name."""
+
+
+def resolve_distro(option: str | None = None, environ=None) -> tuple[str, str]:
+    """(distribution, where it came from): `option` (--ros-distro), else ROS_DISTRO, else jazzy."""
+    import os
+    environ = os.environ if environ is None else environ
+    for value, source in ((option, "--ros-distro"), (environ.get("ROS_DISTRO"), "ROS_DISTRO")):
+        if value:
+            name = value.strip().lower()
+            if name not in DISTROS:
+                hint = " (or pass --ros-distro)" if source == "ROS_DISTRO" else ""
+                raise DistroError(f"{source}={value!r} is not a supported ROS 2 distribution: use one of "
+                                  f"{', '.join(DISTROS)}{hint}")
+            return name, source
+    return DEFAULT_DISTRO, "the default"
+
+
+def use_distro(name: str) -> None:
+    """Make `name` the process's distribution (its type store becomes `typestore()`)."""
+    name = name.lower()
+    if name not in DISTROS:
+        raise DistroError(f"{name!r} is not a supported ROS 2 distribution: use one of {', '.join(DISTROS)}")
+    _distro[0] = name
+
+
+def distro() -> str:
+    """The process's ROS 2 distribution ("humble", "jazzy" or "lyrical")."""
+    return _distro[0]
+
+
+@cache
+def store_of(name: str):
+    """rosbags' type store of a distribution (one per process and distribution)."""
+    return get_typestore(DISTROS[name])
+
+
 def typestore():
-    """The process-wide default type store (ROS 2 Humble)."""
-    return get_typestore(Stores.ROS2_HUMBLE)
+    """The process's default type store: the chosen distribution's."""
+    return store_of(_distro[0])
+
+
+def union_fields(typename: str) -> list[tuple[str, tuple]]:
+    """The fields of `typename` in every supported distribution: the newest layout's order, then
+    fields only older ones have (what the library's Eiffel message classes carry)."""
+    seen: dict = {}
+    for name in reversed(list(DISTROS)):
+        store = store_of(name)
+        if typename in store.fielddefs:
+            for field, desc in store.fielddefs[typename][1]:
+                seen.setdefault(field, desc)
+    return list(seen.items())
 
 
 def store_with(definitions: dict[str, str], base=None):
-    """A fresh type store (ROS 2 Humble, plus `base`'s extra types if given) in which the given
-    `.msg` definitions ({typename: text}) are registered. The default store is never changed."""
-    store = get_typestore(Stores.ROS2_HUMBLE)
+    """A fresh type store (the process's distribution) in which the given `.msg` definitions
+    ({typename: text}) are registered. The default store is never changed."""
+    store = get_typestore(DISTROS[_distro[0]])
     types: dict = {}
     for name, text in definitions.items():
         types.update(get_types_from_msg(text, name))

@@ -58,10 +58,20 @@ class RobotOptions:
     png: str | Path | bool | None = None    # the trajectory picture; True: <program>.png
     gif: str | Path | None = None
     record: str | Path | None = None       # an MCAP recording of every topic
+    ros_distro: str | None = None    # humble, jazzy or lyrical; None: ROS_DISTRO, else jazzy
+    use_sim_time: bool = False          # ROS 2: stamp commands with the latest /clock, not the system clock
+    wait_robot: float = 3.0             # ROS 2: seconds before silent topics are reported
+    require_robot: bool = False         # ROS 2: a topic still silent after `wait_robot` fails the run (exit 3)
 
     def __post_init__(self):
         if self.robot not in (None, "sim", "ros2", "none"):
             raise UsageError(f"robot must be sim, ros2 or none, not {self.robot!r}")
+        if self.ros_distro is not None:
+            from .ros_messages import DISTROS
+            if self.ros_distro.lower() not in DISTROS:
+                raise UsageError(f"ros_distro must be one of {', '.join(DISTROS)}, not {self.ros_distro!r}")
+        if not (self.wait_robot >= 0):
+            raise UsageError(f"wait_robot must be 0 seconds or more, not {self.wait_robot!r}")
 
 
 @dataclass
@@ -74,6 +84,7 @@ class RobotSettings:
     goal: tuple | None = None
     station: tuple | None = None        # (x, y, radius)
     duration: float = -1.0
+    distro: str = "jazzy"               # the ROS 2 distribution (ROBOT_ENVIRONMENT.ros_distro)
 
 
 ROS2_LIMITS = (0.2, 1.0)                # speed limits reported for a ROS 2 robot (m/s, rad/s)
@@ -342,14 +353,10 @@ def describe_end(result, wall) -> str:
     return line
 
 
-def open_ros2_bus():
+def open_ros2_bus(report=None):
     """The ROS 2 transport: rclpy or DDS (see scoopc.robots.backends), else cyclonedds directly."""
-    try:
-        from .backends import open_ros2_bus as choose
-    except ImportError:
-        from .dds import DdsBus
-        return DdsBus()
-    return choose()
+    from .backends import open_ros2_bus as choose
+    return choose(report=report)
 
 
 def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=None) -> RunResult:
@@ -359,10 +366,17 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
     stderr = stderr or sys.stderr
     progress = _progress_line(stderr)
     wall = time.monotonic()
-    if options.robot == "sim":
-        result = _run_simulated(options, launch, program_paths, program_name, stderr, progress)
-    else:
-        result = _run_ros2(options, launch, stderr)
+    distro = choose_distro(options.ros_distro)
+    if options.robot != "sim":
+        stderr.write(f"scoopc: ROS 2 {distro[0]} ({distro[1]})\n")
+    from . import velocity
+    try:
+        if options.robot == "sim":
+            result = _run_simulated(options, launch, program_paths, program_name, stderr, progress)
+        else:
+            result = _run_ros2(options, launch, stderr)
+    finally:
+        velocity.use_clock(None)
     if progress is not None:
         progress("", final=True)
     if result.sim is not None:
@@ -372,16 +386,30 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
     return result
 
 
+def choose_distro(option=None) -> tuple[str, str]:
+    """Resolve and install the run's ROS 2 distribution: (name, where the choice came from)."""
+    from . import ros_messages
+    try:
+        name, source = ros_messages.resolve_distro(option)
+    except ros_messages.DistroError as e:
+        raise RobotError(str(e)) from None
+    ros_messages.use_distro(name)
+    return name, source
+
+
 def _run_simulated(options, launch, program_paths, program_name, stderr, progress) -> RunResult:
+    from . import ros_messages, velocity
     from .bus import Bus
     from .sim.simulator import Simulator
     world, source = find_world(program_paths, options.world)
     settings = sim_settings(world, options.namespace, options.goal, options.duration)
+    settings.distro = ros_messages.distro()
     bus = Bus()
     clock = _Later()
     recorder = _recorder(bus, options.record, clock)
     sim = Simulator(world, bus)
     clock.read = lambda: sim.time_ns
+    velocity.use_clock(clock)                    # stamps in simulated time, as /clock tells it
     if progress is not None:
         progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
     png = f"{program_name.lower()}.png" if options.png is True else (options.png or None)
@@ -390,26 +418,75 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
 
 
 def _run_ros2(options, launch, stderr) -> RunResult:
+    from . import ros_messages, velocity
     settings = ros2_settings(options.namespace, options.goal, options.duration)
+    settings.distro = ros_messages.distro()
     try:
-        bus = open_ros2_bus()
+        bus = open_ros2_bus(report=lambda text: _say(stderr, text))
     except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
         raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
+    for warning in getattr(bus, "discovery_warnings", ()):
+        _say(stderr, warning)
+    if getattr(bus, "discovery", None):
+        _say(stderr, f"domain {bus.domain}, {bus.discovery}")
     try:
         recorder = _recorder(bus, options.record)
+        if options.use_sim_time:
+            velocity.use_clock(_sim_time(bus))
     except RobotError:
         _close_ros2(bus)
         raise
     expired = threading.Event()
+    watch = Watch(bus, options.wait_robot, options.require_robot, stderr)
     try:
         result = run_with_robot(lambda on_start: launch(on_start, None), settings, bus, recorder=recorder,
-                                stderr=stderr, extra_start=_deadline(settings.duration, expired))
+                                stderr=stderr, extra_start=_starts(_deadline(settings.duration, expired), watch.start))
+        watch.finish()
+        if watch.failed:
+            result.status = 3
+            result.stopped_by = "require_robot"
+        elif expired.is_set() or result.status > 128:
+            watch.summary()
     finally:
+        watch.finish()
         _close_ros2(bus)
-    if expired.is_set():
+    if expired.is_set() and not watch.failed:
         result.stopped_by = "duration"
         stderr.write(f"scoopc: stopped the program after {settings.duration:g} s (--duration)\n")
     return result
+
+
+def _say(stderr, text):
+    stderr.write(f"scoopc: {text}\n")
+    stderr.flush()
+
+
+class _SimTime:
+    """ROS time from /clock (use_sim_time): the latest Clock message, 0 before the first."""
+
+    def __init__(self):
+        self.ns = 0
+
+    def __call__(self):
+        return self.ns
+
+    def on_clock(self, msg):
+        self.ns = msg.clock.sec * 1_000_000_000 + msg.clock.nanosec
+
+
+def _sim_time(bus):
+    clock = _SimTime()
+    bus.subscribe("/clock", clock.on_clock)
+    return clock
+
+
+def _starts(*hooks):
+    hooks = [hook for hook in hooks if hook is not None]
+
+    def on_start(rt):
+        for hook in hooks:
+            hook(rt)
+    return on_start if hooks else None
 
 
 def _deadline(duration, expired):
@@ -427,6 +504,125 @@ def _deadline(duration, expired):
         timer.start()
         rt.shutdown_hooks.append(timer.cancel)
     return on_start
+
+
+def nearby(topic: str, graph) -> list[str]:
+    """Topics of the graph that look like `topic` under another namespace (same last names)."""
+    parts = [p for p in topic.split("/") if p]
+    found = []
+    for other in sorted(graph):
+        if other == topic:
+            continue
+        theirs = [p for p in other.split("/") if p]
+        for n in (2, 1):
+            if len(parts) >= n and len(theirs) >= n and theirs[-n:] == parts[-n:] and \
+                    (n == 2 or parts[-1] not in ("left", "right", "center")):
+                found.append(other)
+                break
+    return found
+
+
+class Watch:
+    """On a ROS 2 robot: after `wait` seconds, says once which subscribed topics are silent (no
+    publisher, or no message) and what the graph holds nearby; with `require`, then stops the run
+    (exit 3). Until the end it reports QoS incompatibilities (each topic once). `summary()`: one
+    line of what was heard (Ctrl-C, the end of --duration)."""
+
+    def __init__(self, bus, wait, require, stderr):
+        self.bus, self.wait, self.require, self.stderr = bus, wait, require, stderr
+        self.failed = False
+        self.reported = False
+        self._done = threading.Event()
+        self._thread = None
+
+    def start(self, rt):
+        if not hasattr(self.bus, "heard"):
+            return                               # a backend without the graph queries (rclpy)
+        self._thread = threading.Thread(target=self._run, args=(rt,), name="scoopc-robot-watch", daemon=True)
+        self._thread.start()
+        rt.shutdown_hooks.append(self._done.set)
+
+    def _run(self, rt):
+        deadline = time.monotonic() + self.wait
+        while not self._done.is_set():
+            try:
+                self.bus.check_qos()
+                if not self.reported and time.monotonic() >= deadline:
+                    self.reported = True
+                    silent = self.report_silence()
+                    if silent and self.require:
+                        self.failed = True
+                        rt.stop()
+                        return
+            except Exception as e:           # noqa: BLE001 - the bus closed under us: the run is over
+                if not self._done.is_set():
+                    _say(self.stderr, f"could not watch the robot's topics: {e}")
+                return
+            self._done.wait(min(0.25, max(0.0, deadline - time.monotonic())) if not self.reported else 0.5)
+
+    def report_silence(self) -> list[str]:
+        heard = self.bus.heard()
+        silent = {topic: ("no publisher" if publishers == 0 else "a publisher, no message")
+                  for topic, (publishers, count) in sorted(heard.items()) if publishers == 0 or count == 0}
+        problems = self._command_mismatches()
+        if not silent and not problems:
+            return []
+        graph = self.bus.graph_topics() if silent else {}
+        lines = []
+        if silent:
+            what = "; ".join(f"{topic} ({why})" for topic, why in silent.items())
+            lines.append(f"after {self.wait:g} s, nothing heard on {what}")
+            hints = {}
+            for topic in silent:
+                for other in nearby(topic, graph):
+                    hints.setdefault(other, topic)
+            if hints:
+                lines.append("the ROS graph has " + ", ".join(f"{other} (this program asked {asked})"
+                                                             for other, asked in hints.items())
+                             + ": is the namespace right? (--namespace)")
+            elif not graph:
+                lines.append("no other ROS 2 node publishes anything in this domain: is the robot on, in the same "
+                             "ROS_DOMAIN_ID, and reachable (ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_STATIC_PEERS)?")
+            lines.append("exiting (--require-robot)" if self.require else "still waiting")
+        for line in problems + lines:
+            _say(self.stderr, line)
+        return list(silent) + problems
+
+    def _command_mismatches(self) -> list[str]:
+        """A velocity topic nobody reads, while a node reads it with another type (Twist/TwistStamped)."""
+        wanted = getattr(self.bus, "unmatched_writers", None)
+        if wanted is None:
+            return []
+        found = []
+        for topic, ours, theirs in wanted():
+            found.append(f"{topic}: the robot reads {theirs}, this program sends {ours}: it will not move "
+                         f"(a Jazzy robot takes TwistStamped: use its profile, e.g. TURTLEBOT3_ROBOT, or make_stamped)")
+        return found
+
+    def finish(self):
+        self._done.set()
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join(2.0)
+
+    def summary(self):
+        heard = getattr(self.bus, "heard", None)
+        if heard is None:
+            return
+        try:
+            counts = heard()
+        except Exception:                    # noqa: BLE001 - a closed bus: nothing to say
+            return
+        got = [f"{topic} ({count})" for topic, (_, count) in sorted(counts.items()) if count]
+        silent = [topic for topic, (_, count) in sorted(counts.items()) if not count]
+        parts = []
+        if got:
+            parts.append("heard " + ", ".join(got))
+        if silent:
+            parts.append("nothing on " + ", ".join(silent))
+        if parts:
+            _say(self.stderr, "; ".join(parts))
+        elif not counts:
+            _say(self.stderr, "the program subscribed to no topic")
 
 
 def _close_ros2(bus):

@@ -44,6 +44,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
     parser.add_argument("--duration", type=float, metavar="S",
                         help="simulated seconds to run (default: the world's duration; 0: until interrupted)")
     parser.add_argument("--domain", type=int, metavar="N", help="the ROS 2 domain id (default: ROS_DOMAIN_ID, else 0)")
+    parser.add_argument("--ros-distro", type=str.lower, choices=("humble", "jazzy", "lyrical"), metavar="DISTRO",
+                        help="the ROS 2 distribution whose messages and type hashes are used: humble, jazzy or "
+                             "lyrical (default: ROS_DISTRO, else jazzy)")
     parser.add_argument("--png", metavar="FILE", help="write the trajectories as a PNG at the end")
     parser.add_argument("--gif", metavar="FILE", help="write an animated GIF of the run at the end")
     parser.add_argument("--record", metavar="FILE", help="record every topic into an MCAP file (ROS 2 schemas, CDR)")
@@ -113,14 +116,42 @@ def _progress(sim, wall, commands):
     return f"t={sim.time:.1f} s (wall {wall:.1f} s), {commands} commands; {poses}"
 
 
+def driver_qos(spec) -> dict:
+    """{topic: (reliability, depth)} of the publishers of the driver a simulated robot stands for:
+    the Thymio driver (jeguzzi/ros-thymio, thymio_driver/thymio_driver/base.py and
+    thymio_driver_node.py: create_publisher(..., 1), rclpy's default reliable QoS) and the TurtleBot3
+    bringup (ROBOTIS-GIT/turtlebot3, turtlebot3_node/src/odometry.cpp and sensors/sensors.hpp:
+    rclcpp::QoS(rclcpp::KeepLast(10)), reliable) publish reliably; laser scans go out best effort
+    as laser drivers publish them (sensor-data QoS)."""
+    from .sim import sensors
+    prefix = f"/{spec.namespace}" if spec.namespace else ""
+    depth = 1 if spec.kind == "thymio" else 10
+    qos = {f"{prefix}/odom": ("reliable", depth), f"{prefix}/battery_state": ("reliable", depth),
+           f"{prefix}/scan": ("best_effort", 10)}
+    if spec.kind == "thymio":
+        for name in sensors.PROXIMITY:
+            qos[f"{prefix}/proximity/{name}"] = ("reliable", 1)
+        for name in sensors.GROUND:
+            qos[f"{prefix}/ground/{name}"] = ("reliable", 1)
+    return qos
+
+
 def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, record=None, progress=5.0,
-        bus=None, stderr=None, stop=None) -> int:
+        bus=None, stderr=None, stop=None, ros_distro=None) -> int:
     """Run the node; returns the exit status. `bus`: a bus to use instead of opening one (closed by the
-    caller); `stop`: a threading.Event that ends the run (tests)."""
+    caller); `stop`: a threading.Event that ends the run (tests); `ros_distro`: humble, jazzy or
+    lyrical (None: ROS_DISTRO, else jazzy)."""
     import yaml
 
+    from . import ros_messages
     from .sim import Simulator, World, WorldError
     stderr = sys.stderr if stderr is None else stderr
+    try:
+        distro, source = ros_messages.resolve_distro(ros_distro)
+    except ros_messages.DistroError as e:
+        _say(stderr, f"error: {e}")
+        return Exit.USAGE
+    ros_messages.use_distro(distro)
     try:
         loaded = world if isinstance(world, World) else World.load(world)
     except (OSError, WorldError, ValueError, TypeError, LookupError, yaml.YAMLError) as e:
@@ -132,8 +163,11 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
     if own_bus:
         stamped = {f"/{spec.namespace}/cmd_vel" if spec.namespace else "/cmd_vel": "geometry_msgs/msg/TwistStamped"
                    for spec in loaded.robots if spec.cmd_vel_stamped}
+        qos = {}
+        for spec in loaded.robots:
+            qos.update(driver_qos(spec))
         try:
-            bus = open_ros2_bus(domain, types=stamped)
+            bus = open_ros2_bus(domain, types=stamped, writer_qos=qos, report=lambda text: _say(stderr, text))
         except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
             _say(stderr, f"error: cannot open the ROS 2 transport: {e}")
             return Exit.USAGE
@@ -157,8 +191,13 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
         pace = f"{rate:g}x real time" if rate > 0 else "as fast as possible"
         length = "until interrupted" if end == math.inf else f"for {end:g} s"
         domain_text = getattr(bus, "domain", domain)
-        _say(stderr, f"world {loaded.name!r} ({robots}), domain {domain_text} ({backend}), {pace}, {length}")
+        discovery = getattr(bus, "discovery", None)
+        _say(stderr, f"world {loaded.name!r} ({robots}), ROS 2 {distro} ({source}), domain {domain_text} ({backend}"
+             + (f", {discovery}" if discovery else "") + f"), {pace}, {length}")
+        for warning in getattr(bus, "discovery_warnings", ()):
+            _say(stderr, warning)
         commands, start, last_report, lag = 0, time.monotonic(), time.monotonic(), 0.0
+        last_qos = start
         end_ns = None if end == math.inf else int(round(end * 1e9))
         while end_ns is None or sim.time_ns < end_ns:
             if flag.requested or (stop is not None and stop.is_set()):
@@ -174,10 +213,15 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
                     lag = max(lag, -ahead)
                     if -ahead > MAX_LAG:          # too far behind: slow the simulated time, no burst
                         start -= ahead
+            if now - last_qos >= 1.0 and hasattr(bus, "check_qos"):
+                last_qos = now                    # a stock reader asking reliable on the laser, ...
+                bus.check_qos()
             if progress and now - last_report >= progress:
                 last_report = now
                 _say(stderr, _progress(sim, now - start, commands))
         commands += node.drain()
+        if hasattr(bus, "check_qos"):
+            bus.check_qos()
         why = f"stopped by {flag.requested}" if flag.requested else \
             "stopped" if stop is not None and stop.is_set() else "duration reached"
         sim.stop_all()
@@ -223,7 +267,7 @@ def command(args: argparse.Namespace) -> int:
         print("scoopc sim: error: --rate must be 0 or more", file=sys.stderr)
         return Exit.USAGE
     return run(args.world, rate=rate, duration=args.duration, domain=args.domain, png=args.png, gif=args.gif,
-               record=args.record, progress=args.progress)
+               record=args.record, progress=args.progress, ros_distro=args.ros_distro)
 
 
 def main(argv=None) -> int:

@@ -1,6 +1,15 @@
 """Velocity commands as ROS 2 messages: Twist and TwistStamped, built directly on every command
 (the publisher's hot path) and by the runner's safety stop. rosbags and numpy load on first use
-only, so programs that never publish do not pay for them."""
+only, so programs that never publish do not pay for them.
+
+TwistStamped stamps are ROS time, as rclcpp's `get_clock()->now()` gives it: the system clock
+(`time.time_ns`, seconds since 1970) on a real robot, the latest /clock with use_sim_time, the
+simulated time on the in-process simulator; never a monotonic clock (diff_drive_controller drops a
+command whose stamp is older than its cmd_vel_timeout: ros2_controllers,
+diff_drive_controller/src/diff_drive_controller.cpp, DiffDriveController::update). The runner sets
+the source with `use_clock`.
+"""
+import time
 from functools import cache
 
 
@@ -11,12 +20,17 @@ def new_message(typename, **fields):
 
 
 @cache
-def _classes():
-    """The dataclasses of the messages built on every command (built directly: no defaults to
-    compute, a fifteenth of the time of `ros_messages.new`)."""
+def _classes_of(distro):
     from scoopc.robots import ros_messages
     return (ros_messages.message_class("geometry_msgs/msg/Vector3"),
             ros_messages.message_class("geometry_msgs/msg/Twist"))
+
+
+def _classes():
+    """The dataclasses of the messages built on every command (built directly: no defaults to
+    compute, a fifteenth of the time of `ros_messages.new`), of the process's distribution."""
+    from scoopc.robots import ros_messages
+    return _classes_of(ros_messages.distro())
 
 
 def twist(linear_x, angular_z):
@@ -25,17 +39,21 @@ def twist(linear_x, angular_z):
                        angular=vector3(x=0.0, y=0.0, z=float(angular_z)))
 
 
-def _now_ns():
-    import scoopc.runtime as rt
-    try:
-        return rt.now_ns()
-    except Exception:           # no running runtime (a bare test): the wall clock
-        import time
-        return time.time_ns()
+_clock = [time.time_ns]                # the ROS time source: the system clock unless `use_clock`
+
+
+def use_clock(now_ns=None):
+    """Stamp commands with `now_ns()` (nanoseconds of ROS time); None: the system clock again."""
+    _clock[0] = time.time_ns if now_ns is None else now_ns
+
+
+def now_ns():
+    """ROS time now, in nanoseconds (the source `use_clock` set)."""
+    return _clock[0]()
 
 
 def twist_stamped(linear_x, angular_z, frame_id=""):
-    now = _now_ns()
+    now = _clock[0]()
     stamp = new_message("builtin_interfaces/msg/Time", sec=now // 1_000_000_000, nanosec=now % 1_000_000_000)
     header = new_message("std_msgs/msg/Header", stamp=stamp, frame_id=frame_id)
     return new_message("geometry_msgs/msg/TwistStamped", header=header, twist=twist(linear_x, angular_z))

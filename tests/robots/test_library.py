@@ -82,9 +82,9 @@ def test_robots_expose_their_signalers_group_and_laser_sectors():
     lines = out.getvalue().splitlines()
     assert lines[0] == "namespaces /robot1 /robot2 /robot1/odom"
     # the Thymio faces the left wall 0.3 m away, out of its sensors' range (0.12 m from the body):
-    # only the floor is seen (10 mm under the ground sensors), nothing is an obstacle.
+    # only the floor is seen (0 under the ground sensors, the Thymio driver's "floor"), nothing is an obstacle.
     assert lines[1] == ("thymio: obstacle False left False right False hole False proximity sensors 7 "
-                        "nearest sensor -1 at -1000 mm, ground 2 nearest 10 mm")
+                        "nearest sensor -1 at -1000 mm, ground 2 nearest 0 mm")
     # the laser robot's centre is 0.3 m from the wide box ahead: an obstacle (under 0.35 m) in the
     # centre sector, and in the 15-45 degree sectors either side (0.31 m at 15 degrees)
     assert lines[2] == "laser: obstacle True left True right True behind False front at 30 cm, stale False"

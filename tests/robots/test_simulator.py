@@ -102,7 +102,7 @@ def test_proximity_sees_wall_at_right_distance():
     assert center[-1].range == pytest.approx(0.1 - r.spec.radius, abs=1e-5)
     expected_left = (0.1 - r.spec.radius * math.cos(math.radians(40))) / math.cos(math.radians(40))
     assert left[-1].range == pytest.approx(expected_left, abs=1e-5)
-    assert math.isinf(rear[-1].range)
+    assert rear[-1].range == -1.0           # the Thymio driver's "nothing seen"
     assert len(center) == 2                 # at t = 0.05, 0.1 (20 Hz; t = 0 went out before subscribing)
 
 
@@ -110,9 +110,9 @@ def test_ground_sensors_see_a_hole():
     sim, bus = make(start=(0.9, 1.0, 0.0), holes=[{"min": [1.0, 0.0], "max": [2.0, 2.0]}])
     gl, gr = latest(bus, "/robot1/ground/left"), latest(bus, "/robot1/ground/right")
     sim.run_until(0.05)
-    assert gl[-1].range == pytest.approx(0.01) and gr[-1].range == pytest.approx(0.01)
+    assert gl[-1].range == 0.0 and gr[-1].range == 0.0      # the Thymio driver: 0 over the floor
     drive(sim, bus, 0.1, 0.0, 0.8)          # ground sensors 5 cm ahead of the centre cross x = 1.0
-    assert math.isinf(gl[-1].range) and math.isinf(gr[-1].range)
+    assert gl[-1].range == 1.0 and gr[-1].range == 1.0      # 1 (beyond max_range) over a hole
     assert not sim.robot().fallen
 
 

@@ -86,3 +86,16 @@ def has_goal(current):
 
 def has_charging_station(current):
     return _settings().station is not None
+
+
+def ros_distro(current):
+    from scoopc.kernel import strings
+    return strings.new_string_8(current._region_, _settings().distro)
+
+
+def report(current, text):
+    import sys
+
+    from scoopc.kernel import strings
+    sys.stderr.write(f"scoopc: {strings.text(text)}\n")
+    sys.stderr.flush()

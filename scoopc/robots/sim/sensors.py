@@ -1,8 +1,11 @@
 """Simulated sensors and the ROS 2 messages they produce (rosbags type store dataclasses).
 
 Proximity (Thymio II-like, 7 horizontal IR), ground (2 downward IR), laser scanner, odometry, battery.
-Range conventions (REP 117): a sensor that detects nothing reports +inf.
-Ground sensors: 0.01 m over the floor, +inf over a hole (nothing reflects).
+Range conventions: the laser follows REP 117 (+inf: nothing detected); the Thymio's range sensors
+follow its ROS 2 driver (jeguzzi/ros-thymio, thymio_driver/thymio_driver/base.py
+ProximityConversion.aseba_to_si and thymio_driver_node.py on_aseba_ground_event): a proximity sensor
+reads -1 when it sees nothing and its min_range when saturated; a ground sensor reads 0 over the
+floor and 1 (beyond its max_range) over a hole.
 """
 import math
 
@@ -36,10 +39,12 @@ PROXIMITY = {  # name: (mount angle on the body, beam direction), radians in the
     "rear_right": (math.radians(-150), math.pi),
 }
 PROXIMITY_RANGE = 0.12
-PROXIMITY_MIN = 0.0
+PROXIMITY_MIN = 0.0215          # the driver's default calibration's range_min (thymio_driver_node.py)
+PROXIMITY_NOTHING = -1.0
 PROXIMITY_FOV = 0.3
 GROUND = {"left": (0.05, 0.02), "right": (0.05, -0.02)}   # mount points (forward, left) in the robot frame
-GROUND_FLOOR = 0.01
+GROUND_FLOOR = 0.0
+GROUND_HOLE = 1.0
 GROUND_MAX = 0.03
 
 
@@ -64,6 +69,7 @@ def proximity_ranges(robot, world, robots):
 
 def proximity_msg(robot, name, value, t_ns):
     ns = robot.namespace
+    value = PROXIMITY_NOTHING if math.isinf(value) else max(PROXIMITY_MIN, value)
     return new("sensor_msgs/msg/Range", header=header(t_ns, f"{ns}/proximity_{name}_link"), radiation_type=1,
                field_of_view=PROXIMITY_FOV, min_range=PROXIMITY_MIN, max_range=PROXIMITY_RANGE, range=float(value))
 
@@ -71,12 +77,12 @@ def proximity_msg(robot, name, value, t_ns):
 def ground_ranges(robot, world):
     pts = np.array([robot.to_world(*GROUND[n]) for n in GROUND])
     holes = world.in_hole(pts) | (pts[:, 0] < 0) | (pts[:, 1] < 0) | (pts[:, 0] > world.width) | (pts[:, 1] > world.height)
-    return {n: (math.inf if h else GROUND_FLOOR) for n, h in zip(GROUND, holes.tolist())}
+    return {n: (GROUND_HOLE if h else GROUND_FLOOR) for n, h in zip(GROUND, holes.tolist())}
 
 
 def ground_msg(robot, name, value, t_ns):
     return new("sensor_msgs/msg/Range", header=header(t_ns, f"{robot.namespace}/ground_{name}_link"), radiation_type=1,
-               field_of_view=0.1, min_range=0.0, max_range=GROUND_MAX, range=float(value))
+               field_of_view=0.3, min_range=0.0, max_range=GROUND_MAX, range=float(value))
 
 
 # ---- laser -----------------------------------------------------------------------------------------

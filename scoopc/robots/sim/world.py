@@ -13,6 +13,8 @@ KINDS = {
     # kind: radius (m), max linear (m/s), max angular (rad/s), laser by default
     "thymio": dict(radius=0.055, max_linear=0.14, max_angular=3.0, laser=False),
     "diff_drive": dict(radius=0.15, max_linear=0.5, max_angular=2.0, laser=True),
+    # TurtleBot3 burger: cmd_vel is TwistStamped from Jazzy on (the distribution's bringup)
+    "turtlebot3": dict(radius=0.105, max_linear=0.22, max_angular=2.84, laser=True),
 }
 
 
@@ -167,7 +169,7 @@ def _rect(d):
 def _robot_spec(r, i):
     kind = r.get("kind", "thymio")
     if kind not in KINDS:
-        raise WorldError(f"unknown robot kind {kind!r} (thymio or diff_drive)")
+        raise WorldError(f"unknown robot kind {kind!r} (thymio, diff_drive or turtlebot3)")
     k = KINDS[kind]
     name = str(r.get("name", f"robot{i + 1}"))
     ns = str(r.get("namespace", name)).strip("/")
@@ -186,7 +188,17 @@ def _robot_spec(r, i):
                      radius=float(r.get("radius", k["radius"])),
                      max_linear=float(r.get("max_linear", k["max_linear"])),
                      max_angular=float(r.get("max_angular", k["max_angular"])),
-                     laser=laser, battery=battery, cmd_vel_stamped=bool(r.get("cmd_vel_stamped", False)))
+                     laser=laser, battery=battery,
+                     cmd_vel_stamped=bool(r.get("cmd_vel_stamped", _stamped_default(kind))))
+
+
+def _stamped_default(kind):
+    """A TurtleBot3 takes TwistStamped from Jazzy on (ROBOTIS-GIT/turtlebot3, jazzy branch,
+    turtlebot3_node/src/turtlebot3.cpp cmd_vel_callback); the others Twist."""
+    if kind != "turtlebot3":
+        return False
+    from scoopc.robots.ros_messages import distro
+    return distro() != "humble"
 
 
 # ---- vectorised geometry ---------------------------------------------------------------------------

@@ -13,7 +13,7 @@ inherit
 	SENSOR_SIGNALER
 
 create
-	make, make_unconnected
+	make, make_unconnected, make_missing
 
 feature {NONE} -- Initialization
 
@@ -22,6 +22,25 @@ feature {NONE} -- Initialization
 		do
 			make_unconnected
 			new_subscriber (create {STRING}.make_from_separate (a_topic)).listen_battery (Current)
+		end
+
+	make_missing (a_topic, a_why: separate STRING)
+			-- Signaler for a robot whose driver publishes no battery state on `a_topic' (`a_why'
+			-- says which): told once on the run's error output; full, never stale, never updated,
+			-- so that nothing waits on it for ever.
+		local
+			env: ROBOT_ENVIRONMENT
+		do
+			make_unconnected
+			is_missing := True
+			stale_after := 1.0e9
+			note_reading
+			create env
+			env.report ("no battery topic: " + create {STRING}.make_from_separate (a_why) + " ("
+				+ create {STRING}.make_from_separate (a_topic)
+				+ " is not subscribed; `battery' stays full)")
+		ensure
+			missing: is_missing
 		end
 
 	make_unconnected
@@ -41,6 +60,9 @@ feature -- Access
 			-- Last voltage (V).
 
 feature -- Status report
+
+	is_missing: BOOLEAN
+			-- Does the robot publish no battery state (`make_missing')?
 
 	is_below (a_level: REAL_64): BOOLEAN
 			-- Is the charge below `a_level'?

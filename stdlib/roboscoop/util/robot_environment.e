@@ -95,6 +95,21 @@ feature -- Access
 			"Python"
 		end
 
+	ros_distro: STRING
+			-- The ROS 2 distribution of this run: "humble", "jazzy" or "lyrical" (`--ros-distro',
+			-- else ROS_DISTRO, else "jazzy").
+		external
+			"Python"
+		end
+
+feature -- Output
+
+	report (a_text: STRING)
+			-- Tell the user `a_text' on the run's error output, as "scoopc: " + `a_text'.
+		external
+			"Python"
+		end
+
 feature -- Status report
 
 	is_simulated: BOOLEAN
@@ -119,6 +134,13 @@ feature -- Status report
 			-- Does the world have a charging station?
 		external
 			"Python"
+		end
+
+	takes_stamped_commands: BOOLEAN
+			-- Do ros2_control's diff_drive_controller and the TurtleBot3 bringup of this run's
+			-- distribution take geometry_msgs/TwistStamped on cmd_vel (Jazzy and later)?
+		do
+			Result := not ros_distro.same_string ("humble")
 		end
 
 end

@@ -70,6 +70,10 @@ feature -- Constants
 
 	Power_supply_technology_limn: NATURAL_8 = 6
 
+	Power_supply_technology_ternary: NATURAL_8 = 7
+
+	Power_supply_technology_vrla: NATURAL_8 = 8
+
 feature -- Access
 
 	header: STD_MSGS_HEADER

@@ -48,6 +48,9 @@ feature -- Access
 	range: REAL_32
 			-- Field `range'.
 
+	variance: REAL_32
+			-- Field `variance'.
+
 feature -- Element change
 
 	set_header (a_value: STD_MSGS_HEADER)
@@ -96,6 +99,14 @@ feature -- Element change
 			range := a_value
 		ensure
 			range_set: range = a_value
+		end
+
+	set_variance (a_value: REAL_32)
+			-- Set `variance' to `a_value'.
+		do
+			variance := a_value
+		ensure
+			variance_set: variance = a_value
 		end
 
 end

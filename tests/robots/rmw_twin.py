@@ -1,0 +1,279 @@
+"""A twin of a stock ROS 2 node on rmw_cyclonedds_cpp, for the tests: cyclonedds and rosbags only
+(nothing of scoopc), so that what it hears or sends is what a real node would.
+
+`Node(distro)` is `rclpy.create_node` on rmw_cyclonedds_cpp; `node.create_subscription(typename, topic,
+depth=10)` and `node.create_publisher(typename, topic, depth=10)` are rclpy's calls with a depth, that
+is ROS's default QoS profile (rmw/include/rmw/qos_profiles.h rmw_qos_profile_default: reliable,
+volatile, keep last). Each DDS setting copies rmw_cyclonedds_cpp/src/rmw_node.cpp (ros2/rmw_cyclonedds,
+branches humble and jazzy; Lyrical is taken to be Jazzy's, not checked):
+
+* participant user data `enclave=/;` (rmw_context_impl_s::init: `"enclave=" + options->enclave + ";"`,
+  the enclave "/" by default);
+* topic name `rt` + the ROS name (make_fqtopic with ROS_TOPIC_PREFIX, namespace_prefix.hpp);
+* type name `pkg::msg::dds_::Name_` (the C++ type support's namespace and suffix, as
+  rmw_cyclonedds_cpp's create_sertype names it), keyless;
+* QoS (create_readwrite_qos): writer_data_lifecycle autodispose false; history keep last `depth`;
+  reliability RELIABLE with max blocking time DDS_INFINITY; durability VOLATILE; liveliness
+  AUTOMATIC with an infinite lease; no lifespan or deadline; user data `typehash=RIHS01_<hex>;` from
+  Iron on (rmw_dds_common::encode_type_hash_for_user_data_qos; Humble's create_readwrite_qos sets
+  no user data);
+* data: XCDR1 plain CDR, little endian (encapsulation 00 01), written and taken as serialized bytes
+  (rmw's serdata), here made and read by rosbags' `serialize_cdr` / `deserialize_cdr` of the
+  distribution's type store.
+
+Also a command line, for a twin in its own process (prints one JSON line per event, flushes):
+
+    python tests/robots/rmw_twin.py --distro jazzy listen /robot1/odom nav_msgs/msg/Odometry
+    python tests/robots/rmw_twin.py --distro jazzy publish /odom nav_msgs/msg/Odometry --rate 20
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+import threading
+import time
+
+from cyclonedds._clayer import ddspy_take, ddspy_write
+from cyclonedds.core import InstanceState, ReadCondition, SampleState, ViewState, WaitSet
+from cyclonedds.domain import DomainParticipant
+from cyclonedds.idl import make_idl_struct, types as idl
+from cyclonedds.pub import DataWriter
+from cyclonedds.qos import Policy, Qos
+from cyclonedds.sub import DataReader
+from cyclonedds.topic import Topic
+from cyclonedds.util import duration
+from rosbags.typesys import Stores, get_typestore
+from rosbags.typesys.base import Nodetype
+
+STORES = {"humble": Stores.ROS2_HUMBLE, "jazzy": Stores.ROS2_JAZZY, "lyrical": Stores.ROS2_LYRICAL}
+_BASES = {"bool": bool, "byte": idl.byte, "char": idl.uint8, "int8": idl.int8, "uint8": idl.uint8,
+          "int16": idl.int16, "uint16": idl.uint16, "int32": idl.int32, "uint32": idl.uint32,
+          "int64": idl.int64, "uint64": idl.uint64, "float32": idl.float32, "float64": idl.float64}
+
+
+def dds_type(typename: str) -> str:
+    package, kind, name = typename.split("/")
+    return f"{package}::{kind}::dds_::{name}_"
+
+
+class Node:
+    """One participant, as rclpy's `create_node` makes it on rmw_cyclonedds_cpp."""
+
+    def __init__(self, distro: str = "jazzy", domain: int | None = None):
+        import os
+        self.distro = distro
+        self.store = get_typestore(STORES[distro])
+        self.domain = int(os.environ.get("ROS_DOMAIN_ID", "0") or 0) if domain is None else domain
+        self.participant = DomainParticipant(self.domain, qos=Qos(Policy.Userdata(data=b"enclave=/;")))
+        self._structs: dict = {}
+        self._topics: dict = {}
+        self.entities = []
+
+    # -- types ----------------------------------------------------------------------------------
+    def _field(self, desc):
+        kind, detail = desc
+        if kind == Nodetype.BASE:
+            name, bound = detail
+            if name == "string":
+                return idl.bounded_str[bound] if bound else str
+            return _BASES[name]
+        if kind == Nodetype.NAME:
+            return self.idl(detail)
+        element, size = detail
+        if kind == Nodetype.ARRAY:
+            return idl.array[self._field(element), size]
+        return idl.sequence[self._field(element), size] if size else idl.sequence[self._field(element)]
+
+    def idl(self, typename: str):
+        if typename not in self._structs:
+            fields = {name: self._field(desc) for name, desc in self.store.fielddefs[typename][1]}
+            self._structs[typename] = make_idl_struct(typename.replace("/", "_"), dds_type(typename), fields)
+        return self._structs[typename]
+
+    def qos(self, typename: str, depth: int) -> Qos:
+        """create_readwrite_qos for rmw_qos_profile_default with `depth`."""
+        policies = [Policy.WriterDataLifecycle(autodispose=False), Policy.History.KeepLast(depth),
+                    Policy.Reliability.Reliable(max_blocking_time=duration(infinite=True)),
+                    Policy.Durability.Volatile, Policy.Liveliness.Automatic(lease_duration=duration(infinite=True))]
+        if self.distro != "humble":
+            policies.append(Policy.Userdata(data=f"typehash={self.store.hash_rihs01(typename)};".encode()))
+        return Qos(*policies)
+
+    def _topic(self, topic: str, typename: str):
+        if topic not in self._topics:
+            self._topics[topic] = Topic(self.participant, "rt" + topic, self.idl(typename))
+        return self._topics[topic]
+
+    # -- rclpy's two calls ------------------------------------------------------------------------
+    def create_subscription(self, typename: str, topic: str, depth: int = 10, callback=None) -> Subscription:
+        return Subscription(self, typename, topic, depth, callback)
+
+    def create_publisher(self, typename: str, topic: str, depth: int = 10) -> Publisher:
+        return Publisher(self, typename, topic, depth)
+
+    def close(self):
+        for entity in reversed(self.entities):
+            entity.close()
+        self.participant.__del__()
+
+
+class Publisher:
+    def __init__(self, node: Node, typename: str, topic: str, depth: int):
+        self.node, self.typename, self.topic = node, typename, topic
+        self.writer = DataWriter(node.participant, node._topic(topic, typename), qos=node.qos(typename, depth))
+        node.entities.append(self)
+
+    def new(self, **fields):
+        return new_message(self.node.store, self.typename, **fields)
+
+    def publish(self, msg) -> None:
+        data = bytes(self.node.store.serialize_cdr(msg, self.typename))
+        pad = -len(data) % 4                      # XCDR padding count in the options' low bits
+        if pad:
+            data = data[:3] + bytes([data[3] | pad]) + data[4:] + bytes(pad)
+        ret = ddspy_write(self.writer._ref, data)
+        if ret < 0:
+            raise RuntimeError(f"write on {self.topic} failed ({ret})")
+
+    def matched(self) -> int:
+        return self.writer.get_publication_matched_status().current_count
+
+    def incompatible(self) -> int:
+        return self.writer.get_offered_incompatible_qos_status().total_count
+
+    def close(self):
+        self.writer.__del__()
+
+
+class Subscription:
+    """Takes every sample on a thread of its own: `messages` (decoded with the distribution's
+    store), `raw` (the bytes), `received_at` (time.time() of each), `wait_for(pred, timeout)`."""
+
+    def __init__(self, node: Node, typename: str, topic: str, depth: int, callback=None):
+        self.node, self.typename, self.topic, self.callback = node, typename, topic, callback
+        self.reader = DataReader(node.participant, node._topic(topic, typename), qos=node.qos(typename, depth))
+        self.condition = ReadCondition(self.reader, SampleState.NotRead | ViewState.Any | InstanceState.Any)
+        self.waitset = WaitSet(node.participant)
+        self.waitset.attach(self.condition)
+        self.messages, self.raw, self.received_at = [], [], []
+        self.cond = threading.Condition()
+        self._stop = False
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+        node.entities.append(self)
+
+    def _run(self):
+        while not self._stop:
+            self.waitset.wait(duration(milliseconds=100))
+            samples = ddspy_take(self.reader._ref, self.condition.mask, 64)
+            if isinstance(samples, int) or not samples:
+                continue
+            now = time.time()
+            for data, info in samples:
+                if not info.valid_data:
+                    continue
+                msg = self.node.store.deserialize_cdr(bytes(data), self.typename)
+                with self.cond:
+                    self.messages.append(msg)
+                    self.raw.append(bytes(data))
+                    self.received_at.append(now)
+                    self.cond.notify_all()
+                if self.callback is not None:
+                    self.callback(msg)
+
+    def wait_for(self, predicate, timeout: float = 30.0) -> bool:
+        with self.cond:
+            return self.cond.wait_for(lambda: predicate(self), timeout)
+
+    def matched(self) -> int:
+        return self.reader.get_subscription_matched_status().current_count
+
+    def incompatible(self) -> int:
+        return self.reader.get_requested_incompatible_qos_status().total_count
+
+    def close(self):
+        self._stop = True
+        self.thread.join(2.0)
+        self.waitset.detach(self.condition)
+        self.condition.__del__()
+        self.reader.__del__()
+
+
+def new_message(store, typename: str, **fields):
+    """A message of `store` with ROS defaults for the omitted fields."""
+    import numpy as np
+    args = {}
+    for name, (kind, detail) in store.fielddefs[typename][1]:
+        if name in fields:
+            args[name] = fields[name]
+        elif kind == Nodetype.BASE:
+            args[name] = "" if detail[0] == "string" else False if detail[0] == "bool" else \
+                0.0 if detail[0].startswith("float") else 0
+        elif kind == Nodetype.NAME:
+            args[name] = new_message(store, detail)
+        else:
+            element, size = detail
+            if element[0] == Nodetype.BASE and element[1][0] != "string":
+                dtype = {"float32": np.float32, "float64": np.float64, "bool": np.bool_}.get(element[1][0], np.int64)
+                args[name] = np.zeros(size if kind == Nodetype.ARRAY else 0, dtype=dtype)
+            else:
+                args[name] = [new_message(store, element[1]) if element[0] == Nodetype.NAME else ""
+                              for _ in range(size if kind == Nodetype.ARRAY else 0)]
+    return store.types[typename](**args)
+
+
+def summary(msg) -> dict:
+    """A few fields of a message, for the command line's JSON lines."""
+    out = {"type": msg.__msgtype__}
+    header = getattr(msg, "header", None)
+    if header is not None:
+        out["stamp"] = header.stamp.sec + header.stamp.nanosec * 1e-9
+        out["frame_id"] = header.frame_id
+    twist = getattr(msg, "twist", None)
+    if msg.__msgtype__ == "geometry_msgs/msg/Twist":
+        twist = msg
+    elif msg.__msgtype__ == "nav_msgs/msg/Odometry":
+        out["x"] = float(msg.pose.pose.position.x)
+        twist = msg.twist.twist
+    if twist is not None and hasattr(twist, "linear"):
+        out["linear"], out["angular"] = float(twist.linear.x), float(twist.angular.z)
+    if hasattr(msg, "range"):
+        out["range"] = float(msg.range)
+    return out
+
+
+def main(argv=None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--distro", default="jazzy", choices=tuple(STORES))
+    commands = parser.add_subparsers(dest="command", required=True)
+    listen = commands.add_parser("listen", help="print each message heard (a JSON line)")
+    listen.add_argument("topic")
+    listen.add_argument("type")
+    publish = commands.add_parser("publish", help="publish default messages of TYPE at RATE Hz")
+    publish.add_argument("topic")
+    publish.add_argument("type")
+    publish.add_argument("--rate", type=float, default=20.0)
+    args = parser.parse_args(argv)
+    node = Node(args.distro)
+    try:
+        if args.command == "listen":
+            def show(msg):
+                print(json.dumps({**summary(msg), "received": time.time()}), flush=True)
+            node.create_subscription(args.type, args.topic, callback=show)
+            print(json.dumps({"ready": True}), flush=True)
+            threading.Event().wait()
+        else:
+            pub = node.create_publisher(args.type, args.topic)
+            print(json.dumps({"ready": True}), flush=True)
+            while True:
+                pub.publish(pub.new())
+                time.sleep(1.0 / args.rate)
+    except KeyboardInterrupt:
+        return 0
+    finally:
+        node.close()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
