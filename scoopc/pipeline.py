@@ -111,7 +111,7 @@ def check_project(project: Project, use_cache: bool = True, library_bodies: bool
 def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed,
                    progress) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
-    from .semantics import library
+    from .semantics import library  # deferred: start-up (scoopc.semantics.library loads only when this is used)
 
     checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
     library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache, progress)
@@ -138,7 +138,7 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
 
 def _prepare_library(units) -> tuple:
     """The library's universe with feature tables and signatures, and what preparing it reported."""
-    from . import semantics
+    from . import semantics  # deferred: start-up (scoopc.semantics loads only when this is used)
 
     found: list = []
     universe, _ = semantics.prepare([(tree, True) for _, tree, _ in units if tree is not None], found)

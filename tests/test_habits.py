@@ -1,6 +1,8 @@
 """The habits that keep the code the way it is (issue 23): the runtime's API is fully typed and
 checked strictly by mypy, and the tree passes ruff's lint. Both tools read their settings from
 pyproject.toml; each test fails with the tool's own report."""
+
+import ast
 import subprocess
 import sys
 from pathlib import Path
@@ -18,8 +20,7 @@ LINTED = ("scoopc", "tests", "benchmarks", "tools")
 
 
 def _run(args: list[str], timeout: float) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, "-m", *args], cwd=ROOT, capture_output=True,
-                          text=True, timeout=timeout)
+    return subprocess.run([sys.executable, "-m", *args], cwd=ROOT, capture_output=True, text=True, timeout=timeout)
 
 
 def _present(package: str) -> bool:
@@ -40,3 +41,26 @@ def test_ruff_lint():
     pytest.importorskip("ruff", reason="ruff is in the test extra")
     result = _run(["ruff", "check", "--no-cache", "--output-format", "concise", *LINTED], timeout=300)
     assert result.returncode == 0, f"ruff check:\n{result.stdout}{result.stderr}"
+
+
+def test_imports_inside_functions_say_why():
+    """An import inside a function is there to break a cycle or to keep start-up fast, and a
+    comment on its line (or the line above) says which (docs/ARCHITECTURE.md)."""
+    silent = []
+    for path in sorted((ROOT / "scoopc").rglob("*.py")):
+        lines = path.read_text(encoding="utf-8").splitlines()
+        for node in ast.walk(ast.parse("\n".join(lines))):
+            if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                continue
+            for inner in ast.walk(node):
+                if isinstance(inner, (ast.Import, ast.ImportFrom)):
+                    said = " ".join(lines[inner.lineno - 2 : inner.end_lineno])  # the line above, the statement
+                    if "#" not in said or not any(w in said for w in ("deferred", "cycle", "start-up", "optional")):
+                        silent.append(f"{path.relative_to(ROOT)}:{inner.lineno}: {lines[inner.lineno - 1].strip()}")
+    assert not silent, "imports inside functions with no reason given:\n" + "\n".join(sorted(set(silent)))
+
+
+def test_ruff_format():
+    pytest.importorskip("ruff", reason="ruff is in the test extra")
+    result = _run(["ruff", "format", "--check", "--no-cache", *LINTED], timeout=300)
+    assert result.returncode == 0, f"ruff format --check (run `ruff format` to fix):\n{result.stdout}{result.stderr}"

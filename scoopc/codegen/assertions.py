@@ -20,7 +20,7 @@ class InheritedAssertions:
     renames: dict = {}
 
     def local_name(self, name: str) -> str:
-        from .routines import local_identifier
+        from .routines import local_identifier  # deferred: a cycle (scoopc.codegen.routines imports this module)
 
         return local_identifier(self.renames.get(name, name))
 

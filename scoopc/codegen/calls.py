@@ -11,6 +11,7 @@ from ..semantics.types import BASIC, Ty
 from . import pyast as P
 from .context import fail
 from .names import class_name
+from .scoop_calls import separate_call
 
 AGENT_CLASSES = ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
 # Queries whose answer depends on the basic class of a value (asked of a formal-typed target).
@@ -117,7 +118,7 @@ class Calls:
         owner = self.info.name if target_node is None else \
             (target_ty.name if target_ty is not None and not target_ty.is_formal else None)
         if self.is_builtin_basic(feature):
-            from ..kernel import basic
+            from ..kernel import basic  # deferred: start-up (loaded on first use only)
 
             return basic.inline(feature.written_in, declared_name(feature), target, args)
         if target_node is not None and self.is_basic(target_ty) and feature.written_in not in BASIC:
@@ -192,7 +193,6 @@ class Calls:
     def separate_call(self, node, target, feature, args):
         """A call on a controlled separate target: the runtime entry point its static facts
         allow (scoop_calls.separate_call)."""
-        from .scoop_calls import separate_call
 
         return separate_call(self, node, target, feature, args)
 
@@ -204,7 +204,7 @@ class Calls:
         feature = source.features.get(converter) if source is not None else None
         if feature is not None and feature.is_query:
             if self.is_builtin_basic(feature):
-                from ..kernel import basic
+                from ..kernel import basic  # deferred: start-up (loaded on first use only)
 
                 return basic.inline(feature.written_in, declared_name(feature), value, [])
             return self.plain_call(value, feature, [])

@@ -12,7 +12,7 @@ from .calls import declared_name, is_external
 from .context import ModuleContext
 from .layout import impl_id, lookup
 from .names import ONCE_CELL, class_name, eiffel_class_name
-from .routines import RoutineGen
+from .routines import RoutineGen, local_identifier
 
 HEADER_IMPORTS = [
     "import scoopc.runtime as rt",
@@ -248,7 +248,6 @@ class ClassGen:
         return [P.assign(P.name("here"), P.attr(P.name("self"), "_region_"))] + checks
 
     def local(self, name: str) -> str:
-        from .routines import local_identifier
 
         return local_identifier(name)
 

@@ -47,7 +47,7 @@ class Expressions:
     def real_constant(self, value: float, ty):
         """A manifest real: a REAL_32 constant is rounded to single precision at compile time."""
         if ty is not None and ty.name == "REAL_32":
-            from ..kernel.basic import r32
+            from ..kernel.basic import r32  # deferred: start-up (loaded on first use only)
 
             value = r32(value)
         return P.const(value)

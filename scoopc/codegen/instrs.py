@@ -8,6 +8,7 @@ from .. import syntax
 from ..semantics.types import BASIC
 from . import pyast as P
 from .context import fail
+from .scoop_calls import interval_across
 
 _VALUE_COPIES = frozenset({"copy", "standard_copy", "deep_copy"})
 
@@ -183,7 +184,6 @@ class Instructions:
         return checks, (first, step)
 
     def s_Across(self, node):
-        from .scoop_calls import interval_across
 
         fast = interval_across(self, node)             # `across a |..| b`: a Python range
         if fast is not None:

@@ -68,7 +68,7 @@ def generate(universe, tables, options: Options, which, library_leaves: list | N
         if which(info):
             modules[module_name(info.name) + ".py"] = (generate_class(program, info), info.decl.span.file)
     if library_leaves is not None:
-        from .scoop import library_leaves as leaves_of
+        from .scoop import library_leaves as leaves_of  # deferred: start-up (loaded on first use only)
 
         library_leaves.extend(leaves_of(program))
     return modules

@@ -6,6 +6,7 @@ from __future__ import annotations
 import ast
 
 from .. import syntax
+from ..kernel.types import _BASIC_DEFAULTS
 from ..semantics import scoop as scoop_rules
 from ..semantics.conformance import base_type
 from . import pyast as P
@@ -14,6 +15,7 @@ from .calls import Calls
 from .exprs import Expressions
 from .instrs import Instructions
 from .names import ONCE_CELL, eiffel_class_name, py_identifier
+from .scoop_calls import reserved
 
 LOCAL_RESERVED = frozenset({"s", "b", "k", "t", "ks", "rt", "here", "self", "all", "any", "object",
                             "result", "len", "range", "isinstance", "type"})
@@ -70,7 +72,6 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
             return P.const(None)
         if ty.is_formal:
             return P.call(P.attr(self.type_desc(ty), "default"), [P.name("here")])
-        from ..kernel.types import _BASIC_DEFAULTS
 
         if ty.name in _BASIC_DEFAULTS:
             return P.const(_BASIC_DEFAULTS[ty.name])
@@ -165,7 +166,6 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
     # --- reservations --------------------------------------------------------------------------------
     def reserved(self, objs, clauses, body, where, formal_names=None, arguments=None) -> list:
         """`with here.reserve(...)` around body, the precondition as a clause table."""
-        from .scoop_calls import reserved
 
         table, pre_args = self.clause_table(clauses or (), formal_names or [], arguments or [])
         return reserved(self, objs, table, pre_args, body, where, formal_names)
@@ -219,7 +219,7 @@ def _walk(node):
     if node is None:
         return
     yield node
-    from ..semantics import walk
+    from ..semantics import walk  # deferred: start-up (scoopc.semantics.walk loads only when this is used)
 
     for child in walk.children(node):
         yield from _walk(child)

@@ -14,6 +14,8 @@ import ast
 from . import basic_ops as B
 from .basic_inline import specs
 from .boxes import KINDS as BOXES
+from .strings import text as string_text
+from .types import of, t
 
 _KINDS = {bool: "BOOLEAN", int: "INTEGER_32", float: "REAL_64", str: "CHARACTER_8"}
 _KINDS.update(BOXES)                      # values boxed on reattachment (scoopc/kernel/boxes.py)
@@ -66,7 +68,6 @@ def generating_type(region, value, kind=None):
     """ANY.generating_type of a basic value: the TYPE object of its basic class (`kind`, the
     static class when known: a NATURAL_8 is a Python int too)."""
     from .support import type_object  # deferred: a cycle (support imports this module's B)
-    from .types import of, t
     return type_object(region, t(kind) if kind is not None else of(value))
 
 
@@ -198,6 +199,5 @@ def _print(region, o):
     if type(o) in _KINDS:
         text = B.out_text(o)
     else:
-        from .strings import text as string_text
         text = string_text(o.out)
     region.print(text)

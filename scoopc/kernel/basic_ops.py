@@ -9,6 +9,8 @@ import math
 import struct
 import unicodedata
 
+from . import CLASSES
+
 # --- Constants and builtins (templates never name a Python builtin directly) --------------
 
 NAN = math.nan
@@ -113,7 +115,6 @@ def exponentiable(x, other):
 
 def interval(region, lower, upper):
     """`lower |..| upper`: a new INTEGER_INTERVAL (`make (lower, upper)`) in `region`."""
-    from . import CLASSES
     cls = CLASSES.get("INTEGER_INTERVAL@BASE") or CLASSES["INTEGER_INTERVAL"]
     result = region.new(cls)
     result.make(wrap_i32(lower), upper)
@@ -352,7 +353,7 @@ def s8(region, text):
     """A new STRING_8 holding `text`, in `region`."""
     make = _S8[0]
     if make is None:
-        from .strings import new_string_8 as make
+        from .strings import new_string_8 as make  # deferred: start-up (loaded on first use only)
         _S8[0] = make
     return make(region, text)
 

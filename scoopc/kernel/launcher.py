@@ -6,14 +6,16 @@ the compiler: {module: [eiffel file, {python line: eiffel line}]}.
 """
 from __future__ import annotations
 
+import gc
 import json
 import sys
 import traceback
 from pathlib import Path
 
+from .. import runtime as rt
 from ..exits import Exit
 from ..runtime import DeadlockError, DirtyRegionError, PreconditionViolation
-from . import CLASSES
+from . import CLASSES, link
 from .errors import EiffelFailure
 from .support import GUARDS, ContractViolation, EiffelRuntimeError
 
@@ -31,8 +33,6 @@ def set_arguments(args) -> None:
 
 def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, strict=False,
          virtual_clock=False, debug=False, stdout=None, stderr=None, on_start=None) -> int:
-    from .. import runtime as rt
-    from . import link
 
     link.register_again("eiffel_base")                       # the registry may have been reset
     link.register_again(root_cls.__module__.rpartition(".")[0])
@@ -61,7 +61,6 @@ def _tune_collector():
     """The loaded classes live as long as the program: keep them out of the cyclic collector's
     way, and let it run less often (programs allocate many small objects, such as the links of
     a LINKED_QUEUE, that plain reference counting frees)."""
-    import gc
 
     before = gc.get_threshold()
     gc.freeze()
@@ -116,7 +115,7 @@ def describe_error(error) -> str:
 
 def _exception_text(exception) -> str:
     try:
-        from .strings import text
+        from .strings import text  # deferred: optional (its absence is handled below)
 
         message = exception.message
         tag = text(message) if message is not None else ""

@@ -8,6 +8,8 @@ import json
 import sys
 from pathlib import Path
 
+from . import register
+
 _LOADED: dict = {}
 
 #: The file, in a compiled program's package, naming the library routines that are leaves in that
@@ -47,7 +49,6 @@ def forget(package: str) -> None:
 
 def register_again(package: str) -> None:
     """Register a loaded package's classes again (a caller may have reset the registry: tests)."""
-    from . import register
 
     for cls in _LOADED.get(package, {}).values():
         key = getattr(cls, "_key_", None)

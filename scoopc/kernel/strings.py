@@ -337,7 +337,7 @@ def _ise_hash_wide(s):
 
 def real_32_out(r) -> str:
     try:
-        from .basic import r32_text
+        from .basic import r32_text  # deferred: optional (its absence is handled below)
     except ImportError:
         return "%g" % r
     return r32_text(r)
@@ -345,7 +345,7 @@ def real_32_out(r) -> str:
 
 def real_64_out(d) -> str:
     try:
-        from .basic import r64_text
+        from .basic import r64_text  # deferred: optional (its absence is handled below)
     except ImportError:
         return "%.17g" % d
     return r64_text(d)

@@ -6,7 +6,8 @@ it can, these handle what only the run time knows (the dynamic class of a target
 """
 from __future__ import annotations
 
-from . import CLASSES, register as _register, types as T
+from ..runtime import DirtyRegionError, PreconditionViolation
+from . import CLASSES, basic, register as _register, types as T
 from .boxes import BY_KIND as _BOX_KINDS, box
 from .errors import EiffelFailure
 
@@ -88,7 +89,6 @@ def exception_object(here, error):
     itself when no class fits."""
     if isinstance(error, EiffelFailure):
         return error
-    from ..runtime import DirtyRegionError, PreconditionViolation
     while isinstance(error, DirtyRegionError) and error.__cause__ is not None:
         error = error.__cause__
     tag = None
@@ -109,7 +109,7 @@ def exception_object(here, error):
         return error
     exception = create(here, cls, None, None, ())
     if tag:
-        from .strings import new_string_32
+        from .strings import new_string_32  # deferred: start-up (loaded on first use only)
         exception.description = new_string_32(here, tag)
     return EiffelFailure(exception)
 
@@ -419,7 +419,7 @@ def dispatcher(name, is_property):
     key = (name, is_property)
     found = _DISPATCHERS.get(key)
     if found is None:
-        from . import basic
+        from . import basic  # deferred: start-up (loaded on first use only)
 
         if is_property:
             def found(target, _name=name):
@@ -462,7 +462,6 @@ def box_formal(value, desc):
 def formal_query(target, name, here, desc):
     """`x.out` (`generator`, ...) with x of a formal generic type: answered for the actual
     generic's basic class when x is a bare basic value."""
-    from . import basic
 
     if desc.key in _BOX_KINDS and type(target) in (int, float, str):
         return basic.query_as(desc.key, target, name, here)

@@ -65,7 +65,7 @@ class TypeDesc:
             return value
         cls = self.pyclass
         if cls is not None and getattr(cls, "_expanded_", False):
-            from .support import new_expanded
+            from .support import new_expanded  # deferred: a cycle (scoopc.kernel.support imports this module)
             return new_expanded(region, cls, self.generics)
         return None
 

@@ -39,7 +39,7 @@ def _accelerator() -> dict:
     if os.environ.get("SCOOPC_PURE_PARSER"):
         return {}
     try:
-        import lark_cython  # type: ignore[import-not-found]
+        import lark_cython  # type: ignore[import-not-found]  # optional: the `fast` extra
     except ImportError:
         return {}
     return {"_plugins": lark_cython.plugins}

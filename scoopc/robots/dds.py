@@ -32,6 +32,7 @@ import logging
 import os
 import threading
 import time
+from pathlib import Path
 
 from cyclonedds._clayer import ddspy_take, ddspy_write
 from cyclonedds.core import GuardCondition, InstanceState, ReadCondition, SampleState, ViewState, WaitSet
@@ -217,7 +218,7 @@ _domains_lock = threading.Lock()
 def _acquire_domain(domain: int, config: str):
     """Create the DDS domain with `config` (once per process and id, reference counted; a second
     bus asking other settings is refused, as rmw_cyclonedds_cpp's check_create_domain does)."""
-    from cyclonedds.domain import Domain
+    from cyclonedds.domain import Domain  # deferred: start-up (cyclonedds loads only when this is used)
     with _domains_lock:
         entry = _domains.get(domain)
         if entry is not None:
@@ -278,7 +279,6 @@ def loopback_environment(folder, domain: int) -> dict:
     """Environment variables binding DDS to loopback in `domain`: writes `folder`/cyclonedds.xml and
     returns {"CYCLONEDDS_URI": its file URI, "ROS_DOMAIN_ID": str(domain)} (set them before the
     first participant of a process exists, or pass them to a child process)."""
-    from pathlib import Path
     path = Path(folder) / "cyclonedds.xml"
     path.write_text(LOOPBACK_CONFIG)
     return {"CYCLONEDDS_URI": path.resolve().as_uri(), "ROS_DOMAIN_ID": str(domain)}
@@ -542,7 +542,11 @@ class DdsBus(Tapped):
     def graph_topics(self, readers: bool = False) -> dict:
         """{ROS topic: ROS type name} of every writer (`readers`: reader) discovery knows of, in any
         participant (this one's too)."""
-        from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsPublication, BuiltinTopicDcpsSubscription
+        from cyclonedds.builtin import (  # deferred: start-up (cyclonedds loads only when this is used)
+            BuiltinDataReader,
+            BuiltinTopicDcpsPublication,
+            BuiltinTopicDcpsSubscription,
+        )
         with self._lock:
             self._check_open()
             graph = self.__dict__.setdefault("_graph", {})

@@ -14,6 +14,8 @@ from typing import Any
 
 import numpy as np
 
+from .. import kernel
+from ..kernel import types
 from . import ros_messages
 from .eiffel_messages import attribute_name, class_name, eiffel_type
 from .ros_messages import BASE, DTYPES, NAME
@@ -40,7 +42,7 @@ def _host(desc: tuple, value: Any, store) -> Any:
     kind, detail = desc
     if kind == BASE:
         if detail[0] in ros_messages.STRING_TYPES:
-            from ..kernel import strings
+            from ..kernel import strings  # deferred: start-up (loaded on first use only)
             return strings.text(value)
         return value
     if kind == NAME:
@@ -64,16 +66,14 @@ def to_message(obj: Any, typename: str | None = None, store=None) -> Any:
 
 
 def _type_desc(type_name: str):
-    from ..kernel import types
     return types.t("STRING_8" if type_name == "STRING" else type_name)
 
 
 def _eiffel(desc: tuple, value: Any, region, store) -> Any:
-    from .. import kernel
     kind, detail = desc
     if kind == BASE:
         if detail[0] in ros_messages.STRING_TYPES:
-            from ..kernel import strings
+            from ..kernel import strings  # deferred: start-up (loaded on first use only)
             return strings.new_string_8(region, value)
         if detail[0] == "bool":
             return bool(value)
@@ -92,7 +92,6 @@ def _eiffel(desc: tuple, value: Any, region, store) -> Any:
 
 def from_message(msg: Any, region, store=None) -> Any:
     """A new Eiffel object (in `region`) of the generated class of `msg`'s type, with its values."""
-    from .. import kernel
     typename = ros_messages.typename_of(msg)
     obj = region.new(kernel.cls(class_name(typename)))
     described = ros_messages.fields(typename, store)

@@ -127,7 +127,7 @@ class Recorder:
 def read(path, store=None):
     """The messages of an MCAP file written by a Recorder: [(topic, log_time_ns, message)] in
     log-time order, decoded with our CDR decoder (for tests and tools)."""
-    from mcap.reader import make_reader
+    from mcap.reader import make_reader  # deferred: start-up (mcap loads only when this is used)
     found = []
     with open(path, "rb") as f:
         for schema, channel, message in make_reader(f).iter_messages(log_time_order=True):

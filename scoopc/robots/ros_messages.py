@@ -15,6 +15,7 @@ A field description is rosbags' `(Nodetype, detail)` pair: `(BASE, (name, bound)
 """
 from __future__ import annotations
 
+import os
 from functools import cache
 from typing import Any
 
@@ -49,7 +50,6 @@ class DistroError(ValueError):
 
 def resolve_distro(option: str | None = None, environ=None) -> tuple[str, str]:
     """(distribution, where it came from): `option` (--ros-distro), else ROS_DISTRO, else jazzy."""
-    import os
     environ = os.environ if environ is None else environ
     for value, source in ((option, "--ros-distro"), (environ.get("ROS_DISTRO"), "ROS_DISTRO")):
         if value:

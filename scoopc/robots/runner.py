@@ -22,10 +22,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import scoopc.runtime as srt
+from scoopc.runtime.clock import Timer
+
 from ..exits import UsageError
 from ..results import RunResult
 from ..runtime.stop_signals import STOP_SIGNALS, shielded, status_of
-from . import transport
+from . import transport, velocity
+from .bus import Bus
 
 DEFAULT_WORLD = {
     "name": "arena",
@@ -67,7 +71,9 @@ class RobotOptions:
         if self.robot not in (None, "sim", "ros2", "none"):
             raise UsageError(f"robot must be sim, ros2 or none, not {self.robot!r}")
         if self.ros_distro is not None:
-            from .ros_messages import DISTROS
+            from .ros_messages import (
+                DISTROS,  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+            )
             if self.ros_distro.lower() not in DISTROS:
                 raise UsageError(f"ros_distro must be one of {', '.join(DISTROS)}, not {self.ros_distro!r}")
         if not (self.wait_robot >= 0):
@@ -147,7 +153,6 @@ class SimDriver:
 
     def attach(self, rt):
         """Called on the root's thread once the runtime exists, before the root is created."""
-        import scoopc.runtime as srt
         self.rt = rt
         proc = srt.Processor(rt, False, "SIMULATOR")
         self.holder = proc.new(_Driver)
@@ -169,7 +174,6 @@ class SimDriver:
 
     def _program_over(self):
         """Is every processor but SIMULATOR idle, with no timer pending but ours?"""
-        from scoopc.runtime.clock import Timer
         rt = self.rt
         with rt.glock:
             if rt.n_running != 1 or rt.runnable or rt.clock.due:
@@ -201,7 +205,10 @@ def _tick(holder):
 def find_world(program_paths, world=None):
     """The world to simulate: `world` (path, dict or World), else world.yaml beside the program,
     else the built-in arena. Returns (World, where it came from)."""
-    from .sim.world import World, WorldError
+    from .sim.world import (  # deferred: start-up (scoopc.robots.sim.world loads only when this is used)
+        World,
+        WorldError,
+    )
     if isinstance(world, World):
         return world, world.name
     if isinstance(world, dict):
@@ -226,7 +233,7 @@ def find_world(program_paths, world=None):
 
 
 def _load(make, where):
-    from .sim.world import WorldError
+    from .sim.world import WorldError  # deferred: start-up (scoopc.robots.sim.world loads only when this is used)
     try:
         return make()
     except WorldError as e:
@@ -306,7 +313,7 @@ def _recorder(bus, path, clock=None):
     messages are in it; `clock`: the simulated time for messages without a stamp)."""
     if not path:
         return None
-    from .record import Recorder
+    from .record import Recorder  # deferred: start-up (scoopc.robots.record loads only when this is used)
     try:
         return Recorder(bus, str(path), clock=clock)
     except OSError as e:
@@ -320,7 +327,9 @@ def _render(sim, path, how, stderr):
         if how == "render_png":
             sim.render_png(str(path))
         else:
-            from .sim.render import render_gif
+            from .sim.render import (
+                render_gif,  # deferred: start-up (scoopc.robots.sim.render loads only when this is used)
+            )
             render_gif(sim, str(path))
     except Exception as e:                         # noqa: BLE001 - the run itself succeeded
         stderr.write(f"scoopc: could not write {path}: {e}\n")
@@ -355,7 +364,9 @@ def describe_end(result, wall) -> str:
 
 def open_ros2_bus(report=None):
     """The ROS 2 transport: rclpy or DDS (see scoopc.robots.backends), else cyclonedds directly."""
-    from .backends import open_ros2_bus as choose
+    from .backends import (
+        open_ros2_bus as choose,  # deferred: start-up (scoopc.robots.backends loads only when this is used)
+    )
     return choose(report=report)
 
 
@@ -369,7 +380,6 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
     distro = choose_distro(options.ros_distro)
     if options.robot != "sim":
         stderr.write(f"scoopc: ROS 2 {distro[0]} ({distro[1]})\n")
-    from . import velocity
     try:
         if options.robot == "sim":
             result = _run_simulated(options, launch, program_paths, program_name, stderr, progress)
@@ -388,7 +398,7 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
 
 def choose_distro(option=None) -> tuple[str, str]:
     """Resolve and install the run's ROS 2 distribution: (name, where the choice came from)."""
-    from . import ros_messages
+    from . import ros_messages  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
     try:
         name, source = ros_messages.resolve_distro(option)
     except ros_messages.DistroError as e:
@@ -398,9 +408,10 @@ def choose_distro(option=None) -> tuple[str, str]:
 
 
 def _run_simulated(options, launch, program_paths, program_name, stderr, progress) -> RunResult:
-    from . import ros_messages, velocity
-    from .bus import Bus
-    from .sim.simulator import Simulator
+    from . import ros_messages, velocity  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+    from .sim.simulator import (
+        Simulator,  # deferred: start-up (scoopc.robots.sim.simulator loads only when this is used)
+    )
     world, source = find_world(program_paths, options.world)
     settings = sim_settings(world, options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
@@ -418,7 +429,7 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
 
 
 def _run_ros2(options, launch, stderr) -> RunResult:
-    from . import ros_messages, velocity
+    from . import ros_messages, velocity  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
     settings = ros2_settings(options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
     try:

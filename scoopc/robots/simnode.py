@@ -9,8 +9,8 @@ run with `scoopc run --robot ros2`, in another process drives it.
 
 Commands arrive on the transport's thread; they are queued and applied between two steps on the
 node's own thread, so a step sees a consistent state. A node that falls behind the wall clock
-catches up by at most MAX_LAG seconds; beyond that simulated time runs slower (no burst of steps). Progress lines go to stderr. It stops at the
-end of `--duration` (default: the world's `duration`; `--duration 0`: until interrupted), or on
+catches up by at most MAX_LAG seconds; beyond that simulated time runs slower (no burst of
+steps). Progress lines go to stderr. It stops at the end of `--duration` (default: the world's `duration`; `--duration 0`: until interrupted), or on
 Ctrl-C / SIGTERM (a clean stop, exit status 0): every robot is stopped, `--png`, `--gif` and the
 `--record` MCAP file are written, the transport is closed.
 
@@ -123,7 +123,7 @@ def driver_qos(spec) -> dict:
     bringup (ROBOTIS-GIT/turtlebot3, turtlebot3_node/src/odometry.cpp and sensors/sensors.hpp:
     rclcpp::QoS(rclcpp::KeepLast(10)), reliable) publish reliably; laser scans go out best effort
     as laser drivers publish them (sensor-data QoS)."""
-    from .sim import sensors
+    from .sim import sensors  # deferred: start-up (scoopc.robots.sim.sensors loads only when this is used)
     prefix = f"/{spec.namespace}" if spec.namespace else ""
     depth = 1 if spec.kind == "thymio" else 10
     qos = {f"{prefix}/odom": ("reliable", depth), f"{prefix}/battery_state": ("reliable", depth),
@@ -141,10 +141,10 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
     """Run the node; returns the exit status. `bus`: a bus to use instead of opening one (closed by the
     caller); `stop`: a threading.Event that ends the run (tests); `ros_distro`: humble, jazzy or
     lyrical (None: ROS_DISTRO, else jazzy)."""
-    import yaml
+    import yaml  # deferred: start-up (yaml loads only when this is used)
 
-    from . import ros_messages
-    from .sim import Simulator, World, WorldError
+    from . import ros_messages  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+    from .sim import Simulator, World, WorldError  # deferred: start-up (scoopc.robots.sim loads only when this is used)
     stderr = sys.stderr if stderr is None else stderr
     try:
         distro, source = ros_messages.resolve_distro(ros_distro)
@@ -181,7 +181,7 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
             handlers[signum] = signal.signal(signum, flag)
     try:
         if record:
-            from .record import Recorder
+            from .record import Recorder  # deferred: start-up (scoopc.robots.record loads only when this is used)
             clock = {"sim": None}
             recorder = Recorder(node, record, clock=lambda: clock["sim"].time_ns if clock["sim"] else 0)
         sim = Simulator(loaded, node)
@@ -255,7 +255,7 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
 
 def _gif(sim):
     def render(path):
-        from .sim.render import render_gif
+        from .sim.render import render_gif  # deferred: start-up (scoopc.robots.sim.render loads only when this is used)
         return render_gif(sim, path)
     return render
 

@@ -15,13 +15,15 @@ from functools import cache
 
 def new_message(typename, **fields):
     """A message object of the type store (defaults for the fields not given)."""
-    from scoopc.robots import ros_messages  # rosbags and numpy: loaded by programs that publish only
+    from scoopc.robots import ros_messages  # deferred: start-up (rosbags and numpy load only to publish)
     return ros_messages.new(typename, **fields)
 
 
 @cache
 def _classes_of(distro):
-    from scoopc.robots import ros_messages
+    from scoopc.robots import (
+        ros_messages,  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+    )
     return (ros_messages.message_class("geometry_msgs/msg/Vector3"),
             ros_messages.message_class("geometry_msgs/msg/Twist"))
 
@@ -29,7 +31,9 @@ def _classes_of(distro):
 def _classes():
     """The dataclasses of the messages built on every command (built directly: no defaults to
     compute, a fifteenth of the time of `ros_messages.new`), of the process's distribution."""
-    from scoopc.robots import ros_messages
+    from scoopc.robots import (
+        ros_messages,  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+    )
     return _classes_of(ros_messages.distro())
 
 

@@ -36,7 +36,7 @@ def call_later(delay_ns: int, target: Separate, routine: Routine, args: Args = (
     """Log `routine(target, *args)` on target's processor after `delay_ns` (then every
     `period_ns`); returns a Timer with `cancel()`. `phase=0`: on the virtual clock, fire before
     the sleepers and timers due at the same instant (a simulator's step)."""
-    from .clock import Timer
+    from .clock import Timer  # deferred: a cycle (scoopc.runtime.clock imports this module)
     rt = current()
     src = _timer_source(rt)
     return rt.clock.add_timer(Timer(delay_ns, target, routine, args, period_ns, src, phase))

@@ -103,7 +103,7 @@ def find_deadlock(rt: Runtime) -> tuple[frozenset[Block], list[str]] | None:
 
 def dump(rt: Runtime) -> str:
     """A text dump of every live processor and every blocked thread."""
-    from .processor import STATE_NAMES
+    from .processor import STATE_NAMES  # deferred: a cycle (scoopc.runtime.processor imports this module)
     with rt.idlock:
         procs = sorted(rt.procs.values(), key=lambda p: p.id)
     lines = [f"scoop runtime dump: {len(procs)} processors"]

@@ -146,9 +146,9 @@ class Runtime:
     def __init__(self, *, virtual_clock: bool = False, trace_processors: bool = False,
                  strict: bool = False, stdout: TextIO | None = None, stderr: TextIO | None = None,
                  deadlock_tick: float = 0.2) -> None:
-        from .clock import Clock
-        from .output import Output
-        from .permits import Permits
+        from .clock import Clock  # deferred: a cycle (scoopc.runtime.clock imports this module)
+        from .output import Output  # deferred: a cycle (scoopc.runtime.output imports this module)
+        from .permits import Permits  # deferred: a cycle (scoopc.runtime.permits imports this module)
         self.glock = threading.Lock()
         self.describe = None             # describe(exception, processor) -> text, set by run_main
         self.permits = Permits(self)

@@ -26,7 +26,7 @@ class AgentChecks:
             if target is None:
                 return None
             base, handler = target.ty, target.handler
-        from .conformance import base_type
+        from .conformance import base_type  # deferred: a cycle (scoopc.semantics.conformance imports this module)
 
         base_class = base_type(self.universe, base, self.info)
         if base_class.name == "TUPLE" and node.name.key in base_class.labels and not node.arguments:
@@ -64,7 +64,7 @@ class AgentChecks:
     def _from_context(self, open_types: tuple, expected: Ty | None) -> tuple:
         """Open operand types taken from the expected agent type when each of them conforms to
         the routine's own (an agent accepting READABLE_STRING_8 serves as a PROCEDURE [STRING])."""
-        from .conformance import conforms
+        from .conformance import conforms  # deferred: a cycle (scoopc.semantics.conformance imports this module)
 
         if expected is None or expected.name not in ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE") \
                 or not expected.generics or expected.generics[0].name != "TUPLE":

@@ -105,7 +105,9 @@ class CallChecks:
 
     def _find_feature(self, ty: Ty, name):
         """The feature `name` of the class of `ty` (of one of the constraints for a formal)."""
-        from .conformance import constraint_types
+        from .conformance import (
+            constraint_types,  # deferred: a cycle (scoopc.semantics.conformance imports this module)
+        )
 
         bounds = constraint_types(self.universe, ty, self.info)
         renamed = self.info.constraint_renames
@@ -175,8 +177,11 @@ class CallChecks:
         """Whether already-typed (node, Value) arguments meet the formals, without reporting.
         mode "strict": by conformance alone; "manifest": conformance or a manifest constant typed
         by the formal; "convert": also by a conversion."""
-        from .conformance import manifest_fits, why_not
-        from .values import manifest_kind
+        from .conformance import (  # deferred: a cycle (scoopc.semantics.conformance imports this module)
+            manifest_fits,
+            why_not,
+        )
+        from .values import manifest_kind  # deferred: a cycle (scoopc.semantics.values imports this module)
 
         formals = member_signature(self.universe, target_ty, feature).arguments
         if len(formals) != len(arguments):

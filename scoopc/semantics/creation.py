@@ -44,7 +44,7 @@ class CreationChecks:
         target = Value(ty, "<new>") if ty.separate else None
         values = self.actuals(node, arguments, signature.arguments, target)
         if ty.separate:
-            from . import scoop
+            from . import scoop  # deferred: a cycle (scoopc.semantics.scoop imports this module)
 
             self.tables.separate_calls.add(node)
             scoop.lock_passing(self, node, values, signature.arguments)

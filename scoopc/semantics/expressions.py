@@ -67,7 +67,7 @@ class ExpressionChecks:
                 self.expect(node.constant, value, ty, "VJAR")
             return Value(ty)
         self.expr(node.constant)
-        from .values import manifest_kind
+        from .values import manifest_kind  # deferred: a cycle (scoopc.semantics.values imports this module)
 
         kind = manifest_kind(node.constant)
         if kind is None or not manifest_fits(kind[0], kind[1], ty):
@@ -222,7 +222,9 @@ class ExpressionChecks:
         return found
 
     def _operator_targets(self, ty: Ty, converted: bool = True):
-        from .conformance import constraint_types
+        from .conformance import (
+            constraint_types,  # deferred: a cycle (scoopc.semantics.conformance imports this module)
+        )
 
         bounds = constraint_types(self.universe, ty, self.info)
         for bound in bounds[1:]:
@@ -284,7 +286,7 @@ class ExpressionChecks:
     def e_InspectExpression(self, node, expected=None):
         """The expression form of `inspect` (EiffelStudio 22.05+): the rules of the instruction
         (VOMB(1)..(3)) for the subject and choices; its type is the branches' common type."""
-        from .instructions import _inspectable
+        from .instructions import _inspectable  # deferred: a cycle (scoopc.semantics.instructions imports this module)
 
         subject = self.expr(node.expression)
         if subject is not None and not _inspectable(subject.ty):

@@ -70,7 +70,7 @@ class InstructionChecks:
             self.report("VJAW", target.span, name=target.name.text, what=f"a {feature.kind}, not a variable")
             return None
         self.tables.features[target] = feature
-        from .features import member_signature
+        from .features import member_signature  # deferred: a cycle (scoopc.semantics.features imports this module)
 
         return Entity(name, "attribute", member_signature(self.universe, self.current, feature).result)
 
@@ -249,8 +249,11 @@ class InstructionChecks:
 
     @contextmanager
     def iteration(self, iteration):
-        from .conformance import ancestor, base_type
-        from .features import member_signature
+        from .conformance import (  # deferred: a cycle (scoopc.semantics.conformance imports this module)
+            ancestor,
+            base_type,
+        )
+        from .features import member_signature  # deferred: a cycle (scoopc.semantics.features imports this module)
 
         value = self.expr(iteration.expression)
         entity = Entity(iteration.name.key, "across", None, iteration.name.span)
@@ -282,7 +285,7 @@ class InstructionChecks:
             self.scopes.pop()
 
     def i_Check(self, node) -> None:
-        from .contracts import assertions
+        from .contracts import assertions  # deferred: a cycle (scoopc.semantics.contracts imports this module)
 
         found = assertions(self, node.assertions)
         if any(isinstance(c.expression, syntax.ManifestBoolean) and not c.expression.value for c in node.assertions):
@@ -327,7 +330,7 @@ def _inspectable(ty) -> bool:
 
 
 def _constant(node):
-    from .values import manifest_kind
+    from .values import manifest_kind  # deferred: a cycle (scoopc.semantics.values imports this module)
 
     kind = manifest_kind(node)
     if kind is not None and kind[0] in ("integer", "character", "string"):

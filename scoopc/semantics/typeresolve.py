@@ -72,7 +72,7 @@ class TypeResolver:
         return any(c.name == "TUPLE" for c in constraints)
 
     def _constraints_hold(self, target, ty: Ty, node) -> bool:
-        from .conformance import conforms  # the conformance pass needs ancestors, built after this pass
+        from .conformance import conforms  # deferred: a cycle (conformance needs this pass's ancestors)
 
         for index, (actual, actual_node) in enumerate(zip(ty.generics, node.generics)):
             for constraint in target.constraints[index] if index < len(target.constraints) else ():
@@ -111,7 +111,7 @@ class TypeResolver:
         anchor = node.anchor
         found: Ty | None = None
         if isinstance(anchor, syntax.Current):
-            from .features import CURRENT
+            from .features import CURRENT  # deferred: a cycle (scoopc.semantics.features imports this module)
 
             found = CURRENT if self.current_anchor else self.info.own_type()
         elif isinstance(anchor, syntax.UnqualifiedCall) and not anchor.arguments and self.anchor is not None:
@@ -128,8 +128,10 @@ class TypeResolver:
 
     def _static_anchor(self, anchor: syntax.StaticCall) -> Ty | None:
         """`like {T}.f`: the type of T's feature f."""
-        from .conformance import constraint_types
-        from .signatures import feature_type_in
+        from .conformance import (
+            constraint_types,  # deferred: a cycle (scoopc.semantics.conformance imports this module)
+        )
+        from .signatures import feature_type_in  # deferred: a cycle (scoopc.semantics.signatures imports this module)
 
         base = self.resolve(anchor.type)
         if base is None:
@@ -141,7 +143,7 @@ class TypeResolver:
         return None
 
     def _qualified_anchor(self, anchor: syntax.QualifiedCall) -> Ty | None:
-        from .signatures import feature_type_in
+        from .signatures import feature_type_in  # deferred: a cycle (scoopc.semantics.signatures imports this module)
 
         if isinstance(anchor.target, syntax.UnqualifiedCall):
             base = self.anchor(anchor.target.name.key) if self.anchor else None
@@ -172,7 +174,7 @@ def agent_generics(name: str, generics: tuple, tuple_formal=lambda ty: False) ->
 
 
 def _instantiate(constraint: Ty, actuals: tuple[Ty, ...]) -> Ty:
-    from .types import substitute
+    from .types import substitute  # deferred: a cycle (scoopc.semantics.types imports this module)
 
     return substitute(constraint, actuals)
 

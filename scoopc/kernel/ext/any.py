@@ -3,10 +3,11 @@ by scoopc.kernel.basic): reflection, copying and comparison, `tagged_out`."""
 from __future__ import annotations
 
 from .. import types as T
+from ..strings import new_string_8
+from ..support import type_object
 
 
 def _string(region, text):
-    from ..strings import new_string_8
     return new_string_8(region, text)
 
 
@@ -15,7 +16,6 @@ def generator(current):
 
 
 def generating_type(current):
-    from ..support import type_object
     return type_object(current._region_, T.of(current))
 
 

@@ -21,7 +21,7 @@ def new_exception(region, class_name, message=None):
         return None
     exc = region.new(pycls)
     if message is not None:
-        from scoopc.kernel import strings
+        from scoopc.kernel import strings  # deferred: start-up (loaded on first use only)
         text = strings.new_string_32(region, message)
         setter = getattr(exc, "set_description", None)
         if setter is not None:

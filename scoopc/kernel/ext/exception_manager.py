@@ -14,7 +14,9 @@ whether an exception object's dynamic type is ignored in that region.
 import threading
 import weakref
 
+from scoopc.kernel import support
 from scoopc.kernel.errors import EiffelFailure
+from scoopc.kernel.types import TypeDesc, of
 
 _STATES = weakref.WeakKeyDictionary()    # region (Processor) -> _State
 _LOCK = threading.Lock()
@@ -48,7 +50,6 @@ def _desc_key(desc):
 def type_key(a_type):
     """The key of the type a TYPE value denotes: a TypeDesc itself, or a TYPE [X] object
     (whose `_gen_[0]` is X)."""
-    from scoopc.kernel.types import TypeDesc
     if isinstance(a_type, TypeDesc):
         return _desc_key(a_type)
     gen = getattr(a_type, "_gen_", None)
@@ -67,7 +68,6 @@ def last_exception(current):
     st = _STATES.get(region)
     if st is not None and st.last is not None:
         return st.last
-    from scoopc.kernel import support
     last_caught = getattr(support, "last_caught", None)
     error = last_caught(region) if last_caught is not None else None
     if error is None:
@@ -101,5 +101,4 @@ def exception_is_ignored(region, exc):
     st = _STATES.get(region)
     if st is None or not st.ignored:
         return False
-    from scoopc.kernel.types import of
     return _desc_key(of(exc)) in st.ignored

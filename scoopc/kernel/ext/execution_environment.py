@@ -11,19 +11,18 @@ import os
 import subprocess
 import sys
 
+from scoopc.kernel import strings
+
 
 def _s8(current, value):
-    from scoopc.kernel import strings
     return strings.new_string_8(current._region_, value)
 
 
 def _s32(current, value):
-    from scoopc.kernel import strings
     return strings.new_string_32(current._region_, value)
 
 
 def _text(obj):
-    from scoopc.kernel import strings
     return strings.text(obj)
 
 

@@ -10,6 +10,7 @@ Status queries on a file name (`exists`, `is_plain`, `date`, ...) follow symboli
 import os
 import stat as _stat
 
+from scoopc.kernel import strings
 from scoopc.kernel.ext import io_medium as M
 
 
@@ -423,5 +424,4 @@ def wipe_out(current):
 # --- Implementation -----------------------------------------------------------------------
 
 def path_name(current):
-    from scoopc.kernel import strings
     return strings.new_string_32(current._region_, _name(current))

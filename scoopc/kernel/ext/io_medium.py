@@ -30,6 +30,10 @@ surrogate escapes (copying a file reproduces it byte for byte); `count`, `positi
 `sys.stdin` at call time, under a lock, with the standard output flushed first (a prompt
 shows before the program waits).
 """
+from scoopc.kernel import strings
+from scoopc.kernel.ext.exception import failure
+from scoopc.kernel.ext.single_math import to_single
+
 CLOSED, READ, WRITE, APPEND, READ_WRITE, APPEND_READ = range(6)
 _READ_MODES = (READ, READ_WRITE, APPEND_READ)
 _BLANKS = " \t\n\r\v\f"           # C's isspace
@@ -51,18 +55,15 @@ _NO_LOCK = _NoLock()
 # --- helpers shared with file.py and console.py ---------------------------------------------
 
 def text_of(s):
-    from scoopc.kernel import strings
     return strings.text(s)
 
 
 def new_string_8(current, text):
-    from scoopc.kernel import strings
     return strings.new_string_8(current._region_, text)
 
 
 def fail(current, message, kind="IO_FAILURE", cause=None):
     """The exception to raise for a failed operation on the medium."""
-    from scoopc.kernel.ext.exception import failure
     name = getattr(current, "_name", None)
     where = f"{name}: " if name else ""
     return failure(current._region_, kind, where + message, cause)
@@ -77,7 +78,6 @@ def is_console(current):
 
 
 def set_last_string(current, text):
-    from scoopc.kernel import strings
     obj = getattr(current, "_last_string", None)
     setter = getattr(strings, "set_text", None)
     if obj is not None and setter is not None:
@@ -160,7 +160,6 @@ def _wrap(value, bits, signed):
 
 def _real_out(value, single):
     """`r.out` / `d.out`: the string helpers' formats (rebound to the basic types' `out`)."""
-    from scoopc.kernel import strings
     return strings.real_32_out(value) if single else strings.real_64_out(value)
 
 
@@ -201,7 +200,7 @@ last_natural_64 = _last("_last_natural_64")
 def exists(current):
     if is_console(current) or mode(current) != CLOSED:
         return True
-    from scoopc.kernel.ext import file
+    from scoopc.kernel.ext import file  # deferred: a cycle (scoopc.kernel.ext.file imports this module)
     return file.host_exists(current)
 
 
@@ -221,7 +220,7 @@ def _permission(current, what):
     console = getattr(current, "_console", None)
     if console is not None:
         return (console == "stdin") == (what == "r")
-    from scoopc.kernel.ext import file
+    from scoopc.kernel.ext import file  # deferred: a cycle (scoopc.kernel.ext.file imports this module)
     return file.host_access(current, what)
 
 
@@ -248,7 +247,7 @@ def readable(current):
             return not chan.eof
     if chan is None or chan.eof:
         return False
-    from scoopc.kernel.ext import file
+    from scoopc.kernel.ext import file  # deferred: a cycle (scoopc.kernel.ext.file imports this module)
     return file.count(current) > 0
 
 
@@ -434,7 +433,6 @@ def _scan_double(current, chan, what):
 
 
 def read_real(current):
-    from scoopc.kernel.ext.single_math import to_single
     with _Reading(current) as chan:
         current._last_real = to_single(_scan_double(current, chan, "REAL"))
 

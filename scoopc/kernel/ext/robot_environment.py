@@ -1,6 +1,9 @@
 """ROBOT_ENVIRONMENT's `external "Python"` features (stdlib/roboscoop/util/robot_environment.e):
 the settings `scoopc run` gave this run (scoopc.robots.runner.settings_of the running runtime)."""
+import sys
+
 from scoopc import runtime
+from scoopc.kernel import strings
 from scoopc.robots import runner
 
 
@@ -13,7 +16,6 @@ def _namespaces():
 
 
 def namespace_of(current, i):
-    from scoopc.kernel import strings
     return strings.new_string_8(current._region_, _namespaces()[i - 1])
 
 
@@ -89,13 +91,10 @@ def has_charging_station(current):
 
 
 def ros_distro(current):
-    from scoopc.kernel import strings
     return strings.new_string_8(current._region_, _settings().distro)
 
 
 def report(current, text):
-    import sys
 
-    from scoopc.kernel import strings
     sys.stderr.write(f"scoopc: {strings.text(text)}\n")
     sys.stderr.flush()

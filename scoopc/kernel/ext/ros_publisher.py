@@ -5,12 +5,12 @@ and puts it on the process's transport (scoopc.robots.transport.current()), sync
 the publishing processor's thread. The Eiffel side passes plain values only.
 """
 
+from scoopc.kernel import strings
 from scoopc.robots import transport
 from scoopc.robots.velocity import new_message, twist, twist_stamped
 
 
 def _text(obj):
-    from scoopc.kernel import strings
     return strings.text(obj)
 
 
@@ -28,5 +28,7 @@ def publish_float64(current, value):
 
 
 def publish_message(current, message):
-    from scoopc.robots import eiffel_bridge
+    from scoopc.robots import (
+        eiffel_bridge,  # deferred: start-up (scoopc.robots.eiffel_bridge loads only when this is used)
+    )
     transport.current().publish(_text(current.topic), eiffel_bridge.to_message(message))

@@ -13,12 +13,13 @@ import math
 import threading
 
 import scoopc.runtime as rt
-from scoopc.kernel import link
+from scoopc import kernel
+from scoopc.kernel import link, strings, types
+from scoopc.kernel.ext.exception import failure
 from scoopc.robots import transport
 
 
 def _text(obj):
-    from scoopc.kernel import strings
     return strings.text(obj)
 
 
@@ -62,7 +63,9 @@ class _Message:
         self.msg = msg
 
     def eiffel(self, region):
-        from scoopc.robots import eiffel_bridge
+        from scoopc.robots import (
+            eiffel_bridge,  # deferred: start-up (scoopc.robots.eiffel_bridge loads only when this is used)
+        )
         return eiffel_bridge.from_message(self.msg, region)
 
 
@@ -72,8 +75,6 @@ def message_value(msg):
 
 def real_array(region, values):
     """A new ARRAY [REAL_64] (1-based) in `region` holding `values`."""
-    from scoopc import kernel
-    from scoopc.kernel import types
     generic = (types.t("REAL_64"),)
     items = list(values)
     special = region.new(kernel.cls("SPECIAL"))
@@ -169,12 +170,13 @@ def _listen(current, listener, routine, convert, extra=(), msgtype=None):
 
 def listen(current, listener):
     """ROS_SUBSCRIBER [M].listen: messages as objects of M (its ROS type from M's class name)."""
-    from scoopc.robots import eiffel_bridge
+    from scoopc.robots import (
+        eiffel_bridge,  # deferred: start-up (scoopc.robots.eiffel_bridge loads only when this is used)
+    )
     name = current._gen_[0].key
     try:
         typename = eiffel_bridge.typename_of_class(name)
     except KeyError:
-        from scoopc.kernel.ext.exception import failure
         raise failure(current._region_, "DEVELOPER_EXCEPTION",
                       f"ROS_SUBSCRIBER [{name.split('@')[0]}]: `listen' needs a message class "
                       f"(from `scoopc msg' or communication/messages/) as its actual generic") from None

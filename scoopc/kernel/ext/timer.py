@@ -5,6 +5,8 @@ agent's processor. The timer keeps its runtime Timer handles in `_pending` (Pyth
 the TIMER object, touched only by its own processor and by the calls it schedules)."""
 import scoopc.runtime as rt
 
+from .routine import run
+
 
 def now(current):
     return rt.now_ns() / 1e9
@@ -19,7 +21,6 @@ def _pending(current):
 
 def _fire(action, timer, handle_box):
     """On the agent's processor: forget a one-shot call, then call the agent."""
-    from .routine import run
     handle = handle_box[0]
     if handle is not None and not handle.period:
         pending = _pending(timer)

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 from .. import types as T
+from ..strings import new_immutable_8, new_immutable_32
+from ..support import type_object
 
 
 def _desc(current):
@@ -10,12 +12,10 @@ def _desc(current):
 
 
 def name(current):
-    from ..strings import new_immutable_8
     return new_immutable_8(current._region_, _desc(current).name)
 
 
 def name_32(current):
-    from ..strings import new_immutable_32
     return new_immutable_32(current._region_, _desc(current).name)
 
 
@@ -27,7 +27,6 @@ def type_id(current):
 
 
 def generic_parameter_type(current, i):
-    from ..support import type_object
     return type_object(current._region_, _desc(current).generics[i - 1])
 
 

@@ -26,7 +26,7 @@ class Simulator:
         if not isinstance(world, World):
             world = World.load(world) if isinstance(world, str) else World.from_dict(world)
         if bus is None:
-            from scoopc.robots.bus import Bus
+            from scoopc.robots.bus import Bus  # deferred: start-up (loaded on first use only)
             bus = Bus()
         self.world = world
         self.bus = bus
@@ -216,5 +216,5 @@ class Simulator:
                 for r in self.robots}
 
     def render_png(self, path, **kw):
-        from .render import render_png
+        from .render import render_png  # deferred: a cycle (scoopc.robots.sim.render imports this module)
         return render_png(self, path, **kw)

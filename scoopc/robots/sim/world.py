@@ -197,7 +197,9 @@ def _stamped_default(kind):
     turtlebot3_node/src/turtlebot3.cpp cmd_vel_callback); the others Twist."""
     if kind != "turtlebot3":
         return False
-    from scoopc.robots.ros_messages import distro
+    from scoopc.robots.ros_messages import (
+        distro,  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+    )
     return distro() != "humble"
 
 
