@@ -3,6 +3,7 @@
 A Project lists the user's source files, the root named by an .ecf, the settings we honour and
 notes for what we ignore. The standard library is added by later stages, not here.
 """
+
 from __future__ import annotations
 
 import os
@@ -21,8 +22,14 @@ from .source import Span
 # folder under $ISE_LIBRARY/library/ of its `location`), and the stdlib cluster that is each one:
 # EiffelBase (FreeELKS is its kernel, `base-safe`/`base-scoop-safe` are its older .ecf files),
 # EiffelThread, EiffelTime and Roboscoop.
-STDLIB_LIBRARIES = {"base": "base", "free_elks": "base", "elks": "base", "thread": "thread",
-                    "time": "time", "roboscoop": "roboscoop"}
+STDLIB_LIBRARIES = {
+    "base": "base",
+    "free_elks": "base",
+    "elks": "base",
+    "thread": "thread",
+    "time": "time",
+    "roboscoop": "roboscoop",
+}
 # Libraries of EiffelStudio that we are going to provide, named in a note rather than an error.
 PLANNED_LIBRARIES = {"testing": "EiffelStudio's testing library (EQA_TEST_SET) is not available yet"}
 # Variables naming EiffelStudio's installation in library locations.
@@ -39,9 +46,9 @@ class Root:
 class Settings:
     """What an .ecf (or the command line) asks of the compiler."""
 
-    assertions: str | None = None        # "all" | "require" | "none"; None: the tool's default
-    void_safety: str | None = None       # "none" | "conformance" | "initialization" | "transitional" | "all"
-    concurrency: str | None = None       # "scoop" | "thread" | "none"
+    assertions: str | None = None  # "all" | "require" | "none"; None: the tool's default
+    void_safety: str | None = None  # "none" | "conformance" | "initialization" | "transitional" | "all"
+    concurrency: str | None = None  # "scoop" | "thread" | "none"
 
 
 @dataclass
@@ -51,8 +58,8 @@ class Project:
     settings: Settings = field(default_factory=Settings)
     notes: list[Diagnostic] = field(default_factory=list)
     errors: list[Diagnostic] = field(default_factory=list)
-    libraries: list[str] = field(default_factory=list)      # the stdlib clusters the .ecf names
-    ecf_files: list[Path] = field(default_factory=list)     # every .ecf read (libraries' included)
+    libraries: list[str] = field(default_factory=list)  # the stdlib clusters the .ecf names
+    ecf_files: list[Path] = field(default_factory=list)  # every .ecf read (libraries' included)
 
     def add_file(self, path: Path) -> None:
         resolved = path.resolve()
@@ -80,8 +87,13 @@ def collect(paths: list[str], target: str | None = None) -> Project:
     return project
 
 
-def _add_cluster(project: Project, directory: Path, recursive: bool,
-                 excludes: tuple[re.Pattern, ...] = (), includes: tuple[re.Pattern, ...] = ()) -> None:
+def _add_cluster(
+    project: Project,
+    directory: Path,
+    recursive: bool,
+    excludes: tuple[re.Pattern, ...] = (),
+    includes: tuple[re.Pattern, ...] = (),
+) -> None:
     pattern = "**/*.e" if recursive else "*.e"
     for file in sorted(directory.glob(pattern)):
         parts = file.relative_to(directory).parts
@@ -99,6 +111,7 @@ def _excluded(parts: tuple[str, ...], excludes: tuple[re.Pattern, ...], includes
 
 
 # --- .ecf ----------------------------------------------------------------------------------
+
 
 def _local(tag: str) -> str:
     """An element's tag without its XML namespace."""
@@ -147,8 +160,9 @@ def _parse_xml(path: Path):
     return builder.close(), positions
 
 
-def _read_ecf(project: Project, path: Path, target_name: str | None,
-              chain: tuple = (), named_at: Span | None = None) -> None:
+def _read_ecf(
+    project: Project, path: Path, target_name: str | None, chain: tuple = (), named_at: Span | None = None
+) -> None:
     """Read the .ecf file `path`: the application's (chain empty) or a library's, named at
     `named_at` by the last of `chain` (the .ecf files naming each other down to this one)."""
     try:
@@ -157,8 +171,11 @@ def _read_ecf(project: Project, path: Path, target_name: str | None,
         line, column = problem.lineno, problem.offset
         span = Span(str(path), line, column + 1, line, column + 2)
         reason = expat.ErrorString(problem.code)
-        project.errors.append(diagnostics.make("ECF", span, reason=f"{path} is not well-formed XML: {reason}: "
-                                                                   f"line {line}, column {column}"))
+        project.errors.append(
+            diagnostics.make(
+                "ECF", span, reason=f"{path} is not well-formed XML: {reason}: line {line}, column {column}"
+            )
+        )
         return
     except _Refused as problem:
         project.errors.append(diagnostics.make("ECF", _ecf_span(path), reason=f"{path}: {problem}"))
@@ -174,7 +191,7 @@ def _read_ecf(project: Project, path: Path, target_name: str | None,
         project.errors.append(diagnostics.make("ECF", _ecf_span(path), reason=f"{path} defines no target"))
         return
     if chain and target_name is None:
-        target_name = system.get("library_target") or None    # a library's own target, if it names one
+        target_name = system.get("library_target") or None  # a library's own target, if it names one
         if target_name not in targets:
             target_name = None
     chosen = _choose_target(project, path, targets, target_name)
@@ -188,9 +205,13 @@ def _read_ecf(project: Project, path: Path, target_name: str | None,
 def _choose_target(project: Project, path: Path, targets: dict, wanted: str | None):
     if wanted is not None:
         if wanted not in targets:
-            project.errors.append(diagnostics.make(
-                "ECF", _ecf_span(path),
-                reason=f"{path} has no target `{wanted}`; its targets are: {', '.join(targets)}"))
+            project.errors.append(
+                diagnostics.make(
+                    "ECF",
+                    _ecf_span(path),
+                    reason=f"{path} has no target `{wanted}`; its targets are: {', '.join(targets)}",
+                )
+            )
             return None
         return targets[wanted]
     concrete = [t for t in targets.values() if t.get("abstract", "false").lower() != "true"]
@@ -216,9 +237,24 @@ def _expand_location(location: str, base: Path) -> Path:
 _IGNORED_QUIETLY = {"note", "description", "file_rule", "version", "uuid"}
 # What a library's .ecf holds that applies to the library alone (its root, its options): the
 # application's settings govern every class (docs/LANGUAGE.md, Libraries).
-_LIBRARY_ONLY = {"root", "option", "capability", "setting", "external_include", "external_object",
-                 "external_library", "external_cflag", "external_linker_flag", "variable", "mapping",
-                 "pre_compile_action", "post_compile_action", "debug", "assertions", "warning"}
+_LIBRARY_ONLY = {
+    "root",
+    "option",
+    "capability",
+    "setting",
+    "external_include",
+    "external_object",
+    "external_library",
+    "external_cflag",
+    "external_linker_flag",
+    "variable",
+    "mapping",
+    "pre_compile_action",
+    "post_compile_action",
+    "debug",
+    "assertions",
+    "warning",
+}
 
 
 class _EcfReader:
@@ -254,8 +290,11 @@ class _EcfReader:
     def read_cluster(self, element: ElementTree.Element, base: Path) -> None:
         location = _expand_location(element.get("location", "."), base)
         if not location.is_dir():
-            self.project.errors.append(diagnostics.make(
-                "ECF", self.span(element), reason=f"cluster `{element.get('name')}`: no directory {location}"))
+            self.project.errors.append(
+                diagnostics.make(
+                    "ECF", self.span(element), reason=f"cluster `{element.get('name')}`: no directory {location}"
+                )
+            )
             return
         recursive = element.get("recursive", "false").lower() == "true"
         _add_cluster(self.project, location, recursive, _patterns(element, "exclude"), _patterns(element, "include"))
@@ -280,28 +319,47 @@ class _EcfReader:
         if not raw or _ise_folder(raw) is not None:
             known = ", ".join(sorted(set(STDLIB_LIBRARIES) - {"free_elks", "elks"}))
             where = f" ({raw})" if raw else ""
-            project.errors.append(diagnostics.make(
-                "ECF-LIBRARY", self.span(element), name=name, location=where,
-                reason="scoopc does not have this library", hint=f"the libraries scoopc has are: {known}"))
+            project.errors.append(
+                diagnostics.make(
+                    "ECF-LIBRARY",
+                    self.span(element),
+                    name=name,
+                    location=where,
+                    reason="scoopc does not have this library",
+                    hint=f"the libraries scoopc has are: {known}",
+                )
+            )
             return
         path = Path(os.path.normpath(_expand_location(raw, self.ecf.parent)))
         if path.is_dir():
             path = path / f"{name}.ecf"
         if not path.is_file():
-            project.errors.append(diagnostics.make(
-                "ECF-LIBRARY", self.span(element), name=name, location=f" ({raw})",
-                reason=f"no .ecf file {path}",
-                hint="a library's location names its .ecf file, relative to the .ecf file naming it"))
+            project.errors.append(
+                diagnostics.make(
+                    "ECF-LIBRARY",
+                    self.span(element),
+                    name=name,
+                    location=f" ({raw})",
+                    reason=f"no .ecf file {path}",
+                    hint="a library's location names its .ecf file, relative to the .ecf file naming it",
+                )
+            )
             return
         resolved = path.resolve()
         if resolved in self.chain:
-            cycle = self.chain[self.chain.index(resolved):] + (resolved,)
-            project.notes.append(diagnostics.make(
-                "ECF-CYCLE", self.span(element), severity=diagnostics.WARNING, name=name,
-                cycle=" -> ".join(p.name for p in cycle)))
+            cycle = self.chain[self.chain.index(resolved) :] + (resolved,)
+            project.notes.append(
+                diagnostics.make(
+                    "ECF-CYCLE",
+                    self.span(element),
+                    severity=diagnostics.WARNING,
+                    name=name,
+                    cycle=" -> ".join(p.name for p in cycle),
+                )
+            )
             return
         if resolved in project.ecf_files:
-            return                      # named by two libraries: read once
+            return  # named by two libraries: read once
         _read_ecf(project, path, None, self.chain, self.span(element))
 
 
@@ -321,7 +379,7 @@ def _ise_folder(location: str) -> str | None:
 def _stdlib_library(name: str, location: str) -> str | None:
     """The stdlib cluster an .ecf <library> (or <precompile>) names, or None."""
     precompiled = re.match(r"\$\(?ISE_PRECOMP\)?[/\\](.*)$", location, re.IGNORECASE)
-    if precompiled is not None:         # $ISE_PRECOMP/base-scoop-safe.ecf: EiffelBase precompiled
+    if precompiled is not None:  # $ISE_PRECOMP/base-scoop-safe.ecf: EiffelBase precompiled
         stem = Path(precompiled.group(1).replace("\\", "/")).stem.lower()
         return STDLIB_LIBRARIES.get(re.split(r"[-_.]", stem)[0])
     folder = _ise_folder(location) if location else None
@@ -338,8 +396,7 @@ def _planned_library(name: str, location: str) -> str | None:
 
 
 def _note(project: Project, ecf: Path, reason: str, span: Span | None = None) -> None:
-    project.notes.append(diagnostics.make("ECF-NOTE", span or _ecf_span(ecf), severity=diagnostics.NOTE,
-                                          reason=reason))
+    project.notes.append(diagnostics.make("ECF-NOTE", span or _ecf_span(ecf), severity=diagnostics.NOTE, reason=reason))
 
 
 def _read_root(project: Project, element: ElementTree.Element) -> None:

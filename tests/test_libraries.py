@@ -1,6 +1,7 @@
 """Projects with libraries: an .ecf's <library> loads the stdlib's base, thread and time clusters
 (by $ISE_LIBRARY location or by name), a user's library from its own .ecf (recursively), warns
 about a cycle, and names a library we do not have in one error at the element's line:column."""
+
 import io
 from pathlib import Path
 
@@ -77,15 +78,19 @@ def test_a_library_cycle_is_reported_and_each_library_read_once():
 
 
 def test_an_unknown_library_is_one_error_at_its_line_and_column(tmp_path):
-    ecf = _project(tmp_path, '\t\t<library name="base" location="$ISE_LIBRARY/library/base/base.ecf"/>\n'
-                             '\t\t<library name="vision2" location="$ISE_LIBRARY\\library\\vision2\\vision2.ecf"/>')
+    ecf = _project(
+        tmp_path,
+        '\t\t<library name="base" location="$ISE_LIBRARY/library/base/base.ecf"/>\n'
+        '\t\t<library name="vision2" location="$ISE_LIBRARY\\library\\vision2\\vision2.ecf"/>',
+    )
     result = scoopc.check([str(ecf)])
     errors = [d for d in result.diagnostics if d.is_error]
     assert result.status == Exit.SOURCE and [d.code for d in errors] == ["ECF-LIBRARY"]
     error = errors[0]
     assert (error.span.file, error.span.line, error.span.column) == (str(ecf), 6, 3)
-    assert error.message == ("library `vision2` ($ISE_LIBRARY\\library\\vision2\\vision2.ecf): "
-                             "scoopc does not have this library")
+    assert error.message == (
+        "library `vision2` ($ISE_LIBRARY\\library\\vision2\\vision2.ecf): scoopc does not have this library"
+    )
     assert "base, roboscoop, thread, time" in error.hint
 
 
@@ -100,10 +105,13 @@ def test_a_missing_library_ecf_is_an_error(tmp_path):
 def test_ise_library_thread_time_and_testing(tmp_path, monkeypatch):
     # EiffelStudio's own installation, if any, is never read: $ISE_LIBRARY means ours
     monkeypatch.setenv("ISE_LIBRARY", str(tmp_path / "no-such-installation"))
-    ecf = _project(tmp_path, '\t\t<library name="thread" location="$ISE_LIBRARY/library/thread/thread.ecf"/>\n'
-                             '\t\t<library name="time" location="$(ISE_LIBRARY)\\library\\time\\time.ecf"/>\n'
-                             '\t\t<library name="testing" location="$ISE_LIBRARY/library/testing/testing.ecf"/>\n'
-                             '\t\t<precompile name="base_pre" location="$ISE_PRECOMP\\base-scoop-safe.ecf"/>')
+    ecf = _project(
+        tmp_path,
+        '\t\t<library name="thread" location="$ISE_LIBRARY/library/thread/thread.ecf"/>\n'
+        '\t\t<library name="time" location="$(ISE_LIBRARY)\\library\\time\\time.ecf"/>\n'
+        '\t\t<library name="testing" location="$ISE_LIBRARY/library/testing/testing.ecf"/>\n'
+        '\t\t<precompile name="base_pre" location="$ISE_PRECOMP\\base-scoop-safe.ecf"/>',
+    )
     project = collect([str(ecf)])
     assert not project.errors and project.libraries == ["thread", "time", "base"]
     testing = [n for n in project.notes if "testing" in n.message]
@@ -115,8 +123,10 @@ def test_ise_library_thread_time_and_testing(tmp_path, monkeypatch):
 def test_entity_declarations_are_refused(tmp_path):
     (tmp_path / "app.e").write_text(APP)
     ecf = tmp_path / "app.ecf"
-    ecf.write_text('<?xml version="1.0"?>\n<!DOCTYPE system [<!ENTITY big "xxxxxxxxxx">]>\n'
-                   '<system name="&big;"><target name="t"><cluster name="c" location="."/></target></system>\n')
+    ecf.write_text(
+        '<?xml version="1.0"?>\n<!DOCTYPE system [<!ENTITY big "xxxxxxxxxx">]>\n'
+        '<system name="&big;"><target name="t"><cluster name="c" location="."/></target></system>\n'
+    )
     result = scoopc.check([str(ecf)])
     assert result.status == Exit.SOURCE
     assert [d.code for d in result.diagnostics if d.is_error] == ["ECF"]

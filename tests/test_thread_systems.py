@@ -2,6 +2,7 @@
 golden cases (tests/golden/threads_mutex); this file holds those today's checker still refuses,
 each marked with the rule that blocks it, until the .ecf `concurrency` setting selects the rules
 of a thread system."""
+
 import io
 from pathlib import Path
 
@@ -13,10 +14,14 @@ from scoopc.exits import Exit
 LIBRARIES = Path(__file__).parent / "libraries"
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "VFFD(8) (scoopc/semantics/scoop.py, check_process_once) refuses a `once (\"PROCESS\")` function "
-    "of the non-separate type MUTEX, the usual lock shared by every thread of a thread system; "
-    "EiffelStudio accepts it when the .ecf's concurrency is `thread`"))
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        'VFFD(8) (scoopc/semantics/scoop.py, check_process_once) refuses a `once ("PROCESS")` function '
+        "of the non-separate type MUTEX, the usual lock shared by every thread of a thread system; "
+        "EiffelStudio accepts it when the .ecf's concurrency is `thread`"
+    ),
+)
 def test_a_process_wide_mutex_in_a_thread_system():
     out = io.StringIO()
     result = scoopc.run([str(LIBRARIES / "process_once")], stdout=out)
@@ -32,10 +37,11 @@ def test_what_blocks_the_process_wide_mutex_is_vffd_8():
 def test_an_exception_in_a_thread_ends_the_program_with_its_eiffel_trace():
     out, err = io.StringIO(), io.StringIO()
     result = scoopc.run([str(LIBRARIES / "thread_failure")], stdout=out, stderr=err)
-    assert result.status == Exit.RUNTIME and out.getvalue() == ""       # the root stops in `join'
+    assert result.status == Exit.RUNTIME and out.getvalue() == ""  # the root stops in `join'
     report = err.getvalue()
-    assert report.startswith("scoopc: run-time failure: precondition violated: `locked_by_caller` "
-                             "(in MUTEX.unlock, mutex.e:")
+    assert report.startswith(
+        "scoopc: run-time failure: precondition violated: `locked_by_caller` (in MUTEX.unlock, mutex.e:"
+    )
     assert "called by BAD.execute (bad.e:9)" in report and "Traceback" not in report
 
 
@@ -52,6 +58,7 @@ def test_read_write_lock_sleep_attributes_and_join_all():
 def _externals(cluster):
     """(class file, feature) of every `external "Python"` feature of a stdlib cluster."""
     import re
+
     root = Path(scoopc.__file__).parent.parent / "stdlib" / cluster
     for path in sorted(root.rglob("*.e")):
         external = r"\n\t(\w+)[^\n]*\n(?:\t\t\t--[^\n]*\n)*\t\texternal\n\t\t\t\"Python\""
@@ -62,6 +69,7 @@ def _externals(cluster):
 def test_every_external_of_the_thread_and_time_libraries_is_implemented():
     import importlib
     import keyword
+
     missing = []
     for cluster in ("thread", "time"):
         for path, name in _externals(cluster):

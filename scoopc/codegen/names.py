@@ -6,13 +6,14 @@ introduced it), so that a call through any ancestor finds the version the object
 get the same Python name, the seed whose class comes first (library before user, ancestor
 before heir) keeps it and the other is qualified with its class: `f__b`.
 """
+
 from __future__ import annotations
 
 import keyword
 
 from ..semantics.types import ALIASES
 
-ONCE_CELL = "_once_"             # a once routine body's last parameter: its cell (runtime once.py)
+ONCE_CELL = "_once_"  # a once routine body's last parameter: its cell (runtime once.py)
 RESERVED = frozenset(keyword.kwlist) | {"self", "here", "Result", "print", "type", "super", "object"}
 
 
@@ -55,7 +56,7 @@ class Naming:
     def __init__(self, universe):
         self.universe = universe
         self.demoted: dict[str, str] = {}
-        self.replicas: dict[str, dict[str, str]] = {}      # class key -> {final name: Python name}
+        self.replicas: dict[str, dict[str, str]] = {}  # class key -> {final name: Python name}
         for info in universe.classes.values():
             self._resolve_class(info)
         done: set = set()

@@ -1,6 +1,7 @@
 """Driver, the root: which class and creation procedure start the program (DESIGN section 8):
 `--root CLASS[.creation]`, else the .ecf's root, else the class named like the single file or
 directory given, else the one class with a `make` that no other given class mentions."""
+
 from __future__ import annotations
 
 import re
@@ -15,8 +16,8 @@ from ..semantics.universe import ClassInfo, Universe
 
 @dataclass(frozen=True)
 class Root:
-    key: str            # the class name, upper case
-    creator: str        # the creation procedure, lower case
+    key: str  # the class name, upper case
+    creator: str  # the creation procedure, lower case
 
 
 def parse_root_option(text: str | None) -> tuple[str, str] | None:

@@ -11,6 +11,7 @@ Every wait (join, lock, wait, acquire) waits in slices and gives up with the run
 on a thread that died. An exception that escapes `execute` ends the program as EiffelStudio's
 does (its report and Eiffel trace, exit status 3): the runtime is told through `rt.fail`.
 """
+
 from __future__ import annotations
 
 import threading
@@ -19,9 +20,9 @@ import time
 from ..runtime import Shutdown
 from ..runtime.once import begin_thread_onces
 
-SLICE = 0.05                        # seconds between two looks at the runtime's stop flag
+SLICE = 0.05  # seconds between two looks at the runtime's stop flag
 
-_local = threading.local()          # per Python thread: children, last launch, Eiffel thread state
+_local = threading.local()  # per Python thread: children, last launch, Eiffel thread state
 
 
 class ThreadExit(BaseException):
@@ -30,11 +31,12 @@ class ThreadExit(BaseException):
 
 class ThreadState:
     """The Python side of one THREAD object."""
+
     __slots__ = ("thread", "ident", "terminated", "done", "launching")
 
     def __init__(self):
-        self.thread = None          # the threading.Thread once launched
-        self.ident = 0              # `thread_id': the running thread's identifier, 0 otherwise
+        self.thread = None  # the threading.Thread once launched
+        self.ident = 0  # `thread_id': the running thread's identifier, 0 otherwise
         self.terminated = False
         self.done = threading.Event()
         self.launching = threading.Lock()
@@ -94,11 +96,12 @@ def launch(obj, body) -> None:
     st = state(obj)
     rt = runtime_of(obj)
     with st.launching:
-        if st.thread is not None:           # another thread launched it first
+        if st.thread is not None:  # another thread launched it first
             _local.launched = False
             return
-        thread = threading.Thread(target=_run, args=(st, rt, obj._region_, body), daemon=True,
-                                  name=f"eiffel-thread-{type(obj).__name__}")
+        thread = threading.Thread(
+            target=_run, args=(st, rt, obj._region_, body), daemon=True, name=f"eiffel-thread-{type(obj).__name__}"
+        )
         st.thread = thread
         thread.start()
         st.ident = thread.ident or 0
@@ -113,7 +116,7 @@ def _run(st, rt, region, body) -> None:
         body()
     except (ThreadExit, Shutdown):
         pass
-    except BaseException as error:        # noqa: BLE001 - an uncaught exception ends the program
+    except BaseException as error:  # noqa: BLE001 - an uncaught exception ends the program
         if rt is not None and not rt.stopping:
             describe = rt.describe
             text = describe(error, region) if describe is not None else f"{type(error).__name__}: {error}"
@@ -158,6 +161,7 @@ def sleep(obj, nanoseconds) -> None:
 class Mutex:
     """A mutex the owning thread may lock again (counted), as a Windows critical section; only
     its owner may unlock it (MUTEX's precondition)."""
+
     __slots__ = ("lock", "owner", "count")
 
     def __init__(self):
@@ -173,8 +177,7 @@ class Mutex:
         if self.owner == me:
             self.count += 1
             return
-        wait_for(lambda seconds: self.lock.acquire(timeout=seconds) if seconds > 0
-                 else self.lock.acquire(False), rt)
+        wait_for(lambda seconds: self.lock.acquire(timeout=seconds) if seconds > 0 else self.lock.acquire(False), rt)
         self.owner, self.count = me, 1
 
     def try_acquire(self) -> bool:
@@ -200,6 +203,5 @@ class Mutex:
         return count
 
     def restore(self, count, rt) -> None:
-        wait_for(lambda seconds: self.lock.acquire(timeout=seconds) if seconds > 0
-                 else self.lock.acquire(False), rt)
+        wait_for(lambda seconds: self.lock.acquire(timeout=seconds) if seconds > 0 else self.lock.acquire(False), rt)
         self.owner, self.count = threading.get_ident(), count

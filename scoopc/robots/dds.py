@@ -26,6 +26,7 @@ order. A callback that raises is logged (and kept in `errors`); the other callba
 A subscription needs the topic's message type: `subscribe(topic, cb, msgtype=...)`, or the `types`
 mapping given to the bus, or the robot interface's default (`default_type(topic)`).
 """
+
 from __future__ import annotations
 
 import logging
@@ -54,8 +55,10 @@ SENSOR_TOPICS = ("odom", "scan", "battery_state")
 SENSOR_GROUPS = ("proximity", "ground")
 #: message types of the robot interface (DESIGN section 7), by topic name relative to the namespace
 DEFAULT_TYPES = {
-    "cmd_vel": "geometry_msgs/msg/Twist", "odom": "nav_msgs/msg/Odometry",
-    "scan": "sensor_msgs/msg/LaserScan", "battery_state": "sensor_msgs/msg/BatteryState",
+    "cmd_vel": "geometry_msgs/msg/Twist",
+    "odom": "nav_msgs/msg/Odometry",
+    "scan": "sensor_msgs/msg/LaserScan",
+    "battery_state": "sensor_msgs/msg/BatteryState",
     "clock": "rosgraph_msgs/msg/Clock",
 }
 
@@ -86,7 +89,7 @@ def _parts(topic: str) -> list[str]:
 
 
 def topic_kind(topic: str) -> str:
-    """"sensor", "clock" or "command" (the QoS family of a ROS topic)."""
+    """ "sensor", "clock" or "command" (the QoS family of a ROS topic)."""
     parts = _parts(topic)
     if parts == ["clock"]:
         return "clock"
@@ -146,12 +149,16 @@ def discovery_settings(distro: str, environ=None) -> tuple[str, list[str], list[
     localhost = environ.get("ROS_LOCALHOST_ONLY", "")
     if distro == "humble":
         if "ROS_AUTOMATIC_DISCOVERY_RANGE" in environ or "ROS_STATIC_PEERS" in environ:
-            warnings.append("ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS do not exist in Humble: "
-                            "ignored (ROS_LOCALHOST_ONLY=1 keeps discovery on this machine)")
+            warnings.append(
+                "ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS do not exist in Humble: "
+                "ignored (ROS_LOCALHOST_ONLY=1 keeps discovery on this machine)"
+            )
         return ("LOCALHOST_ONLY" if localhost == "1" else "SUBNET"), [], warnings
     if localhost.startswith("1"):
-        warnings.append("ROS_LOCALHOST_ONLY is deprecated but still honored: discovery range LOCALHOST, "
-                        "ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS ignored")
+        warnings.append(
+            "ROS_LOCALHOST_ONLY is deprecated but still honored: discovery range LOCALHOST, "
+            "ROS_AUTOMATIC_DISCOVERY_RANGE and ROS_STATIC_PEERS ignored"
+        )
         return "LOCALHOST", [], warnings
     value = environ.get("ROS_AUTOMATIC_DISCOVERY_RANGE", "")
     if value == "":
@@ -159,8 +166,9 @@ def discovery_settings(distro: str, environ=None) -> tuple[str, list[str], list[
     elif value in RANGES:
         rng = value
     else:
-        warnings.append(f"invalid ROS_AUTOMATIC_DISCOVERY_RANGE={value!r}: assuming LOCALHOST "
-                        f"(valid: {', '.join(RANGES)})")
+        warnings.append(
+            f"invalid ROS_AUTOMATIC_DISCOVERY_RANGE={value!r}: assuming LOCALHOST (valid: {', '.join(RANGES)})"
+        )
         rng = "LOCALHOST"
     peers = [] if rng == "OFF" else [p for p in environ.get("ROS_STATIC_PEERS", "").split(";") if p]
     if peers and rng == "SYSTEM_DEFAULT":
@@ -175,11 +183,13 @@ def discovery_config(distro: str, environ=None, pid: int | None = None) -> tuple
     CYCLONEDDS_URI appended after our fragment (so its settings win where both set one)."""
     environ = os.environ if environ is None else environ
     rng, peers, warnings = discovery_settings(distro, environ)
-    if rng == "LOCALHOST_ONLY":               # humble: bind to the loopback interface
-        config = ('<CycloneDDS><Domain><General><Interfaces><NetworkInterface address="127.0.0.1"/>'
-                  '</Interfaces></General></Domain></CycloneDDS>,')
+    if rng == "LOCALHOST_ONLY":  # humble: bind to the loopback interface
+        config = (
+            '<CycloneDDS><Domain><General><Interfaces><NetworkInterface address="127.0.0.1"/>'
+            "</Interfaces></General></Domain></CycloneDDS>,"
+        )
         text = "localhost only (ROS_LOCALHOST_ONLY=1)"
-    elif distro == "humble":                  # humble: nothing but CYCLONEDDS_URI
+    elif distro == "humble":  # humble: nothing but CYCLONEDDS_URI
         config, text = "", "discovery as Cyclone DDS's configuration says"
     else:
         localhost_peer = rng == "LOCALHOST"
@@ -190,7 +200,7 @@ def discovery_config(distro: str, environ=None, pid: int | None = None) -> tuple
             config = "<CycloneDDS><Domain>"
             if no_multicast:
                 config += "<General><AllowMulticast>false</AllowMulticast></General>"
-            if no_multicast and not localhost_peer and not add_peers:     # OFF
+            if no_multicast and not localhost_peer and not add_peers:  # OFF
                 pid = os.getpid() if pid is None else pid
                 config += f"<Discovery><ParticipantIndex>none</ParticipantIndex><Tag>ros_discovery_off_{pid}</Tag>"
             else:
@@ -211,7 +221,7 @@ def discovery_config(distro: str, environ=None, pid: int | None = None) -> tuple
     return config, text, warnings
 
 
-_domains: dict = {}                 # [_domains_lock] domain id -> [Domain, refcount, config]
+_domains: dict = {}  # [_domains_lock] domain id -> [Domain, refcount, config]
 _domains_lock = threading.Lock()
 
 
@@ -219,17 +229,17 @@ def _acquire_domain(domain: int, config: str):
     """Create the DDS domain with `config` (once per process and id, reference counted; a second
     bus asking other settings is refused, as rmw_cyclonedds_cpp's check_create_domain does)."""
     from cyclonedds.domain import Domain  # deferred: start-up (cyclonedds loads only when this is used)
+
     with _domains_lock:
         entry = _domains.get(domain)
         if entry is not None:
             if entry[2] != config:
-                raise DiscoveryError(f"domain {domain} is already open in this process with other "
-                                     f"discovery settings")
+                raise DiscoveryError(f"domain {domain} is already open in this process with other discovery settings")
             entry[1] += 1
             return True
         try:
             made = Domain(domain, config)
-        except Exception:                    # noqa: BLE001 - a participant made without us holds it
+        except Exception:  # noqa: BLE001 - a participant made without us holds it
             return False
         _domains[domain] = [made, 1, config]
         return True
@@ -247,12 +257,20 @@ def _release_domain(domain: int) -> None:
 
 
 #: DDS QoS policy ids (Cyclone DDS's dds_qos_policy_id_t) named in incompatibility reports
-_POLICIES = {2: "durability", 4: "deadline", 8: "liveliness", 11: "reliability", 12: "destination order",
-             13: "history", 23: "data representation", 24: "type consistency"}
+_POLICIES = {
+    2: "durability",
+    4: "deadline",
+    8: "liveliness",
+    11: "reliability",
+    12: "destination order",
+    13: "history",
+    23: "data representation",
+    24: "type consistency",
+}
 
 
 def reliability_of(topic: str, override: str | None = None) -> str:
-    """"reliable" or "best effort": the reliability `qos_policies` gives `topic`."""
+    """ "reliable" or "best effort": the reliability `qos_policies` gives `topic`."""
     chosen = override or ("reliable" if topic_kind(topic) == "command" else "best_effort")
     return "reliable" if chosen == "reliable" else "best effort"
 
@@ -284,11 +302,23 @@ def loopback_environment(folder, domain: int) -> dict:
     return {"CYCLONEDDS_URI": path.resolve().as_uri(), "ROS_DOMAIN_ID": str(domain)}
 
 
-_BASES = {"bool": bool, "byte": idl.byte, "char": idl.uint8, "int8": idl.int8, "uint8": idl.uint8,
-          "int16": idl.int16, "uint16": idl.uint16, "int32": idl.int32, "uint32": idl.uint32,
-          "int64": idl.int64, "uint64": idl.uint64, "float32": idl.float32, "float64": idl.float64}
-_HANDLE_MASK = (1 << 64) - 1            # instance handles are uint64; the Python API may give them signed
-_idl_types: dict = {}          # [_idl_lock] (id(store), typename) -> IdlStruct class
+_BASES = {
+    "bool": bool,
+    "byte": idl.byte,
+    "char": idl.uint8,
+    "int8": idl.int8,
+    "uint8": idl.uint8,
+    "int16": idl.int16,
+    "uint16": idl.uint16,
+    "int32": idl.int32,
+    "uint32": idl.uint32,
+    "int64": idl.int64,
+    "uint64": idl.uint64,
+    "float32": idl.float32,
+    "float64": idl.float64,
+}
+_HANDLE_MASK = (1 << 64) - 1  # instance handles are uint64; the Python API may give them signed
+_idl_types: dict = {}  # [_idl_lock] (id(store), typename) -> IdlStruct class
 _idl_lock = threading.Lock()
 
 
@@ -355,17 +385,26 @@ class _Reader:
         self.dds_topic = dds_topic
         self.reader = reader
         self.condition = condition
-        self.subs = []           # [DdsBus._lock] open Subscriptions, in subscription order
-        self.count = 0           # samples received (read by the "nothing heard" report)
+        self.subs = []  # [DdsBus._lock] open Subscriptions, in subscription order
+        self.count = 0  # samples received (read by the "nothing heard" report)
 
 
 class DdsBus(Tapped):
     """Publish/subscribe on ROS 2 topics over DDS (cyclonedds), with ROS 2's names, types and QoS."""
 
-    own_thread_callbacks = True               # the reader thread (see bus.Bus)
+    own_thread_callbacks = True  # the reader thread (see bus.Bus)
 
-    def __init__(self, domain: int | None = None, types: dict | None = None, store=None, *,
-                 writer_qos=None, reader_qos=None, environ=None, report=None):
+    def __init__(
+        self,
+        domain: int | None = None,
+        types: dict | None = None,
+        store=None,
+        *,
+        writer_qos=None,
+        reader_qos=None,
+        environ=None,
+        report=None,
+    ):
         """`writer_qos`/`reader_qos`: {ROS topic: (reliability, depth)} overriding the topic family's
         QoS ("reliable" or "best_effort"; depth None keeps the family's); `environ`: where the
         discovery variables are read (default os.environ); `report(text)`: where QoS
@@ -377,9 +416,9 @@ class DdsBus(Tapped):
         self.writer_qos = dict(writer_qos or {})
         self.reader_qos = dict(reader_qos or {})
         self.report = report or (lambda text: log.warning("%s", text))
-        self.errors = []                      # exceptions raised by callbacks (the first few)
-        self.reported = set()                 # topics whose QoS incompatibility was told
-        self._history = {}                    # [_lock] topic -> (publishers, samples) of closed readers
+        self.errors = []  # exceptions raised by callbacks (the first few)
+        self.reported = set()  # topics whose QoS incompatibility was told
+        self._history = {}  # [_lock] topic -> (publishers, samples) of closed readers
         config, self.discovery, self.discovery_warnings = discovery_config(self.distro, environ)
         self._held = _acquire_domain(self.domain, config)
         if not self._held:
@@ -391,16 +430,16 @@ class DdsBus(Tapped):
                 _release_domain(self.domain)
             raise
         self._lock = threading.RLock()
-        self._topics = {}                     # [_lock] ROS topic -> (typename, Topic)
-        self._writers = {}                    # [_lock] ROS topic -> DataWriter
-        self._readers = {}                    # [_lock] ROS topic -> _Reader
+        self._topics = {}  # [_lock] ROS topic -> (typename, Topic)
+        self._writers = {}  # [_lock] ROS topic -> DataWriter
+        self._readers = {}  # [_lock] ROS topic -> _Reader
         self._waitset = WaitSet(self.participant)
         self._wake = GuardCondition(self.participant)
         self._waitset.attach(self._wake)
-        self._thread = None                   # [_lock] the reader thread, started on first subscribe
+        self._thread = None  # [_lock] the reader thread, started on first subscribe
         self._closed = False
-        self._taps = []                       # Taps (a list replaced on change: read without the lock)
-        self._own = set()                     # [_lock] instance handles of our writers
+        self._taps = []  # Taps (a list replaced on change: read without the lock)
+        self._own = set()  # [_lock] instance handles of our writers
 
     # -- entities ---------------------------------------------------------------------------------
     def _topic(self, topic: str, typename: str) -> Topic:
@@ -411,8 +450,9 @@ class DdsBus(Tapped):
                 if known[0] != typename:
                     raise TypeError(f"topic {topic} carries {known[0]}, not {typename}")
                 return known[1]
-            entity = Topic(self.participant, dds_topic_name(topic), idl_type(typename, self.store),
-                           qos=Qos(*qos_policies(topic)))
+            entity = Topic(
+                self.participant, dds_topic_name(topic), idl_type(typename, self.store), qos=Qos(*qos_policies(topic))
+            )
             self._topics[topic] = (typename, entity)
             return entity
 
@@ -422,10 +462,13 @@ class DdsBus(Tapped):
             writer = self._writers.get(topic)
             if writer is None:
                 dds_topic = self._topic(topic, typename)
-                writer = DataWriter(self.participant, dds_topic,
-                                    qos=qos_for(topic, typename, self.store, *self.writer_qos.get(topic, (None, None))))
+                writer = DataWriter(
+                    self.participant,
+                    dds_topic,
+                    qos=qos_for(topic, typename, self.store, *self.writer_qos.get(topic, (None, None))),
+                )
                 self._writers[topic] = writer
-                self._own.add(writer.get_instance_handle() & _HANDLE_MASK)    # as SampleInfo has it: unsigned
+                self._own.add(writer.get_instance_handle() & _HANDLE_MASK)  # as SampleInfo has it: unsigned
             elif self._topics[topic][0] != typename:
                 raise TypeError(f"topic {topic} carries {self._topics[topic][0]}, not {typename}")
             return writer
@@ -470,8 +513,11 @@ class DdsBus(Tapped):
             entry = self._readers.get(topic)
             if entry is None:
                 dds_topic = self._topic(topic, typename)
-                reader = DataReader(self.participant, dds_topic,
-                                    qos=qos_for(topic, typename, self.store, *self.reader_qos.get(topic, (None, None))))
+                reader = DataReader(
+                    self.participant,
+                    dds_topic,
+                    qos=qos_for(topic, typename, self.store, *self.reader_qos.get(topic, (None, None))),
+                )
                 condition = ReadCondition(reader, SampleState.NotRead | ViewState.Any | InstanceState.Any)
                 entry = _Reader(topic, typename, dds_topic, reader, condition)
                 self._readers[topic] = entry
@@ -523,7 +569,7 @@ class DdsBus(Tapped):
         """Keep what a reader heard once it is deleted (the report at the end of a run) [_lock]."""
         try:
             publishers = entry.reader.get_subscription_matched_status().current_count
-        except Exception:                    # noqa: BLE001 - being deleted
+        except Exception:  # noqa: BLE001 - being deleted
             publishers = 0
         before = self._history.get(entry.topic, (0, 0))
         self._history[entry.topic] = (max(publishers, before[0]), entry.count + before[1])
@@ -547,12 +593,14 @@ class DdsBus(Tapped):
             BuiltinTopicDcpsPublication,
             BuiltinTopicDcpsSubscription,
         )
+
         with self._lock:
             self._check_open()
             graph = self.__dict__.setdefault("_graph", {})
             if readers not in graph:
                 graph[readers] = BuiltinDataReader(
-                    self.participant, BuiltinTopicDcpsSubscription if readers else BuiltinTopicDcpsPublication)
+                    self.participant, BuiltinTopicDcpsSubscription if readers else BuiltinTopicDcpsPublication
+                )
             found = {}
             for sample in graph[readers].read(N=4096) or ():
                 name = getattr(sample, "topic_name", "")
@@ -591,8 +639,13 @@ class DdsBus(Tapped):
                     other = "best effort" if mine == "reliable" else "reliable"
                     found.append((topic, f"{topic}: the publisher is {other}, this reader asks {mine}"))
                 else:
-                    found.append((topic, f"{topic}: a publisher's QoS is incompatible with this reader's "
-                                         f"({_POLICIES.get(policy, f'policy {policy}')})"))
+                    found.append(
+                        (
+                            topic,
+                            f"{topic}: a publisher's QoS is incompatible with this reader's "
+                            f"({_POLICIES.get(policy, f'policy {policy}')})",
+                        )
+                    )
         for topic, writer, override in writers:
             if topic in self.reported:
                 continue
@@ -603,8 +656,13 @@ class DdsBus(Tapped):
                 if policy == 11:
                     found.append((topic, f"{topic}: a subscriber asks reliable, this publisher is {mine}"))
                 else:
-                    found.append((topic, f"{topic}: a subscriber's QoS is incompatible with this publisher's "
-                                         f"({_POLICIES.get(policy, f'policy {policy}')})"))
+                    found.append(
+                        (
+                            topic,
+                            f"{topic}: a subscriber's QoS is incompatible with this publisher's "
+                            f"({_POLICIES.get(policy, f'policy {policy}')})",
+                        )
+                    )
         texts = []
         for topic, text in found:
             if topic not in self.reported:
@@ -632,7 +690,7 @@ class DdsBus(Tapped):
                 entries = list(self._readers.values())
             for entry in entries:
                 self._drain(entry)
-            with self._lock:                     # a callback may have closed the bus
+            with self._lock:  # a callback may have closed the bus
                 if self._closed:
                     return
             self._waitset.wait(duration(seconds=1))
@@ -657,7 +715,7 @@ class DdsBus(Tapped):
                 targets = subs
                 try:
                     msg = cdr.deserialize(data, entry.typename, self.store)
-                except Exception as e:           # a malformed sample: drop it, keep the bus alive
+                except Exception as e:  # a malformed sample: drop it, keep the bus alive
                     log.error("undecodable %s sample on %s: %s", entry.typename, entry.topic, e)
                     targets = tuple(sub for sub in subs if sub.raw)
                     msg = None
@@ -668,7 +726,7 @@ class DdsBus(Tapped):
                         continue
                     try:
                         sub.callback(data if sub.raw else msg)
-                    except Exception as e:       # the other subscribers still get the message
+                    except Exception as e:  # the other subscribers still get the message
                         log.exception("subscriber of %s raised", entry.topic)
                         if len(self.errors) < 100:
                             self.errors.append(e)

@@ -7,6 +7,7 @@ Values follow the codegen object model (/work/plan/codegen_spec.md): basic types
 floats and bools, STRING is a kernel string (`_s`), ARRAY [T] has `area` (a SPECIAL with `_items`),
 `lower` and `upper`.
 """
+
 from __future__ import annotations
 
 import keyword
@@ -27,8 +28,6 @@ def python_name(field: str) -> str:
     return name + "_" if keyword.iskeyword(name) else name
 
 
-
-
 def typename_of_class(name: str, store=None) -> str:
     """The ROS type name of a generated class (GEOMETRY_MSGS_TWIST -> geometry_msgs/msg/Twist)."""
     store = ros_messages.typestore() if store is None else store
@@ -43,6 +42,7 @@ def _host(desc: tuple, value: Any, store) -> Any:
     if kind == BASE:
         if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings  # deferred: start-up (loaded on first use only)
+
             return strings.text(value)
         return value
     if kind == NAME:
@@ -60,8 +60,11 @@ def to_message(obj: Any, typename: str | None = None, store=None) -> Any:
     typename = typename or typename_of_class(type(obj).__name__, store)
     # exactly the chosen distribution's layout: a field the class lacks (a class generated for
     # another distribution) keeps its default, one the distribution lacks is left out
-    values = {field: _host(desc, getattr(obj, python_name(field)), store)
-              for field, desc in ros_messages.fields(typename, store) if hasattr(obj, python_name(field))}
+    values = {
+        field: _host(desc, getattr(obj, python_name(field)), store)
+        for field, desc in ros_messages.fields(typename, store)
+        if hasattr(obj, python_name(field))
+    }
     return ros_messages.new(typename, store, **values)
 
 
@@ -74,6 +77,7 @@ def _eiffel(desc: tuple, value: Any, region, store) -> Any:
     if kind == BASE:
         if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings  # deferred: start-up (loaded on first use only)
+
             return strings.new_string_8(region, value)
         if detail[0] == "bool":
             return bool(value)
@@ -97,7 +101,7 @@ def from_message(msg: Any, region, store=None) -> Any:
     described = ros_messages.fields(typename, store)
     for field, desc in described:
         setattr(obj, python_name(field), _eiffel(desc, getattr(msg, field), region, store))
-    if store is None:                        # fields of other distributions the class carries: defaults
+    if store is None:  # fields of other distributions the class carries: defaults
         present = {field for field, _ in described}
         for field, desc in ros_messages.union_fields(typename):
             if field not in present and desc[0] == BASE:

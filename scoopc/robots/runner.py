@@ -11,6 +11,7 @@ every processor idle and no timer pending but the simulator's.
 Safety: whatever ends the run (normal end, uncaught exception, deadlock, Ctrl-C, the duration),
 every cmd_vel topic the program published on gets a zero velocity before the run returns.
 """
+
 from __future__ import annotations
 
 import math
@@ -52,20 +53,21 @@ class RobotError(UsageError):
 @dataclass
 class RobotOptions:
     """How a Roboscoop program runs (the robot options of `scoopc run`, docs/ROBOTS.md)."""
-    robot: str | None = None         # "sim", "ros2" or "none"; None: "sim" for Roboscoop programs
-    world: Any = None                   # a world file's path, a dict or a World; None: world.yaml beside
+
+    robot: str | None = None  # "sim", "ros2" or "none"; None: "sim" for Roboscoop programs
+    world: Any = None  # a world file's path, a dict or a World; None: world.yaml beside
     #                                     the program, else the built-in arena
-    namespace: str | None = None     # which robot of the world, or a ROS 2 robot's topic prefix
-    realtime: bool = False              # pace the simulator to the wall clock
-    duration: float | None = None    # seconds to run (default: the world's duration; ROS 2: none)
-    goal: tuple | None = None        # (x, y) told to the program (default: the world's)
-    png: str | Path | bool | None = None    # the trajectory picture; True: <program>.png
+    namespace: str | None = None  # which robot of the world, or a ROS 2 robot's topic prefix
+    realtime: bool = False  # pace the simulator to the wall clock
+    duration: float | None = None  # seconds to run (default: the world's duration; ROS 2: none)
+    goal: tuple | None = None  # (x, y) told to the program (default: the world's)
+    png: str | Path | bool | None = None  # the trajectory picture; True: <program>.png
     gif: str | Path | None = None
-    record: str | Path | None = None       # an MCAP recording of every topic
-    ros_distro: str | None = None    # humble, jazzy or lyrical; None: ROS_DISTRO, else jazzy
-    use_sim_time: bool = False          # ROS 2: stamp commands with the latest /clock, not the system clock
-    wait_robot: float = 3.0             # ROS 2: seconds before silent topics are reported
-    require_robot: bool = False         # ROS 2: a topic still silent after `wait_robot` fails the run (exit 3)
+    record: str | Path | None = None  # an MCAP recording of every topic
+    ros_distro: str | None = None  # humble, jazzy or lyrical; None: ROS_DISTRO, else jazzy
+    use_sim_time: bool = False  # ROS 2: stamp commands with the latest /clock, not the system clock
+    wait_robot: float = 3.0  # ROS 2: seconds before silent topics are reported
+    require_robot: bool = False  # ROS 2: a topic still silent after `wait_robot` fails the run (exit 3)
 
     def __post_init__(self):
         if self.robot not in (None, "sim", "ros2", "none"):
@@ -74,6 +76,7 @@ class RobotOptions:
             from .ros_messages import (
                 DISTROS,  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
             )
+
             if self.ros_distro.lower() not in DISTROS:
                 raise UsageError(f"ros_distro must be one of {', '.join(DISTROS)}, not {self.ros_distro!r}")
         if not (self.wait_robot >= 0):
@@ -83,18 +86,19 @@ class RobotOptions:
 @dataclass
 class RobotSettings:
     """What ROBOT_ENVIRONMENT tells the program (stdlib/roboscoop/util/robot_environment.e)."""
-    mode: str = "none"                  # "none", "sim" or "ros2"
-    namespaces: list = field(default_factory=list)     # topic prefixes: "/robot1" or ""
-    limits: list = field(default_factory=list)         # (max_linear, max_angular) per robot
-    main: int = 0                       # index of "the" robot (`namespace`)
+
+    mode: str = "none"  # "none", "sim" or "ros2"
+    namespaces: list = field(default_factory=list)  # topic prefixes: "/robot1" or ""
+    limits: list = field(default_factory=list)  # (max_linear, max_angular) per robot
+    main: int = 0  # index of "the" robot (`namespace`)
     goal: tuple | None = None
-    station: tuple | None = None        # (x, y, radius)
+    station: tuple | None = None  # (x, y, radius)
     duration: float = -1.0
-    distro: str = "jazzy"               # the ROS 2 distribution (ROBOT_ENVIRONMENT.ros_distro)
+    distro: str = "jazzy"  # the ROS 2 distribution (ROBOT_ENVIRONMENT.ros_distro)
 
 
-ROS2_LIMITS = (0.2, 1.0)                # speed limits reported for a ROS 2 robot (m/s, rad/s)
-SERVICE = "robot"                       # the RobotSettings' key in the runtime's services
+ROS2_LIMITS = (0.2, 1.0)  # speed limits reported for a ROS 2 robot (m/s, rad/s)
+SERVICE = "robot"  # the RobotSettings' key in the runtime's services
 
 
 def settings_of(rt) -> RobotSettings:
@@ -108,7 +112,7 @@ class SafetyBus:
 
     def __init__(self, bus):
         self.bus = bus
-        self.command_topics = {}        # topic -> stamped?
+        self.command_topics = {}  # topic -> stamped?
         self._lock = threading.Lock()
 
     def publish(self, topic, msg):
@@ -124,17 +128,19 @@ class SafetyBus:
     def stop_robots(self):
         """A zero velocity on every cmd_vel topic used (Twist or TwistStamped as the program sent)."""
         from .velocity import twist, twist_stamped  # deferred: loads rosbags (start-up)
+
         with self._lock:
             topics = dict(self.command_topics)
         for topic, stamped in topics.items():
             try:
                 self.bus.publish(topic, twist_stamped(0.0, 0.0) if stamped else twist(0.0, 0.0))
-            except Exception as e:                     # noqa: BLE001 - keep stopping the others
+            except Exception as e:  # noqa: BLE001 - keep stopping the others
                 print(f"scoopc: could not stop the robot on {topic}: {e}", file=sys.stderr)
         return sorted(topics)
 
 
 # ---- the simulator on the runtime's clock ------------------------------------------------------
+
 
 class _Driver:
     """Lives on the SIMULATOR processor; its periodic timer steps the world."""
@@ -145,7 +151,7 @@ class SimDriver:
         self.sim = sim
         self.end_ns = int(round(duration * 1e9)) if duration is not None and duration >= 0 else None
         self.progress = progress
-        self.stopped_by = None          # "duration" or "program", once the simulation is over
+        self.stopped_by = None  # "duration" or "program", once the simulation is over
         self.timer = None
         self.rt = None
         self._next_report = 0.0
@@ -178,8 +184,9 @@ class SimDriver:
         with rt.glock:
             if rt.n_running != 1 or rt.runnable or rt.clock.due:
                 return False
-            return not any(isinstance(e[-1], Timer) and e[-1] is not self.timer and not e[-1].cancelled
-                           for e in rt.clock.heap)
+            return not any(
+                isinstance(e[-1], Timer) and e[-1] is not self.timer and not e[-1].cancelled for e in rt.clock.heap
+            )
 
     def _finish(self, reason):
         self.stopped_by = reason
@@ -202,6 +209,7 @@ def _tick(holder):
 
 # ---- choosing the world and the settings -------------------------------------------------------
 
+
 def find_world(program_paths, world=None):
     """The world to simulate: `world` (path, dict or World), else world.yaml beside the program,
     else the built-in arena. Returns (World, where it came from)."""
@@ -209,6 +217,7 @@ def find_world(program_paths, world=None):
         World,
         WorldError,
     )
+
     if isinstance(world, World):
         return world, world.name
     if isinstance(world, dict):
@@ -234,6 +243,7 @@ def find_world(program_paths, world=None):
 
 def _load(make, where):
     from .sim.world import WorldError  # deferred: start-up (scoopc.robots.sim.world loads only when this is used)
+
     try:
         return make()
     except WorldError as e:
@@ -251,34 +261,58 @@ def sim_settings(world, namespace=None, goal=None, duration=None):
     if namespace is not None:
         wanted = _prefix(namespace)
         if wanted not in namespaces:
-            raise RobotError(f"the world has no robot with namespace {wanted or '/'!r} "
-                             f"(it has {', '.join(namespaces)})")
+            raise RobotError(
+                f"the world has no robot with namespace {wanted or '/'!r} (it has {', '.join(namespaces)})"
+            )
         main = namespaces.index(wanted)
     station = (*world.station, world.station_radius) if world.station is not None else None
-    return RobotSettings(mode="sim", namespaces=namespaces, main=main,
-                         limits=[(r.max_linear, r.max_angular) for r in world.robots],
-                         goal=tuple(goal) if goal is not None else world.goal, station=station,
-                         duration=world.duration if duration is None else duration)
+    return RobotSettings(
+        mode="sim",
+        namespaces=namespaces,
+        main=main,
+        limits=[(r.max_linear, r.max_angular) for r in world.robots],
+        goal=tuple(goal) if goal is not None else world.goal,
+        station=station,
+        duration=world.duration if duration is None else duration,
+    )
 
 
 def ros2_settings(namespace=None, goal=None, duration=None):
-    return RobotSettings(mode="ros2", namespaces=[_prefix(namespace)], limits=[ROS2_LIMITS],
-                         goal=tuple(goal) if goal is not None else None,
-                         duration=-1.0 if duration is None else duration)
+    return RobotSettings(
+        mode="ros2",
+        namespaces=[_prefix(namespace)],
+        limits=[ROS2_LIMITS],
+        goal=tuple(goal) if goal is not None else None,
+        duration=-1.0 if duration is None else duration,
+    )
 
 
 # ---- runs --------------------------------------------------------------------------------------
 
-def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=None, png=None, gif=None,
-                   progress=None, stderr=None, extra_start=None):
+
+def run_with_robot(
+    launch,
+    settings,
+    bus,
+    *,
+    sim=None,
+    duration=None,
+    recorder=None,
+    png=None,
+    gif=None,
+    progress=None,
+    stderr=None,
+    extra_start=None,
+):
     """Run `launch(on_start)` (which runs the program and returns its exit status) with `bus` as the
     transport and, when `sim` is given, the simulator stepped on the runtime's clock. The program
     reads `settings` through ROBOT_ENVIRONMENT (the runtime's `services`)."""
     stderr = stderr or sys.stderr
     safety = SafetyBus(bus)
     previous_bus = transport.use(safety)
-    driver = SimDriver(sim, duration if duration is not None else settings.duration, progress) \
-        if sim is not None else None
+    driver = (
+        SimDriver(sim, duration if duration is not None else settings.duration, progress) if sim is not None else None
+    )
     result = RunResult(status=0, sim=sim)
 
     def on_start(rt):
@@ -287,13 +321,14 @@ def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=N
             driver.attach(rt)
         if extra_start is not None:
             extra_start(rt)
+
     try:
         result.status = launch(on_start)
-    except KeyboardInterrupt as interrupt:   # a signal after the runtime had handled the first
+    except KeyboardInterrupt as interrupt:  # a signal after the runtime had handled the first
         result.status = status_of(interrupt)
         stderr.write(f"scoopc: stopped by {getattr(interrupt, 'signal_name', 'SIGINT')}\n")
     finally:
-        with shielded():                  # a second signal must not cut the robot's stop short
+        with shielded():  # a second signal must not cut the robot's stop short
             result.stopped_topics = safety.stop_robots()
             if recorder is not None:
                 result.record = str(recorder.close())
@@ -314,6 +349,7 @@ def _recorder(bus, path, clock=None):
     if not path:
         return None
     from .record import Recorder  # deferred: start-up (scoopc.robots.record loads only when this is used)
+
     try:
         return Recorder(bus, str(path), clock=clock)
     except OSError as e:
@@ -330,8 +366,9 @@ def _render(sim, path, how, stderr):
             from .sim.render import (
                 render_gif,  # deferred: start-up (scoopc.robots.sim.render loads only when this is used)
             )
+
             render_gif(sim, str(path))
-    except Exception as e:                         # noqa: BLE001 - the run itself succeeded
+    except Exception as e:  # noqa: BLE001 - the run itself succeeded
         stderr.write(f"scoopc: could not write {path}: {e}\n")
         return None
     return str(path)
@@ -341,7 +378,8 @@ def describe_end(result, wall) -> str:
     """One line for stderr after a simulated run."""
     sim = result.sim
     why = {"duration": "the world's duration", "program": "the program ended"}.get(
-        result.stopped_by, f"stopped by {result.stopped_by}")
+        result.stopped_by, f"stopped by {result.stopped_by}"
+    )
     parts = []
     for robot in sim.robots:
         text = f"{robot.name} moved {robot.distance:.2f} m"
@@ -367,6 +405,7 @@ def open_ros2_bus(report=None):
     from .backends import (
         open_ros2_bus as choose,  # deferred: start-up (scoopc.robots.backends loads only when this is used)
     )
+
     return choose(report=report)
 
 
@@ -399,6 +438,7 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
 def choose_distro(option=None) -> tuple[str, str]:
     """Resolve and install the run's ROS 2 distribution: (name, where the choice came from)."""
     from . import ros_messages  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+
     try:
         name, source = ros_messages.resolve_distro(option)
     except ros_messages.DistroError as e:
@@ -412,6 +452,7 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     from .sim.simulator import (
         Simulator,  # deferred: start-up (scoopc.robots.sim.simulator loads only when this is used)
     )
+
     world, source = find_world(program_paths, options.world)
     settings = sim_settings(world, options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
@@ -420,21 +461,31 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     recorder = _recorder(bus, options.record, clock)
     sim = Simulator(world, bus)
     clock.read = lambda: sim.time_ns
-    velocity.use_clock(clock)                    # stamps in simulated time, as /clock tells it
+    velocity.use_clock(clock)  # stamps in simulated time, as /clock tells it
     if progress is not None:
         progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
     png = f"{program_name.lower()}.png" if options.png is True else (options.png or None)
-    return run_with_robot(lambda on_start: launch(on_start, not options.realtime), settings, bus, sim=sim,
-                          recorder=recorder, png=png, gif=options.gif, progress=progress, stderr=stderr)
+    return run_with_robot(
+        lambda on_start: launch(on_start, not options.realtime),
+        settings,
+        bus,
+        sim=sim,
+        recorder=recorder,
+        png=png,
+        gif=options.gif,
+        progress=progress,
+        stderr=stderr,
+    )
 
 
 def _run_ros2(options, launch, stderr) -> RunResult:
     from . import ros_messages, velocity  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
+
     settings = ros2_settings(options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
     try:
         bus = open_ros2_bus(report=lambda text: _say(stderr, text))
-    except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
+    except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
         raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
     for warning in getattr(bus, "discovery_warnings", ()):
         _say(stderr, warning)
@@ -450,8 +501,14 @@ def _run_ros2(options, launch, stderr) -> RunResult:
     expired = threading.Event()
     watch = Watch(bus, options.wait_robot, options.require_robot, stderr)
     try:
-        result = run_with_robot(lambda on_start: launch(on_start, None), settings, bus, recorder=recorder,
-                                stderr=stderr, extra_start=_starts(_deadline(settings.duration, expired), watch.start))
+        result = run_with_robot(
+            lambda on_start: launch(on_start, None),
+            settings,
+            bus,
+            recorder=recorder,
+            stderr=stderr,
+            extra_start=_starts(_deadline(settings.duration, expired), watch.start),
+        )
         watch.finish()
         if watch.failed:
             result.status = 3
@@ -497,6 +554,7 @@ def _starts(*hooks):
     def on_start(rt):
         for hook in hooks:
             hook(rt)
+
     return on_start if hooks else None
 
 
@@ -514,6 +572,7 @@ def _deadline(duration, expired):
         timer.daemon = True
         timer.start()
         rt.shutdown_hooks.append(timer.cancel)
+
     return on_start
 
 
@@ -526,8 +585,12 @@ def nearby(topic: str, graph) -> list[str]:
             continue
         theirs = [p for p in other.split("/") if p]
         for n in (2, 1):
-            if len(parts) >= n and len(theirs) >= n and theirs[-n:] == parts[-n:] and \
-                    (n == 2 or parts[-1] not in ("left", "right", "center")):
+            if (
+                len(parts) >= n
+                and len(theirs) >= n
+                and theirs[-n:] == parts[-n:]
+                and (n == 2 or parts[-1] not in ("left", "right", "center"))
+            ):
                 found.append(other)
                 break
     return found
@@ -548,7 +611,7 @@ class Watch:
 
     def start(self, rt):
         if not hasattr(self.bus, "heard"):
-            return                               # a backend without the graph queries (rclpy)
+            return  # a backend without the graph queries (rclpy)
         self._thread = threading.Thread(target=self._run, args=(rt,), name="scoopc-robot-watch", daemon=True)
         self._thread.start()
         rt.shutdown_hooks.append(self._done.set)
@@ -565,7 +628,7 @@ class Watch:
                         self.failed = True
                         rt.stop()
                         return
-            except Exception as e:           # noqa: BLE001 - the bus closed under us: the run is over
+            except Exception as e:  # noqa: BLE001 - the bus closed under us: the run is over
                 if not self._done.is_set():
                     _say(self.stderr, f"could not watch the robot's topics: {e}")
                 return
@@ -573,8 +636,11 @@ class Watch:
 
     def report_silence(self) -> list[str]:
         heard = self.bus.heard()
-        silent = {topic: ("no publisher" if publishers == 0 else "a publisher, no message")
-                  for topic, (publishers, count) in sorted(heard.items()) if publishers == 0 or count == 0}
+        silent = {
+            topic: ("no publisher" if publishers == 0 else "a publisher, no message")
+            for topic, (publishers, count) in sorted(heard.items())
+            if publishers == 0 or count == 0
+        }
         problems = self._command_mismatches()
         if not silent and not problems:
             return []
@@ -588,12 +654,16 @@ class Watch:
                 for other in nearby(topic, graph):
                     hints.setdefault(other, topic)
             if hints:
-                lines.append("the ROS graph has " + ", ".join(f"{other} (this program asked {asked})"
-                                                             for other, asked in hints.items())
-                             + ": is the namespace right? (--namespace)")
+                lines.append(
+                    "the ROS graph has "
+                    + ", ".join(f"{other} (this program asked {asked})" for other, asked in hints.items())
+                    + ": is the namespace right? (--namespace)"
+                )
             elif not graph:
-                lines.append("no other ROS 2 node publishes anything in this domain: is the robot on, in the same "
-                             "ROS_DOMAIN_ID, and reachable (ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_STATIC_PEERS)?")
+                lines.append(
+                    "no other ROS 2 node publishes anything in this domain: is the robot on, in the same "
+                    "ROS_DOMAIN_ID, and reachable (ROS_AUTOMATIC_DISCOVERY_RANGE, ROS_STATIC_PEERS)?"
+                )
             lines.append("exiting (--require-robot)" if self.require else "still waiting")
         for line in problems + lines:
             _say(self.stderr, line)
@@ -606,8 +676,10 @@ class Watch:
             return []
         found = []
         for topic, ours, theirs in wanted():
-            found.append(f"{topic}: the robot reads {theirs}, this program sends {ours}: it will not move "
-                         f"(a Jazzy robot takes TwistStamped: use its profile, e.g. TURTLEBOT3_ROBOT, or make_stamped)")
+            found.append(
+                f"{topic}: the robot reads {theirs}, this program sends {ours}: it will not move "
+                f"(a Jazzy robot takes TwistStamped: use its profile, e.g. TURTLEBOT3_ROBOT, or make_stamped)"
+            )
         return found
 
     def finish(self):
@@ -621,7 +693,7 @@ class Watch:
             return
         try:
             counts = heard()
-        except Exception:                    # noqa: BLE001 - a closed bus: nothing to say
+        except Exception:  # noqa: BLE001 - a closed bus: nothing to say
             return
         got = [f"{topic} ({count})" for topic, (_, count) in sorted(counts.items()) if count]
         silent = [topic for topic, (_, count) in sorted(counts.items()) if not count]
@@ -638,7 +710,7 @@ class Watch:
 
 def _close_ros2(bus):
     with shielded():
-        time.sleep(0.2)                   # let the zero velocity reach the robot
+        time.sleep(0.2)  # let the zero velocity reach the robot
         close = getattr(bus, "close", None)
         if close is not None:
             close()
@@ -664,4 +736,5 @@ def _progress_line(stderr):
         if final and message:
             stderr.write("\n")
         stderr.flush()
+
     return show

@@ -10,13 +10,15 @@ run with `scoopc run --robot ros2`, in another process drives it.
 Commands arrive on the transport's thread; they are queued and applied between two steps on the
 node's own thread, so a step sees a consistent state. A node that falls behind the wall clock
 catches up by at most MAX_LAG seconds; beyond that simulated time runs slower (no burst of
-steps). Progress lines go to stderr. It stops at the end of `--duration` (default: the world's `duration`; `--duration 0`: until interrupted), or on
-Ctrl-C / SIGTERM (a clean stop, exit status 0): every robot is stopped, `--png`, `--gif` and the
-`--record` MCAP file are written, the transport is closed.
+steps). Progress lines go to stderr. It stops at the end of `--duration` (default: the world's
+`duration`; `--duration 0`: until interrupted), or on Ctrl-C / SIGTERM (a clean stop, exit
+status 0): every robot is stopped, `--png`, `--gif` and the `--record` MCAP file are written, the
+transport is closed.
 
 For scoopc's argument parser: `add_arguments(parser)` declares the options, `command(args)` runs
 a parsed command, `main(argv)` does both (`python -m scoopc.robots.simnode WORLD ...`).
 """
+
 from __future__ import annotations
 
 import argparse
@@ -31,34 +33,57 @@ from ..exits import Exit
 from .backends import describe, open_ros2_bus
 from .bus import Tap
 
-MAX_LAG = 0.25            # wall-clock seconds the node may fall behind before it drops the debt
+MAX_LAG = 0.25  # wall-clock seconds the node may fall behind before it drops the debt
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
     parser.add_argument("world", metavar="WORLD", help="the world file (YAML, see docs/ROBOTS.md)")
     pace = parser.add_mutually_exclusive_group()
-    pace.add_argument("--realtime", action="store_true",
-                      help="step at real-time speed, one simulated second per second (the default)")
-    pace.add_argument("--rate", type=float, metavar="X",
-                      help="simulated seconds per wall-clock second (2: twice as fast; 0: as fast as possible)")
-    parser.add_argument("--duration", type=float, metavar="S",
-                        help="simulated seconds to run (default: the world's duration; 0: until interrupted)")
+    pace.add_argument(
+        "--realtime", action="store_true", help="step at real-time speed, one simulated second per second (the default)"
+    )
+    pace.add_argument(
+        "--rate",
+        type=float,
+        metavar="X",
+        help="simulated seconds per wall-clock second (2: twice as fast; 0: as fast as possible)",
+    )
+    parser.add_argument(
+        "--duration",
+        type=float,
+        metavar="S",
+        help="simulated seconds to run (default: the world's duration; 0: until interrupted)",
+    )
     parser.add_argument("--domain", type=int, metavar="N", help="the ROS 2 domain id (default: ROS_DOMAIN_ID, else 0)")
-    parser.add_argument("--ros-distro", type=str.lower, choices=("humble", "jazzy", "lyrical"), metavar="DISTRO",
-                        help="the ROS 2 distribution whose messages and type hashes are used: humble, jazzy or "
-                             "lyrical (default: ROS_DISTRO, else jazzy)")
+    parser.add_argument(
+        "--ros-distro",
+        type=str.lower,
+        choices=("humble", "jazzy", "lyrical"),
+        metavar="DISTRO",
+        help="the ROS 2 distribution whose messages and type hashes are used: humble, jazzy or "
+        "lyrical (default: ROS_DISTRO, else jazzy)",
+    )
     parser.add_argument("--png", metavar="FILE", help="write the trajectories as a PNG at the end")
     parser.add_argument("--gif", metavar="FILE", help="write an animated GIF of the run at the end")
     parser.add_argument("--record", metavar="FILE", help="record every topic into an MCAP file (ROS 2 schemas, CDR)")
-    parser.add_argument("--progress", type=float, default=5.0, metavar="S",
-                        help="wall-clock seconds between progress lines on stderr (default 5; 0: none)")
+    parser.add_argument(
+        "--progress",
+        type=float,
+        default=5.0,
+        metavar="S",
+        help="wall-clock seconds between progress lines on stderr (default 5; 0: none)",
+    )
     return parser
 
 
 def build_parser() -> argparse.ArgumentParser:
-    return add_arguments(argparse.ArgumentParser(
-        prog="scoopc sim", description="Run the simulator as a ROS 2 node (DDS): it subscribes each robot's "
-        "cmd_vel and publishes its sensors and /clock, paced to the wall clock."))
+    return add_arguments(
+        argparse.ArgumentParser(
+            prog="scoopc sim",
+            description="Run the simulator as a ROS 2 node (DDS): it subscribes each robot's "
+            "cmd_vel and publishes its sensors and /clock, paced to the wall clock.",
+        )
+    )
 
 
 class NodeBus:
@@ -67,7 +92,7 @@ class NodeBus:
 
     def __init__(self, bus):
         self.bus = bus
-        self._pending = collections.deque()      # (topic, callback, msg); deque appends are atomic
+        self._pending = collections.deque()  # (topic, callback, msg); deque appends are atomic
         self._taps = []
 
     def publish(self, topic, msg):
@@ -124,10 +149,14 @@ def driver_qos(spec) -> dict:
     rclcpp::QoS(rclcpp::KeepLast(10)), reliable) publish reliably; laser scans go out best effort
     as laser drivers publish them (sensor-data QoS)."""
     from .sim import sensors  # deferred: start-up (scoopc.robots.sim.sensors loads only when this is used)
+
     prefix = f"/{spec.namespace}" if spec.namespace else ""
     depth = 1 if spec.kind == "thymio" else 10
-    qos = {f"{prefix}/odom": ("reliable", depth), f"{prefix}/battery_state": ("reliable", depth),
-           f"{prefix}/scan": ("best_effort", 10)}
+    qos = {
+        f"{prefix}/odom": ("reliable", depth),
+        f"{prefix}/battery_state": ("reliable", depth),
+        f"{prefix}/scan": ("best_effort", 10),
+    }
     if spec.kind == "thymio":
         for name in sensors.PROXIMITY:
             qos[f"{prefix}/proximity/{name}"] = ("reliable", 1)
@@ -136,8 +165,21 @@ def driver_qos(spec) -> dict:
     return qos
 
 
-def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, record=None, progress=5.0,
-        bus=None, stderr=None, stop=None, ros_distro=None) -> int:
+def run(
+    world,
+    *,
+    rate=1.0,
+    duration=None,
+    domain=None,
+    png=None,
+    gif=None,
+    record=None,
+    progress=5.0,
+    bus=None,
+    stderr=None,
+    stop=None,
+    ros_distro=None,
+) -> int:
     """Run the node; returns the exit status. `bus`: a bus to use instead of opening one (closed by the
     caller); `stop`: a threading.Event that ends the run (tests); `ros_distro`: humble, jazzy or
     lyrical (None: ROS_DISTRO, else jazzy)."""
@@ -145,6 +187,7 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
 
     from . import ros_messages  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
     from .sim import Simulator, World, WorldError  # deferred: start-up (scoopc.robots.sim loads only when this is used)
+
     stderr = sys.stderr if stderr is None else stderr
     try:
         distro, source = ros_messages.resolve_distro(ros_distro)
@@ -161,14 +204,17 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
     end = math.inf if not end or end <= 0 else end
     own_bus = bus is None
     if own_bus:
-        stamped = {f"/{spec.namespace}/cmd_vel" if spec.namespace else "/cmd_vel": "geometry_msgs/msg/TwistStamped"
-                   for spec in loaded.robots if spec.cmd_vel_stamped}
+        stamped = {
+            f"/{spec.namespace}/cmd_vel" if spec.namespace else "/cmd_vel": "geometry_msgs/msg/TwistStamped"
+            for spec in loaded.robots
+            if spec.cmd_vel_stamped
+        }
         qos = {}
         for spec in loaded.robots:
             qos.update(driver_qos(spec))
         try:
             bus = open_ros2_bus(domain, types=stamped, writer_qos=qos, report=lambda text: _say(stderr, text))
-        except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
+        except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
             _say(stderr, f"error: cannot open the ROS 2 transport: {e}")
             return Exit.USAGE
     backend = describe(bus)
@@ -182,6 +228,7 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
     try:
         if record:
             from .record import Recorder  # deferred: start-up (scoopc.robots.record loads only when this is used)
+
             clock = {"sim": None}
             recorder = Recorder(node, record, clock=lambda: clock["sim"].time_ns if clock["sim"] else 0)
         sim = Simulator(loaded, node)
@@ -192,8 +239,12 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
         length = "until interrupted" if end == math.inf else f"for {end:g} s"
         domain_text = getattr(bus, "domain", domain)
         discovery = getattr(bus, "discovery", None)
-        _say(stderr, f"world {loaded.name!r} ({robots}), ROS 2 {distro} ({source}), domain {domain_text} ({backend}"
-             + (f", {discovery}" if discovery else "") + f"), {pace}, {length}")
+        _say(
+            stderr,
+            f"world {loaded.name!r} ({robots}), ROS 2 {distro} ({source}), domain {domain_text} ({backend}"
+            + (f", {discovery}" if discovery else "")
+            + f"), {pace}, {length}",
+        )
         for warning in getattr(bus, "discovery_warnings", ()):
             _say(stderr, warning)
         commands, start, last_report, lag = 0, time.monotonic(), time.monotonic(), 0.0
@@ -211,10 +262,10 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
                     time.sleep(ahead)
                 else:
                     lag = max(lag, -ahead)
-                    if -ahead > MAX_LAG:          # too far behind: slow the simulated time, no burst
+                    if -ahead > MAX_LAG:  # too far behind: slow the simulated time, no burst
                         start -= ahead
             if now - last_qos >= 1.0 and hasattr(bus, "check_qos"):
-                last_qos = now                    # a stock reader asking reliable on the laser, ...
+                last_qos = now  # a stock reader asking reliable on the laser, ...
                 bus.check_qos()
             if progress and now - last_report >= progress:
                 last_report = now
@@ -222,11 +273,19 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
         commands += node.drain()
         if hasattr(bus, "check_qos"):
             bus.check_qos()
-        why = f"stopped by {flag.requested}" if flag.requested else \
-            "stopped" if stop is not None and stop.is_set() else "duration reached"
+        why = (
+            f"stopped by {flag.requested}"
+            if flag.requested
+            else "stopped"
+            if stop is not None and stop.is_set()
+            else "duration reached"
+        )
         sim.stop_all()
-        _say(stderr, f"{why} at t={sim.time:.2f} s; {_progress(sim, time.monotonic() - start, commands)}"
-             + (f"; fell behind the wall clock by up to {lag * 1000:.0f} ms" if lag > 0.05 else ""))
+        _say(
+            stderr,
+            f"{why} at t={sim.time:.2f} s; {_progress(sim, time.monotonic() - start, commands)}"
+            + (f"; fell behind the wall clock by up to {lag * 1000:.0f} ms" if lag > 0.05 else ""),
+        )
         for robot in sim.robots:
             if robot.collisions or robot.fallen:
                 fell = ", fell into a hole" if robot.fallen else ""
@@ -256,7 +315,9 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
 def _gif(sim):
     def render(path):
         from .sim.render import render_gif  # deferred: start-up (scoopc.robots.sim.render loads only when this is used)
+
         return render_gif(sim, path)
+
     return render
 
 
@@ -266,14 +327,23 @@ def command(args: argparse.Namespace) -> int:
     if rate < 0:
         print("scoopc sim: error: --rate must be 0 or more", file=sys.stderr)
         return Exit.USAGE
-    return run(args.world, rate=rate, duration=args.duration, domain=args.domain, png=args.png, gif=args.gif,
-               record=args.record, progress=args.progress, ros_distro=args.ros_distro)
+    return run(
+        args.world,
+        rate=rate,
+        duration=args.duration,
+        domain=args.domain,
+        png=args.png,
+        gif=args.gif,
+        record=args.record,
+        progress=args.progress,
+        ros_distro=args.ros_distro,
+    )
 
 
 def main(argv=None) -> int:
     try:
         args = build_parser().parse_args(argv)
-    except SystemExit as e:              # argparse: --help (0) or a usage error (2)
+    except SystemExit as e:  # argparse: --help (0) or a usage error (2)
         return int(e.code or 0)
     return command(args)
 

@@ -9,6 +9,7 @@ command whose stamp is older than its cmd_vel_timeout: ros2_controllers,
 diff_drive_controller/src/diff_drive_controller.cpp, DiffDriveController::update). The runner sets
 the source with `use_clock`.
 """
+
 import time
 from functools import cache
 
@@ -16,6 +17,7 @@ from functools import cache
 def new_message(typename, **fields):
     """A message object of the type store (defaults for the fields not given)."""
     from scoopc.robots import ros_messages  # deferred: start-up (rosbags and numpy load only to publish)
+
     return ros_messages.new(typename, **fields)
 
 
@@ -24,8 +26,11 @@ def _classes_of(distro):
     from scoopc.robots import (
         ros_messages,  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
     )
-    return (ros_messages.message_class("geometry_msgs/msg/Vector3"),
-            ros_messages.message_class("geometry_msgs/msg/Twist"))
+
+    return (
+        ros_messages.message_class("geometry_msgs/msg/Vector3"),
+        ros_messages.message_class("geometry_msgs/msg/Twist"),
+    )
 
 
 def _classes():
@@ -34,16 +39,18 @@ def _classes():
     from scoopc.robots import (
         ros_messages,  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
     )
+
     return _classes_of(ros_messages.distro())
 
 
 def twist(linear_x, angular_z):
     vector3, twist_class = _classes()
-    return twist_class(linear=vector3(x=float(linear_x), y=0.0, z=0.0),
-                       angular=vector3(x=0.0, y=0.0, z=float(angular_z)))
+    return twist_class(
+        linear=vector3(x=float(linear_x), y=0.0, z=0.0), angular=vector3(x=0.0, y=0.0, z=float(angular_z))
+    )
 
 
-_clock = [time.time_ns]                # the ROS time source: the system clock unless `use_clock`
+_clock = [time.time_ns]  # the ROS time source: the system clock unless `use_clock`
 
 
 def use_clock(now_ns=None):

@@ -8,6 +8,7 @@ a once function keeps its `Result` in `cell.result`, so a call of the routine du
 first execution returns the value of `Result` so far (ECMA-367 8.23.22; EiffelStudio keeps
 the once's result in its once data, which `Result` designates), and a once procedure's
 recursive call does nothing."""
+
 from __future__ import annotations
 
 import threading
@@ -23,6 +24,7 @@ if TYPE_CHECKING:
 
 class Running:
     """The entry of a once routine whose first call is under way: `result` is its `Result`."""
+
     __slots__ = ("result",)
 
     def __init__(self) -> None:
@@ -31,6 +33,7 @@ class Running:
 
 class _Failed:
     """A once routine whose first call raised: later calls raise the same exception."""
+
     __slots__ = ("exc",)
 
     def __init__(self, exc: BaseException) -> None:
@@ -60,12 +63,12 @@ def once_in(table: OnceTable, key: OnceKey, fn: Callable[..., object], args: Arg
     return v
 
 
-_process_lock = threading.RLock()     # serialises first calls of process-wide onces
+_process_lock = threading.RLock()  # serialises first calls of process-wide onces
 
 
 def once_process(rt: Runtime, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
     table = rt.process_onces
-    v = table.get(key, table)          # fast path: a plain dict read once computed
+    v = table.get(key, table)  # fast path: a plain dict read once computed
     if v is not table and v.__class__ is not _Failed and v.__class__ is not Running:
         return v
     with _process_lock:
@@ -98,6 +101,7 @@ def begin_thread_onces() -> None:
     plain per-region lookup)."""
     _thread.onces = {}
     from . import processor  # deferred: processor.py imports this module
+
     if processor.Processor.once is not _once_per_thread:
         processor.Processor.once = _once_per_thread  # type: ignore[method-assign]  # swapped once threads exist
 

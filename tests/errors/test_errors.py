@@ -1,6 +1,7 @@
 """tests/errors/<CODE>/<case>/: each case is a small program checked as one cluster; its
 `-- E: CODE` markers name exactly the errors `scoopc check` must report (codes with parentheses
 are written with a dash in folder names: VUTA(3) -> VUTA-3)."""
+
 from pathlib import Path
 
 import pytest

@@ -26,6 +26,7 @@ Also a command line, for a twin in its own process (prints one JSON line per eve
     python tests/robots/rmw_twin.py --distro jazzy listen /robot1/odom nav_msgs/msg/Odometry
     python tests/robots/rmw_twin.py --distro jazzy publish /odom nav_msgs/msg/Odometry --rate 20
 """
+
 from __future__ import annotations
 
 import argparse
@@ -47,9 +48,21 @@ from rosbags.typesys import Stores, get_typestore
 from rosbags.typesys.base import Nodetype
 
 STORES = {"humble": Stores.ROS2_HUMBLE, "jazzy": Stores.ROS2_JAZZY, "lyrical": Stores.ROS2_LYRICAL}
-_BASES = {"bool": bool, "byte": idl.byte, "char": idl.uint8, "int8": idl.int8, "uint8": idl.uint8,
-          "int16": idl.int16, "uint16": idl.uint16, "int32": idl.int32, "uint32": idl.uint32,
-          "int64": idl.int64, "uint64": idl.uint64, "float32": idl.float32, "float64": idl.float64}
+_BASES = {
+    "bool": bool,
+    "byte": idl.byte,
+    "char": idl.uint8,
+    "int8": idl.int8,
+    "uint8": idl.uint8,
+    "int16": idl.int16,
+    "uint16": idl.uint16,
+    "int32": idl.int32,
+    "uint32": idl.uint32,
+    "int64": idl.int64,
+    "uint64": idl.uint64,
+    "float32": idl.float32,
+    "float64": idl.float64,
+}
 
 
 def dds_type(typename: str) -> str:
@@ -62,6 +75,7 @@ class Node:
 
     def __init__(self, distro: str = "jazzy", domain: int | None = None):
         import os
+
         self.distro = distro
         self.store = get_typestore(STORES[distro])
         self.domain = int(os.environ.get("ROS_DOMAIN_ID", "0") or 0) if domain is None else domain
@@ -93,9 +107,13 @@ class Node:
 
     def qos(self, typename: str, depth: int) -> Qos:
         """create_readwrite_qos for rmw_qos_profile_default with `depth`."""
-        policies = [Policy.WriterDataLifecycle(autodispose=False), Policy.History.KeepLast(depth),
-                    Policy.Reliability.Reliable(max_blocking_time=duration(infinite=True)),
-                    Policy.Durability.Volatile, Policy.Liveliness.Automatic(lease_duration=duration(infinite=True))]
+        policies = [
+            Policy.WriterDataLifecycle(autodispose=False),
+            Policy.History.KeepLast(depth),
+            Policy.Reliability.Reliable(max_blocking_time=duration(infinite=True)),
+            Policy.Durability.Volatile,
+            Policy.Liveliness.Automatic(lease_duration=duration(infinite=True)),
+        ]
         if self.distro != "humble":
             policies.append(Policy.Userdata(data=f"typehash={self.store.hash_rihs01(typename)};".encode()))
         return Qos(*policies)
@@ -129,7 +147,7 @@ class Publisher:
 
     def publish(self, msg) -> None:
         data = bytes(self.node.store.serialize_cdr(msg, self.typename))
-        pad = -len(data) % 4                      # XCDR padding count in the options' low bits
+        pad = -len(data) % 4  # XCDR padding count in the options' low bits
         if pad:
             data = data[:3] + bytes([data[3] | pad]) + data[4:] + bytes(pad)
         ret = ddspy_write(self.writer._ref, data)
@@ -203,13 +221,21 @@ class Subscription:
 def new_message(store, typename: str, **fields):
     """A message of `store` with ROS defaults for the omitted fields."""
     import numpy as np
+
     args = {}
     for name, (kind, detail) in store.fielddefs[typename][1]:
         if name in fields:
             args[name] = fields[name]
         elif kind == Nodetype.BASE:
-            args[name] = "" if detail[0] == "string" else False if detail[0] == "bool" else \
-                0.0 if detail[0].startswith("float") else 0
+            args[name] = (
+                ""
+                if detail[0] == "string"
+                else False
+                if detail[0] == "bool"
+                else 0.0
+                if detail[0].startswith("float")
+                else 0
+            )
         elif kind == Nodetype.NAME:
             args[name] = new_message(store, detail)
         else:
@@ -218,8 +244,10 @@ def new_message(store, typename: str, **fields):
                 dtype = {"float32": np.float32, "float64": np.float64, "bool": np.bool_}.get(element[1][0], np.int64)
                 args[name] = np.zeros(size if kind == Nodetype.ARRAY else 0, dtype=dtype)
             else:
-                args[name] = [new_message(store, element[1]) if element[0] == Nodetype.NAME else ""
-                              for _ in range(size if kind == Nodetype.ARRAY else 0)]
+                args[name] = [
+                    new_message(store, element[1]) if element[0] == Nodetype.NAME else ""
+                    for _ in range(size if kind == Nodetype.ARRAY else 0)
+                ]
     return store.types[typename](**args)
 
 
@@ -258,8 +286,10 @@ def main(argv=None) -> int:
     node = Node(args.distro)
     try:
         if args.command == "listen":
+
             def show(msg):
                 print(json.dumps({**summary(msg), "received": time.time()}), flush=True)
+
             node.create_subscription(args.type, args.topic, callback=show)
             print(json.dumps({"ready": True}), flush=True)
             threading.Event().wait()

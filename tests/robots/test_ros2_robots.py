@@ -6,6 +6,7 @@ clock, (3) ROS_LOCALHOST_ONLY / ROS_AUTOMATIC_DISCOVERY_RANGE / ROS_STATIC_PEERS
 (reliable) subscriber hears `scoopc sim`, (5) each distribution's message layouts, (6) the Thymio's
 missing battery topic, (7) silent topics are reported. Waits are on conditions; time limits only
 bound a broken run (the one negative discovery check, OFF, is bounded by a positive control)."""
+
 import os
 import random
 import subprocess
@@ -46,8 +47,7 @@ def env(tmp_path_factory):
     saved = {name: os.environ.get(name) for name in [*settings, "ROS_DISTRO"]}
     os.environ.update(settings)
     os.environ.pop("ROS_DISTRO", None)
-    child = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""),
-                 PYTHONUNBUFFERED="1")
+    child = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""), PYTHONUNBUFFERED="1")
     child["WORLD"] = str(folder / "world.yaml")
     yield child
     for name, value in saved.items():
@@ -58,8 +58,14 @@ def env(tmp_path_factory):
 
 
 def scoopc(env, *args, **kw):
-    return subprocess.Popen([sys.executable, "-m", "scoopc", *args], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=env, **kw)
+    return subprocess.Popen(
+        [sys.executable, "-m", "scoopc", *args],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+        **kw,
+    )
 
 
 def finish(proc, timeout=TIMEOUT):
@@ -73,6 +79,7 @@ def finish(proc, timeout=TIMEOUT):
 
 # -- (5) message layouts of each distribution, both ways, every type the library uses ------------------
 
+
 @pytest.mark.parametrize("distro", list(ros_messages.DISTROS))
 def test_each_distribution_decodes_what_a_run_of_it_encodes_and_the_reverse(distro):
     previous = ros_messages.distro()
@@ -81,7 +88,7 @@ def test_each_distribution_decodes_what_a_run_of_it_encodes_and_the_reverse(dist
         rosbags = ros_messages.store_of(distro)
         for typename in eiffel_messages.library_types():
             ours = cdr.serialize(ros_messages.new(typename), typename)
-            decoded = rosbags.deserialize_cdr(ours, typename)          # what a node of `distro` reads
+            decoded = rosbags.deserialize_cdr(ours, typename)  # what a node of `distro` reads
             assert bytes(rosbags.serialize_cdr(decoded, typename)) == ours, typename
             theirs = bytes(rosbags.serialize_cdr(rmw_twin.new_message(rosbags, typename), typename))
             assert cdr.serialize(cdr.deserialize(theirs, typename), typename) == theirs, typename
@@ -90,7 +97,7 @@ def test_each_distribution_decodes_what_a_run_of_it_encodes_and_the_reverse(dist
         qos = dds.qos_for("/a/range", "sensor_msgs/msg/Range")
         userdata = [p for p in qos if type(p).__name__ == "Userdata"]
         if distro == "humble":
-            assert not userdata                       # Humble's rmw sets no endpoint user data
+            assert not userdata  # Humble's rmw sets no endpoint user data
         else:
             assert userdata[0].data == f"typehash={rosbags.hash_rihs01('sensor_msgs/msg/Range')};".encode()
     finally:
@@ -100,7 +107,7 @@ def test_each_distribution_decodes_what_a_run_of_it_encodes_and_the_reverse(dist
 def test_a_jazzy_node_decodes_the_range_a_jazzy_run_publishes_over_dds(env):
     """Breakage 5: Humble's Range (no `variance`) was sent whatever the distribution."""
     ros_messages.use_distro("jazzy")
-    bus = dds.DdsBus(writer_qos={"/r16/proximity/center": ("reliable", 1)})    # as `scoopc sim` publishes it
+    bus = dds.DdsBus(writer_qos={"/r16/proximity/center": ("reliable", 1)})  # as `scoopc sim` publishes it
     twin = rmw_twin.Node("jazzy")
     try:
         heard = twin.create_subscription("sensor_msgs/msg/Range", "/r16/proximity/center", depth=10)
@@ -117,20 +124,21 @@ def test_a_jazzy_node_decodes_the_range_a_jazzy_run_publishes_over_dds(env):
 
 # -- (4) a stock subscriber hears `scoopc sim`; QoS incompatibilities are reported --------------------------
 
+
 @pytest.mark.slow
 def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported(env, tmp_path):
     sim = scoopc(env, "sim", env["WORLD"], "--duration", "0", "--progress", "0", "--ros-distro", "jazzy")
     twin = rmw_twin.Node("jazzy")
     try:
-        odom = twin.create_subscription("nav_msgs/msg/Odometry", "/robot1/odom")              # depth 10, reliable
+        odom = twin.create_subscription("nav_msgs/msg/Odometry", "/robot1/odom")  # depth 10, reliable
         center = twin.create_subscription("sensor_msgs/msg/Range", "/robot1/proximity/center")
         ground = twin.create_subscription("sensor_msgs/msg/Range", "/robot1/ground/left")
         tb3 = twin.create_subscription("nav_msgs/msg/Odometry", "/tb3/odom")
-        scan = twin.create_subscription("sensor_msgs/msg/LaserScan", "/tb3/scan")            # reliable: no match
+        scan = twin.create_subscription("sensor_msgs/msg/LaserScan", "/tb3/scan")  # reliable: no match
         for sub in (odom, center, ground, tb3):
             assert sub.wait_for(lambda s: len(s.messages) >= 3, TIMEOUT), sub.topic
-        assert center.messages[-1].range == -1.0                   # the Thymio driver's "nothing seen"
-        assert ground.messages[-1].range == 0.0                    # floor
+        assert center.messages[-1].range == -1.0  # the Thymio driver's "nothing seen"
+        assert ground.messages[-1].range == 0.0  # floor
         assert scan.wait_for(lambda s: s.incompatible() > 0, TIMEOUT)
         sim.send_signal(2)
         status, _, err = finish(sim)
@@ -145,13 +153,26 @@ def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported
 
 # -- (1), (2), (6), (7): programs against twins of the robots' drivers ----------------------------------------
 
+
 @pytest.mark.slow
 def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp_path):
     twin = rmw_twin.Node("humble")
     try:
         driver = twin.create_subscription("geometry_msgs/msg/Twist", "/robot1/cmd_vel", depth=1)
-        run = scoopc(env, "run", str(PROGRAMS / "thymio_ros2"), "--robot", "ros2", "--ros-distro", "humble",
-                     "--duration", "6", "--wait-robot", "1", cwd=tmp_path)
+        run = scoopc(
+            env,
+            "run",
+            str(PROGRAMS / "thymio_ros2"),
+            "--robot",
+            "ros2",
+            "--ros-distro",
+            "humble",
+            "--duration",
+            "6",
+            "--wait-robot",
+            "1",
+            cwd=tmp_path,
+        )
         status, out, err = finish(run, 180)
         assert status == 0, err
         assert out.startswith("battery 1\n") and "sent" in out
@@ -172,15 +193,16 @@ def test_a_jazzy_turtlebot3_gets_twist_stamped_stamped_with_the_system_clock(env
     twin = rmw_twin.Node("jazzy")
     try:
         driver = twin.create_subscription("geometry_msgs/msg/TwistStamped", "/tb3/cmd_vel")
-        run = scoopc(env, "run", str(PROGRAMS / "turtlebot3_ros2"), "--robot", "ros2", "--ros-distro", "jazzy",
-                     cwd=tmp_path)
+        run = scoopc(
+            env, "run", str(PROGRAMS / "turtlebot3_ros2"), "--robot", "ros2", "--ros-distro", "jazzy", cwd=tmp_path
+        )
         status, out, err = finish(run, 180)
         assert status == 0, err
         assert "stamped True" in out
         assert driver.wait_for(lambda s: len(s.messages) >= 15, TIMEOUT)
         for msg, at in zip(driver.messages, driver.received_at):
             stamp = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
-            assert abs(stamp - at) < 0.1, (stamp, at)           # ROS time: the system clock
+            assert abs(stamp - at) < 0.1, (stamp, at)  # ROS time: the system clock
         assert {m.twist.linear.x for m in driver.messages} >= {0.1}
     finally:
         twin.close()
@@ -195,12 +217,23 @@ def test_a_twist_program_against_a_twist_stamped_robot_is_told_why_it_does_not_m
         twin.create_subscription("geometry_msgs/msg/TwistStamped", "/robot1/cmd_vel")
         pub = twin.create_publisher("sensor_msgs/msg/Range", "/proximity/center")
         pub.publish(pub.new(range=-1.0))
-        run = scoopc(env, "run", str(PROGRAMS / "thymio_ros2"), "--robot", "ros2", "--require-robot",
-                     "--wait-robot", "2", cwd=tmp_path)
+        run = scoopc(
+            env,
+            "run",
+            str(PROGRAMS / "thymio_ros2"),
+            "--robot",
+            "ros2",
+            "--require-robot",
+            "--wait-robot",
+            "2",
+            cwd=tmp_path,
+        )
         status, out, err = finish(run, 180)
         assert status == 3, err
-        assert "/robot1/cmd_vel: the robot reads geometry_msgs/msg/TwistStamped, this program sends " \
-               "geometry_msgs/msg/Twist" in err
+        assert (
+            "/robot1/cmd_vel: the robot reads geometry_msgs/msg/TwistStamped, this program sends "
+            "geometry_msgs/msg/Twist" in err
+        )
         assert "the ROS graph has /proximity/center (this program asked /robot1/proximity/center)" in err
         assert "exiting (--require-robot)" in err and "Traceback" not in err
     finally:
@@ -209,6 +242,7 @@ def test_a_twist_program_against_a_twist_stamped_robot_is_told_why_it_does_not_m
 
 def test_nothing_heard_names_the_namespace_mistake():
     from scoopc.robots.runner import nearby
+
     graph = {"/odom": "", "/scan": "", "/proximity/left": "", "/robot2/odom": ""}
     assert nearby("/robot1/odom", graph) == ["/odom", "/robot2/odom"]
     assert nearby("/robot1/proximity/left", graph) == ["/proximity/left"]
@@ -217,26 +251,34 @@ def test_nothing_heard_names_the_namespace_mistake():
 
 # -- (3) discovery as rmw_cyclonedds_cpp configures it -----------------------------------------------------------
 
+
 def test_discovery_configuration_of_each_range():
     uri = {"CYCLONEDDS_URI": "file:///x.xml"}
-    config, text, _ = dds.discovery_config("jazzy", {})        # SUBNET: multicast, participant indices
-    assert config == ("<CycloneDDS><Domain><Discovery><ParticipantIndex>auto</ParticipantIndex>"
-                      "<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex></Discovery></Domain></CycloneDDS>,")
+    config, text, _ = dds.discovery_config("jazzy", {})  # SUBNET: multicast, participant indices
+    assert config == (
+        "<CycloneDDS><Domain><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+        "<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex></Discovery></Domain></CycloneDDS>,"
+    )
     assert text == "discovery SUBNET"
     config, _, _ = dds.discovery_config("jazzy", {"ROS_STATIC_PEERS": "10.0.0.2;robot.local", **uri})
-    assert config == ("<CycloneDDS><Domain><Discovery><ParticipantIndex>auto</ParticipantIndex>"
-                      "<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex><Peers><Peer address=\"10.0.0.2\"/>"
-                      "<Peer address=\"robot.local\"/></Peers></Discovery></Domain></CycloneDDS>,file:///x.xml")
+    assert config == (
+        "<CycloneDDS><Domain><Discovery><ParticipantIndex>auto</ParticipantIndex>"
+        '<MaxAutoParticipantIndex>32</MaxAutoParticipantIndex><Peers><Peer address="10.0.0.2"/>'
+        '<Peer address="robot.local"/></Peers></Discovery></Domain></CycloneDDS>,file:///x.xml'
+    )
     config, _, warnings = dds.discovery_config(
-        "jazzy", {"ROS_AUTOMATIC_DISCOVERY_RANGE": "SYSTEM_DEFAULT", "ROS_STATIC_PEERS": "10.0.0.2", **uri})
+        "jazzy", {"ROS_AUTOMATIC_DISCOVERY_RANGE": "SYSTEM_DEFAULT", "ROS_STATIC_PEERS": "10.0.0.2", **uri}
+    )
     assert config == "file:///x.xml" and "ignored" in warnings[0]
     config, _, _ = dds.discovery_config("jazzy", {"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"})
     assert "<AllowMulticast>false</AllowMulticast>" in config and '<Peer address="localhost"/>' in config
-    config, _, _ = dds.discovery_config("jazzy", {"ROS_AUTOMATIC_DISCOVERY_RANGE": "OFF",
-                                                  "ROS_STATIC_PEERS": "10.0.0.2"}, pid=42)
+    config, _, _ = dds.discovery_config(
+        "jazzy", {"ROS_AUTOMATIC_DISCOVERY_RANGE": "OFF", "ROS_STATIC_PEERS": "10.0.0.2"}, pid=42
+    )
     assert "<Tag>ros_discovery_off_42</Tag>" in config and "Peer" not in config
-    config, _, warnings = dds.discovery_config("jazzy", {"ROS_LOCALHOST_ONLY": "1",
-                                                         "ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET"})
+    config, _, warnings = dds.discovery_config(
+        "jazzy", {"ROS_LOCALHOST_ONLY": "1", "ROS_AUTOMATIC_DISCOVERY_RANGE": "SUBNET"}
+    )
     assert '<Peer address="localhost"/>' in config and "deprecated" in warnings[0]
     config, _, _ = dds.discovery_config("humble", {"ROS_LOCALHOST_ONLY": "1", **uri})
     assert config.startswith('<CycloneDDS><Domain><General><Interfaces><NetworkInterface address="127.0.0.1"/>')
@@ -268,15 +310,22 @@ while True:
 def _discovery(env, tmp_path, variables, wait):
     """A DdsBus listener and a talker in two processes with `variables`; the listener's last line."""
     uri = tmp_path / "interface_only.xml"
-    uri.write_text(INTERFACE_ONLY)                # loopback only, no peers: discovery is up to the variables
-    child = dict(env, CYCLONEDDS_URI=uri.resolve().as_uri(), ROS_DOMAIN_ID=str(random.randint(100, 200)),
-                 ROS_DISTRO="jazzy", **variables)
-    talker = subprocess.Popen([sys.executable, "-c", TALK], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                              text=True, env=child)
+    uri.write_text(INTERFACE_ONLY)  # loopback only, no peers: discovery is up to the variables
+    child = dict(
+        env,
+        CYCLONEDDS_URI=uri.resolve().as_uri(),
+        ROS_DOMAIN_ID=str(random.randint(100, 200)),
+        ROS_DISTRO="jazzy",
+        **variables,
+    )
+    talker = subprocess.Popen(
+        [sys.executable, "-c", TALK], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=child
+    )
     try:
         assert talker.stdout.readline().startswith("ready"), talker.stderr.read()
-        done = subprocess.run([sys.executable, "-c", LISTEN, str(wait)], capture_output=True, text=True,
-                              env=child, timeout=TIMEOUT + 30)
+        done = subprocess.run(
+            [sys.executable, "-c", LISTEN, str(wait)], capture_output=True, text=True, env=child, timeout=TIMEOUT + 30
+        )
         assert done.returncode == 0, done.stderr
         return done.stdout.splitlines()
     finally:
@@ -285,9 +334,11 @@ def _discovery(env, tmp_path, variables, wait):
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("variables", [{"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"},
-                                       {"ROS_STATIC_PEERS": "127.0.0.1"}, {"ROS_LOCALHOST_ONLY": "1"}],
-                         ids=["LOCALHOST", "static peers", "ROS_LOCALHOST_ONLY"])
+@pytest.mark.parametrize(
+    "variables",
+    [{"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}, {"ROS_STATIC_PEERS": "127.0.0.1"}, {"ROS_LOCALHOST_ONLY": "1"}],
+    ids=["LOCALHOST", "static peers", "ROS_LOCALHOST_ONLY"],
+)
 def test_two_processes_discover_each_other_as_the_variables_say(env, tmp_path, variables):
     lines = _discovery(env, tmp_path, variables, TIMEOUT)
     assert lines[-1] == "heard", lines
@@ -297,7 +348,7 @@ def test_two_processes_discover_each_other_as_the_variables_say(env, tmp_path, v
 def test_discovery_off_keeps_two_processes_apart(env, tmp_path):
     start = time.monotonic()
     control = _discovery(env, tmp_path, {"ROS_AUTOMATIC_DISCOVERY_RANGE": "LOCALHOST"}, TIMEOUT)
-    needed = time.monotonic() - start                          # what discovery takes here, with margin below
+    needed = time.monotonic() - start  # what discovery takes here, with margin below
     assert control[-1] == "heard"
     lines = _discovery(env, tmp_path, {"ROS_AUTOMATIC_DISCOVERY_RANGE": "OFF"}, max(3.0, 3 * needed))
     assert lines[0].startswith("ready discovery OFF") and lines[-1] == "silent", lines

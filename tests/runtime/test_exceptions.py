@@ -3,6 +3,7 @@
 call makes the region dirty for that client (later calls skipped; the next synchronous call is not executed, raises and
 cleans it; release cleans it too), as EiffelStudio's processor.c;
 a lost exception is reported on stderr, and strict mode makes it a run-time failure."""
+
 import threading
 
 import pytest
@@ -36,15 +37,15 @@ def test_failed_sync_call_raises_the_dirty_processor_exception(h):
         assert isinstance(info.value.__cause__, ValueError)
         assert str(info.value.__cause__) == "bad query"
         assert str(info.value) == f"EVE/Qs dirty processor exception: a synchronous call on {c._region_} failed"
-        assert root.query(c, Cell.get) == 0            # delivered: the region is clean
-    lc = root.new_separate(LCell, LCell.make)          # a leaf creation: run here, lc idle
+        assert root.query(c, Cell.get) == 0  # delivered: the region is clean
+    lc = root.new_separate(LCell, LCell.make)  # a leaf creation: run here, lc idle
     with root.reserve((lc,)):
-        assert root.held[lc._region_].claimed          # claimed: the client runs its queries
+        assert root.held[lc._region_].claimed  # claimed: the client runs its queries
         with pytest.raises(rt.DirtyRegionError) as info:
             root.query(lc, Cell.fail, ("claimed",))
         assert str(info.value.__cause__) == "claimed"
         with pytest.raises(rt.DirtyRegionError) as info:
-            root.leaf_query(lc, leaf_fail, ("leaf",))   # the fast entry point likewise
+            root.leaf_query(lc, leaf_fail, ("leaf",))  # the fast entry point likewise
         assert str(info.value.__cause__) == "leaf"
         assert root.query(lc, Cell.get) == 0
     assert h.finish() == 0
@@ -59,9 +60,9 @@ def test_failed_sync_call_run_by_the_suppliers_thread_raises_the_same(h):
     opener = threading.Thread(target=lambda: queued.wait(GATE_TIMEOUT) and gate.set())
     opener.start()
     with root.reserve((c,)):
-        root.call(c, Cell.gate, (gate,))               # not a leaf: for the supplier's thread
+        root.call(c, Cell.gate, (gate,))  # not a leaf: for the supplier's thread
         with pytest.raises(rt.DirtyRegionError) as info:
-            root.query(c, Cell.fail, ("on its thread",))   # waits behind the gate
+            root.query(c, Cell.fail, ("on its thread",))  # waits behind the gate
         assert str(info.value.__cause__) == "on its thread"
         assert root.query(c, Cell.get) == 0
     opener.join()
@@ -93,10 +94,10 @@ def test_async_failure_dirties_until_the_next_synchronous_call(h):
             root.query(c, Cell.add, ("not executed",))
         assert str(info.value.__cause__) == "async"
         assert "dirty processor exception" in str(info.value)
-        root.call(c, Cell.add, ("after the delivery",))        # clean again: executed
+        root.call(c, Cell.add, ("after the delivery",))  # clean again: executed
         assert root.query(c, Cell.items) == ["before", "after the delivery"]
     assert h.finish() == 0
-    assert h.err.getvalue() == ""                       # it was delivered: not lost
+    assert h.err.getvalue() == ""  # it was delivered: not lost
 
 
 def test_a_second_failure_after_a_delivery_is_delivered_again(h):
@@ -122,7 +123,7 @@ def test_release_cleans_a_dirty_region(h):
     with root.reserve((c,)):
         root.call(c, Cell.fail, ("async",))
         root.call(c, Cell.add, ("skipped",))
-    with root.reserve((c,)):                            # unlocking forgot the dirtiness
+    with root.reserve((c,)):  # unlocking forgot the dirtiness
         root.call(c, Cell.add, ("after",))
         assert root.query(c, Cell.items) == ["after"]
     assert h.finish() == 0
@@ -137,7 +138,7 @@ def test_rescue_and_retry_succeeds_on_the_second_attempt(h):
     c = root.new_separate(Cell, Cell.make)
     attempts = []
     with root.reserve((c,)):
-        while True:                                     # the shape of a retried routine body
+        while True:  # the shape of a retried routine body
             attempts.append(len(attempts) + 1)
             try:
                 if len(attempts) == 1:
@@ -178,19 +179,22 @@ def test_leaf_command_failure_also_dirties(h):
     @rt.leaf
     def bad(cell):
         raise KeyError("leaf")
+
     with root.reserve((c,)):
         root.call(c, bad)
         with pytest.raises(rt.DirtyRegionError):
             root.query(c, Cell.get)
-        assert root.query(c, Cell.get) == 0             # delivered: clean again
+        assert root.query(c, Cell.get) == 0  # delivered: clean again
 
 
 def test_uncaught_exception_in_root_is_a_failure():
     import io
+
     err = io.StringIO()
 
     class Root:
         def make(self):
             raise RuntimeError("root failed")
+
     assert rt.run_main(Root, Root.make, stderr=err, stdout=io.StringIO()) == 3
     assert "root failed" in err.getvalue()

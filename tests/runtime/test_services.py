@@ -1,4 +1,5 @@
 """once per region / process / object, untorn and tagged output, agents."""
+
 import threading
 
 import scoopc.runtime as rt
@@ -30,16 +31,17 @@ def test_once_is_per_region_not_per_thread(h):
     b = root.new_separate(Holder, Holder.make)
     mine = root.new(Holder)
     with root.reserve((a, b)):
-        va = root.query(a, Holder.my_once)     # run by us, on a's behalf
+        va = root.query(a, Holder.my_once)  # run by us, on a's behalf
         vb = root.query(b, Holder.my_once)
         assert root.query(a, Holder.my_once) == va
     assert va != vb
-    assert mine.my_once() not in (va, vb)      # the root region has its own
+    assert mine.my_once() not in (va, vb)  # the root region has its own
     seen = []
 
-    def other_client(here):                    # another thread, same region a
+    def other_client(here):  # another thread, same region a
         with here.reserve((a,)):
             seen.append(here.query(a, Holder.my_once))
+
     spawn(root, other_client)
     assert h.finish() == 0
     assert seen == [va]
@@ -59,6 +61,7 @@ def test_once_process_and_object(h):
 def test_once_failure_is_remembered(h):
     def boom(cell):
         raise ValueError("once failed")
+
     for _ in range(2):
         try:
             h.root.once("boom", boom)
@@ -74,10 +77,11 @@ def test_once_called_during_its_first_execution_returns_result_so_far(h):
 
     def body(depth, cell):
         cell.result = 5
-        seen.append(h.root.once("rec", body, (depth + 1,)))     # recursive: not run again
+        seen.append(h.root.once("rec", body, (depth + 1,)))  # recursive: not run again
         seen.append(rt.once_object(obj, "rec", body, (depth + 1,)) if depth == 0 else None)
         cell.result = cell.result + 1
         return cell.result
+
     obj = h.root.new(Holder)
     assert h.root.once("rec", body, (0,)) == 6
     assert h.root.once("rec", body, (0,)) == 6
@@ -87,7 +91,8 @@ def test_once_called_during_its_first_execution_returns_result_so_far(h):
 
     def proc(cell):
         seen.append("ran")
-        rt.once_process("proc", proc)          # a once procedure's recursive call does nothing
+        rt.once_process("proc", proc)  # a once procedure's recursive call does nothing
+
     seen.clear()
     assert rt.once_process("proc", proc) is None
     assert seen == ["ran"]
@@ -139,11 +144,11 @@ def test_agents_on_separate_targets(h):
     assert ag._region_ is c._region_
     with root.reserve((c,)):
         root.call(c, Cell.gate, (gate, entered))
-        root.call(ag, rt.Agent.call, (None,))        # asynchronous
+        root.call(ag, rt.Agent.call, (None,))  # asynchronous
         assert entered.wait(10)
         assert c.log == []
         gate.set()
         assert root.query(c, Cell.items) == ["closed"]
         setter = rt.Agent(c, Cell.set)
-        root.call(setter, rt.Agent.call, ((9,),))    # a tuple passes locks: synchronous
+        root.call(setter, rt.Agent.call, ((9,),))  # a tuple passes locks: synchronous
         assert c.value == 9

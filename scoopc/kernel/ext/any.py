@@ -1,5 +1,6 @@
 """ANY's `built_in` features for objects of generated classes (values of basic types are served
 by scoopc.kernel.basic): reflection, copying and comparison, `tagged_out`."""
+
 from __future__ import annotations
 
 from .. import types as T
@@ -60,7 +61,7 @@ def _blank(current):
 def standard_copy(current, other):
     region = current._region_
     theirs = _fields(other)
-    for name in _fields(current):         # a field `other` never set holds its class default
+    for name in _fields(current):  # a field `other` never set holds its class default
         if name not in theirs and not name.startswith("_"):
             theirs[name] = getattr(type(other), name, None)
     current.__dict__.update({k: (list(v) if isinstance(v, list) else v) for k, v in theirs.items()})

@@ -4,6 +4,7 @@ The program's command line is `PROGRAM`: index 0 is the command name (EiffelBase
 `argument (0)`), then the arguments. The launcher (scoopc.kernel.launcher) sets it with `set_arguments`
 before the root creation procedure runs; ARGUMENTS_32 reads the same list.
 """
+
 from scoopc.kernel import strings
 from scoopc.kernel.launcher import PROGRAM, set_arguments  # noqa: F401 - set_arguments: tests and embedders
 

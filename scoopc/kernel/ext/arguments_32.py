@@ -1,5 +1,6 @@
 """ARGUMENTS_32's `external "Python"` features (stdlib/base/kernel/arguments_32.e); the command
 line is `scoopc.kernel.ext.arguments.PROGRAM`."""
+
 from scoopc.kernel import strings
 from scoopc.kernel.ext import arguments as _arguments
 

@@ -1,6 +1,7 @@
 """CONDITION_VARIABLE's `external "Python"` features (stdlib/thread/condition_variable.e): a
 queue of waiters, each with a lock of its own that `signal` releases (as Python's own
 threading.Condition does), over the MUTEX's threads.Mutex."""
+
 import threading
 from collections import deque
 
@@ -44,7 +45,7 @@ def _wait(current, a_mutex, timeout):
             with current._waiters_lock_:
                 try:
                     current._waiters_.remove(waiter)
-                except ValueError:           # signalled just after the timeout: count it
+                except ValueError:  # signalled just after the timeout: count it
                     signalled = True
         mutex.restore(count, None)
     return signalled

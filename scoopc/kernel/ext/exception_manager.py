@@ -11,6 +11,7 @@ For the runtime (rescue clauses, raising): `set_last_exception(region, exc)` rec
 exception a rescue clause handles (None when none), `exception_is_ignored(region, exc)` tells
 whether an exception object's dynamic type is ignored in that region.
 """
+
 import threading
 import weakref
 
@@ -18,7 +19,7 @@ from scoopc.kernel import support
 from scoopc.kernel.errors import EiffelFailure
 from scoopc.kernel.types import TypeDesc, of
 
-_STATES = weakref.WeakKeyDictionary()    # region (Processor) -> _State
+_STATES = weakref.WeakKeyDictionary()  # region (Processor) -> _State
 _LOCK = threading.Lock()
 
 
@@ -60,6 +61,7 @@ def type_key(a_type):
 
 # --- features ---------------------------------------------------------------------------
 
+
 def last_exception(current):
     """The exception recorded by `set_last_exception`, else the one the generated rescue
     clause recorded through `scoopc.kernel.support.caught` (an EiffelFailure gives its
@@ -90,6 +92,7 @@ def catch(current, a_exception):
 
 
 # --- for the runtime --------------------------------------------------------------------
+
 
 def set_last_exception(region, exc):
     """Record `exc` (an EXCEPTION object, or None) as the exception handled in `region`."""

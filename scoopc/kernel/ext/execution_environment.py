@@ -7,6 +7,7 @@ standard streams (flushed first), and waits; `return_code` is then its exit stat
 negated signal number if a signal ended it). `change_working_directory` sets `return_code`
 to 0, or -1 on failure, as EiffelBase does.
 """
+
 import os
 import subprocess
 import sys
@@ -77,7 +78,8 @@ def change_working_directory(current, path):
 
 def sleep(current, nanoseconds):
     from .. import threads  # deferred: only programs that sleep need it
-    if threads.in_eiffel_thread():       # a thread launched by an Eiffel THREAD is no processor
+
+    if threads.in_eiffel_thread():  # a thread launched by an Eiffel THREAD is no processor
         threads.sleep(current, nanoseconds)
     else:
         current._region_.sleep(nanoseconds)

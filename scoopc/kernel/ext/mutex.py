@@ -1,5 +1,6 @@
 """MUTEX's `external "Python"` features (stdlib/thread/mutex.e): threads.Mutex (re-entrant for
 its owner, unlocked only by its owner: the Eiffel preconditions guard both)."""
+
 from .. import threads
 
 

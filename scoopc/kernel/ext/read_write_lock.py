@@ -1,6 +1,7 @@
 """READ_WRITE_LOCK's `external "Python"` features (stdlib/thread/read_write_lock.e): readers
 and a writer counted under one threading.Condition; a waiting writer holds new readers back,
 so writers are not starved."""
+
 import threading
 
 from .. import threads
@@ -11,8 +12,8 @@ class _Lock:
 
     def __init__(self):
         self.condition = threading.Condition(threading.Lock())
-        self.readers = {}            # thread ident -> 1 for each thread holding the read lock
-        self.writer = 0              # ident of the thread holding the write lock, 0 if none
+        self.readers = {}  # thread ident -> 1 for each thread holding the read lock
+        self.writer = 0  # ident of the thread holding the write lock, 0 if none
         self.writers_waiting = 0
 
 
@@ -45,14 +46,18 @@ def _acquire(current, ready, take):
             take(lock)
             return True
         return False
+
     with lock.condition:
         threads.wait_for(attempt, rt)
 
 
 def host_acquire_read_lock(current):
     me = threading.get_ident()
-    _acquire(current, lambda lock: lock.writer == 0 and lock.writers_waiting == 0,
-             lambda lock: lock.readers.__setitem__(me, 1))
+    _acquire(
+        current,
+        lambda lock: lock.writer == 0 and lock.writers_waiting == 0,
+        lambda lock: lock.readers.__setitem__(me, 1),
+    )
 
 
 def host_acquire_write_lock(current):
@@ -61,9 +66,11 @@ def host_acquire_write_lock(current):
     with lock.condition:
         lock.writers_waiting += 1
     try:
+
         def take(lock):
             lock.writer = me
             lock.writers_waiting -= 1
+
         _acquire(current, lambda lock: lock.writer == 0 and not lock.readers, take)
     except BaseException:
         with lock.condition:

@@ -1,5 +1,6 @@
 """ROBOT_ENVIRONMENT's `external "Python"` features (stdlib/roboscoop/util/robot_environment.e):
 the settings `scoopc run` gave this run (scoopc.robots.runner.settings_of the running runtime)."""
+
 import sys
 
 from scoopc import runtime

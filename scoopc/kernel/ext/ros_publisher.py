@@ -31,4 +31,5 @@ def publish_message(current, message):
     from scoopc.robots import (
         eiffel_bridge,  # deferred: start-up (scoopc.robots.eiffel_bridge loads only when this is used)
     )
+
     transport.current().publish(_text(current.topic), eiffel_bridge.to_message(message))

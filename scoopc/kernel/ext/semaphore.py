@@ -1,5 +1,6 @@
 """SEMAPHORE's `external "Python"` features (stdlib/thread/semaphore.e): threading.Semaphore,
 waited on in slices (threads.wait_for) so a stopped run never leaves a thread waiting."""
+
 import threading
 
 from .. import threads

@@ -1,5 +1,6 @@
 """THREAD's `external "Python"` features (stdlib/thread/thread.e): a daemon Python thread per
 launch, running the frozen `thr_main` (which calls `execute`); scoopc/kernel/threads.py."""
+
 from .. import threads
 
 

@@ -1,5 +1,6 @@
 """THREAD_CONTROL's `external "Python"` features (stdlib/thread/thread_control.e): the calling
 Python thread (scoopc/kernel/threads.py)."""
+
 import time
 
 from .. import threads

@@ -3,6 +3,7 @@
 of agents through the runtime's timers (`rt.call_later`): each call is a command logged on the
 agent's processor. The timer keeps its runtime Timer handles in `_pending` (Python-side state of
 the TIMER object, touched only by its own processor and by the calls it schedules)."""
+
 import scoopc.runtime as rt
 
 from .routine import run

@@ -1,5 +1,6 @@
 """TYPE's `built_in` features: a TYPE object's `_gen_[0]` is the type it describes
 (scoopc.kernel.types.TypeDesc)."""
+
 from __future__ import annotations
 
 from .. import types as T
