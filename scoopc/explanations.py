@@ -1151,6 +1151,49 @@ EXPLANATIONS: dict[str, Explanation] = {
             end
         """,
         "Declare the result `separate`; callers then use it through separate arguments or blocks."),
+    "VSRT": _x(
+        """The root class is the type of the object the program starts with: the system creates it
+        before any code runs, so it must be an effective (not deferred) class without generic
+        parameters.""",
+        """
+        deferred class APPLICATION create make feature make do end end
+        """,
+        """
+        class APPLICATION create make feature make do end end
+        """,
+        "The root class is effective now; for a generic class, make a non-generic heir the root."),
+    "VSRP(1)": _x(
+        """The root procedure (the .ecf's `feature` of `<root>`, or `--root CLASS.feature`) is how the
+        system creates the root object, so it must be one of the root class's creation
+        procedures.""",
+        """
+        class APPLICATION create make feature start do end make do end end
+        -- root: APPLICATION.start
+        """,
+        """
+        class APPLICATION create make, start feature start do end make do end end
+        """,
+        "`start` is listed in the `create` clause, so it can create the root object."),
+    "VSRP(2)": _x(
+        """Nothing calls the root procedure but the system when the program starts, and it has no
+        values to pass: the root procedure takes no arguments.""",
+        """
+        make (n: INTEGER) do print (n) end
+        """,
+        """
+        make do print ((create {ARGUMENTS_32}).argument_count) end
+        """,
+        "The root procedure takes no argument; command-line arguments come from ARGUMENTS_32."),
+    "VSRP(3)": _x(
+        """Nothing could establish a precondition of the root procedure before the program starts,
+        so the root procedure has none.""",
+        """
+        make require ready: is_ready do run end
+        """,
+        """
+        make do if is_ready then run end end
+        """,
+        "The condition is tested in the body instead of being required of a caller that does not exist."),
     "PROCESSOR-TAG": _x(
         """A creation may say where the new object lives with a tag in angle brackets. scoopc accepts
         only `<NONE>`, which puts the object in a passive region whose calls run on the client's
