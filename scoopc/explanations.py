@@ -1151,6 +1151,19 @@ EXPLANATIONS: dict[str, Explanation] = {
             end
         """,
         "Declare the result `separate`; callers then use it through separate arguments or blocks."),
+    "VAPE": _x(
+        """A precondition is what a client must make true before a call, so every client that may
+        call the routine must be able to test it: a feature called (unqualified) in the
+        precondition must be exported to every class the routine is exported to.""",
+        """
+        feature withdraw (n: INTEGER) require n <= balance do balance := balance - n end
+        feature {NONE} balance: INTEGER
+        """,
+        """
+        feature withdraw (n: INTEGER) require n <= balance do balance := balance - n end
+        feature balance: INTEGER
+        """,
+        "`balance` is exported as widely as `withdraw`, so a client can check `n <= balance` first."),
     "VSRT": _x(
         """The root class is the type of the object the program starts with: the system creates it
         before any code runs, so it must be an effective (not deferred) class without generic

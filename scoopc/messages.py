@@ -202,6 +202,9 @@ MESSAGES: dict[str, Message] = {
     "VFFD(8)": Message("`once (\"PROCESS\")` function `{name}` has the non-separate type {type}: "
                        "all processors would share an object of one processor",
                        "declare the result `separate {type}`"),
+    "VAPE": Message("`{name}` in the precondition of `{routine}` is exported to {exports} only, but `{routine}` is "
+                    "available to {client}: that client could not test what it must ensure",
+                    "export `{name}` at least as widely as `{routine}` (e.g. move it to the `feature` clause of `{routine}`)"),
     "VSRT": Message("root class {name} is {what}",
                     "choose an effective, non-generic class as the root (an heir that fixes the generics, if need be)"),
     "VSRP(1)": Message("root procedure `{creator}` is not a creation procedure of {name} (it has: {listed})",

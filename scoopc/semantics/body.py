@@ -33,6 +33,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.result_type = None
         self.result_context = "a procedure"
         self.in_postcondition = False
+        self.in_precondition = False        # the routine's own precondition: VAPE
         self.in_rescue = False
         self.object_tests: dict = {}
         self.reported_unset: set = set()
@@ -120,14 +121,15 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
 
     def enter_nested(self):
         saved = (self.scopes, self.facts, self.result_type, self.result_context, self.in_rescue,
-                 self.in_postcondition, self.reported_unset)
+                 self.in_postcondition, self.in_precondition, self.reported_unset)
         self.scopes, self.facts, self.in_rescue, self.in_postcondition = Scopes(), Facts(), False, False
+        self.in_precondition = False
         self.reported_unset = set()
         return saved
 
     def leave_nested(self, saved) -> None:
         (self.scopes, self.facts, self.result_type, self.result_context, self.in_rescue,
-         self.in_postcondition, self.reported_unset) = saved
+         self.in_postcondition, self.in_precondition, self.reported_unset) = saved
 
     # --- routines ---------------------------------------------------------------------------
     def check_feature(self, feature) -> None:

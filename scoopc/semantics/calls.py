@@ -24,6 +24,8 @@ class CallChecks:
                 self.report("VKCN(1)", node.span, name=node.name.text)
             return self.entity_value(node, entity)
         feature = self.info.features.get(name)
+        if feature is not None and self.in_precondition:
+            self.precondition_export(feature, node.name.span)
         if feature is not None and node.arguments and not feature.arguments and feature.is_query:
             value = self.call_feature(node, None, Value(self.current), feature, (), node.name.span)
             return None if value is None else self.agent_call(node, value, as_instruction)
@@ -206,6 +208,23 @@ class CallChecks:
             self.report(code, node.span, source=str(value.ty), target=str(target), actual=str(value.ty),
                         formal=str(target), reason=detail, hint=_hint(reason))
         return False
+
+    def precondition_export(self, feature, span) -> None:
+        """VAPE (ECMA-367's Precondition Export rule): a feature called unqualified in the
+        precondition of the routine being checked is available to every class the routine is
+        available to (a client must be able to test the precondition it has to meet)."""
+        routine = self.feature
+        if routine is None or feature.exports is None:
+            return
+        clients = routine.exports if routine.exports is not None else frozenset({"ANY"})
+        for client in sorted(clients):
+            info = self.universe.get(client)
+            if client == "NONE" or info is None:
+                continue
+            if not any(name == client or name in info.ancestors for name in feature.exports):
+                listed = ", ".join(sorted(feature.exports)) or "NONE"
+                self.report("VAPE", span, name=feature.text, routine=routine.text, client=client, exports=listed)
+                return
 
     def available(self, feature) -> bool:
         if feature.exports is None:
