@@ -1207,18 +1207,6 @@ EXPLANATIONS: dict[str, Explanation] = {
         make do if is_ready then run end end
         """,
         "The condition is tested in the body instead of being required of a caller that does not exist."),
-    "PROCESSOR-TAG": _x(
-        """A creation may say where the new object lives with a tag in angle brackets. scoopc accepts
-        only `<NONE>`, which puts the object in a passive region whose calls run on the client's
-        thread under a lock; other processor tags are not supported.""",
-        """
-        create <p> worker.make
-        """,
-        """
-        create <NONE> worker.make      -- passive region
-        create worker.make             -- or: a new processor (worker: separate WORKER)
-        """,
-        "Use `<NONE>` for a passive region, or no tag at all for an object with its own processor."),
 }
 # VUAR(2) and VJAR also cover their SCOOP conditions (separate to non-separate); see their rule text.
 

@@ -19,8 +19,6 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
   non-separate formal in a call on a separate target, or a `G` result of such a call used as
   non-separate. EiffelStudio accepts both (it applies VUAR(3) and result adaptation to
   `reference G` only); if an actual generic is a reference type, the value is a traitor.
-- PROCESSOR-TAG: `create <X>` with a processor tag other than NONE (explicit processor tags
-  are not supported; `<NONE>` makes a passive region).
 
 The validity codes are ECMA-367's as EiffelStudio prints them; for SCOOP, EiffelStudio's
 spelling, Gobo's finer conditions being accepted by `scoopc check --explain` as aliases.
@@ -213,7 +211,5 @@ MESSAGES: dict[str, Message] = {
                        "remove the arguments (read command-line arguments with ARGUMENTS_32), or use another creation procedure"),
     "VSRP(3)": Message("root procedure {name}.{creator} has a precondition: nothing could establish it when the program starts",
                        "remove the `require` clause and check the condition in the body instead"),
-    "PROCESSOR-TAG": Message("processor tag `<{tag}>`: only `create <NONE> x` (a passive region) is supported",
-                             "write `create <NONE> x.make` for a passive region, or `create x.make` for a new processor"),
     "ONCE-KEY": Message("unknown once key \"{key}\"", 'use "PROCESS", "THREAD" or "OBJECT" (or none: once per processor)'),
 }

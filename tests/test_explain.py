@@ -10,7 +10,7 @@ from scoopc.explanations import ALIASES, EXPLANATIONS
 from harness import TESTS
 
 PLAN_SCOOP_CODES = ["VUTA(3)", "VUAR(2)", "VJAR", "VUAR(3)", "VUAR(4)", "VUER", "FRESH_IDENTIFIER", "V1SE",
-                    "V1SE(3)", "VFFD(8)", "PROCESSOR-TAG"]
+                    "V1SE(3)", "VFFD(8)"]
 
 
 def run(capsys, *argv):

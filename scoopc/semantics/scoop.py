@@ -132,12 +132,6 @@ def check_process_once(ctx, feature, result: Ty | None) -> None:
         ctx.report("VFFD(8)", feature.fname.name.span, name=feature.text, type=str(result))
 
 
-def check_processor_tag(ctx, processor: syntax.Identifier | None) -> None:
-    """`create <NONE> x` makes a passive region; no other processor tag is supported."""
-    if processor is not None and processor.key != "none":
-        ctx.report("PROCESSOR-TAG", processor.span, tag=processor.text)
-
-
 def wait_arguments(ctx, clause: syntax.AssertionClause) -> tuple[str, ...]:
     """The separate formal arguments used as call targets in a precondition clause: the runtime
     makes the clause a wait condition when one of them was newly reserved by the call."""
