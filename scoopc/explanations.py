@@ -1015,6 +1015,38 @@ EXPLANATIONS: dict[str, Explanation] = {
         item alias "[]" (i: INTEGER): INTEGER
         """,
         "Put the bracket alias on a query that takes the index (or key) as an argument."),
+    "VFAV(3)": _x(
+        """A parenthesis alias (`alias "()"`) lets `x (a)` call a routine with the parenthesized values
+        as its arguments, so it names a routine with at least one argument, and a class has at
+        most one feature with a parenthesis alias.""",
+        """
+        value alias "()": INTEGER
+        """,
+        """
+        item alias "()" (i: INTEGER): INTEGER
+        """,
+        "Put the parenthesis alias on one routine that takes the values as arguments."),
+    "VFAV(4)": _x(
+        """A `convert` mark on an operator alias lets the operator apply when the left operand only
+        converts to the class (`1 + money`): the operator must then be binary, so the feature
+        takes exactly one argument.""",
+        """
+        negated alias "-" convert: MONEY
+        """,
+        """
+        negated alias "-": MONEY
+        """,
+        "The unary operator loses its `convert` mark: there is no other operand to convert from."),
+    "VFAV(5)": _x(
+        """Only an operator alias can carry a `convert` mark (it converts the left operand of a
+        binary operator); a bracket or parenthesis alias cannot.""",
+        """
+        item alias "[]" convert (i: INTEGER): G
+        """,
+        """
+        item alias "[]" (i: INTEGER): G
+        """,
+        "The bracket alias loses its `convert` mark."),
     "VDJR": _x(
         """When a class inherits several features with one name, at most one of them effective, they
         are joined into one feature: their signatures (argument and result types) must then be the
