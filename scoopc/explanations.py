@@ -813,7 +813,7 @@ EXPLANATIONS: dict[str, Explanation] = {
         """Void safety: a variable of an attached type must hold an object before it is read. An
         attached local or `Result` must be set on every path before its first use (and `Result`
         before the function returns), and each creation procedure must set every attached
-        attribute.""",
+        attribute, before it reads it.""",
         """
         name: STRING
             do

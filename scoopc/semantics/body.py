@@ -176,12 +176,22 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             self.instructions(body.rescue)
             self.in_rescue = False
 
+    def _creating(self) -> bool:
+        """Is the routine being checked a creation procedure of this class, written in it? Its
+        attached attributes are then unset at its start (VEVI at a read before they are set)."""
+        feature, creators = self.feature, self.info.creators
+        if feature is None or feature.written_in != self.info.name or self.info.is_deferred or self.info.is_expanded:
+            return False
+        return feature.name in creators if creators is not None else feature.name == "default_create"
+
     def _unset_at_start(self, locals_, result) -> frozenset:
         names = set()
         for decl in locals_:
             entity = self.scopes.lookup(decl.name.key)
             if entity is not None and entity.kind == "local" and self._needs_value(entity.ty):
                 names.add(entity.name)
+        if self.void_level >= 2 and self._creating():
+            names.update(_required_attributes(self.universe, self.info))
         if result is not None and self._needs_value(result):
             names.add("result")
         return frozenset(names)

@@ -4,6 +4,8 @@ VDPR(1), VDPR(2), and the SCOOP rules through scoop.py. Records the feature of e
 """
 from __future__ import annotations
 
+from dataclasses import replace
+
 from . import scoop, walk
 from .conformance import base_type
 from .features import member_signature
@@ -26,6 +28,8 @@ class CallChecks:
         feature = self.info.features.get(name)
         if feature is not None and self.in_precondition:
             self.precondition_export(feature, node.name.span)
+        if feature is not None and self.facts and self.facts.unset:
+            self.attribute_use(node, feature)
         if feature is not None and node.arguments and not feature.arguments and feature.is_query:
             value = self.call_feature(node, None, Value(self.current), feature, (), node.name.span)
             return None if value is None else self.agent_call(node, value, as_instruction)
@@ -209,6 +213,18 @@ class CallChecks:
                         formal=str(target), reason=detail, hint=_hint(reason))
         return False
 
+    def attribute_use(self, node, feature) -> None:
+        """VEVI in a creation procedure: an attached attribute read before the procedure sets it
+        (reported at the read); a routine it calls sets the attributes that routine assigns."""
+        from .body import _set_by
+
+        if feature.kind == "attribute":
+            self.use_entity(node.name, feature.name)
+        elif feature.is_routine:
+            done = _set_by(self.universe, self.info, feature, set())
+            if done & self.facts.unset:
+                self.facts = replace(self.facts, unset=self.facts.unset - done)
+
     def precondition_export(self, feature, span) -> None:
         """VAPE (ECMA-367's Precondition Export rule): a feature called unqualified in the
         precondition of the routine being checked is available to every class the routine is
@@ -276,6 +292,8 @@ class CallChecks:
             self.report("VDPR(1)", node.span, name=self.feature.text if self.feature else "?")
             self.evaluate(node.arguments)
             return None
+        if self.facts and self.facts.unset:
+            self.attribute_use(node, effective[0][1])
         return self.call_feature(node, None, Value(self.current), effective[0][1], node.arguments, node.span, as_instruction)
 
     def evaluate(self, nodes) -> None:
