@@ -97,7 +97,9 @@ class CallChecks:
             return None                   # the class's own errors are reported there
         if base.name == "TUPLE" and name is not None and name.key in base.labels and not arguments:
             item = base.generics[base.labels.index(name.key)]
-            return scoop.adapt_result(self, node, item, target) if ty.separate else Value(item)
+            if ty.separate:
+                return scoop.adapt_result(self, node, item, target)
+            return Value(item, UNCONTROLLED if item.separate or scoop.separate_by_constraint(self, item) else None)
         if feature is None:
             self.report("VEEN", name.span, name=name.text, where=f"among the features of {base.name}")
             self.evaluate(arguments)
@@ -105,6 +107,10 @@ class CallChecks:
         if ty.separate and not scoop.check_target(self, target_node, target):
             self.evaluate(arguments)
             return None                 # reported: the enclosing expression stays silent
+        if target.handler == UNCONTROLLED and scoop.separate_by_constraint(self, ty):
+            self.report("VUTA(3)", target_node.span, target=walk.describe(target_node), type=str(ty))
+            self.evaluate(arguments)
+            return None
         current = ty.with_marks(attached=True) if ty.is_formal else None     # `like Current` is G, not its constraint
         return self.call_feature(node, target_node, Value(base, target.handler), feature, arguments, name.span,
                                  as_instruction, current=current)
@@ -149,7 +155,7 @@ class CallChecks:
                 return None
             if separate:
                 return scoop.adapt_result(self, node, result, target)
-            return Value(result, UNCONTROLLED if result.separate else None)
+            return Value(result, UNCONTROLLED if result.separate or scoop.separate_by_constraint(self, result) else None)
         if not as_instruction:
             self.report("VKCN(2)", node.span, name=feature.text)
             return None
