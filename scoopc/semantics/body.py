@@ -34,6 +34,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.result_context = "a procedure"
         self.in_postcondition = False
         self.in_precondition = False        # the routine's own precondition: VAPE
+        self.in_agent = False               # inside an inline agent: not the feature's own body
         self.in_rescue = False
         self.object_tests: dict = {}
         self.reported_unset: set = set()
@@ -121,15 +122,15 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
 
     def enter_nested(self):
         saved = (self.scopes, self.facts, self.result_type, self.result_context, self.in_rescue,
-                 self.in_postcondition, self.in_precondition, self.reported_unset)
+                 self.in_postcondition, self.in_precondition, self.in_agent, self.reported_unset)
         self.scopes, self.facts, self.in_rescue, self.in_postcondition = Scopes(), Facts(), False, False
-        self.in_precondition = False
+        self.in_precondition, self.in_agent = False, True
         self.reported_unset = set()
         return saved
 
     def leave_nested(self, saved) -> None:
         (self.scopes, self.facts, self.result_type, self.result_context, self.in_rescue,
-         self.in_postcondition, self.in_precondition, self.reported_unset) = saved
+         self.in_postcondition, self.in_precondition, self.in_agent, self.reported_unset) = saved
 
     # --- routines ---------------------------------------------------------------------------
     def check_feature(self, feature) -> None:
@@ -180,7 +181,8 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         """Is the routine being checked a creation procedure of this class, written in it? Its
         attached attributes are then unset at its start (VEVI at a read before they are set)."""
         feature, creators = self.feature, self.info.creators
-        if feature is None or feature.written_in != self.info.name or self.info.is_deferred or self.info.is_expanded:
+        if feature is None or self.in_agent or feature.written_in != self.info.name or self.info.is_deferred \
+                or self.info.is_expanded:
             return False
         return feature.name in creators if creators is not None else feature.name == "default_create"
 

@@ -236,7 +236,7 @@ class CallChecks:
         precondition of the routine being checked is available to every class the routine is
         available to (a client must be able to test the precondition it has to meet)."""
         routine = self.feature
-        if routine is None or feature.exports is None:
+        if routine is None or self.in_agent or feature.exports is None:
             return
         clients = routine.exports if routine.exports is not None else frozenset({"ANY"})
         for client in sorted(clients):
