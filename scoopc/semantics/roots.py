@@ -22,7 +22,8 @@ def check_root(universe: Universe, class_name: str, creator: str, report: Report
         report("VSRT", where, name=info.name, what="deferred: it cannot be instantiated")
         return                           # no creation procedures to speak of
     elif info.formals:
-        report("VSRT", where, name=info.name, what="generic: the root type must be a class type without actual generics")
+        report("VSRT", where, name=info.name,
+               what="generic: the root type must be a class type without actual generics")
     creator = creator.lower()
     creators = info.creators
     allowed = (creators is None and creator == "default_create") or (creators is not None and creator in creators)

@@ -65,7 +65,8 @@ class InstructionBuilder(BuilderBase):
         tag = self.ident(c[0])
         if tag.key != "none":
             self.report("SYNTAX", tag.span, found=f"`{tag.text}`", expected="`NONE` in `create <NONE>`",
-                        hint="write `create <NONE> x.make` for a passive region, or `create x.make` for a new processor")
+                        hint="write `create <NONE> x.make` for a passive region, "
+                             "or `create x.make` for a new processor")
         return tag
 
     def explicit_creation_type(self, c: list) -> s.Type:
