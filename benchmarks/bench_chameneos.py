@@ -3,6 +3,7 @@
 A creature arriving at the empty mall waits there; the next one meets it; N meetings in all.
 Baseline: a lock around the mall; the waiting creature parks on its own threading.Event.
 """
+
 import threading
 
 from scoopc.runtime import leaf
@@ -38,6 +39,7 @@ def check_counts(label, counts, meetings):
 
 
 # --- hand-written threading --------------------------------------------------
+
 
 class ThreadMall:
     """The first creature to arrive parks on its own Event; the second hands it its colour."""
@@ -140,9 +142,14 @@ class Mall:
 
 
 # Codegen's clause table for `collect` (see bench_condition.PRE_CHANGE).
-PRE_COLLECT = ((lambda here, current, m:
-                here.leaf_query(m, Mall.has_partner, (current.ident,), W_HAS_PARTNER),
-                (0,), "has_partner", W_HAS_PARTNER),)
+PRE_COLLECT = (
+    (
+        lambda here, current, m: here.leaf_query(m, Mall.has_partner, (current.ident,), W_HAS_PARTNER),
+        (0,),
+        "has_partner",
+        W_HAS_PARTNER,
+    ),
+)
 
 
 class Creature:
@@ -162,7 +169,7 @@ class Creature:
 
     def visit(self, m):
         here = self._region_
-        with here.reserve1(m, W_VISIT):        # id, colour: expanded (INTEGER, COLOUR)
+        with here.reserve1(m, W_VISIT):  # id, colour: expanded (INTEGER, COLOUR)
             here.leaf_call(m, Mall.arrive, (self.ident, self.colour))
             return here.leaf_query(m, Mall.outcome_of, (self.ident,), W_OUTCOME)
 
@@ -178,8 +185,9 @@ class Root:
     def make(self, creatures, meetings, out):
         here = self._region_
         mall = here.new_separate(Mall, Mall.make, (meetings,))
-        out["team"] = [here.new_separate(Creature, Creature.make, (i, c, mall))
-                       for i, c in enumerate(colours(creatures))]
+        out["team"] = [
+            here.new_separate(Creature, Creature.make, (i, c, mall)) for i, c in enumerate(colours(creatures))
+        ]
         for creature in out["team"]:
             self.launch(creature)
 
@@ -195,6 +203,7 @@ def scoop(creatures, meetings):
 
 
 # --- the dialect version (benchmarks/chameneos/*.e), compiled by scoopc --------------
+
 
 def program_args(creatures, meetings):
     return [str(meetings), str(creatures)]

@@ -3,6 +3,7 @@
 Half the workers want it even, half odd, so the two groups strictly alternate.
 Baseline: one threading.Condition, wait_for on the parity, notify_all after each change.
 """
+
 import threading
 
 from scoopc.runtime import leaf
@@ -21,6 +22,7 @@ def ops(workers, iters):
 
 
 # --- hand-written threading --------------------------------------------------
+
 
 class SharedVariable:
     def __init__(self):
@@ -70,9 +72,14 @@ class Shared:
 
 # The precondition as codegen emits it: a module-level clause table, one predicate per
 # clause taking `pre_args` (here: the processor, Current, the separate argument).
-PRE_CHANGE = ((lambda here, current, s:
-               here.leaf_query(s, Shared.get_value, (), W_PARITY) % 2 == current.parity,
-               (0,), "parity", W_PARITY),)
+PRE_CHANGE = (
+    (
+        lambda here, current, s: here.leaf_query(s, Shared.get_value, (), W_PARITY) % 2 == current.parity,
+        (0,),
+        "parity",
+        W_PARITY,
+    ),
+)
 
 
 class Worker:
@@ -109,6 +116,7 @@ def scoop(workers, iters):
 
 
 # --- the dialect version (benchmarks/condition/*.e), compiled by scoopc --------------
+
 
 def program_args(workers, iters):
     return [str(iters), str(workers)]

@@ -2,6 +2,7 @@
 
 Baseline: threads incrementing a counter under a threading.Lock.
 """
+
 import threading
 
 from scoopc.runtime import leaf
@@ -20,6 +21,7 @@ def ops(workers, iters):
 
 
 # --- hand-written threading --------------------------------------------------
+
 
 class LockedCounter:
     def __init__(self):
@@ -94,6 +96,7 @@ def scoop(workers, iters):
 
 
 # --- the dialect version (benchmarks/mutex/*.e), compiled by scoopc ----------------
+
 
 def program_args(workers, iters):
     return [str(iters), str(workers)]

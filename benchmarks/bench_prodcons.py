@@ -2,6 +2,7 @@
 
 Baseline: threads sharing one queue.Queue (unbounded, as the SCOOP queue is).
 """
+
 import queue
 from collections import deque
 
@@ -32,6 +33,7 @@ def _expected_sum(producers, items):
 
 
 # --- hand-written threading --------------------------------------------------
+
 
 def _thread_producer(q, items):
     for i in range(items):
@@ -103,12 +105,13 @@ class Producer:
 
     def put(self, q, value):
         here = self._region_
-        here.command1(q, SharedQueue.extend, (value,), W_PUT)   # INTEGER: passes no lock
+        here.command1(q, SharedQueue.extend, (value,), W_PUT)  # INTEGER: passes no lock
 
 
 # Codegen's clause table for `take` (see bench_condition.PRE_CHANGE).
-PRE_TAKE = ((lambda here, q: not here.leaf_query(q, SharedQueue.is_empty, (), W_NOT_EMPTY),
-             (0,), "not_empty", W_NOT_EMPTY),)
+PRE_TAKE = (
+    (lambda here, q: not here.leaf_query(q, SharedQueue.is_empty, (), W_NOT_EMPTY), (0,), "not_empty", W_NOT_EMPTY),
+)
 
 
 class Consumer:
@@ -132,8 +135,7 @@ class Root:
         here = self._region_
         q = here.new_separate(SharedQueue, SharedQueue.make)
         count = _check_split(producers, consumers, items)
-        out["consumers"] = [here.new_separate(Consumer, Consumer.make, (q, count))
-                            for _ in range(consumers)]
+        out["consumers"] = [here.new_separate(Consumer, Consumer.make, (q, count)) for _ in range(consumers)]
         for c in out["consumers"]:
             self.launch(c, Consumer.live)
         for _ in range(producers):
@@ -153,11 +155,13 @@ def scoop(producers, consumers, items):
 
 # --- the dialect version (benchmarks/prodcons/*.e), compiled by scoopc ---------------
 
+
 def program_args(producers, consumers, items):
     _check_split(producers, consumers, items)
     return [str(items), str(producers), str(consumers)]
 
 
 def program_output(producers, consumers, items):
-    return (f"prodcons: producers={producers} consumers={consumers} items={items}"
-            f" sum={_expected_sum(producers, items)}\n")
+    return (
+        f"prodcons: producers={producers} consumers={consumers} items={items} sum={_expected_sum(producers, items)}\n"
+    )

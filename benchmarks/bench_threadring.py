@@ -3,6 +3,7 @@
 Node 1 gets the token N; a node holding t > 0 passes t - 1 on; the node that gets 0 wins.
 Baseline: 503 threads, each blocking on its own queue.Queue mailbox.
 """
+
 import queue
 
 from scoopc.runtime import leaf
@@ -46,8 +47,7 @@ def _thread_node(ident, inbox, outbox, winner):
 def baseline(nodes, hops):
     boxes = [queue.Queue() for _ in range(nodes)]
     winner = []
-    targets = [(_thread_node, (i + 1, boxes[i], boxes[(i + 1) % nodes], winner))
-               for i in range(nodes)]
+    targets = [(_thread_node, (i + 1, boxes[i], boxes[(i + 1) % nodes], winner)) for i in range(nodes)]
     threads = start_all(targets)
     boxes[0].put(hops)
     join_all(threads)
@@ -94,7 +94,7 @@ class Node:
 
     def pass_token(self, n, token):
         here = self._region_
-        here.command1(n, Node.receive, (token,), W_PASS)      # INTEGER: passes no lock
+        here.command1(n, Node.receive, (token,), W_PASS)  # INTEGER: passes no lock
 
     def finish(self, r):
         here = self._region_
@@ -129,6 +129,7 @@ def scoop(nodes, hops):
 
 
 # --- the dialect version (benchmarks/threadring/*.e), compiled by scoopc -------------
+
 
 def program_args(nodes, hops):
     return [str(hops), str(nodes)]

@@ -7,6 +7,7 @@ variant (benchmarks/<name>/*.e, compiled by scoopc) it also defines program_args
 the program's command-line arguments, and program_output(**params), the exact output of a
 correct run.
 """
+
 import io
 import json
 import os
@@ -49,12 +50,14 @@ def where(cls, routine, line):
 def run_program(root_cls, args):
     """Run a SCOOP program as generated code would (rt.run_main); fail unless it exits 0."""
     import scoopc.runtime as rt
+
     status = rt.run_main(root_cls, root_cls.make, args=args)
     if status != 0:
         raise CheckFailed(f"run_main returned status {status}")
 
 
 # --- the dialect versions, compiled by scoopc -----------------------------------
+
 
 class CompileFailed(Exception):
     """scoopc rejected or could not compile a benchmark's dialect version."""
@@ -89,9 +92,15 @@ def compile_benchmark(name, out_dir, assertions="none"):
         raise CompileFailed(f"{name}: {errors[0]}")
     package = "compiled_" + name
     compiled = compilation.write_package(Path(out_dir), package)
-    info = {"path": str(compiled.folder), "base": str(compiled.library), "package": package,
-            "root": compiled.root.key, "creator": compiled.root.creator, "assertions": assertions,
-            "seconds": time.perf_counter() - start}
+    info = {
+        "path": str(compiled.folder),
+        "base": str(compiled.library),
+        "package": package,
+        "root": compiled.root.key,
+        "creator": compiled.root.creator,
+        "assertions": assertions,
+        "seconds": time.perf_counter() - start,
+    }
     with open(os.path.join(out_dir, name + ".json"), "w") as f:
         json.dump(info, f)
     return info

@@ -12,6 +12,7 @@ before: start-up up to the program's first output line; target < 0.5 s) and of a
 (the whole run).
 Usage: python benchmarks/compile.py [--lines N] [--repeat K] [--sample DIR] [--no-full]
 """
+
 from __future__ import annotations
 
 import argparse
@@ -154,8 +155,11 @@ def main() -> None:
     options = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     options.add_argument("--lines", type=int, default=5000, help="size of the generated program (default 5,000)")
     options.add_argument("--repeat", type=int, default=3, help="timed runs of each kind; the median is reported")
-    options.add_argument("--sample", default=str(ROOT / "samples" / "producer_consumer"),
-                         help="the program of the full compile and start-up measures (default: %(default)s)")
+    options.add_argument(
+        "--sample",
+        default=str(ROOT / "samples" / "producer_consumer"),
+        help="the program of the full compile and start-up measures (default: %(default)s)",
+    )
     options.add_argument("--no-full", action="store_true", help="skip the full compile and start-up measures")
     args = options.parse_args()
     library_lines = sum(p.read_text(encoding="utf-8").count("\n") for p in stdlib_files())
@@ -168,24 +172,32 @@ def main() -> None:
         from scoopc.parse import parser
 
         kind = "lark-cython" if parser._accelerator() else "pure-Python lark"
-        print(f"# scoopc compile benchmark: stdlib {library_lines} lines, program {lines} lines, "
-              f"repeat={args.repeat}, parser {kind}", flush=True)
+        print(
+            f"# scoopc compile benchmark: stdlib {library_lines} lines, program {lines} lines, "
+            f"repeat={args.repeat}, parser {kind}",
+            flush=True,
+        )
         first, checked = timed(lambda: pipeline.check_project(project, use_cache=False, library_bodies=True))
         errors = [d for d in checked.diagnostics if d.is_error]
         if errors:
             sys.exit(f"benchmarks/compile.py: the generated program does not check: {errors[0]}")
         parse = statistics.median(timed(lambda: _parse_all(project))[0] for _ in range(args.repeat))
-        cold = statistics.median(timed(lambda: pipeline.check_project(project, use_cache=False, library_bodies=True))[0]
-                                 for _ in range(args.repeat))
-        pipeline.check_project(project, use_cache=True)           # fills the cache
-        cached = statistics.median(timed(lambda: pipeline.check_project(project, use_cache=True))[0]
-                                   for _ in range(args.repeat))
+        cold = statistics.median(
+            timed(lambda: pipeline.check_project(project, use_cache=False, library_bodies=True))[0]
+            for _ in range(args.repeat)
+        )
+        pipeline.check_project(project, use_cache=True)  # fills the cache
+        cached = statistics.median(
+            timed(lambda: pipeline.check_project(project, use_cache=True))[0] for _ in range(args.repeat)
+        )
     total = library_lines + lines
     print(f"first run (grammar load included): {first:.3f} s")
     print(f"parse only (baseline): {parse:.3f} s  ({total / parse:.0f} lines/s)")
     print(f"cold parse+check: {cold:.3f} s  ratio={cold / parse:.2f}  target < 2 s: {'met' if cold < 2 else 'MISSED'}")
-    print(f"cached parse+check: {cached:.3f} s  ratio={cached / parse:.2f}  target < 0.5 s: "
-          f"{'met' if cached < 0.5 else 'MISSED'}")
+    print(
+        f"cached parse+check: {cached:.3f} s  ratio={cached / parse:.2f}  target < 0.5 s: "
+        f"{'met' if cached < 0.5 else 'MISSED'}"
+    )
     if not args.no_full:
         full_compile(Path(args.sample), args.repeat)
 
@@ -209,8 +221,9 @@ def scoopc(arguments: list, cache: Path, first_line: bool = False) -> float:
     env = dict(os.environ, SCOOPC_CACHE_DIR=str(cache))
     command = [sys.executable, "-m", "scoopc"] + arguments
     start = time.perf_counter()
-    with subprocess.Popen(command, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                          text=True) as child:
+    with subprocess.Popen(
+        command, cwd=ROOT, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    ) as child:
         if first_line:
             child.stdout.readline()
             seconds = time.perf_counter() - start
@@ -233,18 +246,24 @@ def full_compile(sample: Path, repeat: int) -> None:
         trivial = work / "hello"
         trivial.mkdir()
         (trivial / "hello.e").write_text(TRIVIAL)
-        scoopc(["run", str(sample)], cache)                       # compiles stdlib and sample once
+        scoopc(["run", str(sample)], cache)  # compiles stdlib and sample once
         scoopc(["run", str(trivial)], cache)
         starts = [scoopc(["run", str(sample)], cache, first_line=True) for _ in range(repeat)]
         runs = [scoopc(["run", str(trivial)], cache) for _ in range(repeat)]
     cold, start, run = statistics.median(colds), statistics.median(starts), statistics.median(runs)
     name = sample.name
-    print(f"full cold compile of the stdlib and {name} (scoopc compile, no caches): {cold:.3f} s  "
-          f"target < 3 s: {'met' if cold < 3 else 'MISSED'}")
-    print(f"cached scoopc run {name}: start-up to the first output line {start:.3f} s  "
-          f"target < 0.5 s: {'met' if start < 0.5 else 'MISSED'}")
-    print(f"cached scoopc run of a trivial program (whole run): {run:.3f} s  "
-          f"target < 0.5 s: {'met' if run < 0.5 else 'MISSED'}")
+    print(
+        f"full cold compile of the stdlib and {name} (scoopc compile, no caches): {cold:.3f} s  "
+        f"target < 3 s: {'met' if cold < 3 else 'MISSED'}"
+    )
+    print(
+        f"cached scoopc run {name}: start-up to the first output line {start:.3f} s  "
+        f"target < 0.5 s: {'met' if start < 0.5 else 'MISSED'}"
+    )
+    print(
+        f"cached scoopc run of a trivial program (whole run): {run:.3f} s  "
+        f"target < 0.5 s: {'met' if run < 0.5 else 'MISSED'}"
+    )
 
 
 def _parse_all(project) -> None:

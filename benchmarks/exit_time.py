@@ -9,6 +9,7 @@ Each child says `busy` once every spinner has begun; the clock starts when SIGIN
 stops when the child has exited. The report gives the median of R runs for each and `ratio`
 (compiled over baseline). `python benchmarks/exit_time.py --help`.
 """
+
 import argparse
 import os
 import platform
@@ -41,8 +42,10 @@ except KeyboardInterrupt:
 
 
 def parse_args(argv):
-    parser = argparse.ArgumentParser(description="Seconds from Ctrl-C to the end of a run with N busy processors, "
-                                                 "compiled by scoopc, against N busy Python threads.")
+    parser = argparse.ArgumentParser(
+        description="Seconds from Ctrl-C to the end of a run with N busy processors, "
+        "compiled by scoopc, against N busy Python threads."
+    )
     parser.add_argument("-n", type=int, default=50, metavar="N", help="busy processors (default 50)")
     parser.add_argument("-r", "--repeats", type=int, default=3, metavar="R", help="runs of each variant (default 3)")
     parser.add_argument("--smoke", action="store_true", help="N=3, one run each: for tests")
@@ -58,8 +61,9 @@ def command(variant, count):
 def exit_seconds(variant, count):
     """Start the child, wait for `busy`, send SIGINT, time the exit."""
     env = dict(os.environ, PYTHONUNBUFFERED="1", PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    child = subprocess.Popen(command(variant, count), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-                             env=env)
+    child = subprocess.Popen(
+        command(variant, count), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env
+    )
     try:
         line = child.stdout.readline()
         if line != "busy\n":
@@ -77,8 +81,10 @@ def exit_seconds(variant, count):
 def main(argv=None):
     args = parse_args(argv)
     count, repeats = (3, 1) if args.smoke else (args.n, args.repeats)
-    print(f"# exit_time: python {platform.python_version()}, {os.cpu_count()} cpus, load "
-          f"{os.getloadavg()[0]:.1f}, {count} busy processors, median of {repeats}; seconds from SIGINT to exit")
+    print(
+        f"# exit_time: python {platform.python_version()}, {os.cpu_count()} cpus, load "
+        f"{os.getloadavg()[0]:.1f}, {count} busy processors, median of {repeats}; seconds from SIGINT to exit"
+    )
     times = {"compiled": [], "baseline": []}
     for _ in range(repeats):
         for variant in ("baseline", "compiled"):

@@ -2,6 +2,7 @@
 
 Each is set beside a queue.Queue hand-off between threads measured in the same process kind.
 """
+
 import queue
 import threading
 import time
@@ -17,17 +18,24 @@ RESERVE_COUNTS = (1, 2, 4, 8)
 
 # (scoop key, baseline key, what the baseline is)
 PAIRS = [
-    ("async_command", "handoff",
-     "leaf command; baseline: queue.Queue put to a consumer thread that runs it, amortised"),
-    ("async_command_queued", "handoff",
-     "non-leaf command, run by the supplier's thread; same baseline"),
-    ("sync_query", "roundtrip",
-     "baseline: queue.Queue request/reply round trip to a server thread"),
-    ("reserve_1_wait_condition", "handoff_x1",
-     "reserve+release 1 idle processor with a true wait condition (one query); same baseline"),
+    (
+        "async_command",
+        "handoff",
+        "leaf command; baseline: queue.Queue put to a consumer thread that runs it, amortised",
+    ),
+    ("async_command_queued", "handoff", "non-leaf command, run by the supplier's thread; same baseline"),
+    ("sync_query", "roundtrip", "baseline: queue.Queue request/reply round trip to a server thread"),
+    (
+        "reserve_1_wait_condition",
+        "handoff_x1",
+        "reserve+release 1 idle processor with a true wait condition (one query); same baseline",
+    ),
 ] + [
-    (f"reserve_{n}", f"handoff_x{n}",
-     f"reserve+release {n} idle processors; baseline: one put to each of {n} consumer threads")
+    (
+        f"reserve_{n}",
+        f"handoff_x{n}",
+        f"reserve+release {n} idle processors; baseline: one put to each of {n} consumer threads",
+    )
     for n in RESERVE_COUNTS
 ]
 
@@ -39,6 +47,7 @@ def per_call_us(seconds, count):
 
 
 # --- baseline: queue.Queue hand-offs between threads --------------------------
+
 
 def _consume(inbox):
     while True:
@@ -92,8 +101,10 @@ def _time_roundtrips(count):
 
 
 def baseline(calls, reservations):
-    result = {"handoff": per_call_us(_time_fanout(1, calls), calls),
-              "roundtrip": per_call_us(_time_roundtrips(calls), calls)}
+    result = {
+        "handoff": per_call_us(_time_fanout(1, calls), calls),
+        "roundtrip": per_call_us(_time_roundtrips(calls), calls),
+    }
     for n in RESERVE_COUNTS:
         result[f"handoff_x{n}"] = per_call_us(_time_fanout(n, reservations), reservations)
     return result
@@ -171,8 +182,7 @@ class Root:
         here = self._region_
         start = time.perf_counter()
         for _ in range(count):
-            pre = ((lambda: here.query(sink, Sink.get_count, (), W_MICRO) >= 0,
-                    (0,), "non_negative", W_MICRO),)
+            pre = ((lambda: here.query(sink, Sink.get_count, (), W_MICRO) >= 0, (0,), "non_negative", W_MICRO),)
             with here.reserve((sink,), pre=pre, where=W_MICRO):
                 pass
         return time.perf_counter() - start
@@ -188,6 +198,7 @@ class Root:
 
 def scoop(calls, reservations):
     from common import run_program
+
     out = {}
     run_program(Root, (calls, reservations, out))
     return out

@@ -3,6 +3,7 @@
 
 Usage: python benchmarks/parse.py [--lines N] [--repeat K]
 """
+
 from __future__ import annotations
 
 import argparse
@@ -54,8 +55,10 @@ def main() -> None:
     print(f"grammar load and first parse: {time.perf_counter() - start:.3f} s")
     times = [one_pass(files) for _ in range(args.repeat)]
     median = statistics.median(times)
-    print(f"corpus: {len(files)} files, {total} lines; {args.repeat} passes, median {median:.3f} s "
-          f"(best {min(times):.3f} s)")
+    print(
+        f"corpus: {len(files)} files, {total} lines; {args.repeat} passes, median {median:.3f} s "
+        f"(best {min(times):.3f} s)"
+    )
     print(f"{total / median:.0f} lines/s")
 
 

@@ -3,6 +3,7 @@
 Usage: python benchmarks/profile_bench.py NAME [--variant scoop|compiled|baseline] [--size quick]
        [--top 25] (compiled: the dialect version, compiled first into a temporary folder)
 """
+
 import argparse
 import cProfile
 import io
@@ -14,7 +15,7 @@ import threading
 
 from run import BENCHMARKS, load
 
-PROFILES = []           # one cProfile.Profile per thread that ran
+PROFILES = []  # one cProfile.Profile per thread that ran
 PROFILES_LOCK = threading.Lock()
 
 
@@ -28,6 +29,7 @@ def profiled_run(original):
             original(self)
         finally:
             profile.disable()
+
     return run
 
 
@@ -45,8 +47,12 @@ def parse_args():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("name", choices=BENCHMARKS + ["micro"])
     parser.add_argument("--variant", default="scoop", choices=("scoop", "compiled", "baseline"))
-    parser.add_argument("--assertions", default="none", choices=("none", "require", "all"),
-                        help="contracts the compiled variant checks (default: none)")
+    parser.add_argument(
+        "--assertions",
+        default="none",
+        choices=("none", "require", "all"),
+        help="contracts the compiled variant checks (default: none)",
+    )
     parser.add_argument("--size", default="quick", choices=("full", "quick", "smoke"))
     parser.add_argument("--top", type=int, default=25)
     parser.add_argument("--sort", default="tottime", help="pstats sort key (tottime, cumtime)")
@@ -62,8 +68,9 @@ def main():
     build = tempfile.mkdtemp(prefix="scoopc-profile-")
     if args.variant == "compiled":
         from common import compile_benchmark, run_compiled
+
         compile_benchmark(args.name, build, args.assertions)
-        variant = lambda **p: run_compiled(build, args.name, module, p)   # noqa: E731
+        variant = lambda **p: run_compiled(build, args.name, module, p)  # noqa: E731
     else:
         variant = getattr(module, args.variant)
     threading.Thread.run = profiled_run(threading.Thread.run)

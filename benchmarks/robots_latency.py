@@ -19,6 +19,7 @@ prints, per responder, the median, p99 and mean round trip (us) and the messages
 within 1 s, odometry is best effort), then the ratio compiled/baseline. DDS stays on 127.0.0.1 (a generated
 Cyclone DDS configuration, a random domain in 100..200). `python benchmarks/robots_latency.py --help`.
 """
+
 import argparse
 import os
 import platform
@@ -33,17 +34,20 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 PROGRAM = os.path.join(HERE, "programs", "robots_latency")
-SIZES = {"full": (10_000, 200), "quick": (1_000, 100), "smoke": (100, 20)}     # timed, warm-up
-TOPICS = {"compiled": ("/latency/odom", "/latency/cmd_vel"),          # (odometry, command)
-          "baseline": ("/latency_base/odom", "/latency_base/cmd_vel")}
-BLOCK = 50                # consecutive timed round trips to one responder
-LOST_AFTER = 1.0          # seconds without an answer: the message counts as lost
+SIZES = {"full": (10_000, 200), "quick": (1_000, 100), "smoke": (100, 20)}  # timed, warm-up
+TOPICS = {
+    "compiled": ("/latency/odom", "/latency/cmd_vel"),  # (odometry, command)
+    "baseline": ("/latency_base/odom", "/latency_base/cmd_vel"),
+}
+BLOCK = 50  # consecutive timed round trips to one responder
+LOST_AFTER = 1.0  # seconds without an answer: the message counts as lost
 
 
 def parse_args(argv):
     parser = argparse.ArgumentParser(
         description="Round-trip latency odometry -> cmd_vel over loopback DDS: a compiled Roboscoop "
-        "controller (scoopc run --robot ros2) against a hand-written cyclonedds Python echo.")
+        "controller (scoopc run --robot ros2) against a hand-written cyclonedds Python echo."
+    )
     size = parser.add_mutually_exclusive_group()
     size.add_argument("--quick", action="store_true", help="1,000 timed messages per responder")
     size.add_argument("--smoke", action="store_true", help="100 timed messages: for tests")
@@ -54,6 +58,7 @@ def parse_args(argv):
 
 
 # --- the baseline responder: cyclonedds' Python API, written by hand -----------------------------
+
 
 def echo_main():
     """Answer each Odometry on rt/latency_base/odom with a Twist on rt/latency_base/cmd_vel
@@ -127,10 +132,14 @@ def echo_main():
         twist: TwistWithCovariance = field(default_factory=TwistWithCovariance)
 
     participant = DomainParticipant(int(os.environ.get("ROS_DOMAIN_ID", "0")))
-    plain_cdr = Policy.DataRepresentation(use_cdrv0_representation=True)     # XCDR1, as ROS 2 sends
+    plain_cdr = Policy.DataRepresentation(use_cdrv0_representation=True)  # XCDR1, as ROS 2 sends
     sensor = Qos(Policy.Reliability.BestEffort, Policy.Durability.Volatile, Policy.History.KeepLast(5), plain_cdr)
-    command = Qos(Policy.Reliability.Reliable(duration(milliseconds=100)), Policy.Durability.Volatile,
-                  Policy.History.KeepLast(10), plain_cdr)
+    command = Qos(
+        Policy.Reliability.Reliable(duration(milliseconds=100)),
+        Policy.Durability.Volatile,
+        Policy.History.KeepLast(10),
+        plain_cdr,
+    )
     odom, cmd = TOPICS["baseline"]
     reader = DataReader(participant, Topic(participant, "rt" + odom, Odometry), qos=sensor)
     writer = DataWriter(participant, Topic(participant, "rt" + cmd, Twist), qos=command)
@@ -143,17 +152,19 @@ def echo_main():
             x = sample.pose.pose.position.x
             writer.write(Twist(linear=Vector3(x=x)))
             if x < 0:
-                time.sleep(0.2)                   # let the last answer go out
+                time.sleep(0.2)  # let the last answer go out
                 return 0
 
 
 # --- the measuring side -------------------------------------------------------------------------
+
 
 class Pinger:
     """Sends numbered odometry to one responder and waits for the matching command (on our DdsBus)."""
 
     def __init__(self, bus, variant):
         from scoopc.robots import ros_messages
+
         self.bus = bus
         self.variant = variant
         self.odom_topic, cmd_topic = TOPICS[variant]
@@ -198,8 +209,13 @@ class Pinger:
     def figures(self):
         """{median_us, p99_us, mean_us, lost, n} of the timed round trips."""
         samples = sorted(self.samples)
-        return {"median_us": statistics.median(samples), "p99_us": samples[min(len(samples) - 1, int(0.99 * len(samples)))],
-                "mean_us": statistics.fmean(samples), "lost": self.lost, "n": len(samples)}
+        return {
+            "median_us": statistics.median(samples),
+            "p99_us": samples[min(len(samples) - 1, int(0.99 * len(samples)))],
+            "mean_us": statistics.fmean(samples),
+            "lost": self.lost,
+            "n": len(samples),
+        }
 
 
 def responder(variant, env):
@@ -263,13 +279,17 @@ def main(argv=None):
     timed = args.n or timed
     sys.path.insert(0, ROOT)
     from scoopc.robots import dds
+
     folder = tempfile.mkdtemp(prefix="scoopc-latency-")
     settings = dds.loopback_environment(folder, random.randint(100, 200))
     os.environ.update(settings)
     env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    print(f"# robots_latency: python {platform.python_version()}, {os.cpu_count()} cpus, load "
-          f"{os.getloadavg()[0]:.1f}, loopback DDS domain {settings['ROS_DOMAIN_ID']}, size={size}: "
-          f"{timed} timed round trips each after {warmup} warm-up, one in flight, alternating blocks of {BLOCK}", flush=True)
+    print(
+        f"# robots_latency: python {platform.python_version()}, {os.cpu_count()} cpus, load "
+        f"{os.getloadavg()[0]:.1f}, loopback DDS domain {settings['ROS_DOMAIN_ID']}, size={size}: "
+        f"{timed} timed round trips each after {warmup} warm-up, one in flight, alternating blocks of {BLOCK}",
+        flush=True,
+    )
     variants = [args.only] if args.only else ["baseline", "compiled"]
     bus = dds.DdsBus()
     try:
@@ -278,12 +298,17 @@ def main(argv=None):
         bus.close()
     for variant in variants:
         found = results[variant]
-        print(f"latency {variant} n={found['n']} median_us={found['median_us']:.0f} "
-              f"p99_us={found['p99_us']:.0f} mean_us={found['mean_us']:.0f} lost={found['lost']}", flush=True)
+        print(
+            f"latency {variant} n={found['n']} median_us={found['median_us']:.0f} "
+            f"p99_us={found['p99_us']:.0f} mean_us={found['mean_us']:.0f} lost={found['lost']}",
+            flush=True,
+        )
     if len(results) == 2:
         base, ours = results["baseline"], results["compiled"]
-        print(f"ratio compiled/baseline median={ours['median_us'] / base['median_us']:.2f} "
-              f"p99={ours['p99_us'] / base['p99_us']:.2f}")
+        print(
+            f"ratio compiled/baseline median={ours['median_us'] / base['median_us']:.2f} "
+            f"p99={ours['p99_us'] / base['p99_us']:.2f}"
+        )
     return 0
 
 

@@ -19,6 +19,7 @@ The report gives per layout and transport the slowest controller's rate, the med
 the compiled one's, i.e. compiled time per iteration / baseline time (as benchmarks/run.py's ratios:
 above 1, the compiled controllers are slower). `python benchmarks/robots_rate.py --help`.
 """
+
 import argparse
 import json
 import os
@@ -35,8 +36,8 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 PROGRAM = os.path.join(HERE, "programs", "robots_rate")
 CONTROLLERS = 10
-SIZES = {"full": 3.0, "quick": 1.0, "smoke": 0.2}        # timed seconds per controller
-WARMUP = 200              # untimed iterations per controller first (DDS writers, caches, thread start)
+SIZES = {"full": 3.0, "quick": 1.0, "smoke": 0.2}  # timed seconds per controller
+WARMUP = 200  # untimed iterations per controller first (DDS writers, caches, thread start)
 REPEATS = {"full": 3, "quick": 1, "smoke": 1}
 TARGET_HZ = 100.0
 
@@ -45,7 +46,8 @@ def parse_args(argv):
     parser = argparse.ArgumentParser(
         description="Iterations per second of 10 concurrent Roboscoop controllers (reserve two signalers "
         "and the drive, evaluate a wait condition, send one command), compiled by scoopc, against the "
-        "same structure hand-written with Python threads; in-process bus and loopback DDS.")
+        "same structure hand-written with Python threads; in-process bus and loopback DDS."
+    )
     size = parser.add_mutually_exclusive_group()
     size.add_argument("--quick", action="store_true", help="1 s per controller, one run")
     size.add_argument("--smoke", action="store_true", help="0.2 s per controller: for tests")
@@ -59,6 +61,7 @@ def parse_args(argv):
 
 # --- the baseline: hand-written threads -----------------------------------------------------------
 
+
 class Signaler:
     def __init__(self):
         self.lock = threading.Lock()
@@ -69,6 +72,7 @@ class Signaler:
 class Drive:
     def __init__(self, bus, topic, max_linear=0.5, max_angular=1.0):
         from scoopc.robots import ros_messages
+
         self.lock = threading.Lock()
         self.bus, self.topic, self.messages = bus, topic, ros_messages
         self.max_linear, self.max_angular = max_linear, max_angular
@@ -78,8 +82,14 @@ class Drive:
         v = max(-self.max_linear, min(self.max_linear, v))
         w = max(-self.max_angular, min(self.max_angular, w))
         new = self.messages.new
-        self.bus.publish(self.topic, new("geometry_msgs/msg/Twist", linear=new("geometry_msgs/msg/Vector3", x=v),
-                                         angular=new("geometry_msgs/msg/Vector3", z=w)))
+        self.bus.publish(
+            self.topic,
+            new(
+                "geometry_msgs/msg/Twist",
+                linear=new("geometry_msgs/msg/Vector3", x=v),
+                angular=new("geometry_msgs/msg/Vector3", z=w),
+            ),
+        )
         self.count += 1
 
 
@@ -87,17 +97,19 @@ def baseline(transport, layout, seconds):
     """[(iterations, seconds)] per controller."""
     if transport == "dds":
         from scoopc.robots.dds import DdsBus
+
         bus = DdsBus()
     else:
         from scoopc.robots.bus import Bus
+
         bus = Bus()
     shared_stop, shared_drive = Signaler(), Drive(bus, "/robot1/cmd_vel")
     results = [None] * CONTROLLERS
     barrier = threading.Barrier(CONTROLLERS)
 
     def step(index, stop, odometry, drive):
-        with stop.lock, odometry.lock, drive.lock:              # one order for all: no deadlock
-            if not stop.stop_requested and odometry.update_count >= 0:    # (always true)
+        with stop.lock, odometry.lock, drive.lock:  # one order for all: no deadlock
+            if not stop.stop_requested and odometry.update_count >= 0:  # (always true)
                 drive.send(0.1, 0.05 * (index + 1))
 
     def controller(index, stop, odometry, drive):
@@ -113,8 +125,9 @@ def baseline(transport, layout, seconds):
 
     threads = []
     for i in range(CONTROLLERS):
-        stop, drive = (shared_stop, shared_drive) if layout == "shared" else \
-            (Signaler(), Drive(bus, f"/robot{i + 1}/cmd_vel"))
+        stop, drive = (
+            (shared_stop, shared_drive) if layout == "shared" else (Signaler(), Drive(bus, f"/robot{i + 1}/cmd_vel"))
+        )
         threads.append(threading.Thread(target=controller, args=(i, stop, Signaler(), drive)))
     for thread in threads:
         thread.start()
@@ -127,16 +140,22 @@ def baseline(transport, layout, seconds):
 
 # --- the compiled program -------------------------------------------------------------------------
 
+
 def compiled(transport, layout, seconds, env):
     robot = "ros2" if transport == "dds" else "none"
     args = [str(CONTROLLERS), str(seconds), layout, str(WARMUP)]
-    done = subprocess.run([sys.executable, "-m", "scoopc", "run", PROGRAM, "--robot", robot, "--", *args],
-                          capture_output=True, text=True, env=env, timeout=600)
+    done = subprocess.run(
+        [sys.executable, "-m", "scoopc", "run", PROGRAM, "--robot", robot, "--", *args],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+    )
     if done.returncode != 0:
         raise RuntimeError(f"compiled {transport} {layout}: exit {done.returncode}: {done.stderr.strip()[-400:]}")
     results = []
     for line in done.stdout.splitlines():
-        words = line.split()                     # controller I iterations N seconds T
+        words = line.split()  # controller I iterations N seconds T
         if words and words[0] == "controller":
             results.append((int(words[3]), float(words[5])))
     if len(results) != CONTROLLERS or any(n <= 0 or t < seconds for n, t in results):
@@ -145,8 +164,13 @@ def compiled(transport, layout, seconds, env):
 
 
 def run_baseline(transport, layout, seconds, env):
-    done = subprocess.run([sys.executable, os.path.abspath(__file__), "--child", transport, layout, str(seconds)],
-                          capture_output=True, text=True, env=env, timeout=600)
+    done = subprocess.run(
+        [sys.executable, os.path.abspath(__file__), "--child", transport, layout, str(seconds)],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=600,
+    )
     if done.returncode != 0:
         raise RuntimeError(f"baseline {transport} {layout}: {done.stderr.strip()[-400:]}")
     return [tuple(r) for r in json.loads(done.stdout.strip().splitlines()[-1])]
@@ -155,8 +179,11 @@ def run_baseline(transport, layout, seconds, env):
 def rates(results):
     """Per-controller rates (slowest, median) and the aggregate: all iterations over the longest time."""
     hz = sorted(n / s for n, s in results)
-    return {"min": hz[0], "median": statistics.median(hz),
-            "total": sum(n for n, _ in results) / max(s for _, s in results)}
+    return {
+        "min": hz[0],
+        "median": statistics.median(hz),
+        "total": sum(n for n, _ in results) / max(s for _, s in results),
+    }
 
 
 def best(runs):
@@ -175,14 +202,18 @@ def main(argv=None):
     repeats = args.repeat or REPEATS[size]
     sys.path.insert(0, ROOT)
     from scoopc.robots import dds
+
     settings = dds.loopback_environment(tempfile.mkdtemp(prefix="scoopc-rate-"), random.randint(100, 200))
     env = dict(os.environ, **settings, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
     transports = ["bus", "dds"] if args.transport == "both" else [args.transport]
     layouts = ["separate", "shared"] if args.layout == "both" else [args.layout]
-    print(f"# robots_rate: python {platform.python_version()}, {os.cpu_count()} cpus, load {os.getloadavg()[0]:.1f}, "
-          f"{CONTROLLERS} controllers x {seconds:g} s after {WARMUP} warm-up iterations, best of {repeats}; "
-          f"DDS on loopback "
-          f"(domain {settings['ROS_DOMAIN_ID']}); rates in iterations/s per controller", flush=True)
+    print(
+        f"# robots_rate: python {platform.python_version()}, {os.cpu_count()} cpus, load {os.getloadavg()[0]:.1f}, "
+        f"{CONTROLLERS} controllers x {seconds:g} s after {WARMUP} warm-up iterations, best of {repeats}; "
+        f"DDS on loopback "
+        f"(domain {settings['ROS_DOMAIN_ID']}); rates in iterations/s per controller",
+        flush=True,
+    )
     failed = []
     for transport in transports:
         for layout in layouts:
@@ -197,11 +228,14 @@ def main(argv=None):
                 continue
             base, ours = best(runs["baseline"]), best(runs["compiled"])
             verdict = "met" if ours["min"] >= TARGET_HZ else "MISSED"
-            print(f"rate {transport} {layout} compiled_min_hz={ours['min']:.0f} "
-                  f"compiled_median_hz={ours['median']:.0f} "
-                  f"compiled_total_hz={ours['total']:.0f} baseline_median_hz={base['median']:.0f} "
-                  f"baseline_total_hz={base['total']:.0f} ratio={base['median'] / ours['median']:.2f} "
-                  f"target_{TARGET_HZ:.0f}hz={verdict}", flush=True)
+            print(
+                f"rate {transport} {layout} compiled_min_hz={ours['min']:.0f} "
+                f"compiled_median_hz={ours['median']:.0f} "
+                f"compiled_total_hz={ours['total']:.0f} baseline_median_hz={base['median']:.0f} "
+                f"baseline_total_hz={base['total']:.0f} ratio={base['median'] / ours['median']:.2f} "
+                f"target_{TARGET_HZ:.0f}hz={verdict}",
+                flush=True,
+            )
     return 1 if failed else 0
 
 

@@ -6,6 +6,7 @@ run by scoopc into a temporary folder, run by the launcher as `scoopc run` does)
 (hand-written threading). `python benchmarks/run.py --help`. Each run is a fresh subprocess;
 best (or median) of R runs.
 """
+
 import argparse
 import importlib
 import json
@@ -39,25 +40,36 @@ def parse_args(argv):
         "version compiled by scoopc, and as hand-written threading, with the time ratios "
         "scoop/baseline and compiled/scoop, then micro costs of separate calls. Each run is "
         "a fresh subprocess, pinned to one CPU unless --unpinned; the best (or, with --stat "
-        "median, the median) of several runs is reported.")
+        "median, the median) of several runs is reported."
+    )
     size = parser.add_mutually_exclusive_group()
     size.add_argument("--quick", action="store_true", help="small sizes (well under 1 s each)")
     size.add_argument("--smoke", action="store_true", help="tiny sizes, one run: for tests")
-    parser.add_argument("--unpinned", action="store_true",
-                        help="do not pin to one CPU (shows the multi-core picture)")
-    parser.add_argument("--only", nargs="+", metavar="NAME", choices=BENCHMARKS + ["micro"],
-                        help="run only these benchmarks (names: %(choices)s)")
+    parser.add_argument("--unpinned", action="store_true", help="do not pin to one CPU (shows the multi-core picture)")
+    parser.add_argument(
+        "--only",
+        nargs="+",
+        metavar="NAME",
+        choices=BENCHMARKS + ["micro"],
+        help="run only these benchmarks (names: %(choices)s)",
+    )
     parser.add_argument("--repeat", type=int, metavar="R", help="runs per measurement")
-    parser.add_argument("--stat", choices=sorted(STATS), default="best",
-                        help="how runs are summarised (default: best, the least disturbed)")
-    parser.add_argument("--assertions", choices=("none", "require", "all"), default="none",
-                        help="contracts the compiled versions check (default: none, as in a "
-                        "finalized build; wait conditions are always evaluated and the standard "
-                        "library keeps its preconditions)")
-    parser.add_argument("--no-compiled", action="store_true",
-                        help="skip the compiled dialect versions")
-    parser.add_argument("--child", nargs=3, metavar=("NAME", "VARIANT", "SIZE"),
-                        help=argparse.SUPPRESS)
+    parser.add_argument(
+        "--stat",
+        choices=sorted(STATS),
+        default="best",
+        help="how runs are summarised (default: best, the least disturbed)",
+    )
+    parser.add_argument(
+        "--assertions",
+        choices=("none", "require", "all"),
+        default="none",
+        help="contracts the compiled versions check (default: none, as in a "
+        "finalized build; wait conditions are always evaluated and the standard "
+        "library keeps its preconditions)",
+    )
+    parser.add_argument("--no-compiled", action="store_true", help="skip the compiled dialect versions")
+    parser.add_argument("--child", nargs=3, metavar=("NAME", "VARIANT", "SIZE"), help=argparse.SUPPRESS)
     parser.add_argument("--build", metavar="DIR", help=argparse.SUPPRESS)
     return parser.parse_args(argv)
 
@@ -67,6 +79,7 @@ def size_of(args):
 
 
 # --- child side: one measurement in this process ------------------------------
+
 
 def load(name):
     for path in (HERE, ROOT):
@@ -83,6 +96,7 @@ def child_main(name, variant, size, build=None):
         result = getattr(module, variant)(**params)
     elif variant == "compiled":
         from common import run_compiled
+
         result = run_compiled(build, name, module, params)
     else:
         start, cpu = time.perf_counter(), time.process_time()
@@ -92,6 +106,7 @@ def child_main(name, variant, size, build=None):
 
 
 # --- parent side: orchestration and report ------------------------------------
+
 
 def pin(unpinned):
     if unpinned:
@@ -125,8 +140,7 @@ def run_child(name, variant, size, build=None):
 
 def summarise(runs, stat):
     """{variant: {key: [values]}} -> {variant: {key: stat(values)}}."""
-    return {variant: {key: STATS[stat](values) for key, values in keys.items()}
-            for variant, keys in runs.items()}
+    return {variant: {key: STATS[stat](values) for key, values in keys.items()} for variant, keys in runs.items()}
 
 
 def measure(name, size, repeats, stat, variants=API_VARIANTS, build=None):
@@ -194,19 +208,22 @@ def compile_all(names, folder, assertions):
     the RunFailed that says why not}. The standard library is compiled first (once per
     compiler version, then taken from scoopc's cache), timed apart."""
     from common import compile_benchmark, compiled_library
+
     library = compiled_library()
     builds, total = {}, 0.0
     for name in names:
         try:
             total += compile_benchmark(name, folder, assertions)["seconds"]
-        except Exception as problem:          # noqa: BLE001 - reported on the benchmark's line
+        except Exception as problem:  # noqa: BLE001 - reported on the benchmark's line
             builds[name] = RunFailed(f"{name} compiled: {type(problem).__name__}: {problem}")
             continue
         builds[name] = folder
     done = sum(not isinstance(b, RunFailed) for b in builds.values())
-    print(f"# compiled {done} dialect versions with scoopc in {total:.2f} s "
-          f"(assertions={assertions}; the standard library: {library:.2f} s, compiled once or cached)",
-          flush=True)
+    print(
+        f"# compiled {done} dialect versions with scoopc in {total:.2f} s "
+        f"(assertions={assertions}; the standard library: {library:.2f} s, compiled once or cached)",
+        flush=True,
+    )
     return builds
 
 
@@ -220,8 +237,11 @@ def report_micro(size, repeats, stat):
         return False
     for key, baseline_key, note in micro.PAIRS:
         scoop_us, baseline_us = best["scoop"][key], best["baseline"][baseline_key]
-        print(f"micro {key} scoop_us={scoop_us:.2f} baseline_us={baseline_us:.2f}"
-              f" ratio={scoop_us / baseline_us:.2f}  ({note})", flush=True)
+        print(
+            f"micro {key} scoop_us={scoop_us:.2f} baseline_us={baseline_us:.2f}"
+            f" ratio={scoop_us / baseline_us:.2f}  ({note})",
+            flush=True,
+        )
     return True
 
 
@@ -232,10 +252,13 @@ def load_average():
 
 def print_header(size, repeats, stat, pinning):
     gil = getattr(sys, "_is_gil_enabled", lambda: True)()
-    print(f"# scoopc benchmarks: python {platform.python_version()} "
-          f"({'GIL' if gil else 'free-threaded'}), {os.cpu_count()} cpus, {pinning}, "
-          f"load {load_average()}, size={size}, {stat} of {repeats} runs, "
-          f"each run a fresh subprocess", flush=True)
+    print(
+        f"# scoopc benchmarks: python {platform.python_version()} "
+        f"({'GIL' if gil else 'free-threaded'}), {os.cpu_count()} cpus, {pinning}, "
+        f"load {load_average()}, size={size}, {stat} of {repeats} runs, "
+        f"each run a fresh subprocess",
+        flush=True,
+    )
 
 
 def main(argv=None):

@@ -2,6 +2,7 @@
 same names do, with options as keyword arguments and results as records (scoopc.results), never
 printing diagnostics (docs/API.md). A usage mistake raises scoopc.UsageError; source errors come
 back as the result's diagnostics with status 1."""
+
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
@@ -27,8 +28,15 @@ def check(paths: Sequence[PathLike], *, target: str | None = None) -> CheckResul
     return CheckResult(Exit.SOURCE if compilation.checked.has_errors else Exit.OK, found)
 
 
-def compile(paths: Sequence[PathLike], output: PathLike = "build", *, target: str | None = None,  # noqa: A001
-            root: str | None = None, assertions: str | None = None, progress: Progress = None) -> CompileResult:
+def compile(
+    paths: Sequence[PathLike],
+    output: PathLike = "build",
+    *,
+    target: str | None = None,  # noqa: A001
+    root: str | None = None,
+    assertions: str | None = None,
+    progress: Progress = None,
+) -> CompileResult:
     """Check, then write readable Python: `output/<root>` (the program, runnable with `python -m`)
     beside `output/eiffel_base` (the compiled standard library), as `scoopc compile -o` does."""
     compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
@@ -36,17 +44,36 @@ def compile(paths: Sequence[PathLike], output: PathLike = "build", *, target: st
         program = compilation.compile_to(output)
     except SourceErrors as errors:
         return CompileResult(Exit.SOURCE, errors.diagnostics)
-    return CompileResult(Exit.OK, compilation.checked.diagnostics, program.folder / program.package,
-                         program.folder / "eiffel_base")
+    return CompileResult(
+        Exit.OK, compilation.checked.diagnostics, program.folder / program.package, program.folder / "eiffel_base"
+    )
 
 
-def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: str | None = None,
-        root: str | None = None, assertions: str | None = None, cache: bool = True, progress: Progress = None,
-        trace_processors: bool = False, strict: bool = False, virtual_clock: bool = False, debug: bool = False,
-        stdout: TextIO | None = None, stderr: TextIO | None = None, robot: str | None = None,
-        world: Any = None, namespace: str | None = None, realtime: bool = False,
-        duration: float | None = None, goal: tuple | None = None, png: PathLike | bool | None = None,
-        gif: PathLike | None = None, record: PathLike | None = None) -> RunResult:
+def run(
+    paths: Sequence[PathLike],
+    args: Sequence[str] = (),
+    *,
+    target: str | None = None,
+    root: str | None = None,
+    assertions: str | None = None,
+    cache: bool = True,
+    progress: Progress = None,
+    trace_processors: bool = False,
+    strict: bool = False,
+    virtual_clock: bool = False,
+    debug: bool = False,
+    stdout: TextIO | None = None,
+    stderr: TextIO | None = None,
+    robot: str | None = None,
+    world: Any = None,
+    namespace: str | None = None,
+    realtime: bool = False,
+    duration: float | None = None,
+    goal: tuple | None = None,
+    png: PathLike | bool | None = None,
+    gif: PathLike | None = None,
+    record: PathLike | None = None,
+) -> RunResult:
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
     simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in
@@ -58,6 +85,6 @@ def run(paths: Sequence[PathLike], args: Sequence[str] = (), *, target: str | No
         result = run_compilation(compilation, args, options, robot_options, use_cache=cache)
     except SourceErrors as errors:
         return RunResult(Exit.SOURCE, errors.diagnostics)
-    if compilation.was_checked:                       # compiled now, not taken from the cache
+    if compilation.was_checked:  # compiled now, not taken from the cache
         result.diagnostics = compilation.checked.diagnostics
     return result

@@ -2,6 +2,7 @@
 code (scoopc.exits: 0 success, 1 source errors, 2 bad usage, 3 run-time failure, 4 internal
 error of scoopc, reported with its Python traceback). No other module imports this one.
 """
+
 from __future__ import annotations
 
 import argparse
@@ -27,45 +28,60 @@ class _Parser(argparse.ArgumentParser):
 
 # ---- arguments -----------------------------------------------------------------------------------
 
+
 def build_parser() -> argparse.ArgumentParser:
-    top = _Parser(prog="scoopc", description="Compile Eiffel programs with SCOOP concurrency to Python.",
-                  epilog="Run `scoopc COMMAND --help` for the options of a command.")
+    top = _Parser(
+        prog="scoopc",
+        description="Compile Eiffel programs with SCOOP concurrency to Python.",
+        epilog="Run `scoopc COMMAND --help` for the options of a command.",
+    )
     top.add_argument("--version", action="version", version=f"scoopc {__version__}")
     commands = top.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     commands.required = True
 
-    parse = commands.add_parser("parse", help="check the syntax only",
-                                description="Parse the given Eiffel sources and report syntax errors.")
+    parse = commands.add_parser(
+        "parse", help="check the syntax only", description="Parse the given Eiffel sources and report syntax errors."
+    )
     _add_source_options(parse)
     parse.add_argument("--dump", action="store_true", help="print the syntax tree of each class")
     parse.set_defaults(handler=_command_parse)
 
-    check = commands.add_parser("check", help="report all errors of a program, compile nothing",
-                                description="Check Eiffel sources and report every error found: syntax, Eiffel "
-                                            "validity (types, inheritance, calls, creation, contracts, void "
-                                            "safety) and SCOOP separateness rules, each with its EiffelStudio "
-                                            "code.")
+    check = commands.add_parser(
+        "check",
+        help="report all errors of a program, compile nothing",
+        description="Check Eiffel sources and report every error found: syntax, Eiffel "
+        "validity (types, inheritance, calls, creation, contracts, void "
+        "safety) and SCOOP separateness rules, each with its EiffelStudio "
+        "code.",
+    )
     check.add_argument("--explain", metavar="CODE", help="explain a diagnostic code and exit")
     _add_source_options(check)
     check.set_defaults(handler=_command_check)
 
-    compile_ = commands.add_parser("compile", help="compile a program to a Python package",
-                                   description="Check the program, then write it as readable Python: one "
-                                               "module per class, in a package runnable with `python -m`, "
-                                               "beside the compiled standard library (eiffel_base). A folder "
-                                               "scoopc did not write is never replaced.")
+    compile_ = commands.add_parser(
+        "compile",
+        help="compile a program to a Python package",
+        description="Check the program, then write it as readable Python: one "
+        "module per class, in a package runnable with `python -m`, "
+        "beside the compiled standard library (eiffel_base). A folder "
+        "scoopc did not write is never replaced.",
+    )
     _add_source_options(compile_)
-    compile_.add_argument("-o", "--output", default="build", metavar="DIR",
-                          help="the folder to write the packages into (default: build)")
+    compile_.add_argument(
+        "-o", "--output", default="build", metavar="DIR", help="the folder to write the packages into (default: build)"
+    )
     _add_compile_options(compile_)
     compile_.set_defaults(handler=_command_compile)
 
-    run = commands.add_parser("run", help="compile (cached by content) and run a program",
-                              description="Compile the program (reusing an earlier compilation of the same "
-                                          "sources) and run it. Arguments after `--` go to the program. Exit "
-                                          "status: the program's, 1 on source errors, 3 on a run-time failure "
-                                          "(contract violation, uncaught exception, deadlock), 128 + N when "
-                                          "signal N stopped it (130: Ctrl-C).")
+    run = commands.add_parser(
+        "run",
+        help="compile (cached by content) and run a program",
+        description="Compile the program (reusing an earlier compilation of the same "
+        "sources) and run it. Arguments after `--` go to the program. Exit "
+        "status: the program's, 1 on source errors, 3 on a run-time failure "
+        "(contract violation, uncaught exception, deadlock), 128 + N when "
+        "signal N stopped it (130: Ctrl-C).",
+    )
     _add_source_options(run)
     _add_compile_options(run)
     _add_run_options(run)
@@ -78,75 +94,124 @@ def build_parser() -> argparse.ArgumentParser:
 def _add_source_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("paths", nargs="*", metavar="PATH", help=PATHS_HELP)
     command.add_argument("--target", help="the .ecf target to use (default: the last concrete one)")
-    command.add_argument("--format", choices=("auto", "short", "pretty"), default="auto",
-                         help="diagnostics: one line each (short), with source excerpts and hints "
-                              "(pretty); auto: pretty on a terminal")
+    command.add_argument(
+        "--format",
+        choices=("auto", "short", "pretty"),
+        default="auto",
+        help="diagnostics: one line each (short), with source excerpts and hints (pretty); auto: pretty on a terminal",
+    )
 
 
 def _add_compile_options(command: argparse.ArgumentParser) -> None:
-    command.add_argument("--root", metavar="CLASS[.creation]",
-                         help="the root class and its creation procedure (default: the .ecf's root, else "
-                              "the class named like the single file or directory, else the one class with "
-                              "a `make` no other class uses)")
-    command.add_argument("--assertions", choices=("all", "require", "none"), default=None,
-                         help="which contracts are checked at run time (default: the .ecf's setting, else "
-                              "all); wait conditions are always evaluated")
+    command.add_argument(
+        "--root",
+        metavar="CLASS[.creation]",
+        help="the root class and its creation procedure (default: the .ecf's root, else "
+        "the class named like the single file or directory, else the one class with "
+        "a `make` no other class uses)",
+    )
+    command.add_argument(
+        "--assertions",
+        choices=("all", "require", "none"),
+        default=None,
+        help="which contracts are checked at run time (default: the .ecf's setting, else "
+        "all); wait conditions are always evaluated",
+    )
 
 
 def _add_run_options(command: argparse.ArgumentParser) -> None:
-    command.add_argument("--trace-processors", action="store_true",
-                         help="prefix every output line with the processor that wrote it ([P3] ...)")
-    command.add_argument("--strict", action="store_true",
-                         help="an exception lost in an asynchronous call fails the run (exit 3)")
+    command.add_argument(
+        "--trace-processors",
+        action="store_true",
+        help="prefix every output line with the processor that wrote it ([P3] ...)",
+    )
+    command.add_argument(
+        "--strict", action="store_true", help="an exception lost in an asynchronous call fails the run (exit 3)"
+    )
     command.add_argument("--debug", action="store_true", help="also show Python tracebacks of failures")
-    command.add_argument("--virtual-clock", action="store_true",
-                         help="run `sleep` and timers on a virtual clock that jumps ahead when every "
-                              "processor waits (fast runs of programs that sleep)")
-    command.add_argument("--no-cache", action="store_true",
-                         help="compile the program and the standard library again, even if cached")
+    command.add_argument(
+        "--virtual-clock",
+        action="store_true",
+        help="run `sleep` and timers on a virtual clock that jumps ahead when every "
+        "processor waits (fast runs of programs that sleep)",
+    )
+    command.add_argument(
+        "--no-cache", action="store_true", help="compile the program and the standard library again, even if cached"
+    )
     robot = command.add_argument_group(
-        "robots", "A program that uses Roboscoop (stdlib/roboscoop) runs on the in-process simulator unless "
-                  "`--robot ros2` is given (docs/ROBOTS.md).")
-    robot.add_argument("--robot", choices=("sim", "ros2", "none"), default=None,
-                       help="sim: the built-in simulator (default for Roboscoop programs); ros2: a ROS 2 robot "
-                            "(rclpy when installed, else DDS with cyclonedds; SCOOPC_ROS2_BACKEND forces one); "
-                            "none: no robot transport")
-    robot.add_argument("--world", metavar="WORLD.yaml",
-                       help="the simulator's world (default: world.yaml beside the program, else a built-in "
-                            "5 x 5 m arena with one Thymio)")
-    robot.add_argument("--namespace", metavar="NS",
-                       help="the robot's namespace: which robot of the world is the program's (default: the "
-                            "first), or the prefix of a ROS 2 robot's topics (default: none)")
-    robot.add_argument("--realtime", action="store_true",
-                       help="pace the simulator to the wall clock (default: simulated time as fast as possible)")
-    robot.add_argument("--duration", type=_non_negative, metavar="SECONDS",
-                       help="simulated seconds to run (default: the world's duration)")
+        "robots",
+        "A program that uses Roboscoop (stdlib/roboscoop) runs on the in-process simulator unless "
+        "`--robot ros2` is given (docs/ROBOTS.md).",
+    )
+    robot.add_argument(
+        "--robot",
+        choices=("sim", "ros2", "none"),
+        default=None,
+        help="sim: the built-in simulator (default for Roboscoop programs); ros2: a ROS 2 robot "
+        "(rclpy when installed, else DDS with cyclonedds; SCOOPC_ROS2_BACKEND forces one); "
+        "none: no robot transport",
+    )
+    robot.add_argument(
+        "--world",
+        metavar="WORLD.yaml",
+        help="the simulator's world (default: world.yaml beside the program, else a built-in "
+        "5 x 5 m arena with one Thymio)",
+    )
+    robot.add_argument(
+        "--namespace",
+        metavar="NS",
+        help="the robot's namespace: which robot of the world is the program's (default: the "
+        "first), or the prefix of a ROS 2 robot's topics (default: none)",
+    )
+    robot.add_argument(
+        "--realtime",
+        action="store_true",
+        help="pace the simulator to the wall clock (default: simulated time as fast as possible)",
+    )
+    robot.add_argument(
+        "--duration",
+        type=_non_negative,
+        metavar="SECONDS",
+        help="simulated seconds to run (default: the world's duration)",
+    )
     robot.add_argument("--goal", type=_point, metavar="X,Y", help="the goal the program is told (default: the world's)")
     robot.add_argument("--png", metavar="FILE", help="where to draw the trajectory (default: <program>.png)")
     robot.add_argument("--no-png", action="store_true", help="draw no trajectory")
     robot.add_argument("--gif", metavar="FILE", help="also write an animation of the run")
-    robot.add_argument("--record", metavar="FILE.mcap",
-                       help="record every topic of the run in an MCAP file (ROS 2 schemas; opens in Foxglove)")
+    robot.add_argument(
+        "--record",
+        metavar="FILE.mcap",
+        help="record every topic of the run in an MCAP file (ROS 2 schemas; opens in Foxglove)",
+    )
 
 
 def _add_robot_commands(commands) -> None:
-    msg = commands.add_parser("msg", help="generate Eiffel classes for a ROS 2 message type",
-                              description="Write one Eiffel class per message type: the given ROS 2 type "
-                                          "(pkg/msg/Name, from the ROS 2 Humble type store or --file) and, "
-                                          "recursively, the message types its fields use.")
+    msg = commands.add_parser(
+        "msg",
+        help="generate Eiffel classes for a ROS 2 message type",
+        description="Write one Eiffel class per message type: the given ROS 2 type "
+        "(pkg/msg/Name, from the ROS 2 Humble type store or --file) and, "
+        "recursively, the message types its fields use.",
+    )
     msg.add_argument("typename", nargs="?", metavar="TYPE", help="e.g. geometry_msgs/msg/Twist")
     msg.add_argument("--file", metavar="MSG", help="a .msg definition of the type (needs --type)")
     msg.add_argument("--type", metavar="TYPE", help="the type name the --file defines (pkg/msg/Name)")
     msg.add_argument("-o", "--output", default=".", metavar="DIR", help="where to write the .e files (default: .)")
-    msg.add_argument("--all", action="store_true",
-                     help="also write the classes the Roboscoop library already has (std_msgs/Header, ...)")
+    msg.add_argument(
+        "--all",
+        action="store_true",
+        help="also write the classes the Roboscoop library already has (std_msgs/Header, ...)",
+    )
     msg.set_defaults(handler=_command_msg)
 
-    sim = commands.add_parser("sim", help="run the simulator as a ROS 2 (DDS) node",
-                              description="Run a simulator world as a separate ROS 2 node over DDS: it subscribes "
-                                          "each robot's cmd_vel and publishes its sensors and /clock, paced to the "
-                                          "wall clock, so that `scoopc run app.e --robot ros2` drives it over the "
-                                          "real transport (docs/ROBOTS.md).")
+    sim = commands.add_parser(
+        "sim",
+        help="run the simulator as a ROS 2 (DDS) node",
+        description="Run a simulator world as a separate ROS 2 node over DDS: it subscribes "
+        "each robot's cmd_vel and publishes its sensors and /clock, paced to the "
+        "wall clock, so that `scoopc run app.e --robot ros2` drives it over the "
+        "real transport (docs/ROBOTS.md).",
+    )
     from .robots import simnode  # deferred: only its argument list is needed here (start-up)
 
     simnode.add_arguments(sim)
@@ -172,6 +237,7 @@ def _point(text: str) -> tuple:
 
 
 # ---- commands ------------------------------------------------------------------------------------
+
 
 def _compilation(args: argparse.Namespace, **options):
     from .driver import Compilation  # deferred: `scoopc --help` and `parse` need no code generator
@@ -214,8 +280,11 @@ def _command_compile(args: argparse.Namespace) -> int:
     finally:
         _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
     program = compilation.compile_to(args.output)
-    print(f"scoopc: wrote {program.folder / program.package} and {program.folder / 'eiffel_base'}; run it with: "
-          f"cd {program.folder} && python -m {program.package}", file=sys.stderr)
+    print(
+        f"scoopc: wrote {program.folder / program.package} and {program.folder / 'eiffel_base'}; run it with: "
+        f"cd {program.folder} && python -m {program.package}",
+        file=sys.stderr,
+    )
     return Exit.OK
 
 
@@ -225,12 +294,21 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
 
     compilation = _compilation(args, root=args.root, assertions=args.assertions)
     options = RunOptions(args.trace_processors, args.strict, args.virtual_clock, args.debug)
-    robot = RobotOptions(args.robot, args.world, args.namespace, args.realtime, args.duration, args.goal,
-                         None if args.no_png else (args.png or True), args.gif, args.record)
+    robot = RobotOptions(
+        args.robot,
+        args.world,
+        args.namespace,
+        args.realtime,
+        args.duration,
+        args.goal,
+        None if args.no_png else (args.png or True),
+        args.gif,
+        args.record,
+    )
     try:
         compilation.cached_program(use_cache=not args.no_cache)
     finally:
-        if compilation.was_checked:                  # checked now, not taken from the cache
+        if compilation.was_checked:  # checked now, not taken from the cache
             _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
     return run_compilation(compilation, program_args, options, robot).status
 
@@ -242,6 +320,7 @@ def _command_msg(args: argparse.Namespace) -> int:
 
 
 # ---- rendering -----------------------------------------------------------------------------------
+
 
 def _render(found: list, line_text: Callable[[str, int], str], style: str) -> None:
     pretty = style == "pretty" or (style == "auto" and sys.stderr.isatty())
@@ -266,7 +345,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     program_args: list[str] = []
     if "--" in argv:
         split = argv.index("--")
-        argv, program_args = argv[:split], argv[split + 1:]
+        argv, program_args = argv[:split], argv[split + 1 :]
     args = build_parser().parse_args(argv)
     if program_args and args.command != "run":
         build_parser().error("arguments after `--` are for `scoopc run` only")
@@ -275,7 +354,7 @@ def main(argv: Sequence[str] | None = None) -> int:
             return int(args.handler(args, program_args))
         return int(args.handler(args))
     except SourceErrors:
-        return Exit.SOURCE                      # the diagnostics are on stderr already
+        return Exit.SOURCE  # the diagnostics are on stderr already
     except UsageError as problem:
         print(f"scoopc: error: {problem}", file=sys.stderr)
         return Exit.USAGE

@@ -5,6 +5,7 @@ A stage creates a Diagnostic with `make(code, span, **arguments)`; the wording c
 `path:line:col: error CODE: message` for tools and tests, `pretty` adds the source line, an
 underline and the hint.
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable
@@ -44,8 +45,9 @@ class InternalError(Exception):
     """A bug in scoopc, never the user's fault (reported as such, with the Python traceback)."""
 
 
-def make(code: str, span: Span | None, notes: Iterable[Note] = (), severity: str = ERROR,
-         **arguments: object) -> Diagnostic:
+def make(
+    code: str, span: Span | None, notes: Iterable[Note] = (), severity: str = ERROR, **arguments: object
+) -> Diagnostic:
     """A diagnostic whose message and hint are the templates of `code` filled with `arguments`
     (every argument of the message is required; those of the hint are optional)."""
     entry = messages.MESSAGES.get(code)

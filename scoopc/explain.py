@@ -1,5 +1,6 @@
 """`scoopc check --explain CODE`: a diagnostic code (ours, EiffelStudio's spelling, or a Gobo alias)
 -> its explanation (explanations.py) and its message and hint templates (messages.py)."""
+
 from __future__ import annotations
 
 import re
@@ -36,8 +37,15 @@ def explain(code: str) -> str | None:
         return textwrap.fill(text, 100, break_on_hyphens=False, break_long_words=False)
 
     example, _, sentence = entry.fix.rpartition("\n\n")
-    lines = [fill(f"{heading}: {entry.rule}"), "", "Wrong:", textwrap.indent(entry.wrong, "    "),
-             "Fix:", textwrap.indent(example, "    "), fill(sentence)]
+    lines = [
+        fill(f"{heading}: {entry.rule}"),
+        "",
+        "Wrong:",
+        textwrap.indent(entry.wrong, "    "),
+        "Fix:",
+        textwrap.indent(example, "    "),
+        fill(sentence),
+    ]
     if message is not None:
         lines += ["", f"Message: {message.text}"] + ([f"Hint: {message.hint}"] if message.hint else [])
     return "\n".join(lines)

@@ -1,6 +1,7 @@
 """What `scoopc check --explain CODE` prints: for every diagnostic code, the rule in plain words,
 a wrong example and its fix. Gobo's finer SCOOP codes are accepted as aliases of ours.
 """
+
 from __future__ import annotations
 
 import textwrap
@@ -8,9 +9,9 @@ from typing import NamedTuple
 
 
 class Explanation(NamedTuple):
-    rule: str   # the validity rule, 1-4 sentences
+    rule: str  # the validity rule, 1-4 sentences
     wrong: str  # a short Eiffel example that breaks the rule
-    fix: str    # the corrected example, a blank line, then one sentence saying what changed
+    fix: str  # the corrected example, a blank line, then one sentence saying what changed
 
 
 def _x(rule: str, wrong: str, fix: str, why: str) -> Explanation:
@@ -31,7 +32,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         scoopc check application.e
         """,
-        "Name a file that exists; re-save a source written in another encoding as UTF-8."),
+        "Name a file that exists; re-save a source written in another encoding as UTF-8.",
+    ),
     "ECF": _x(
         """An .ecf project file could not be used: it is not well-formed XML, defines no target, has no
         target of the name given with `--target`, or names a cluster directory that does not exist.""",
@@ -41,7 +43,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         <cluster name="app" location="./src/"/>
         """,
-        "Make every cluster location point at an existing directory (relative to the .ecf file)."),
+        "Make every cluster location point at an existing directory (relative to the .ecf file).",
+    ),
     "ECF-NOTE": _x(
         """Not an error: the .ecf file holds a setting or element that scoopc does not use (for example
         a `<setting>` for the C compiler), so it is ignored.""",
@@ -51,7 +54,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         <!-- nothing to change: the setting is simply not needed by scoopc -->
         """,
-        "Leave the setting if the project is also built with EiffelStudio; scoopc just says it skips it."),
+        "Leave the setting if the project is also built with EiffelStudio; scoopc just says it skips it.",
+    ),
     # --- syntax -----------------------------------------------------------------------------------
     "SYNTAX": _x(
         """The text does not follow Eiffel's grammar at this point: a token appears where the language
@@ -67,7 +71,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             print (x)
         end
         """,
-        "The condition of an `if` is followed by `then`."),
+        "The condition of an `if` is followed by `then`.",
+    ),
     "SYNTAX-END": _x(
         """Every compound construct (`class`, routine body, `if`, `inspect`, `from`/`loop`, `across`,
         `check`, `debug`, `separate`, `attached ... then` block) is closed by its own `end`. The error
@@ -82,7 +87,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             print (x)
         end
         """,
-        "Close the `if` with `end` before the routine's own `end`."),
+        "Close the `if` with `end` before the routine's own `end`.",
+    ),
     "SYNTAX-RESERVED": _x(
         """Keywords such as `end`, `from`, `loop`, `class`, `result`, `current` or `old` are reserved:
         they cannot name a feature, an argument or a local. Keywords are case-insensitive, so `Loop`
@@ -93,7 +99,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         set_range (a_from: INTEGER; a_to: INTEGER)
         """,
-        "Choose a name that is not a keyword; the `a_` prefix is the usual Eiffel style for arguments."),
+        "Choose a name that is not a keyword; the `a_` prefix is the usual Eiffel style for arguments.",
+    ),
     "SYNTAX-LEXICAL": _x(
         """A character or literal that is no Eiffel token: an unterminated string or character constant,
         a stray character such as `\\` or `$`, or a character outside Eiffel text. Special characters in
@@ -104,7 +111,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         print ("Hello%N")
         """,
-        "Eiffel escapes special characters with `%`, not with a backslash."),
+        "Eiffel escapes special characters with `%`, not with a backslash.",
+    ),
     "SYNTAX-CLASS": _x(
         """Each .e file holds exactly one class, and the file is named after it in lower case
         (class SHAPE lives in shape.e). An empty file or a second class in the same file is an
@@ -120,7 +128,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         -- square.e
         class SQUARE ... end
         """,
-        "Move each class into its own file."),
+        "Move each class into its own file.",
+    ),
     "SYNTAX-OBSOLETE": _x(
         """Pre-ECMA syntax that modern EiffelStudio only accepts in its obsolete-syntax mode:
         `indexing` (now `note`), `is` before a routine body or a constant's value, `creation` (now
@@ -142,7 +151,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             increment
                 do count := count + 1 end
         """,
-        "Write `note` instead of `indexing`, and drop `is` before a routine body."),
+        "Write `note` instead of `indexing`, and drop `is` before a routine body.",
+    ),
     "SYNTAX-FEATURE": _x(
         """An attribute has a type and no arguments; a routine may have arguments. An `attribute` body
         therefore needs a type, and an attribute or constant cannot be declared with arguments.""",
@@ -155,7 +165,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 Result := 10 * factor
             end
         """,
-        "A feature with arguments is a routine: give it a `do` body."),
+        "A feature with arguments is a routine: give it a `do` body.",
+    ),
     # --- Eiffel validity rules: classes and types ------------------------------------------------
     "VSCN": _x(
         """Class names are unique in a program: two files of the clusters (or a file and a class of the
@@ -169,7 +180,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         -- src/point.e        class POINT ...
         -- old/old_point.e    class OLD_POINT ...
         """,
-        "Rename one of the classes (and its file), or leave the old copy out of the clusters you check."),
+        "Rename one of the classes (and its file), or leave the old copy out of the clusters you check.",
+    ),
     "VTCT": _x(
         """Every class name used in a type must name a class of the program: a class of one of its
         clusters, a class of the standard library, or a built-in name such as INTEGER or STRING.
@@ -180,7 +192,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         shape: detachable FIGURE  -- FIGURE is declared in figure.e
         """,
-        "Spell the class as it is declared, or add its file to a cluster of the project."),
+        "Spell the class as it is declared, or add its file to a cluster of the project.",
+    ),
     "VTUG(1)": _x(
         """Only a generic class, declared with formal parameters such as `class BOX [G]`, accepts actual
         generic parameters in brackets. Writing `POINT [INTEGER]` for a class that has none is
@@ -191,7 +204,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         origin: POINT
         """,
-        "Drop the brackets, or declare the class generic if it should hold values of a chosen type."),
+        "Drop the brackets, or declare the class generic if it should hold values of a chosen type.",
+    ),
     "VTUG(2)": _x(
         """A generic type gives exactly as many actual parameters as its class declares formal ones:
         `PAIR [G, H]` needs two, `ARRAY [G]` one.""",
@@ -201,7 +215,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         names: PAIR [STRING, STRING]
         """,
-        "Give one actual type for each formal generic parameter of the class."),
+        "Give one actual type for each formal generic parameter of the class.",
+    ),
     "VTCG": _x(
         """When a formal generic parameter is constrained (`G -> ANIMAL`), every actual parameter must
         conform to the constraint: ANIMAL itself or one of its descendants. If the constraint names
@@ -214,7 +229,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         dog_cage: CAGE [DOG]              -- DOG inherits from ANIMAL
         """,
-        "Use an actual type that conforms to the constraint, or loosen the constraint."),
+        "Use an actual type that conforms to the constraint, or loosen the constraint.",
+    ),
     "VTAT(1)": _x(
         """In an anchored type `like x`, the anchor `x` must be a query of the class, an argument or a
         local of the enclosing routine, or `Current`.""",
@@ -226,7 +242,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         total: INTEGER
         average: like total
         """,
-        "Anchor the type to an entity that exists (here the misspelt `totl` is `total`)."),
+        "Anchor the type to an entity that exists (here the misspelt `totl` is `total`).",
+    ),
     # --- inheritance -------------------------------------------------------------------------------
     "VHPR(1)": _x(
         """Inheritance may not go round in a circle: a class cannot be its own ancestor, directly
@@ -241,7 +258,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         feature
             next: detachable NODE
         """,
-        "A class that needs another object of its own kind refers to it through an attribute."),
+        "A class that needs another object of its own kind refers to it through an attribute.",
+    ),
     "VHRC(1)": _x(
         """A `rename` clause can only rename a feature that the parent really has, under the name it
         has in that parent.""",
@@ -255,7 +273,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             ANIMAL
                 rename speak as talk end
         """,
-        "Rename only features of the parent, spelt as the parent spells them."),
+        "Rename only features of the parent, spelt as the parent spells them.",
+    ),
     "VDRS(1)": _x(
         """A `redefine` clause may only list features that the parent has (under their name in the
         parent, after any renaming). A brand-new feature needs no `redefine`: just declare it.""",
@@ -270,7 +289,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         feature
             fly do print ("flap%N") end
         """,
-        "Remove the name from `redefine` when the feature is new in this class."),
+        "Remove the name from `redefine` when the feature is new in this class.",
+    ),
     "VDRS(4)": _x(
         """Every feature listed in a `redefine` clause must be given a new declaration in the class
         body. Listing it without redeclaring it is a mistake.""",
@@ -288,7 +308,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         feature
             speak do print ("Meow%N") end
         """,
-        "Write the new version of the feature, or remove its name from the `redefine` clause."),
+        "Write the new version of the feature, or remove its name from the `redefine` clause.",
+    ),
     "VDUS(1)": _x(
         """An `undefine` clause may only name features that the parent has (under their name in the
         parent, after any renaming).""",
@@ -302,7 +323,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             ANIMAL
                 undefine speak end
         """,
-        "Undefine only features the parent has, spelt as the parent spells them."),
+        "Undefine only features the parent has, spelt as the parent spells them.",
+    ),
     "VDUS(2)": _x(
         """`undefine` turns an inherited routine into a deferred one. It therefore applies only to
         effective routines that descendants may change: not to attributes, constants or `frozen`
@@ -317,7 +339,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             MACHINE
                 undefine describe end     -- `describe` is a routine
         """,
-        "Undefine only routines that are not frozen; keep attributes and constants as they are."),
+        "Undefine only routines that are not frozen; keep attributes and constants as they are.",
+    ),
     "VMSS(1)": _x(
         """A `select` clause may only name features that the parent has (under their final name after
         renaming). It chooses which version of a repeatedly inherited feature dynamic binding uses.""",
@@ -333,7 +356,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             CAT
                 rename speak as meow end
         """,
-        "Select a feature the parent has, and only where a repeated ancestor gives two versions."),
+        "Select a feature the parent has, and only where a repeated ancestor gives two versions.",
+    ),
     "VMRC(2)": _x(
         """When a class inherits a feature of a common ancestor along two paths and ends up with two
         different versions of it, a call of the ancestor's feature on an object of the class would be
@@ -350,7 +374,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             DOG rename speak as bark select bark end
             CAT rename speak as meow end
         """,
-        "Name one version in a `select` clause: calls through ANIMAL then use `bark`."),
+        "Name one version in a `select` clause: calls through ANIMAL then use `bark`.",
+    ),
     "VMFN": _x(
         """In a class each final feature name denotes exactly one feature. Declaring a name twice,
         declaring again a feature a parent already has without listing it in `redefine`, or
@@ -371,7 +396,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             speak do print ("Woof%N") end
         """,
         """List an inherited feature in `redefine` to give it a new version; rename one of two clashing
-        features, or undefine one of them to join them."""),
+        features, or undefine one of them to join them.""",
+    ),
     "VDRD(2)": _x(
         """A redeclared feature keeps a signature that conforms to its parent's: the same number of
         arguments, argument and result types that conform to the inherited ones, and a query stays a
@@ -385,7 +411,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         legs: INTEGER
             do Result := 0 end
         """,
-        "Keep the inherited types (or descendants of them) when redefining a feature."),
+        "Keep the inherited types (or descendants of them) when redefining a feature.",
+    ),
     "VCCH(1)": _x(
         """A class that has a deferred feature, declared `deferred` in the class or inherited and not
         effected, must itself be declared `deferred class`. Only classes with no deferred feature can
@@ -400,7 +427,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         feature
             area: REAL_64 deferred end
         """,
-        "Mark the class `deferred`, or give every deferred feature an implementation."),
+        "Mark the class `deferred`, or give every deferred feature an implementation.",
+    ),
     "VDPR(1)": _x(
         """`Precursor` calls the parent's version of the routine being redefined. It may only appear in
         a routine that redefines an inherited effective routine.""",
@@ -414,7 +442,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         feature
             speak do print ("Beep%N") end
         """,
-        "Use `Precursor` only in a redefinition, where there is a parent version to call."),
+        "Use `Precursor` only in a redefinition, where there is a parent version to call.",
+    ),
     "VDPR(2)": _x(
         """In `Precursor {P}`, P must be a parent of the class (named in its `inherit` clause) from
         which the routine being redefined comes.""",
@@ -427,7 +456,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         speak do Precursor {ANIMAL} end
         """,
-        "Name the parent whose version you want, or write plain `Precursor`."),
+        "Name the parent whose version you want, or write plain `Precursor`.",
+    ),
     # --- names ------------------------------------------------------------------------------------
     "VRFA": _x(
         """A formal argument may not have the name of a feature of the class (names are compared
@@ -440,7 +470,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         count: INTEGER
         set_count (a_count: INTEGER) do count := a_count end
         """,
-        "Give arguments names of their own; the `a_` prefix is the usual Eiffel style."),
+        "Give arguments names of their own; the `a_` prefix is the usual Eiffel style.",
+    ),
     "VRLE(1)": _x(
         """A local variable may not have the name of a feature of the class (compared without regard
         to case): it would hide the feature.""",
@@ -453,7 +484,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         show
             local l_count: INTEGER do ... end
         """,
-        "Rename the local; the `l_` prefix is the usual Eiffel style."),
+        "Rename the local; the `l_` prefix is the usual Eiffel style.",
+    ),
     "VRLE(2)": _x(
         """A local variable may not have the name of an argument of the same routine.""",
         """
@@ -464,7 +496,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         show (n: INTEGER)
             local i: INTEGER do ... end
         """,
-        "Use a different name for the local; the argument already holds the value passed in."),
+        "Use a different name for the local; the argument already holds the value passed in.",
+    ),
     "VREG": _x(
         """Within one routine, each name among its arguments and locals is declared only once.""",
         """
@@ -473,7 +506,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         shift (dx: INTEGER; dy: INTEGER)
         """,
-        "Give the second entity its own name."),
+        "Give the second entity its own name.",
+    ),
     "VEEN": _x(
         """Every name must be known where it is used. Unqualified, it must be a feature of the class,
         an argument, a local, `Result`, or an object-test, iteration or separate-block local in
@@ -486,7 +520,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         total := total + 1
         print (p.y)
         """,
-        "Check the spelling, and the class of the target's type, which decides the features you may call."),
+        "Check the spelling, and the class of the target's type, which decides the features you may call.",
+    ),
     "VEEN(2)": _x(
         """`Result` exists only in functions (and attribute bodies) and their postconditions: a
         procedure returns nothing and a class invariant belongs to no routine.""",
@@ -504,7 +539,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 Result := count
             end
         """,
-        "Make the routine a function (give it a result type), or drop the use of `Result`."),
+        "Make the routine a function (give it a result type), or drop the use of `Result`.",
+    ),
     "VUEX(2)": _x(
         """A qualified call `x.f` is allowed only if `f` is exported to the calling class. Features
         under `feature {NONE}` can only be called unqualified, by the class and its descendants;
@@ -518,7 +554,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         --              feature is_valid_pin (n: INTEGER): BOOLEAN do Result := n = pin end
         print (acc.is_valid_pin (1234))
         """,
-        "Call a feature the class exports to you, or export the feature if clients really need it."),
+        "Call a feature the class exports to you, or export the feature if clients really need it.",
+    ),
     "VUAR(1)": _x(
         """A call passes exactly as many actual arguments as the routine declares formal arguments
         (also for creation calls and agents' closed arguments).""",
@@ -529,7 +566,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         p.move (1, 2)
         """,
-        "Pass one actual argument for each formal argument, in order."),
+        "Pass one actual argument for each formal argument, in order.",
+    ),
     "VUAR(2)": _x(
         """Each actual argument must conform (or convert) to the type of its formal argument. In
         void-safe code a detachable actual cannot be passed to an attached formal, and with SCOOP a
@@ -547,7 +585,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         end
         """,
         """Pass a value of the formal's type; test a detachable value with an object test first (and for
-        a separate value, declare the formal `separate`)."""),
+        a separate value, declare the formal `separate`).""",
+    ),
     "VKCN(1)": _x(
         """A query (attribute, function or constant) returns a value; written alone as an instruction
         its value would be lost. Only procedures can be called as instructions.""",
@@ -557,7 +596,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         print (p.x)
         """,
-        "Use the value of the query: assign it, pass it on, or test it."),
+        "Use the value of the query: assign it, pass it on, or test it.",
+    ),
     "VKCN(2)": _x(
         """A procedure returns nothing, so it cannot be used where a value is needed: on the right of
         `:=`, as an argument, or as an operand.""",
@@ -568,7 +608,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         reset
         n := count
         """,
-        "Call the procedure as an instruction, then read the value from a query."),
+        "Call the procedure as an instruction, then read the value from a query.",
+    ),
     "VWBE": _x(
         """Conditions are BOOLEAN: the test of `if`/`elseif`, a loop's `until`, the assertions of
         `require`, `ensure`, `invariant` and `check`, and the operands of `and`, `or`, `xor`,
@@ -583,7 +624,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             print ("some%N")
         end
         """,
-        "Write the comparison you mean; a number is not a truth value."),
+        "Write the comparison you mean; a number is not a truth value.",
+    ),
     "VWOE": _x(
         """An operator expression `a + b` calls the feature of `a`'s class that carries the alias
         `"+"` (with one argument; a unary operator with none). If that class has no such feature,
@@ -598,7 +640,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             x, y: INTEGER
             plus alias "+" (other: POINT): POINT do ... end
         """,
-        "Give the class a feature with that operator as its alias, or call a named feature."),
+        "Give the class a feature with that operator as its alias, or call a named feature.",
+    ),
     "VJAR": _x(
         """In `target := source`, the type of the source must conform to the type of the target, or
         convert to it through a `convert` clause. A detachable value cannot go into an attached
@@ -614,7 +657,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             name := l_name
         end
         """,
-        "Assign a value of the target's type; test a detachable source with an object test first."),
+        "Assign a value of the target's type; test a detachable source with an object test first.",
+    ),
     "VJAW": _x(
         """Only a variable can be the target of an assignment or of a creation: an attribute of the
         current class, a local or `Result`. Formal arguments, functions, `Current`, and the locals
@@ -631,7 +675,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 count := a_count
             end
         """,
-        "Assign to an attribute or a local; copy an argument into a local if you need to change it."),
+        "Assign to an attribute or a local; copy an argument into a local if you need to change it.",
+    ),
     "VBAC(1)": _x(
         """`x.f := v` is a short form of a call to `f`'s assigner command (`f: T assign set_f`), so `v`
         must conform (or convert) to the argument type of that command, as for any call.""",
@@ -642,7 +687,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         box.value := 10
         """,
-        "Give the assigner a value of the type it expects."),
+        "Give the assigner a value of the type it expects.",
+    ),
     "VBAC(2)": _x(
         """`x.f := v` and `x [i] := v` are allowed only if the query `f` (or the feature with alias
         `"[]"`) declares an assigner command with `assign`.""",
@@ -654,7 +700,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         -- size: INTEGER assign set_size
         box.size := 3
         """,
-        "Declare an assigner (`assign set_size`) in the supplier, or call the setter procedure directly."),
+        "Declare an assigner (`assign set_size`) in the supplier, or call the setter procedure directly.",
+    ),
     "VUOT(1)": _x(
         """The local introduced by `attached e as x` has a fresh name: not a feature of the class, an
         argument, a local, nor another object-test local whose scope includes this test.""",
@@ -666,7 +713,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         if attached found_name as l_name then ... end
         """,
-        "Give the object-test local a name of its own (`l_name`)."),
+        "Give the object-test local a name of its own (`l_name`).",
+    ),
     "VOIT(1)": _x(
         """The expression after `across` must be of a type that conforms to ITERABLE [G]: arrays,
         lists, hash tables, strings and integer intervals (`1 |..| n`) are; plain numbers and
@@ -677,7 +725,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         across 1 |..| 10 as i loop print (i.item) end
         """,
-        "Iterate over a structure or an interval, not over a single value."),
+        "Iterate over a structure or an interval, not over a single value.",
+    ),
     "VOIT(2)": _x(
         """The name bound by `across e as c` (or `is x`) is fresh: not a feature, an argument, a local,
         nor another iteration or object-test local in scope.""",
@@ -688,7 +737,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         across numbers as n loop total := total + n.item end
         """,
-        "Give the cursor a name of its own."),
+        "Give the cursor a name of its own.",
+    ),
     "VAOL(1)": _x(
         """`old e` stands for the value `e` had on entry to the routine; it may only appear in a
         postcondition (`ensure`). In the body, keep an earlier value in a local instead.""",
@@ -706,7 +756,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 one_more: count = old count + 1
             end
         """,
-        "Use `old` in the postcondition, where it checks the change the body made."),
+        "Use `old` in the postcondition, where it checks the change the body made.",
+    ),
     "VXRT": _x(
         """`retry` may only appear in a routine's `rescue` clause, where it starts the body again
         after an exception.""",
@@ -724,7 +775,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             if attempts < 3 then retry end
         end
         """,
-        "Move the `retry` into the `rescue` clause."),
+        "Move the `retry` into the `rescue` clause.",
+    ),
     "VOMB(2)": _x(
         """Each choice of an `inspect` is a constant of the inspected expression's type: a manifest
         constant (`3`, `'a'`), a constant attribute (`zero: INTEGER = 0`) or an interval of such
@@ -742,7 +794,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             if n = limit then ... end
         end
         """,
-        "Use constants of the inspected type as choices, and test variables with `if`."),
+        "Use constants of the inspected type as choices, and test variables with `if`.",
+    ),
     "VOMB(3)": _x(
         """Each value may appear in only one `when` of an `inspect`: two choices (values or intervals)
         that overlap would make the instruction ambiguous.""",
@@ -758,7 +811,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         when 2 then ...
         end
         """,
-        "List each value once; merge the branches if they should do the same thing."),
+        "List each value once; merge the branches if they should do the same thing.",
+    ),
     # --- creation ---------------------------------------------------------------------------------
     "VGCC(1)": _x(
         """A deferred class has features with no implementation, so no object of it can be created.
@@ -771,7 +825,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         s: SHAPE
         create {CIRCLE} s.make (2)  -- CIRCLE inherits SHAPE and is effective
         """,
-        "Name an effective descendant as the creation type."),
+        "Name an effective descendant as the creation type.",
+    ),
     "VGCC(3)": _x(
         """In `create {T} x`, the explicit creation type T must conform to the type of the target
         x.""",
@@ -783,7 +838,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         pet: ANIMAL
         create {DOG} pet
         """,
-        "Create an object of the target's type or of one of its descendants."),
+        "Create an object of the target's type or of one of its descendants.",
+    ),
     "VGCC(5)": _x(
         """When the class of the new object has a `create` clause that does not list `default_create`,
         the creation must call one of the listed creation procedures.""",
@@ -794,7 +850,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         create p.make (0, 0)
         """,
-        "Call one of the creation procedures the class lists."),
+        "Call one of the creation procedures the class lists.",
+    ),
     "VGCC(6)": _x(
         """In `create x.p (...)`, `p` must be listed in the `create` clause of the class of `x`, and
         that clause must make it available to the class doing the creation: `create {A} make` lets
@@ -807,7 +864,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         create p.make (0, 0)
         p.move (1, 2)
         """,
-        "Create with a creation procedure, then call other procedures on the new object."),
+        "Create with a creation procedure, then call other procedures on the new object.",
+    ),
     # --- void safety ------------------------------------------------------------------------------
     "VEVI": _x(
         """Void safety: a variable of an attached type must hold an object before it is read. An
@@ -826,7 +884,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 if count > 0 then Result := "many" else Result := "none" end
             end
         """,
-        "Set the variable on every path, or declare it `detachable` and test it before use."),
+        "Set the variable on every path, or declare it `detachable` and test it before use.",
+    ),
     "VUTA(2)": _x(
         """The target of a call must be attached. A call on an expression of detachable type could
         meet Void, so first test it with an object test, or declare the entity attached.""",
@@ -839,7 +898,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             print (l_owner.age)
         end
         """,
-        "Call the feature on the object-test local, which is attached inside the `then` part."),
+        "Call the feature on the object-test local, which is attached inside the `then` part.",
+    ),
     "VWMQ": _x(
         """A typed manifest constant such as `{INTEGER_8} 100` must be a value its type can hold:
         INTEGER_8 holds -128 .. 127, NATURAL_8 holds 0 .. 255, and so on.""",
@@ -849,7 +909,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         small := {INTEGER_16} 200
         """,
-        "Choose a type large enough for the value, or a value within the type's range."),
+        "Choose a type large enough for the value, or a value within the type's range.",
+    ),
     "ONCE-KEY": _x(
         """The key of a once routine says how often its body runs: plain `once` once per processor,
         `once ("PROCESS")` once for the whole program, `once ("THREAD")` once per processor and
@@ -866,7 +927,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 Result := 42
             end
         """,
-        "Use one of the keys PROCESS, THREAD or OBJECT."),
+        "Use one of the keys PROCESS, THREAD or OBJECT.",
+    ),
     # --- SCOOP ------------------------------------------------------------------------------------
     "VUTA(3)": _x(
         """A call on a target of separate type is allowed only when the target is controlled, that
@@ -888,7 +950,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             end
         """,
         """Pass the separate object as an argument (or use `separate buffer as b do b.put (1) end`):
-        the call then reserves its processor for the routine."""),
+        the call then reserves its processor for the routine.""",
+    ),
     "VUAR(3)": _x(
         """In a call on a separate target, a non-separate reference passed as an argument would reach
         another processor, which would take it for one of its own objects (a "traitor"). Such an
@@ -901,7 +964,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         -- in WORKER:  take (items: separate LIST [INTEGER])
         worker.take (my_list)
         """,
-        "Declare the formal argument `separate` in the supplier, so it treats the object as remote."),
+        "Declare the formal argument `separate` in the supplier, so it treats the object as remote.",
+    ),
     "FORMAL-TRAITOR": _x(
         """A warning, not an error. In a call on a separate target, a value whose type is a formal
         generic `G` is passed to a non-separate formal argument, or a `G` result of the call is
@@ -916,7 +980,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         class TREE [expanded G]  ...  node.put (value)
         """,
         """Constrain the generic to expanded types (`expanded G`) when only values such as INTEGER
-        are meant, or declare the supplier's formal argument separate."""),
+        are meant, or declare the supplier's formal argument separate.""",
+    ),
     "VUAR(4)": _x(
         """In a call on a separate target, an expanded actual argument is copied to the other
         processor. It must not contain, directly or through other expanded fields, attributes of
@@ -929,7 +994,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         expanded class LABELLED  feature text: separate STRING ... end
         worker.store (label)
         """,
-        "Make the reference fields of the expanded class separate, or pass plain values instead."),
+        "Make the reference fields of the expanded class separate, or pass plain values instead.",
+    ),
     "VUER": _x(
         """A query called on a separate target returns its value to the caller's processor. If its
         result type is expanded and contains non-separate reference attributes, those references
@@ -943,7 +1009,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         -- in SENSOR:  value: REAL_64
         print (sensor.value)
         """,
-        "Across processors, query basic values or separate references, not expanded objects with references."),
+        "Across processors, query basic values or separate references, not expanded objects with references.",
+    ),
     "FRESH_IDENTIFIER": _x(
         """The name introduced by `separate e as x` is fresh: not a feature, an argument, a local, an
         object-test or iteration local in scope, nor another name of the same or an enclosing
@@ -956,7 +1023,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         separate buffer as b do b.put (1) end
         """,
-        "Give the separate-block local a name of its own."),
+        "Give the separate-block local a name of its own.",
+    ),
     "V1SE": _x(
         """A separate block reserves the processors of the objects its expressions denote, so each
         expression must be of a separate type (EiffelStudio 21.11+): a value of expanded type
@@ -968,7 +1036,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         print (count)
         """,
-        "Use expanded values directly; reserve only separate objects."),
+        "Use expanded values directly; reserve only separate objects.",
+    ),
     "V1SE(3)": _x(
         """The locals of a separate block stand for the reserved objects for the whole block and are
         read-only: they cannot be assigned to or used as a creation target.""",
@@ -982,7 +1051,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             b.put (1)
         end
         """,
-        "Name the object you want in the block's header instead of reassigning the local."),
+        "Name the object you want in the block's header instead of reassigning the local.",
+    ),
     "VWEQ": _x(
         """An equality `a = b` (or `/=`, `~`, `/~`) compares two values of compatible types: one must
         conform or convert to the other. Comparing a number with a string, say, is always false and
@@ -993,7 +1063,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         if count.out ~ answer then
         """,
-        "Bring both sides to one type first (`out`, `to_integer`), then compare."),
+        "Bring both sides to one type first (`out`, `to_integer`), then compare.",
+    ),
     "VFAV(1)": _x(
         """An operator alias makes a query usable as an operator: a binary operator (`a + b`) names a
         query with exactly one argument, a unary one (`- a`, `not a`) a query with none. Procedures
@@ -1004,7 +1075,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         scale alias "*" (factor: INTEGER): VECTOR
         """,
-        "Give the operator's feature one argument (binary) or none (unary), or drop the alias."),
+        "Give the operator's feature one argument (binary) or none (unary), or drop the alias.",
+    ),
     "VFAV(2)": _x(
         """A bracket alias (`alias "[]"`) lets `x [i]` call a query with the bracketed values as its
         arguments, so it names a query with at least one argument.""",
@@ -1014,7 +1086,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         item alias "[]" (i: INTEGER): INTEGER
         """,
-        "Put the bracket alias on a query that takes the index (or key) as an argument."),
+        "Put the bracket alias on a query that takes the index (or key) as an argument.",
+    ),
     "VFAV(3)": _x(
         """A parenthesis alias (`alias "()"`) lets `x (a)` call a routine with the parenthesized values
         as its arguments, so it names a routine with at least one argument, and a class has at
@@ -1025,7 +1098,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         item alias "()" (i: INTEGER): INTEGER
         """,
-        "Put the parenthesis alias on one routine that takes the values as arguments."),
+        "Put the parenthesis alias on one routine that takes the values as arguments.",
+    ),
     "VFAV(4)": _x(
         """A `convert` mark on an operator alias lets the operator apply when the left operand only
         converts to the class (`1 + money`): the operator must then be binary, so the feature
@@ -1036,7 +1110,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         negated alias "-": MONEY
         """,
-        "The unary operator loses its `convert` mark: there is no other operand to convert from."),
+        "The unary operator loses its `convert` mark: there is no other operand to convert from.",
+    ),
     "VFAV(5)": _x(
         """Only an operator alias can carry a `convert` mark (it converts the left operand of a
         binary operator); a bracket or parenthesis alias cannot.""",
@@ -1046,7 +1121,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         item alias "[]" (i: INTEGER): G
         """,
-        "The bracket alias loses its `convert` mark."),
+        "The bracket alias loses its `convert` mark.",
+    ),
     "VDJR": _x(
         """When a class inherits several features with one name, at most one of them effective, they
         are joined into one feature: their signatures (argument and result types) must then be the
@@ -1063,7 +1139,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             TILE rename area as tile_count end
         end
         """,
-        "Rename one of the inherited features when they mean different things."),
+        "Rename one of the inherited features when they mean different things.",
+    ),
     "VTEC(1)": _x(
         """A value of an expanded type is created as soon as an entity of that type exists, so the
         class must be effective: an expanded class cannot be deferred.""",
@@ -1073,7 +1150,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         expanded class AMOUNT
         """,
-        "Make the class effective, or make it a reference class if it is meant to be inherited."),
+        "Make the class effective, or make it a reference class if it is meant to be inherited.",
+    ),
     "VTEC(2)": _x(
         """Values of an expanded type are created without arguments (when a local or an attribute of
         that type comes into existence), so `default_create` must be one of its creation
@@ -1088,7 +1166,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         create
             default_create, make
         """,
-        "List `default_create` among the creation procedures (redefine it to set the fields)."),
+        "List `default_create` among the creation procedures (redefine it to set the fields).",
+    ),
     "VFFD(7)": _x(
         """A once function computes its result once and shares it, so its type cannot depend on the
         object it is called on: no formal generic parameter and no `like Current` in it. A
@@ -1107,7 +1186,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 end
         end
         """,
-        "Make the once per object, or give the function a type that does not depend on the object."),
+        "Make the once per object, or give the function a type that does not depend on the object.",
+    ),
     "VGCP(2)": _x(
         """Every name in a `create` clause must be a procedure of the class: the creation procedure
         that initialises new objects. A function, an attribute or an unknown name cannot create.""",
@@ -1119,7 +1199,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         create
             make, make_with_count
         """,
-        "List procedures only; write a procedure that sets the attribute if you need one."),
+        "List procedures only; write a procedure that sets the attribute if you need one.",
+    ),
     "VGCP(3)": _x(
         """A creation procedure is listed once: the same name in two creation clauses (or twice in
         one) is a mistake, usually left over from editing the export of the clause.""",
@@ -1133,7 +1214,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         create {ANY}
             make
         """,
-        "Keep one clause naming the procedure, with the clients it is meant for."),
+        "Keep one clause naming the procedure, with the clients it is meant for.",
+    ),
     "VOMB(1)": _x(
         """`inspect` compares its expression with constant values, so the expression must be of an
         integer, natural, character or string type; reals and references cannot be inspected.""",
@@ -1147,7 +1229,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             stop
         end
         """,
-        "Use a conditional for other types, or inspect an integer computed from the value."),
+        "Use a conditional for other types, or inspect an integer computed from the value.",
+    ),
     "VAVE": _x(
         """A loop variant proves that the loop ends: it is an INTEGER expression that stays
         non-negative and decreases at each iteration, so it must be of an integer type.""",
@@ -1165,7 +1248,8 @@ EXPLANATIONS: dict[str, Explanation] = {
             steps
         end
         """,
-        "Count the remaining iterations with an integer and use that as the variant."),
+        "Count the remaining iterations with an integer and use that as the variant.",
+    ),
     "VFFD(8)": _x(
         """The result of a `once ("PROCESS")` function is shared by all processors, so its type must
         be separate (or expanded): a non-separate reference would be used by several processors as
@@ -1182,7 +1266,8 @@ EXPLANATIONS: dict[str, Explanation] = {
                 create Result.make
             end
         """,
-        "Declare the result `separate`; callers then use it through separate arguments or blocks."),
+        "Declare the result `separate`; callers then use it through separate arguments or blocks.",
+    ),
     "VAPE": _x(
         """A precondition is what a client must make true before a call, so every client that may
         call the routine must be able to test it: a feature called (unqualified) in the
@@ -1195,7 +1280,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         feature withdraw (n: INTEGER) require n <= balance do balance := balance - n end
         feature balance: INTEGER
         """,
-        "`balance` is exported as widely as `withdraw`, so a client can check `n <= balance` first."),
+        "`balance` is exported as widely as `withdraw`, so a client can check `n <= balance` first.",
+    ),
     "VSRT": _x(
         """The root class is the type of the object the program starts with: the system creates it
         before any code runs, so it must be an effective (not deferred) class without generic
@@ -1206,7 +1292,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         class APPLICATION create make feature make do end end
         """,
-        "The root class is effective now; for a generic class, make a non-generic heir the root."),
+        "The root class is effective now; for a generic class, make a non-generic heir the root.",
+    ),
     "VSRP(1)": _x(
         """The root procedure (the .ecf's `feature` of `<root>`, or `--root CLASS.feature`) is how the
         system creates the root object, so it must be one of the root class's creation
@@ -1218,7 +1305,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         class APPLICATION create make, start feature start do end make do end end
         """,
-        "`start` is listed in the `create` clause, so it can create the root object."),
+        "`start` is listed in the `create` clause, so it can create the root object.",
+    ),
     "VSRP(2)": _x(
         """Nothing calls the root procedure but the system when the program starts, and it has no
         values to pass: the root procedure takes no arguments.""",
@@ -1228,7 +1316,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         make do print ((create {ARGUMENTS_32}).argument_count) end
         """,
-        "The root procedure takes no argument; command-line arguments come from ARGUMENTS_32."),
+        "The root procedure takes no argument; command-line arguments come from ARGUMENTS_32.",
+    ),
     "VSRP(3)": _x(
         """Nothing could establish a precondition of the root procedure before the program starts,
         so the root procedure has none.""",
@@ -1238,20 +1327,21 @@ EXPLANATIONS: dict[str, Explanation] = {
         """
         make do if is_ready then run end end
         """,
-        "The condition is tested in the body instead of being required of a caller that does not exist."),
+        "The condition is tested in the body instead of being required of a caller that does not exist.",
+    ),
 }
 # VUAR(2) and VJAR also cover their SCOOP conditions (separate to non-separate); see their rule text.
 
 ALIASES: dict[str, str] = {
     # Gobo's finer SCOOP conditions, mapped by meaning (DESIGN section 4). Gobo prints the V1SE ones
     # as V1SE-G1 .. V1SE-G3; the spelling V1SE-1G .. V1SE-3G is accepted too.
-    "VUTA-4G": "VUTA(3)",   # call on an uncontrolled separate target
-    "VUAR-3G": "VUAR(3)",   # reference actual of a separate call needs a separate formal
-    "VUAR-4G": "VUAR(4)",   # expanded actual of a separate call holds non-separate references
-    "V1SE-G1": "FRESH_IDENTIFIER",   # two names of one separate block are the same
+    "VUTA-4G": "VUTA(3)",  # call on an uncontrolled separate target
+    "VUAR-3G": "VUAR(3)",  # reference actual of a separate call needs a separate formal
+    "VUAR-4G": "VUAR(4)",  # expanded actual of a separate call holds non-separate references
+    "V1SE-G1": "FRESH_IDENTIFIER",  # two names of one separate block are the same
     "V1SE-1G": "FRESH_IDENTIFIER",
-    "V1SE-G2": "FRESH_IDENTIFIER",   # a separate-block name clashes with another entity
+    "V1SE-G2": "FRESH_IDENTIFIER",  # a separate-block name clashes with another entity
     "V1SE-2G": "FRESH_IDENTIFIER",
-    "V1SE-G3": "V1SE",   # a separate-block expression is not of a separate (reference) type
+    "V1SE-G3": "V1SE",  # a separate-block expression is not of a separate (reference) type
     "V1SE-3G": "V1SE",
 }

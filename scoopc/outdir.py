@@ -6,6 +6,7 @@ else (bytecode caches aside); otherwise nothing is touched and the user gets a u
 the files the marker lists are removed, so a file scoopc did not write is never deleted or
 overwritten, whatever `-o` names (a sources folder, the home directory, `.`).
 """
+
 from __future__ import annotations
 
 import json
@@ -36,17 +37,23 @@ def check(folder: Path):
     if not folder.exists() and not folder.is_symlink():
         return None
     if folder.is_symlink() or not folder.is_dir():
-        raise UsageError(f"{folder} exists and is not a folder scoopc wrote: it is left as it is; "
-                         f"choose another -o folder or move it away")
+        raise UsageError(
+            f"{folder} exists and is not a folder scoopc wrote: it is left as it is; "
+            f"choose another -o folder or move it away"
+        )
     written = _written(folder)
     if written is None:
-        raise UsageError(f"{folder} exists and was not written by scoopc (it has no {MARKER} file): it is left "
-                         f"as it is; choose another -o folder, or remove it yourself")
+        raise UsageError(
+            f"{folder} exists and was not written by scoopc (it has no {MARKER} file): it is left "
+            f"as it is; choose another -o folder, or remove it yourself"
+        )
     foreign = sorted(str(p.relative_to(folder)) for p in _files(folder) if _relative(p, folder) not in written)
     if foreign:
         shown = ", ".join(foreign[:5]) + (", ..." if len(foreign) > 5 else "")
-        raise UsageError(f"{folder} holds files scoopc did not write ({shown}): nothing was changed; move them "
-                         f"away or choose another -o folder")
+        raise UsageError(
+            f"{folder} holds files scoopc did not write ({shown}): nothing was changed; move them "
+            f"away or choose another -o folder"
+        )
     return written
 
 

@@ -3,6 +3,7 @@
 Project (project.py) -> Parsed (this module: one ParsedUnit per file) -> later stages.
 Stages produce diagnostics; only the CLI renders them.
 """
+
 from __future__ import annotations
 
 import gc
@@ -22,7 +23,7 @@ if TYPE_CHECKING:
 @dataclass
 class ParsedUnit:
     source: SourceFile
-    tree: object | None          # syntax.ClassDeclaration, None when the file has syntax errors
+    tree: object | None  # syntax.ClassDeclaration, None when the file has syntax errors
 
 
 @dataclass
@@ -99,8 +100,13 @@ def without_gc_pauses():
             gc.enable()
 
 
-def check_project(project: Project, use_cache: bool = True, library_bodies: bool | None = None,
-                  parsed: Parsed | None = None, progress=None) -> Checked:
+def check_project(
+    project: Project,
+    use_cache: bool = True,
+    library_bodies: bool | None = None,
+    parsed: Parsed | None = None,
+    progress=None,
+) -> Checked:
     """Everything `scoopc check` verifies: syntax (unless `parsed` is given), then the semantic
     checker over the project's classes and the standard library. Library bodies are checked unless
     they come from the cache. `progress(text)` hears of slow steps."""
@@ -108,8 +114,7 @@ def check_project(project: Project, use_cache: bool = True, library_bodies: bool
         return _check_project(project, use_cache, library_bodies, parsed or parse_project(project), progress)
 
 
-def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed,
-                   progress) -> Checked:
+def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed, progress) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
     from .semantics import library
 
@@ -130,8 +135,7 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
     if library_bodies is None:
         library_bodies = not use_cache
     root = (project.root.class_name, project.root.creation) if project.root is not None else None
-    result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base,
-                             root=root)
+    result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base, root=root)
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)
     checked.diagnostics.sort(key=diagnostics.sort_key)

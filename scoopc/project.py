@@ -3,6 +3,7 @@
 A Project lists the user's source files, the root named by an .ecf, the settings we honour and
 notes for what we ignore. The standard library is added by later stages, not here.
 """
+
 from __future__ import annotations
 
 import os
@@ -32,9 +33,9 @@ class Root:
 class Settings:
     """What an .ecf (or the command line) asks of the compiler."""
 
-    assertions: str | None = None        # "all" | "require" | "none"; None: the tool's default
-    void_safety: str | None = None       # "none" | "conformance" | "initialization" | "transitional" | "all"
-    concurrency: str | None = None       # "scoop" | "thread" | "none"
+    assertions: str | None = None  # "all" | "require" | "none"; None: the tool's default
+    void_safety: str | None = None  # "none" | "conformance" | "initialization" | "transitional" | "all"
+    concurrency: str | None = None  # "scoop" | "thread" | "none"
 
 
 @dataclass
@@ -71,8 +72,13 @@ def collect(paths: list[str], target: str | None = None) -> Project:
     return project
 
 
-def _add_cluster(project: Project, directory: Path, recursive: bool,
-                 excludes: tuple[re.Pattern, ...] = (), includes: tuple[re.Pattern, ...] = ()) -> None:
+def _add_cluster(
+    project: Project,
+    directory: Path,
+    recursive: bool,
+    excludes: tuple[re.Pattern, ...] = (),
+    includes: tuple[re.Pattern, ...] = (),
+) -> None:
     pattern = "**/*.e" if recursive else "*.e"
     for file in sorted(directory.glob(pattern)):
         parts = file.relative_to(directory).parts
@@ -90,6 +96,7 @@ def _excluded(parts: tuple[str, ...], excludes: tuple[re.Pattern, ...], includes
 
 
 # --- .ecf ----------------------------------------------------------------------------------
+
 
 def _local(tag: str) -> str:
     """An element's tag without its XML namespace."""
@@ -129,9 +136,13 @@ def _read_ecf(project: Project, path: Path, target_name: str | None) -> None:
 def _choose_target(project: Project, path: Path, targets: dict, wanted: str | None):
     if wanted is not None:
         if wanted not in targets:
-            project.errors.append(diagnostics.make(
-                "ECF", _ecf_span(path),
-                reason=f"{path} has no target `{wanted}`; its targets are: {', '.join(targets)}"))
+            project.errors.append(
+                diagnostics.make(
+                    "ECF",
+                    _ecf_span(path),
+                    reason=f"{path} has no target `{wanted}`; its targets are: {', '.join(targets)}",
+                )
+            )
             return None
         return targets[wanted]
     concrete = [t for t in targets.values() if t.get("abstract", "false").lower() != "true"]
@@ -201,8 +212,9 @@ def _patterns(element: ElementTree.Element, kind: str) -> tuple[re.Pattern, ...]
 def _read_cluster(project: Project, ecf: Path, element: ElementTree.Element, base: Path) -> None:
     location = _expand_location(element.get("location", "."), base)
     if not location.is_dir():
-        project.errors.append(diagnostics.make(
-            "ECF", _ecf_span(ecf), reason=f"cluster `{element.get('name')}`: no directory {location}"))
+        project.errors.append(
+            diagnostics.make("ECF", _ecf_span(ecf), reason=f"cluster `{element.get('name')}`: no directory {location}")
+        )
         return
     recursive = element.get("recursive", "false").lower() == "true"
     _add_cluster(project, location, recursive, _patterns(element, "exclude"), _patterns(element, "include"))
@@ -218,8 +230,12 @@ def _read_library(project: Project, ecf: Path, element: ElementTree.Element) -> 
         return  # the standard library is always available
     if name in OWN_LIBRARIES or stem in OWN_LIBRARIES:
         return
-    _note(project, ecf, f"library `{element.get('name')}` ({element.get('location')}) is not available; "
-                        "only EiffelBase (our stdlib) and Roboscoop are")
+    _note(
+        project,
+        ecf,
+        f"library `{element.get('name')}` ({element.get('location')}) is not available; "
+        "only EiffelBase (our stdlib) and Roboscoop are",
+    )
 
 
 def _read_option(project: Project, element: ElementTree.Element) -> None:

@@ -3,6 +3,7 @@
 Input: paths or text. Output: SourceFile (text plus line index) and Span values.
 Lines and columns are 1-based; columns count characters, a tab counting as one.
 """
+
 from __future__ import annotations
 
 import bisect
@@ -12,7 +13,7 @@ import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 
-MAX_SOURCE_BYTES = 16 * 2**20       # no class text is this long; a larger file is a mistake
+MAX_SOURCE_BYTES = 16 * 2**20  # no class text is this long; a larger file is a mistake
 
 
 def _open_regular(path: str, flags: int) -> int:

@@ -3,6 +3,7 @@
 Markers: a line of an Eiffel test file that ends with `-- E: CODE` (several codes separated by
 spaces; `CODE@COL` also pins the column) expects exactly those diagnostics on that line.
 """
+
 from __future__ import annotations
 
 import re
@@ -47,8 +48,11 @@ def actual_diagnostics(found, expected: Counter) -> Counter:
 
 
 def describe(entries: Counter) -> str:
-    return "\n".join(f"  {f}:{line}{':' + str(c) if c else ''}: {code}"
-                     for (f, line, code, c), n in sorted(entries.items(), key=str) for _ in range(n))
+    return "\n".join(
+        f"  {f}:{line}{':' + str(c) if c else ''}: {code}"
+        for (f, line, code, c), n in sorted(entries.items(), key=str)
+        for _ in range(n)
+    )
 
 
 def assert_markers(files: list[Path], found) -> None:
@@ -58,8 +62,11 @@ def assert_markers(files: list[Path], found) -> None:
     missing, unexpected = expected - actual, actual - expected
     if missing or unexpected:
         rendered = "\n".join(str(d.span) + ": " + d.code + ": " + d.message for d in found)
-        pytest.fail(f"missing diagnostics:\n{describe(missing)}\nunexpected diagnostics:\n{describe(unexpected)}"
-                    f"\nall reported:\n{rendered}", pytrace=False)
+        pytest.fail(
+            f"missing diagnostics:\n{describe(missing)}\nunexpected diagnostics:\n{describe(unexpected)}"
+            f"\nall reported:\n{rendered}",
+            pytrace=False,
+        )
 
 
 def check_golden(request, path: Path, actual: str) -> None:
@@ -78,13 +85,40 @@ def case_id(path: Path, base: Path) -> str:
     return path.relative_to(base).as_posix()
 
 
-def run_on_simulator(paths, world=None, *, duration=None, argv=(), namespace=None, goal=None, png=None, gif=None,
-                     record=None, realtime=False, stdout=None, stderr=None, root=None):
+def run_on_simulator(
+    paths,
+    world=None,
+    *,
+    duration=None,
+    argv=(),
+    namespace=None,
+    goal=None,
+    png=None,
+    gif=None,
+    record=None,
+    realtime=False,
+    stdout=None,
+    stderr=None,
+    root=None,
+):
     """Compile (cached) and run the program at `paths` on the in-process simulator, through the
     Python API. Returns the RunResult, whose `sim` is the Simulator after the run."""
     import scoopc
 
     paths = [str(paths)] if isinstance(paths, (str, Path)) else [str(p) for p in paths]
-    return scoopc.run(paths, list(argv), robot="sim", world=world, duration=duration, namespace=namespace,
-                      goal=goal, png=png, gif=gif, record=record, realtime=realtime, stdout=stdout,
-                      stderr=stderr, root=root)
+    return scoopc.run(
+        paths,
+        list(argv),
+        robot="sim",
+        world=world,
+        duration=duration,
+        namespace=namespace,
+        goal=goal,
+        png=png,
+        gif=gif,
+        record=record,
+        realtime=realtime,
+        stdout=stdout,
+        stderr=stderr,
+        root=root,
+    )

@@ -1,6 +1,7 @@
 """The Python API (scoopc.check, scoopc.compile, scoopc.run; docs/API.md): the same results as the
 command line on the samples, result records instead of printed diagnostics, UsageError for
 mistakes in the call."""
+
 import io
 import os
 import subprocess
@@ -36,8 +37,14 @@ end
 
 def cli(*argv, cwd=None):
     """`python -m scoopc ARGV` in a fresh interpreter: (status, stdout, stderr)."""
-    done = subprocess.run([sys.executable, "-m", "scoopc", *map(str, argv)], capture_output=True, text=True,
-                          cwd=cwd or ROOT, timeout=300, env=dict(os.environ))
+    done = subprocess.run(
+        [sys.executable, "-m", "scoopc", *map(str, argv)],
+        capture_output=True,
+        text=True,
+        cwd=cwd or ROOT,
+        timeout=300,
+        env=dict(os.environ),
+    )
     return done.returncode, done.stdout, done.stderr
 
 
@@ -57,7 +64,7 @@ def test_run_agrees_with_the_command_line(sample):
     result = scoopc.run([sample], virtual_clock=True, stdout=out, stderr=err)
     status, cli_out, _ = cli("run", sample, "--virtual-clock")
     assert result.status == status == Exit.OK, err.getvalue()
-    assert sorted(out.getvalue().splitlines()) == sorted(cli_out.splitlines())   # concurrent: order may vary
+    assert sorted(out.getvalue().splitlines()) == sorted(cli_out.splitlines())  # concurrent: order may vary
 
 
 def test_a_robot_sample_runs_on_the_simulator_through_the_api():
@@ -65,7 +72,7 @@ def test_a_robot_sample_runs_on_the_simulator_through_the_api():
     result = scoopc.run([SAMPLES / "first_controller"], duration=5, stdout=out, stderr=err)
     assert result.status == Exit.OK, err.getvalue()
     assert result.sim is not None and result.sim.time == pytest.approx(5.0) and result.stopped_by == "duration"
-    assert result.png is None                          # no picture unless asked (png=True or a path)
+    assert result.png is None  # no picture unless asked (png=True or a path)
 
 
 def test_compile_writes_a_runnable_package(tmp_path):
@@ -73,8 +80,9 @@ def test_compile_writes_a_runnable_package(tmp_path):
     assert result.status == Exit.OK and result.errors == []
     assert result.package == tmp_path / "out" / "producer_consumer"
     assert result.library == tmp_path / "out" / "eiffel_base"
-    done = subprocess.run([sys.executable, "-m", "producer_consumer"], cwd=tmp_path / "out", capture_output=True,
-                          text=True, timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-m", "producer_consumer"], cwd=tmp_path / "out", capture_output=True, text=True, timeout=120
+    )
     assert done.returncode == 0 and "consumers took items adding up to" in done.stdout, done.stderr
 
 
@@ -85,25 +93,36 @@ def test_source_errors_come_back_as_diagnostics(tmp_path, capsys):
         assert result.status == Exit.SOURCE
         assert [d.code for d in result.diagnostics if d.is_error] == ["VEEN"]
     assert not (tmp_path / "out").exists()
-    assert capsys.readouterr() == ("", "")             # the API prints nothing of its own
+    assert capsys.readouterr() == ("", "")  # the API prints nothing of its own
 
 
-@pytest.mark.parametrize("call, message", [
-    (lambda: scoopc.check([]), "no PATH given"),
-    (lambda: scoopc.check(["/nonexistent/x.e"]), "no such file or directory"),
-    (lambda: scoopc.run([SAMPLES / "producer_consumer"], assertions="some"), "assertions must be one of"),
-    (lambda: scoopc.run([SAMPLES / "producer_consumer"], robot="tank"), "robot must be sim, ros2 or none"),
-    (lambda: scoopc.run([SAMPLES / "producer_consumer"], root="NOPE"), "root class NOPE is not among"),
-])
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda: scoopc.check([]), "no PATH given"),
+        (lambda: scoopc.check(["/nonexistent/x.e"]), "no such file or directory"),
+        (lambda: scoopc.run([SAMPLES / "producer_consumer"], assertions="some"), "assertions must be one of"),
+        (lambda: scoopc.run([SAMPLES / "producer_consumer"], robot="tank"), "robot must be sim, ros2 or none"),
+        (lambda: scoopc.run([SAMPLES / "producer_consumer"], root="NOPE"), "root class NOPE is not among"),
+    ],
+)
 def test_usage_mistakes_raise_usage_error(call, message):
     with pytest.raises(scoopc.UsageError, match=message):
         call()
 
 
 def test_importing_scoopc_loads_no_compiler():
-    done = subprocess.run([sys.executable, "-c", "import sys, scoopc; print(scoopc.__version__); "
-                           "print(sorted(m for m in sys.modules if m.startswith('scoopc')))"],
-                          capture_output=True, text=True, timeout=60)
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-c",
+            "import sys, scoopc; print(scoopc.__version__); "
+            "print(sorted(m for m in sys.modules if m.startswith('scoopc')))",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     version, loaded = done.stdout.splitlines()
     assert version == scoopc.__version__ and loaded == "['scoopc', 'scoopc.version']"
 

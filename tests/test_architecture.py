@@ -1,4 +1,5 @@
 """docs/ARCHITECTURE.md stays true: every repository path it names exists."""
+
 import re
 
 from harness import ROOT

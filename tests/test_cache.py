@@ -1,6 +1,7 @@
 """scoopc's cache repairs itself: a cached package with a module deleted, truncated or garbled, or
 with damaged bytecode, is compiled again (a note on stderr when it had to be loaded to find out),
 never an internal error; a cache folder scoopc cannot write is a usage error (exit 2)."""
+
 import os
 import shutil
 import subprocess
@@ -44,7 +45,7 @@ def warm(tmp_path_factory):
 @pytest.fixture
 def cache(warm, tmp_path, monkeypatch):
     shutil.copytree(warm / "cache", tmp_path / "cache")
-    for meta in (tmp_path / "cache").glob("programs/*/program.json"):   # it names its library's folder
+    for meta in (tmp_path / "cache").glob("programs/*/program.json"):  # it names its library's folder
         meta.write_text(meta.read_text().replace(str(warm / "cache"), str(tmp_path / "cache")))
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path / "cache"))
     return tmp_path / "cache"
@@ -52,8 +53,13 @@ def cache(warm, tmp_path, monkeypatch):
 
 def run(capsys, warm, *options):
     """`scoopc run` in a fresh interpreter (this one has the library's modules loaded already)."""
-    done = subprocess.run([sys.executable, "-m", "scoopc", "run", *options, str(warm / "hello.e")],
-                          capture_output=True, text=True, timeout=300, env=dict(os.environ))
+    done = subprocess.run(
+        [sys.executable, "-m", "scoopc", "run", *options, str(warm / "hello.e")],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        env=dict(os.environ),
+    )
     return done.returncode, done.stdout, done.stderr
 
 
@@ -77,13 +83,13 @@ def test_damaged_library_bytecode_is_compiled_again(cache, warm, capsys):
     truncate(pyc, 100)
     code, out, err = run(capsys, warm)
     assert (code, out) == (0, "hi\n") and NOTE in err and "Error" not in err
-    assert run(capsys, warm) == (0, "hi\n", "")          # repaired for good
+    assert run(capsys, warm) == (0, "hi\n", "")  # repaired for good
 
 
 @pytest.mark.slow
 def test_a_deleted_library_module_is_compiled_again(cache, warm, capsys):
     (library(cache) / "string_8.py").unlink()
-    assert run(capsys, warm) == (0, "hi\n", "")          # seen before loading: no note needed
+    assert run(capsys, warm) == (0, "hi\n", "")  # seen before loading: no note needed
     assert (library(cache) / "string_8.py").exists()
 
 
@@ -100,7 +106,7 @@ def test_a_garbled_program_module_of_the_same_size_is_compiled_again(cache, warm
 @pytest.mark.slow
 def test_no_cache_compiles_the_library_again(cache, warm, capsys):
     manifest = library(cache) / "_manifest.json"
-    manifest.write_text(manifest.read_text())          # a mark the rebuild removes
+    manifest.write_text(manifest.read_text())  # a mark the rebuild removes
     before = manifest.stat().st_mtime_ns
     assert run(capsys, warm, "--no-cache")[:2] == (0, "hi\n")
     assert library(cache).joinpath("_manifest.json").stat().st_mtime_ns != before

@@ -1,4 +1,5 @@
 """The command line: help, exit codes, diagnostics on stderr, .ecf projects (DESIGN section 8)."""
+
 import os
 import subprocess
 import sys
@@ -47,12 +48,15 @@ def test_no_command_is_a_usage_error(capsys):
     assert exited.value.code == Exit.USAGE
 
 
-@pytest.mark.parametrize("argv, fragment", [
-    (["check", "no/such/file.e"], "no such file or directory: no/such/file.e"),
-    (["check", str(ROOT / "README.md")], "expected a .e file"),
-    (["check"], "needs at least one PATH"),
-    (["check", "--explain", "NO-SUCH-CODE"], "unknown diagnostic code"),
-])
+@pytest.mark.parametrize(
+    "argv, fragment",
+    [
+        (["check", "no/such/file.e"], "no such file or directory: no/such/file.e"),
+        (["check", str(ROOT / "README.md")], "expected a .e file"),
+        (["check"], "needs at least one PATH"),
+        (["check", "--explain", "NO-SUCH-CODE"], "unknown diagnostic code"),
+    ],
+)
 def test_usage_errors_exit_2_with_a_message(capsys, argv, fragment):
     code, out, err = run(capsys, *argv)
     assert code == Exit.USAGE and fragment in err and out == ""
@@ -149,8 +153,9 @@ def test_internal_errors_are_not_blamed_on_the_user(capsys, monkeypatch):
 
 
 def test_the_console_script_runs():
-    done = subprocess.run([sys.executable, "-m", "scoopc", "check", str(SAMPLE)],
-                          capture_output=True, text=True, cwd=ROOT, timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-m", "scoopc", "check", str(SAMPLE)], capture_output=True, text=True, cwd=ROOT, timeout=120
+    )
     assert done.returncode == 0, done.stderr
 
 
@@ -163,8 +168,10 @@ def test_malformed_ecf_is_located_at_the_xml_error(capsys, tmp_path):
 def test_semantic_errors_exit_1_each_with_its_code_and_a_hint(capsys, tmp_path):
     (tmp_path / "robot.e").write_text(
         "class ROBOT\ncreate\n\tmake\nfeature\n\tmotor: separate ROBOT\n\tmake\n\t\tdo\n"
-        "\t\t\tcreate motor.make\n\t\t\tmotor.stop\n\t\t\tcount := \"x\"\n\t\tend\n"
-        "\tstop do end\n\tcount: INTEGER\nend\n", encoding="utf-8")
+        '\t\t\tcreate motor.make\n\t\t\tmotor.stop\n\t\t\tcount := "x"\n\t\tend\n'
+        "\tstop do end\n\tcount: INTEGER\nend\n",
+        encoding="utf-8",
+    )
     code, _, err = run(capsys, "check", "--format", "pretty", str(tmp_path))
     assert code == Exit.SOURCE
     assert "robot.e:9:4: error VUTA(3)" in err and "robot.e:10:13: error VJAR" in err
@@ -173,12 +180,15 @@ def test_semantic_errors_exit_1_each_with_its_code_and_a_hint(capsys, tmp_path):
 
 @pytest.mark.skipif(not hasattr(os, "mkfifo"), reason="no FIFOs on this platform")
 def test_a_fifo_a_device_and_a_huge_file_are_reported_not_read(tmp_path, capsys):
-    os.mkfifo(tmp_path / "fifo.e")                      # reading it would block for ever
-    (tmp_path / "zero.e").symlink_to("/dev/zero")       # reading it would never end
+    os.mkfifo(tmp_path / "fifo.e")  # reading it would block for ever
+    (tmp_path / "zero.e").symlink_to("/dev/zero")  # reading it would never end
     with open(tmp_path / "huge.e", "wb") as huge:
-        huge.truncate(17 * 2**20)                       # sparse: no disk used
-    for name, reason in (("fifo.e", "not a regular file"), ("zero.e", "not a regular file"),
-                         ("huge.e", "larger than 16 MiB")):
+        huge.truncate(17 * 2**20)  # sparse: no disk used
+    for name, reason in (
+        ("fifo.e", "not a regular file"),
+        ("zero.e", "not a regular file"),
+        ("huge.e", "larger than 16 MiB"),
+    ):
         code, out, err = run(capsys, "check", str(tmp_path / name), "--format", "short")
         assert code == Exit.SOURCE and out == ""
         assert err.startswith(f"{tmp_path / name}:1:1: error SOURCE: cannot read {tmp_path / name}: {reason}")

@@ -1,5 +1,6 @@
 """`scoopc check --explain CODE`: every code has its rule, a wrong example and a fix; Gobo's SCOOP
 codes are aliases; the explanation table keeps up with the diagnostics and the error cases."""
+
 import pytest
 
 from scoopc import cli, messages
@@ -9,8 +10,18 @@ from scoopc.explanations import ALIASES, EXPLANATIONS
 
 from harness import TESTS
 
-PLAN_SCOOP_CODES = ["VUTA(3)", "VUAR(2)", "VJAR", "VUAR(3)", "VUAR(4)", "VUER", "FRESH_IDENTIFIER", "V1SE",
-                    "V1SE(3)", "VFFD(8)"]
+PLAN_SCOOP_CODES = [
+    "VUTA(3)",
+    "VUAR(2)",
+    "VJAR",
+    "VUAR(3)",
+    "VUAR(4)",
+    "VUER",
+    "FRESH_IDENTIFIER",
+    "V1SE",
+    "V1SE(3)",
+    "VFFD(8)",
+]
 
 
 def run(capsys, *argv):

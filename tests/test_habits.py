@@ -1,6 +1,7 @@
 """The habits that keep the code the way it is (issue 23): the runtime's API is fully typed and
 checked strictly by mypy, and the tree passes ruff's lint. Both tools read their settings from
 pyproject.toml; each test fails with the tool's own report."""
+
 import subprocess
 import sys
 from pathlib import Path
@@ -18,8 +19,7 @@ LINTED = ("scoopc", "tests", "benchmarks", "tools")
 
 
 def _run(args: list[str], timeout: float) -> subprocess.CompletedProcess[str]:
-    return subprocess.run([sys.executable, "-m", *args], cwd=ROOT, capture_output=True,
-                          text=True, timeout=timeout)
+    return subprocess.run([sys.executable, "-m", *args], cwd=ROOT, capture_output=True, text=True, timeout=timeout)
 
 
 def _present(package: str) -> bool:

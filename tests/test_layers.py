@@ -1,5 +1,6 @@
 """No cycles between scoopc's packages: the import graph (function-level imports included) goes
 down the layers docs/ARCHITECTURE.md draws, and every module imports on its own."""
+
 import ast
 import os
 import re
@@ -45,9 +46,9 @@ def imports(name: str, path) -> set[str]:
         if isinstance(node, ast.Import):
             found.update(alias.name for alias in node.names)
         elif isinstance(node, ast.ImportFrom):
-            base = ".".join(here[:len(here) - node.level + 1]) if node.level else ""
+            base = ".".join(here[: len(here) - node.level + 1]) if node.level else ""
             module = ".".join(p for p in (base, node.module) if p)
-            for alias in node.names:        # `from package import module` imports the module
+            for alias in node.names:  # `from package import module` imports the module
                 sub = f"{module}.{alias.name}"
                 found.add(sub if sub in known else module)
     return {m for m in found if m == "scoopc" or m.startswith("scoopc.")}
@@ -78,7 +79,8 @@ def test_every_import_goes_down_the_layers():
             if theirs != mine and rank[theirs] > rank[mine]:
                 wrong[f"{mine} ({name})"].add(theirs)
     assert not wrong, "imports that go up the layers of docs/ARCHITECTURE.md: " + "; ".join(
-        f"{k} -> {', '.join(sorted(v))}" for k, v in sorted(wrong.items()))
+        f"{k} -> {', '.join(sorted(v))}" for k, v in sorted(wrong.items())
+    )
 
 
 @pytest.mark.slow
@@ -92,6 +94,7 @@ def test_every_module_imports_on_its_own():
 
 def _import_alone(name: str) -> str:
     """'' when `import name` works in a fresh interpreter, else the last line of its error."""
-    done = subprocess.run([sys.executable, "-c", f"import {name}"], capture_output=True, text=True, cwd=ROOT,
-                          timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-c", f"import {name}"], capture_output=True, text=True, cwd=ROOT, timeout=120
+    )
     return "" if done.returncode == 0 else (done.stderr.strip().splitlines() or ["?"])[-1]

@@ -1,5 +1,6 @@
 """`scoopc compile -o DIR` never deletes or overwrites what scoopc did not write (outdir.py): a folder
 without scoopc's marker, or with files the marker does not list, is left exactly as it was."""
+
 import pytest
 
 from scoopc import cli, outdir
@@ -45,7 +46,7 @@ def test_compiling_into_the_sources_parent_keeps_the_sources(project, capsys):
     code, err = compile_(capsys, "hello", ".")
     assert code == 2
     assert "hello exists and was not written by scoopc" in err and "Traceback" not in err
-    assert snapshot(project) == before                # nothing deleted, nothing written
+    assert snapshot(project) == before  # nothing deleted, nothing written
 
 
 def test_an_unmarked_eiffel_base_folder_is_left_alone(project, capsys):
@@ -53,7 +54,7 @@ def test_an_unmarked_eiffel_base_folder_is_left_alone(project, capsys):
     (project / "out" / "eiffel_base" / "mine.py").write_text("x = 1\n")
     code, err = compile_(capsys, "hello", "out")
     assert code == 2 and "eiffel_base exists and was not written by scoopc" in err
-    assert not (project / "out" / "hello").exists()      # checked before anything is written
+    assert not (project / "out" / "hello").exists()  # checked before anything is written
     assert (project / "out" / "eiffel_base" / "mine.py").read_text() == "x = 1\n"
 
 
@@ -62,8 +63,8 @@ def test_a_second_compile_replaces_its_own_output(project, capsys):
     package = project / "out" / "hello"
     assert (package / outdir.MARKER).exists() and (project / "out" / "eiffel_base" / outdir.MARKER).exists()
     written = outdir.check(package)
-    (package / "stale.py").write_text("")             # pretend an earlier compile wrote a module ...
-    outdir.mark(package)                              # ... and listed it
+    (package / "stale.py").write_text("")  # pretend an earlier compile wrote a module ...
+    outdir.mark(package)  # ... and listed it
     assert outdir.check(package) == written | {"stale.py"}
     assert compile_(capsys, "hello", "out")[0] == 0
     assert not (package / "stale.py").exists() and (package / "hello.py").exists()

@@ -1,5 +1,6 @@
 """Packaging: the wheel built from the repository carries every module, the grammar and every
 stdlib .e file, so a regular (non-editable) install works as the checkout does."""
+
 import subprocess
 import sys
 import zipfile
@@ -26,8 +27,23 @@ def wheel_names(tmp_path_factory):
     pytest.importorskip("setuptools")
     pytest.importorskip("wheel")
     out = tmp_path_factory.mktemp("wheel")
-    done = subprocess.run([sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-build-isolation",
-                           "--quiet", "-w", str(out), str(ROOT)], capture_output=True, text=True, timeout=300)
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "pip",
+            "wheel",
+            "--no-deps",
+            "--no-build-isolation",
+            "--quiet",
+            "-w",
+            str(out),
+            str(ROOT),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert done.returncode == 0, done.stderr
     (wheel,) = out.glob("scoopc-*.whl")
     return set(zipfile.ZipFile(wheel).namelist())

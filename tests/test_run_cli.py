@@ -1,5 +1,6 @@
 """`scoopc compile` and `scoopc run`: root selection, exit codes, arguments and stdin, Eiffel
 traces of run-time failures, a compiled package runnable with `python -m` (DESIGN section 8)."""
+
 import os
 import subprocess
 import sys
@@ -132,9 +133,15 @@ def test_compile_writes_a_package_runnable_with_python_m(tmp_path, capsys):
     code, out, err = run(capsys, "compile", path, "-o", str(out_dir))
     assert code == 0 and out == "" and "python -m hello" in err
     assert (out_dir / "hello" / "hello.py").exists() and (out_dir / "eiffel_base" / "string_8.py").exists()
-    assert not list(out_dir.rglob("__pycache__"))      # readable output only: no bytecode copied
-    done = subprocess.run([sys.executable, "-m", "hello", "x"], cwd=out_dir, capture_output=True, text=True,
-                          env=dict(os.environ), timeout=120)
+    assert not list(out_dir.rglob("__pycache__"))  # readable output only: no bytecode copied
+    done = subprocess.run(
+        [sys.executable, "-m", "hello", "x"],
+        cwd=out_dir,
+        capture_output=True,
+        text=True,
+        env=dict(os.environ),
+        timeout=120,
+    )
     assert (done.returncode, done.stdout) == (0, "Hello, 1 arguments\nx\n"), done.stderr
 
 
@@ -159,9 +166,14 @@ def test_cached_packages_are_byte_compiled_once(tmp_path, capsys, monkeypatch):
     assert len(list((base / "__pycache__").glob("string_8.*.pyc"))) == 1
     programs = list((tmp_path / "cache").rglob("program/__pycache__/hello.*.pyc"))
     assert len(programs) == 1
-    done = subprocess.run([sys.executable, "-v", "-m", "scoopc", "run", path], capture_output=True, text=True,
-                          env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"), timeout=120)
+    done = subprocess.run(
+        [sys.executable, "-v", "-m", "scoopc", "run", path],
+        capture_output=True,
+        text=True,
+        env=dict(os.environ, PYTHONDONTWRITEBYTECODE="1"),
+        timeout=120,
+    )
     assert done.stdout == "Hello, 0 arguments\n", done.stderr[-2000:]
     loaded = [line for line in done.stderr.splitlines() if line.startswith("# code object from")]
-    assert any("eiffel_base/__pycache__/string_8." in line for line in loaded)   # the library's bytecode
-    assert any("program/__pycache__/hello." in line for line in loaded)          # the program's
+    assert any("eiffel_base/__pycache__/string_8." in line for line in loaded)  # the library's bytecode
+    assert any("program/__pycache__/hello." in line for line in loaded)  # the program's

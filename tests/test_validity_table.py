@@ -1,6 +1,7 @@
 """docs/LANGUAGE.md's table of validity codes stays honest: every row marked enforced names a
 tests/errors folder that exists and holds cases, and every code the checker or the parser's
 validity checks can report (scoopc/messages.py, syntax and input codes aside) has a row."""
+
 import re
 from pathlib import Path
 

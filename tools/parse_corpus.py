@@ -7,6 +7,7 @@ Prints one line per syntax diagnostic (`path:line:col: CODE: message`), then the
 no error. An exception inside the parser is reported as `INTERNAL` with its type and message
 (that is a parser bug, never the input's fault). Always exits 0: this is a survey, not a test.
 """
+
 from __future__ import annotations
 
 import argparse

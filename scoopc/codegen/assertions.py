@@ -5,6 +5,7 @@ inherited clause is compiled in the context of the class that wrote it (its argu
 to ours). Versions written in the library are not compiled with the program (their bodies are
 not checked then): their assertions are left out of a program class's redeclarations.
 """
+
 from __future__ import annotations
 
 import ast
@@ -13,7 +14,7 @@ from contextlib import contextmanager
 from .. import syntax
 from . import pyast as P
 
-TRUE = None        # a precondition group list standing for `True` (some version has none)
+TRUE = None  # a precondition group list standing for `True` (some version has none)
 
 
 class InheritedAssertions:
@@ -39,8 +40,11 @@ class InheritedAssertions:
         """(class info, routine body, renames) of a redeclared version, None if not compilable."""
         info = self.universe.get(version.written_in)
         body = getattr(version.decl, "body", None)
-        if info is None or (info.from_library and not getattr(self, "library_versions", False)) \
-                or not isinstance(body, syntax.RoutineBody):
+        if (
+            info is None
+            or (info.from_library and not getattr(self, "library_versions", False))
+            or not isinstance(body, syntax.RoutineBody)
+        ):
             return None
         own = [a.name.key for a in self.feature.decl.arguments]
         theirs = [a.name.key for a in getattr(version.decl, "arguments", ())]
@@ -65,8 +69,11 @@ class InheritedAssertions:
             if found is None:
                 continue
             info, body, renames = found
-            clauses = [c for c in body.precondition.clauses if c.expression is not None] \
-                if body.precondition is not None else []
+            clauses = (
+                [c for c in body.precondition.clauses if c.expression is not None]
+                if body.precondition is not None
+                else []
+            )
             inner = self.precondition_groups(version, clauses, (info, renames))
             if inner is TRUE:
                 return TRUE
@@ -105,13 +112,26 @@ class InheritedAssertions:
         if len(groups) == 1:
             context, group = groups[0]
             return self.in_context(context, lambda: [self.assertion(c, "precondition") for c in group])
-        tests = [self.in_context(context, lambda g=group: P.boolop(ast.And(), [self.x(c.expression) for c in g])
-                                 if len(g) > 1 else self.x(g[0].expression)) for context, group in groups]
+        tests = [
+            self.in_context(
+                context,
+                lambda g=group: (
+                    P.boolop(ast.And(), [self.x(c.expression) for c in g]) if len(g) > 1 else self.x(g[0].expression)
+                ),
+            )
+            for context, group in groups
+        ]
         context, group = groups[0]
         report = self.in_context(context, lambda: [self.assertion(c, "precondition") for c in group])
         tag = group[0].tag.text if group[0].tag is not None else None
-        report.append(P.expr_stmt(P.call("S.assertion_failed", [P.const("precondition"), P.const(tag),
-                                                                 self.in_context(context, lambda: self.where(group[0]))])))
+        report.append(
+            P.expr_stmt(
+                P.call(
+                    "S.assertion_failed",
+                    [P.const("precondition"), P.const(tag), self.in_context(context, lambda: self.where(group[0]))],
+                )
+            )
+        )
         return [P.if_(P.not_(P.boolop(ast.Or(), tests)), report)]
 
     def in_context(self, context, make):

@@ -1,6 +1,7 @@
 """Codegen, calls: feature calls (built-ins of basic types inlined, dynamic dispatch on values
 that may be basic, separate calls lowered onto the runtime), Precursor, static calls, creation,
 conversions and agents."""
+
 from __future__ import annotations
 
 import ast
@@ -16,8 +17,19 @@ AGENT_CLASSES = ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
 # Queries whose answer depends on the basic class of a value (asked of a formal-typed target).
 KIND_QUERIES = frozenset({"out", "generator", "generating_type", "tagged_out"})
 # Basic classes whose values are boxed when reattached to a reference type.
-BOXED = frozenset({"REAL_32", "CHARACTER_32", "INTEGER_8", "INTEGER_16", "INTEGER_64",
-                   "NATURAL_8", "NATURAL_16", "NATURAL_32", "NATURAL_64"})
+BOXED = frozenset(
+    {
+        "REAL_32",
+        "CHARACTER_32",
+        "INTEGER_8",
+        "INTEGER_16",
+        "INTEGER_64",
+        "NATURAL_8",
+        "NATURAL_16",
+        "NATURAL_32",
+        "NATURAL_64",
+    }
+)
 
 
 def is_external(feature, language: str) -> bool:
@@ -101,11 +113,11 @@ class Calls:
     # --- the call itself ---------------------------------------------------------------------------
     def call_feature(self, node, target_node, target, feature, arguments, conversion=None, static_type=None):
         if feature.name in _OWN_ARGUMENT:
-            args = [self.x(a) for a in arguments]    # `other` itself: see _OWN_ARGUMENT
+            args = [self.x(a) for a in arguments]  # `other` itself: see _OWN_ARGUMENT
         else:
             args = [self.argument(a) for a in arguments]
         if not args and feature.arguments and node in self.tables.agent_calls:
-            args = [P.const(None)]                # `p.call` for `p.call ([])`: no open operands
+            args = [P.const(None)]  # `p.call` for `p.call ([])`: no open operands
         if conversion is not None:
             target = self.convert(target_node, target, conversion)
             target_ty = conversion[1]
@@ -114,8 +126,11 @@ class Calls:
         args = self.boxed_arguments(arguments, args, feature, target_ty)
         if node in self.tables.separate_calls:
             return self.separate_call(node, target, feature, args)
-        owner = self.info.name if target_node is None else \
-            (target_ty.name if target_ty is not None and not target_ty.is_formal else None)
+        owner = (
+            self.info.name
+            if target_node is None
+            else (target_ty.name if target_ty is not None and not target_ty.is_formal else None)
+        )
         if self.is_builtin_basic(feature):
             from ..kernel import basic
 
@@ -124,20 +139,34 @@ class Calls:
             # ANY's features on a basic value (`i.twin`, `i.is_equal (j)`): the basic class's
             # own versions, by its static class (kernel/basic_dispatch.py)
             if self.is_property(feature) or feature.kind in ("attribute", "constant"):
-                return P.call("B.query_as", [P.const(target_ty.name), target, P.const(self.py_name(feature)),
-                                             P.name("here")])
-            return P.call("B.call_as", [P.const(target_ty.name), target, P.const(self.py_name(feature)),
-                                        P.tup(args), P.name("here")])
-        if target_node is not None and target_ty is not None and self.may_hold_basic(target_ty) \
-                and not self.is_basic(target_ty):
+                return P.call(
+                    "B.query_as", [P.const(target_ty.name), target, P.const(self.py_name(feature)), P.name("here")]
+                )
+            return P.call(
+                "B.call_as",
+                [P.const(target_ty.name), target, P.const(self.py_name(feature)), P.tup(args), P.name("here")],
+            )
+        if (
+            target_node is not None
+            and target_ty is not None
+            and self.may_hold_basic(target_ty)
+            and not self.is_basic(target_ty)
+        ):
             if self.is_property(feature) or feature.kind in ("attribute", "constant"):
                 if target_ty.is_formal and feature.name in KIND_QUERIES:
-                    return P.call("S.formal_query", [target, P.const(self.py_name(feature)), P.name("here"),
-                                                     self.type_desc(target_ty)])
+                    return P.call(
+                        "S.formal_query",
+                        [target, P.const(self.py_name(feature)), P.name("here"), self.type_desc(target_ty)],
+                    )
                 return P.call("B.query", [target, P.const(self.py_name(feature)), P.name("here")])
             return P.call("B.call", [target, P.const(self.py_name(feature)), P.tup(args), P.name("here")])
-        if target_node is not None and self.assertions == "all" and target_ty is not None \
-                and target_ty.name in self.program.invariant_classes and feature.kind not in ("attribute", "constant"):
+        if (
+            target_node is not None
+            and self.assertions == "all"
+            and target_ty is not None
+            and target_ty.name in self.program.invariant_classes
+            and feature.kind not in ("attribute", "constant")
+        ):
             return P.call("S.call_checked", [target, P.const(self.py_name(feature, owner)), P.tup(args)])
         return self.plain_call(target, feature, args, owner)
 
@@ -173,20 +202,23 @@ class Calls:
         info = self.universe.get(target_ty.name)
         if info is None or info.is_expanded:
             return value
-        if source.is_formal:                      # the actual generic says (at run time)
+        if source.is_formal:  # the actual generic says (at run time)
             return P.call("S.box_formal", [value, self.type_desc(source)])
         return P.call("S.box", [P.const(source.name), value])
 
     def boxed_arguments(self, arguments, args, feature, target_ty):
-        if feature is None or not any((t := self.value_type(a)) is not None and (t.name in BOXED or t.is_formal)
-                                      for a in arguments):
+        if feature is None or not any(
+            (t := self.value_type(a)) is not None and (t.name in BOXED or t.is_formal) for a in arguments
+        ):
             return args
         signature = feature.signature
         if target_ty is not None and not target_ty.is_formal and self.universe.get(target_ty.name) is not None:
             signature = member_signature(self.universe, target_ty, feature)
         formals = signature.arguments if signature is not None else ()
-        return [self.reattached(node, value, formals[i] if i < len(formals) else None)
-                for i, (node, value) in enumerate(zip(arguments, args))]
+        return [
+            self.reattached(node, value, formals[i] if i < len(formals) else None)
+            for i, (node, value) in enumerate(zip(arguments, args))
+        ]
 
     # --- separate calls ---------------------------------------------------------------------------
     def separate_call(self, node, target, feature, args):
@@ -247,8 +279,11 @@ class Calls:
             extra = [gen] if gen is not None else []
             return P.call(maker, [cls, routine, P.tup(args)] + extra)
         invariant = self.assertions == "all" and self.program_has_invariant(info)
-        return P.call("S.create", [P.name("here"), cls, gen if gen is not None else P.const(None),
-                                   P.const(creator), P.tup(args)] + ([P.const(True)] if invariant else []))
+        return P.call(
+            "S.create",
+            [P.name("here"), cls, gen if gen is not None else P.const(None), P.const(creator), P.tup(args)]
+            + ([P.const(True)] if invariant else []),
+        )
 
     def is_tuple_class(self, info) -> bool:
         return info is not None and info.name.split("@")[0] == "TUPLE" and info.from_library
@@ -289,7 +324,7 @@ class Calls:
         else:
             target, open_target = self.x(node.target), False
         slots, opened = [target], [0] if open_target else []
-        if feature is None:                       # a TUPLE label
+        if feature is None:  # a TUPLE label
             fail("agents on tuple labels are not supported", node.span)
         count = len(feature.arguments)
         operands = node.arguments if node.arguments is not None else [None] * count
@@ -300,8 +335,17 @@ class Calls:
             else:
                 slots.append(self.argument(operand))
         fn = P.call("S.dispatcher", [P.const(self.py_name(feature)), P.const(self.is_property(feature))])
-        return P.call("S.new_agent", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), fn,
-                                      P.lst(slots), P.tup([P.const(i) for i in opened])])
+        return P.call(
+            "S.new_agent",
+            [
+                P.name("here"),
+                self.class_ref(ty.name),
+                self.generics_desc(ty),
+                fn,
+                P.lst(slots),
+                P.tup([P.const(i) for i in opened]),
+            ],
+        )
 
     def x_InlineAgent(self, node):
         ty = self.type_of(node)
@@ -319,8 +363,17 @@ class Calls:
                     opened.append(index)
                 else:
                     slots.append(self.argument(operand))
-        return P.call("S.new_agent", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.name(fn_name),
-                                      P.lst(slots), P.tup([P.const(i) for i in opened])])
+        return P.call(
+            "S.new_agent",
+            [
+                P.name("here"),
+                self.class_ref(ty.name),
+                self.generics_desc(ty),
+                P.name(fn_name),
+                P.lst(slots),
+                P.tup([P.const(i) for i in opened]),
+            ],
+        )
 
     # --- run-time types ------------------------------------------------------------------------------
     def type_desc(self, ty: Ty, formals=None) -> ast.expr:
@@ -349,8 +402,7 @@ class Calls:
 # ANY's duplication and comparison features work on `other` itself: an expanded actual argument
 # is not copied to be passed (a redefined `copy` would otherwise run to pass the argument of
 # `copy`, and `standard_copy`, `standard_is_equal` would see the fields a redefined copy made).
-_OWN_ARGUMENT = frozenset({"copy", "standard_copy", "deep_copy", "is_equal", "standard_is_equal",
-                           "is_deep_equal"})
+_OWN_ARGUMENT = frozenset({"copy", "standard_copy", "deep_copy", "is_equal", "standard_is_equal", "is_deep_equal"})
 
 
 def _constant_desc(node) -> bool:

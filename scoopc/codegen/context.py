@@ -1,5 +1,6 @@
 """Codegen, shared state: the program being compiled (universe, tables, names, layouts, options)
 and, per module, what it must import and the constants it defines at module level."""
+
 from __future__ import annotations
 
 import ast
@@ -15,7 +16,7 @@ class CodegenError(Exception):
 
 @dataclass
 class Options:
-    assertions: str = "all"            # all | require | none (wait conditions always)
+    assertions: str = "all"  # all | require | none (wait conditions always)
     library_assertions: str = "require"
     base_package: str = "eiffel_base"
     package: str = "program"
@@ -28,8 +29,8 @@ class Program:
     options: Options
     naming: Naming
     layouts: dict = field(default_factory=dict)
-    leaves: dict = field(default_factory=dict)      # id(decl) -> bool
-    sources: dict = field(default_factory=dict)     # class key -> source path
+    leaves: dict = field(default_factory=dict)  # id(decl) -> bool
+    sources: dict = field(default_factory=dict)  # class key -> source path
     invariant_classes: set = field(default_factory=set)  # classes with an invariant in themselves or a descendant
     # the compiled library's SCOOP facts (dict, see scoop.library_facts); True: compute them from the
     # library's bodies (when compiling the library itself); None: none (library routines are non-leaves)
@@ -49,9 +50,9 @@ class ModuleContext:
     def __init__(self, program: Program, info):
         self.program = program
         self.info = info
-        self.parents: list[str] = []          # keys imported at the top (base classes)
-        self.others: set[str] = set()         # keys imported at the bottom
-        self.constants: list[ast.stmt] = []   # module-level assignments (positions, clause tables, types)
+        self.parents: list[str] = []  # keys imported at the top (base classes)
+        self.others: set[str] = set()  # keys imported at the bottom
+        self.constants: list[ast.stmt] = []  # module-level assignments (positions, clause tables, types)
         self._const_names: dict = {}
         self.counter = 0
 
@@ -74,8 +75,9 @@ class ModuleContext:
     def import_lines(self, keys, top: bool) -> list[ast.stmt]:
         out = []
         for key in sorted(keys):
-            out.append(ast.ImportFrom(f"{self.program.package_of(key)}.{module_name(key)}",
-                                      [ast.alias(class_name(key))], 0))
+            out.append(
+                ast.ImportFrom(f"{self.program.package_of(key)}.{module_name(key)}", [ast.alias(class_name(key))], 0)
+            )
         return out
 
 

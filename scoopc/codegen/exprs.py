@@ -1,5 +1,6 @@
 """Codegen, expressions: one `x_<Node>` method per expression kind, each returning a Python
 `ast.expr`. Types, features and entities come from the checker's tables only."""
+
 from __future__ import annotations
 
 import ast
@@ -10,8 +11,16 @@ from . import pyast as P
 from .context import fail
 
 EQUALITY = {"=": ast.Is, "/=": ast.IsNot}
-INTEGER_KINDS = ("INTEGER_8", "INTEGER_16", "INTEGER_32", "INTEGER_64",
-                 "NATURAL_8", "NATURAL_16", "NATURAL_32", "NATURAL_64")
+INTEGER_KINDS = (
+    "INTEGER_8",
+    "INTEGER_16",
+    "INTEGER_32",
+    "INTEGER_64",
+    "NATURAL_8",
+    "NATURAL_16",
+    "NATURAL_32",
+    "NATURAL_64",
+)
 INTEGER_BITS = {name: int(name.rsplit("_", 1)[1]) for name in INTEGER_KINDS}
 # Classes a value of a basic type conforms to: calls on them may meet a Python int/float/str/bool.
 BASIC_ANCESTORS = frozenset({"ANY", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "NUMERIC", "DEBUG_OUTPUT"})
@@ -60,7 +69,9 @@ class Expressions:
 
     def x_ManifestString(self, node):
         ty = self.tables.types.get(node)
-        maker = "s32" if ty is not None and ty.name in ("STRING_32", "READABLE_STRING_32", "IMMUTABLE_STRING_32") else "s8"
+        maker = (
+            "s32" if ty is not None and ty.name in ("STRING_32", "READABLE_STRING_32", "IMMUTABLE_STRING_32") else "s8"
+        )
         if ty is not None and ty.name.startswith("IMMUTABLE_STRING"):
             maker = "i32" if ty.name.endswith("32") else "i8"
         if node.once:
@@ -75,7 +86,7 @@ class Expressions:
         fail("unique constants are not supported", node.span)
 
     def x_ClassAssertion(self, node):
-        return P.const(True)          # `ensure class`: a static routine, nothing to check at run time
+        return P.const(True)  # `ensure class`: a static routine, nothing to check at run time
 
     def x_Address(self, node):
         return P.const(0)
@@ -92,7 +103,9 @@ class Expressions:
         ty = self.type_of(node)
         element = ty.generics[0] if ty.generics else None
         items = [self.reattached(item, self.copied(item, self.x(item)), element) for item in node.items]
-        return P.call("S.manifest_array", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.lst(items)])
+        return P.call(
+            "S.manifest_array", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.lst(items)]
+        )
 
     # --- entities ------------------------------------------------------------------------------
     def x_Current(self, node):
@@ -137,7 +150,7 @@ class Expressions:
         if isinstance(node.right, syntax.Void) or isinstance(node.left, syntax.Void):
             return P.compare(left, ast.IsNot() if negate else ast.Is(), right)
         if node.operator in ("~", "/~") or self.is_user_expanded(left_ty) or self.is_user_expanded(right_ty):
-            test = P.call("B.equal", [left, right])       # `=` on expanded values compares them
+            test = P.call("B.equal", [left, right])  # `=` on expanded values compares them
         elif self.is_basic(left_ty) or self.is_basic(right_ty):
             return P.compare(left, ast.NotEq() if negate else ast.Eq(), right)
         elif self.may_hold_basic(left_ty) or self.may_hold_basic(right_ty):
@@ -155,14 +168,18 @@ class Expressions:
         feature = self.tables.features.get(node)
         if feature is None:
             fail(f"operator {node.operator} without a feature", node.span)
-        return self.call_feature(node, node.operand, self.x(node.operand), feature, [],
-                                 conversion=self.tables.conversions.get(node.operand))
+        return self.call_feature(
+            node, node.operand, self.x(node.operand), feature, [], conversion=self.tables.conversions.get(node.operand)
+        )
 
     def negative_constant(self, node):
         """`-5`, `-2.5`: a manifest constant, when its value fits the type (no wrap needed)."""
         operand = node.operand
-        if node.operator != "-" or not isinstance(operand, (syntax.ManifestInteger, syntax.ManifestReal)) \
-                or self.tables.conversions.get(operand) is not None:
+        if (
+            node.operator != "-"
+            or not isinstance(operand, (syntax.ManifestInteger, syntax.ManifestReal))
+            or self.tables.conversions.get(operand) is not None
+        ):
             return None
         ty = self.tables.types.get(node)
         value = self.x(operand).value
@@ -223,7 +240,7 @@ class Expressions:
             tests.append(P.boolop(ast.Or(), part_tests) if len(part_tests) > 1 else part_tests[0])
         for part, test in reversed(list(zip(node.when_parts, tests))):
             result = ast.IfExp(test, self.x(part.then_part), result)
-        if first:                        # no `when`: the subject is still evaluated, then the rest
+        if first:  # no `when`: the subject is still evaluated, then the rest
             result = ast.Subscript(P.tup([self.x(node.expression), result]), P.const(1), ast.Load())
         return result
 
@@ -237,14 +254,17 @@ class Expressions:
         desc = self.type_desc(ty)
         if node.local is None:
             return P.call("S.conforms", [value, desc])
-        return P.boolop(ast.And(), [P.is_not_none(value), P.call(P.attr(desc, "accepts"), [P.name(self.local_name(node.local.key))])])
+        return P.boolop(
+            ast.And(),
+            [P.is_not_none(value), P.call(P.attr(desc, "accepts"), [P.name(self.local_name(node.local.key))])],
+        )
 
     def x_AcrossExpression(self, node):
         iteration = node.iteration
         var = self.local_name(iteration.name.key)
         body = self.x(node.body)
         source = self.iteration_source(iteration)
-        if node.until is not None:            # stop before the first position where `until` holds
+        if node.until is not None:  # stop before the first position where `until` holds
             stop = P.lambda_([var], P.not_(self.x(node.until)))
             source = P.call("S.take_while", [stop, source])
         comp = ast.GeneratorExp(body, [ast.comprehension(P.name(var, store=True), source, [], 0)])

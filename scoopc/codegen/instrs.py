@@ -1,5 +1,6 @@
 """Codegen, instructions: one `s_<Node>` method per instruction kind, each returning a list of
 Python statements."""
+
 from __future__ import annotations
 
 import ast
@@ -82,15 +83,26 @@ class Instructions:
         receiver = self.x(owner) if owner is not None else P.name("self")
         args = [self.x(node.source)] + [self.argument(a) for a in arguments]
         if target in self.tables.separate_calls:
-            return [P.expr_stmt(P.call("S.scall", [P.name("here"), receiver, P.const(self.py_name(assigner)),
-                                                   P.tup(args), P.const(True)]))]
+            return [
+                P.expr_stmt(
+                    P.call(
+                        "S.scall",
+                        [P.name("here"), receiver, P.const(self.py_name(assigner)), P.tup(args), P.const(True)],
+                    )
+                )
+            ]
         return [P.expr_stmt(P.call(P.attr(receiver, self.py_name(assigner)), args))]
 
     # --- calls and creation ----------------------------------------------------------------------------
     def s_CallInstruction(self, node):
         call = node.call
-        if isinstance(call, syntax.QualifiedCall) and call.name.key in _VALUE_COPIES and len(call.arguments) == 1 \
-                and self.is_basic(self.tables.types.get(call.target)) and self.is_variable(call.target):
+        if (
+            isinstance(call, syntax.QualifiedCall)
+            and call.name.key in _VALUE_COPIES
+            and len(call.arguments) == 1
+            and self.is_basic(self.tables.types.get(call.target))
+            and self.is_variable(call.target)
+        ):
             # `i.copy (j)` on an entity of a basic (expanded) type copies into the entity
             # itself (a call on an entity of an expanded type works on the entity's value)
             return [P.assign(self.target(call.target), self.x(call.arguments[0]))]
@@ -104,8 +116,12 @@ class Instructions:
         if entity is not None:
             return entity.kind in ("local", "argument", "result", "attribute")
         feature = self.tables.features.get(node)
-        return isinstance(node, syntax.UnqualifiedCall) and not node.arguments and feature is not None \
+        return (
+            isinstance(node, syntax.UnqualifiedCall)
+            and not node.arguments
+            and feature is not None
             and feature.kind == "attribute"
+        )
 
     def s_CreationInstruction(self, node):
         ty = self.tables.types.get(node)
@@ -195,15 +211,21 @@ class Instructions:
         name = self.temp("variant")
         variant = node.variant
         tag = [P.const(variant.tag.text)] if variant.tag is not None else []
-        first = [P.assign(P.name(name), P.call("S.variant_start", [self.x(variant.expression), self.where(variant)] + tag))]
-        step = [P.assign(P.name(name), P.call("S.variant_step", [P.name(name), self.x(variant.expression),
-                                                                   self.where(variant)] + tag))]
+        first = [
+            P.assign(P.name(name), P.call("S.variant_start", [self.x(variant.expression), self.where(variant)] + tag))
+        ]
+        step = [
+            P.assign(
+                P.name(name),
+                P.call("S.variant_step", [P.name(name), self.x(variant.expression), self.where(variant)] + tag),
+            )
+        ]
         return checks, (first, step)
 
     def s_Across(self, node):
         from .scoop_calls import interval_across
 
-        fast = interval_across(self, node)             # `across a |..| b`: a Python range
+        fast = interval_across(self, node)  # `across a |..| b`: a Python range
         if fast is not None:
             return fast
         iteration = node.iteration

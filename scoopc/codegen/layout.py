@@ -6,6 +6,7 @@ there); for every name where Python's lookup along the MRO would find another ve
 one the Eiffel class has (repeated or multiple inheritance, joins, renaming), the class binds the
 right one explicitly. The MRO is computed here (C3) from the layouts of the parents.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -14,9 +15,9 @@ from dataclasses import dataclass, field
 @dataclass
 class Layout:
     key: str
-    bases: list[str]                       # keys of the Python base classes, in order
-    mro: list[str]                         # keys, the class itself first
-    own: dict = field(default_factory=dict)   # python name -> implementation id defined in the class body
+    bases: list[str]  # keys of the Python base classes, in order
+    mro: list[str]  # keys, the class itself first
+    own: dict = field(default_factory=dict)  # python name -> implementation id defined in the class body
 
 
 def impl_id(feature) -> tuple:
@@ -50,7 +51,7 @@ def make_layout(universe, info, layouts: dict) -> Layout:
         if parent is not None and parent.name in layouts and parent.name not in bases:
             bases.append(parent.name)
     mro = c3(info.name, bases, layouts)
-    if mro is None:                       # an order Python cannot linearise: keep the first parent
+    if mro is None:  # an order Python cannot linearise: keep the first parent
         bases = bases[:1]
         mro = c3(info.name, bases, layouts)
     return Layout(info.name, bases, mro)

@@ -6,6 +6,7 @@ introduced it), so that a call through any ancestor finds the version the object
 get the same Python name, the seed whose class comes first (library before user, ancestor
 before heir) keeps it and the other is qualified with its class: `f__b`.
 """
+
 from __future__ import annotations
 
 import keyword
@@ -54,7 +55,7 @@ class Naming:
     def __init__(self, universe):
         self.universe = universe
         self.demoted: dict[str, str] = {}
-        self.replicas: dict[str, dict[str, str]] = {}      # class key -> {final name: Python name}
+        self.replicas: dict[str, dict[str, str]] = {}  # class key -> {final name: Python name}
         for info in universe.classes.values():
             self._resolve_class(info)
         done: set = set()

@@ -3,6 +3,7 @@
 Input: what the checker proved (semantics.Checked). Output: {module path: Python source} for the
 classes asked for, each also as an `ast.Module` whose statements carry Eiffel line numbers.
 """
+
 from __future__ import annotations
 
 import ast
@@ -38,7 +39,8 @@ def prepare(universe, tables, options: Options, library_facts=None) -> Program:
         program.layouts[info.name] = layout = make_layout(universe, info, program.layouts)
         layout.plan = plan_bindings(program, info, layout)
         info._has_invariant = bool(info.decl.invariant) or any(
-            getattr(universe.get(ty.name), "_has_invariant", False) for _, ty, _ in info.parents)
+            getattr(universe.get(ty.name), "_has_invariant", False) for _, ty, _ in info.parents
+        )
         if info._has_invariant and not info.from_library:
             program.invariant_classes.update(info.ancestors)
             program.invariant_classes.add(info.name)
@@ -53,12 +55,11 @@ def generate_class(program: Program, info) -> ast.Module:
         return module
     except CodegenError:
         raise
-    except Exception as problem:             # a surprise is a compiler bug, named with the class
+    except Exception as problem:  # a surprise is a compiler bug, named with the class
         raise CodegenError(f"class {info.name}: {type(problem).__name__}: {problem}") from problem
 
 
-def generate(universe, tables, options: Options, which, library_leaves: list | None = None,
-             library_facts=None) -> dict:
+def generate(universe, tables, options: Options, which, library_leaves: list | None = None, library_facts=None) -> dict:
     """{module file name: (ast.Module, Eiffel source path)} for the classes `which(info)` selects.
     `library_facts`: the compiled library's SCOOP facts (Program.library_facts). `library_leaves`,
     if given, receives the library routines that are leaves in this program (scoop.library_leaves)."""

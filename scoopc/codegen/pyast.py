@@ -1,4 +1,5 @@
 """Codegen, small constructors of Python `ast` nodes (the generator never builds Python text)."""
+
 from __future__ import annotations
 
 import ast
@@ -88,14 +89,28 @@ def if_(test, body, orelse=None) -> ast.If:
 
 
 def function(fname: str, args: list[str], body: list, decorators=()) -> ast.FunctionDef:
-    arguments = ast.arguments(posonlyargs=[], args=[ast.arg(a) for a in args], vararg=None,
-                              kwonlyargs=[], kw_defaults=[], kwarg=None, defaults=[])
+    arguments = ast.arguments(
+        posonlyargs=[],
+        args=[ast.arg(a) for a in args],
+        vararg=None,
+        kwonlyargs=[],
+        kw_defaults=[],
+        kwarg=None,
+        defaults=[],
+    )
     return ast.FunctionDef(fname, arguments, list(body) or [ast.Pass()], list(decorators), None)
 
 
 def lambda_(args: list[str], body: ast.expr) -> ast.Lambda:
-    arguments = ast.arguments(posonlyargs=[], args=[ast.arg(a) for a in args], vararg=None,
-                              kwonlyargs=[], kw_defaults=[], kwarg=None, defaults=[])
+    arguments = ast.arguments(
+        posonlyargs=[],
+        args=[ast.arg(a) for a in args],
+        vararg=None,
+        kwonlyargs=[],
+        kw_defaults=[],
+        kwarg=None,
+        defaults=[],
+    )
     return ast.Lambda(arguments, body)
 
 
@@ -109,7 +124,7 @@ def at(node, span):
         child = pending.pop()
         if "lineno" in child._attributes:
             if getattr(child, "lineno", None) is not None:
-                continue              # stamped already, and so is everything below it
+                continue  # stamped already, and so is everything below it
             child.lineno, child.col_offset = line, column
             child.end_lineno, child.end_col_offset = line, column
         pending.extend(ast.iter_child_nodes(child))

@@ -1,6 +1,7 @@
 """Codegen, routines: one Eiffel routine (or inline agent) -> Python function(s): locals and
 Result, contracts with `old`, rescue/retry, once, and the reservation of separate arguments with
 its wait conditions (a clause table, docs/RUNTIME.md section 2)."""
+
 from __future__ import annotations
 
 import ast
@@ -15,8 +16,26 @@ from .exprs import Expressions
 from .instrs import Instructions
 from .names import eiffel_class_name, py_identifier
 
-LOCAL_RESERVED = frozenset({"s", "b", "k", "t", "ks", "rt", "here", "self", "all", "any", "object",
-                            "result", "len", "range", "isinstance", "type"})
+LOCAL_RESERVED = frozenset(
+    {
+        "s",
+        "b",
+        "k",
+        "t",
+        "ks",
+        "rt",
+        "here",
+        "self",
+        "all",
+        "any",
+        "object",
+        "result",
+        "len",
+        "range",
+        "isinstance",
+        "type",
+    }
+)
 
 
 def local_identifier(name: str) -> str:
@@ -53,8 +72,14 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
 
     def where(self, node) -> ast.expr:
         span = node.span
-        value = P.tup([P.const(eiffel_class_name(self.info.name)), P.const(self.routine_name),
-                       P.const(span.file), P.const(span.line)])
+        value = P.tup(
+            [
+                P.const(eiffel_class_name(self.info.name)),
+                P.const(self.routine_name),
+                P.const(span.file),
+                P.const(span.line),
+            ]
+        )
         return self.module.constant("W", value, key=("where", self.routine_name, span.file, span.line))
 
     # --- values of types ------------------------------------------------------------------------
@@ -86,8 +111,14 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         main = self.olds_at_entry(body) + self.main_body(body)
         main += self.postcondition(body)
         if separate:
-            out += self.reserved([P.name(self.local_name(n)) for n, _ in separate], pre, main,
-                                 self.where(body), [n for n, _ in separate], arguments)
+            out += self.reserved(
+                [P.name(self.local_name(n)) for n, _ in separate],
+                pre,
+                main,
+                self.where(body),
+                [n for n, _ in separate],
+                arguments,
+            )
         else:
             out += self.precondition(pre) + main
         if result_type is not None:
@@ -108,7 +139,9 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
 
     def main_body(self, body) -> list:
         inner = body.body
-        instructions = self.block(inner.instructions) if isinstance(inner, (syntax.InternalBody, syntax.AttributeBody)) else []
+        instructions = (
+            self.block(inner.instructions) if isinstance(inner, (syntax.InternalBody, syntax.AttributeBody)) else []
+        )
         if body.rescue is None:
             return instructions
         caught = self.temp("exception")
@@ -152,7 +185,11 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
                 if isinstance(node, syntax.Old) and node not in self.olds:
                     name = self.temp("old")
                     self.olds[node] = name
-                    out.append(P.at(P.assign(P.name(name), P.call("S.old", [P.lambda_([], self.x(node.expression))])), node.span))
+                    out.append(
+                        P.at(
+                            P.assign(P.name(name), P.call("S.old", [P.lambda_([], self.x(node.expression))])), node.span
+                        )
+                    )
         return out
 
     # --- reservations --------------------------------------------------------------------------------

@@ -20,6 +20,7 @@ Their local facts (verdict on the body alone, and what it calls) are saved besid
 compiled library (FACTS_FILE) and joined with the program's classes when a program is
 compiled, so a program's routine that calls a short library routine can still be a leaf.
 """
+
 from __future__ import annotations
 
 import json
@@ -34,30 +35,81 @@ FACTS_FORMAT = 1
 
 # Classes whose external features are short host operations that never block nor call back
 # into Eiffel code (the basic types' built-ins are inlined).
-SAFE_EXTERNAL_CLASSES = frozenset({
-    "SPECIAL", "TUPLE", "TYPE", "STRING_8", "STRING_32", "IMMUTABLE_STRING_8",
-    "IMMUTABLE_STRING_32", "READABLE_STRING_8", "READABLE_STRING_32", "READABLE_STRING_GENERAL",
-    "STRING_GENERAL", "IMMUTABLE_STRING_GENERAL", "DOUBLE_MATH", "SINGLE_MATH", "PLATFORM",
-}) | frozenset(BASIC)
+SAFE_EXTERNAL_CLASSES = frozenset(
+    {
+        "SPECIAL",
+        "TUPLE",
+        "TYPE",
+        "STRING_8",
+        "STRING_32",
+        "IMMUTABLE_STRING_8",
+        "IMMUTABLE_STRING_32",
+        "READABLE_STRING_8",
+        "READABLE_STRING_32",
+        "READABLE_STRING_GENERAL",
+        "STRING_GENERAL",
+        "IMMUTABLE_STRING_GENERAL",
+        "DOUBLE_MATH",
+        "SINGLE_MATH",
+        "PLATFORM",
+    }
+) | frozenset(BASIC)
 # Single external features of other classes that are as short: a read of the runtime's clock.
 SAFE_EXTERNAL_FEATURES = frozenset({("TIMER", "now")})
-SAFE_ANY_EXTERNALS = frozenset({
-    "generator", "generating_type", "conforms_to", "same_type", "standard_is_equal", "is_equal",
-    "standard_copy", "copy", "standard_twin", "tagged_out",
-})
+SAFE_ANY_EXTERNALS = frozenset(
+    {
+        "generator",
+        "generating_type",
+        "conforms_to",
+        "same_type",
+        "standard_is_equal",
+        "is_equal",
+        "standard_copy",
+        "copy",
+        "standard_twin",
+        "tagged_out",
+    }
+)
 # Nodes that make a routine a non-leaf wherever they occur.
-NEVER = frozenset({"Loop", "Across", "AcrossExpression", "Retry", "SeparateInstruction",
-                   "ManifestArray", "Unique"})
+NEVER = frozenset({"Loop", "Across", "AcrossExpression", "Retry", "SeparateInstruction", "ManifestArray", "Unique"})
 # Nodes with no call of their own: only their children matter.
-PLAIN = frozenset({
-    "Assignment", "AssignmentAttempt", "CallInstruction", "Conditional", "ElseifPart",
-    "MultiBranch", "WhenPart", "Choice", "Check", "Parenthesized", "Old", "ManifestInteger",
-    "ManifestReal", "ManifestString", "ManifestCharacter", "ManifestBoolean", "TypedConstant",
-    "ManifestType", "TupleExpression", "ObjectTest", "Current", "Result", "Void",
-    "ConditionalExpression", "ElseifExpression", "InspectExpression", "WhenExpression", "Address",
-    "AssertionClause", "Precondition",
-    "Postcondition", "OpenOperand", "ClassAssertion",
-})
+PLAIN = frozenset(
+    {
+        "Assignment",
+        "AssignmentAttempt",
+        "CallInstruction",
+        "Conditional",
+        "ElseifPart",
+        "MultiBranch",
+        "WhenPart",
+        "Choice",
+        "Check",
+        "Parenthesized",
+        "Old",
+        "ManifestInteger",
+        "ManifestReal",
+        "ManifestString",
+        "ManifestCharacter",
+        "ManifestBoolean",
+        "TypedConstant",
+        "ManifestType",
+        "TupleExpression",
+        "ObjectTest",
+        "Current",
+        "Result",
+        "Void",
+        "ConditionalExpression",
+        "ElseifExpression",
+        "InspectExpression",
+        "WhenExpression",
+        "Address",
+        "AssertionClause",
+        "Precondition",
+        "Postcondition",
+        "OpenOperand",
+        "ClassAssertion",
+    }
+)
 TYPES = frozenset({"ClassType", "TupleType", "AnchoredType", "FormalGeneric", "EntityDeclaration"})
 
 
@@ -74,20 +126,21 @@ def analysis(program) -> Analysis:
     """The program's SCOOP facts, computed once per program (on first use)."""
     found = getattr(program, "_scoop_analysis", None)
     if found is None:
-        found = program._scoop_analysis = Analysis(program.universe, program.tables, program.assertions_for,
-                                                   program.library_facts)
+        found = program._scoop_analysis = Analysis(
+            program.universe, program.tables, program.assertions_for, program.library_facts
+        )
     return found
 
 
 class Analysis:
     def __init__(self, universe, tables, assertions_for, library_facts=None):
         self.universe, self.tables, self.assertions_for = universe, tables, assertions_for
-        self.heirs: dict[str, set] = {}           # class -> itself and every class inheriting from it
+        self.heirs: dict[str, set] = {}  # class -> itself and every class inheriting from it
         for info in universe.classes.values():
             for ancestor in set(info.all_ancestors) | {info.name}:
                 self.heirs.setdefault(ancestor, set()).add(info.name)
-        self._by_seed: dict[str, dict] = {}       # class -> seed -> its features with that seed
-        self._own: dict[str, dict] = {}           # class -> first name -> version declared there
+        self._by_seed: dict[str, dict] = {}  # class -> seed -> its features with that seed
+        self._own: dict[str, dict] = {}  # class -> first name -> version declared there
         self.closed = not any(i.is_expanded and i.name not in BASIC for i in universe.classes.values())
         self._library = library_facts
         self._versions: dict = {}
@@ -124,7 +177,7 @@ class Analysis:
             table = self._by_seed[cls] = {}
             info = self.universe.classes[cls]
             joined: dict = {}
-            for name, versions in info.joins:     # inherited versions joined into one feature
+            for name, versions in info.joins:  # inherited versions joined into one feature
                 for version in versions:
                     joined.setdefault(name, set()).update(version.seeds())
             for feature in info.features.values():
@@ -138,9 +191,15 @@ class Analysis:
         table = self._own.get(cls)
         if table is None:
             info = self.universe.classes.get(cls)
-            table = self._own[cls] = {} if info is None else {
-                f.decl.names[0].name.key: f for f in info.features.values()
-                if f.written_in == cls and getattr(f.decl, "names", None)}
+            table = self._own[cls] = (
+                {}
+                if info is None
+                else {
+                    f.decl.names[0].name.key: f
+                    for f in info.features.values()
+                    if f.written_in == cls and getattr(f.decl, "names", None)
+                }
+            )
         return table.get(name)
 
     def single(self, cls: str, feature):
@@ -158,7 +217,7 @@ class Analysis:
         found = self._leaf.get(key)
         if found is not None:
             return found
-        if key in stack:                      # recursion: not a leaf
+        if key in stack:  # recursion: not a leaf
             return False
         local = self.local_facts(key)
         verdict = local is not None and local[0]
@@ -271,9 +330,13 @@ def only_stored(analysis: Analysis, body, name: str) -> bool:
             entity = entities.get(node)
             if entity is not None and entity.kind == "argument":
                 uses += 1
-        elif isinstance(node, syntax.Assignment) and isinstance(node.source, syntax.UnqualifiedCall) \
-                and node.source.name.key == name and not node.source.arguments \
-                and node.source not in analysis.tables.conversions:
+        elif (
+            isinstance(node, syntax.Assignment)
+            and isinstance(node.source, syntax.UnqualifiedCall)
+            and node.source.name.key == name
+            and not node.source.arguments
+            and node.source not in analysis.tables.conversions
+        ):
             target = entities.get(node.target)
             if (target is None or target.kind == "attribute") and features.get(node.target) is not None:
                 stored += 1
@@ -361,7 +424,7 @@ class _Walker:
         if node in self.tables.separate_calls or node in self.tables.agent_calls:
             raise NotLeaf("separate call or agent call")
         feature = self.tables.features.get(node)
-        if feature is not None:                     # None: a TUPLE label
+        if feature is not None:  # None: a TUPLE label
             self.dynamic(self.tables.types.get(node.target), feature)
         self.visit_children(node)
 
@@ -385,11 +448,11 @@ class _Walker:
         if node in self.tables.separate_calls:
             raise NotLeaf("separate call")
         feature = self.tables.features.get(node)
-        if node.operator in ("~", "/~"):          # `B.equal`: the left operand's `is_equal`
+        if node.operator in ("~", "/~"):  # `B.equal`: the left operand's `is_equal`
             left = self.tables.types.get(node.left)
             if left is None or left.is_formal or left.name not in BASIC:
                 self.dynamic(left, self._any_feature("is_equal"))
-        elif node.operator in ("=", "/="):        # identity, or values (closed: no user expanded)
+        elif node.operator in ("=", "/="):  # identity, or values (closed: no user expanded)
             pass
         elif feature is not None:
             self.dynamic(self.tables.types.get(node.left), feature)
@@ -458,7 +521,7 @@ class _Walker:
             self.visit(actual)
 
     def v_Debug(self, node) -> None:
-        return None                            # no code is generated for debug instructions
+        return None  # no code is generated for debug instructions
 
     def conversion(self, node, conversion) -> None:
         converter, target_ty = conversion
@@ -478,6 +541,7 @@ class _Walker:
 # --- the standard library's facts, kept beside its compiled package --------------------------------
 def library_facts(universe, tables, options) -> dict:
     """{version key: [ok, callees]} for every routine version written in a library class."""
+
     def assertions_for(info):
         return options.library_assertions if info.from_library else options.assertions
 
@@ -497,12 +561,13 @@ def library_facts(universe, tables, options) -> dict:
 
 
 # The library's interfaces whose routines a transport calls (scoopc/kernel/ext/ros_subscriber.py).
-TRANSPORT_LISTENERS = frozenset({"ODOMETRY_LISTENER", "RANGE_LISTENER", "SCAN_LISTENER", "BATTERY_LISTENER",
-                                 "ROS_LISTENER"})
+TRANSPORT_LISTENERS = frozenset(
+    {"ODOMETRY_LISTENER", "RANGE_LISTENER", "SCAN_LISTENER", "BATTERY_LISTENER", "ROS_LISTENER"}
+)
 
 
 def library_leaves(program) -> list[str]:
-    """"CLASS.routine" (Python names) of the routine versions of the library's transport listeners
+    """ "CLASS.routine" (Python names) of the routine versions of the library's transport listeners
     (TRANSPORT_LISTENERS and their heirs) that are leaves in this program's closed world. The
     compiled library is never decorated (an heir in some program could break the promise), so a
     program tells the runtime which of them it may treat as leaves: a transport delivers a message
@@ -516,8 +581,13 @@ def library_leaves(program) -> list[str]:
         if not info.from_library or not TRANSPORT_LISTENERS & (set(info.all_ancestors) | {info.name}):
             continue
         for feature in info.features.values():
-            if feature.written_in == info.name and feature.is_routine and not feature.deferred \
-                    and not feature.is_once and facts.is_leaf(feature):
+            if (
+                feature.written_in == info.name
+                and feature.is_routine
+                and not feature.deferred
+                and not feature.is_once
+                and facts.is_leaf(feature)
+            ):
                 found.append(f"{info.name}.{program.naming.primary(feature)}")
     return sorted(found)
 

@@ -12,6 +12,7 @@ Every fast form is emitted only where its facts hold statically; otherwise the g
   evaluate and a body that is exactly one command on `x` whose arguments cannot pass locks is
   `command1`; one argument otherwise `reserve1`; several `reserve` (module-level clause tables).
 """
+
 from __future__ import annotations
 
 import ast
@@ -46,8 +47,13 @@ def cannot_pass_locks(gen, nodes) -> bool:
 
 def _statically_attached(gen, node, ty) -> bool:
     """The target is never Void at run time (the program is void-safe and its type attached)."""
-    return ty is not None and ty.attached and not ty.is_formal and gen.universe.void_safe \
+    return (
+        ty is not None
+        and ty.attached
+        and not ty.is_formal
+        and gen.universe.void_safe
         and node not in gen.tables.conversions
+    )
 
 
 def routine_ref(gen, version) -> ast.expr:
@@ -73,11 +79,11 @@ def separate_call(gen, node, target, feature, args) -> ast.expr:
     attached = target_node is not None and _statically_attached(gen, target_node, ty)
     facts = analysis(gen.program)
     version = None
-    if attached and not gen.info.from_library:          # the library is compiled in an open world
+    if attached and not gen.info.from_library:  # the library is compiled in an open world
         known = gen.universe.get(ty.name)
         version = facts.single(known.name, feature) if known is not None else None
         if version is not None and "@" in version.written_in:
-            version = None                    # a library class whose name a program class took
+            version = None  # a library class whose name a program class took
     if version is None:
         passing = P.const(bool(gen.tables.lock_passing.get(node)))
         name = P.const(gen.py_name(feature))
@@ -116,8 +122,13 @@ def reserved(gen, objs, table, pre_args, body, where, names=None) -> list:
         objs = [o for o, n in zip(objs, names) if not _unobservable(gen, o, n, body)]
         if not objs:
             return body or [ast.Pass()]
-    if len(objs) == 1 and table is None and len(body) == 1 and isinstance(body[0], ast.Expr) \
-            and isinstance(objs[0], ast.Name):
+    if (
+        len(objs) == 1
+        and table is None
+        and len(body) == 1
+        and isinstance(body[0], ast.Expr)
+        and isinstance(objs[0], ast.Name)
+    ):
         command = _commands(gen).get(id(body[0].value))
         if command is not None and command[0] == objs[0].id:
             _, routine, args = command
@@ -146,7 +157,7 @@ def _unobservable(gen, obj, name, body) -> bool:
     if not only_stored(facts, feature.decl.body, name):
         return False
     if not gen.info.from_library and facts.is_leaf(feature):
-        return True                           # the leaf analysis relied on this very rule
+        return True  # the leaf analysis relied on this very rule
     return _only_stored(obj, body) and not any(_real_call(node) for s in body for node in ast.walk(s))
 
 
@@ -171,9 +182,15 @@ def _only_stored(obj, body) -> bool:
         for node in ast.walk(stmt):
             if isinstance(node, ast.Name) and node.id == obj.id:
                 seen += 1
-            elif isinstance(node, ast.Assign) and isinstance(node.value, ast.Name) and node.value.id == obj.id \
-                    and all(isinstance(t, ast.Attribute) and isinstance(t.value, ast.Name)
-                            and t.value.id == "self" for t in node.targets):
+            elif (
+                isinstance(node, ast.Assign)
+                and isinstance(node.value, ast.Name)
+                and node.value.id == obj.id
+                and all(
+                    isinstance(t, ast.Attribute) and isinstance(t.value, ast.Name) and t.value.id == "self"
+                    for t in node.targets
+                )
+            ):
                 stored += 1
     return seen == stored
 
@@ -191,8 +208,12 @@ def finish_module(program, info, module: ast.Module) -> None:
 
 def _drop_unused_here(function: ast.FunctionDef) -> None:
     first = function.body[0] if function.body else None
-    if not (isinstance(first, ast.Assign) and len(first.targets) == 1
-            and isinstance(first.targets[0], ast.Name) and first.targets[0].id == "here"):
+    if not (
+        isinstance(first, ast.Assign)
+        and len(first.targets) == 1
+        and isinstance(first.targets[0], ast.Name)
+        and first.targets[0].id == "here"
+    ):
         return
     uses = sum(1 for node in ast.walk(function) if isinstance(node, ast.Name) and node.id == "here")
     if uses == 1:
@@ -208,8 +229,13 @@ def decorate_leaves(program, info, module: ast.Module) -> None:
         return
     leaves = set()
     for feature in info.features.values():
-        if feature.written_in == info.name and feature.is_routine and not feature.deferred \
-                and not feature.is_once and facts.is_leaf(feature):
+        if (
+            feature.written_in == info.name
+            and feature.is_routine
+            and not feature.deferred
+            and not feature.is_once
+            and facts.is_leaf(feature)
+        ):
             leaves.add(program.naming.primary(feature))
     if not leaves:
         return
@@ -232,9 +258,13 @@ def interval_across(gen, node):
     if not isinstance(expr, syntax.BinaryExpression) or expr.operator != "|..|":
         return None
     feature = gen.tables.features.get(expr)
-    if feature is None or feature.written_in != "INTEGER_32" or not gen.is_builtin_basic(feature) \
-            or expr in gen.tables.separate_calls \
-            or any(n in gen.tables.conversions for n in (expr, expr.left, expr.right)):
+    if (
+        feature is None
+        or feature.written_in != "INTEGER_32"
+        or not gen.is_builtin_basic(feature)
+        or expr in gen.tables.separate_calls
+        or any(n in gen.tables.conversions for n in (expr, expr.left, expr.right))
+    ):
         return None
     var = gen.local_name(iteration.name.key)
     out = gen.block(node.initialization)
@@ -266,8 +296,13 @@ def _items_only(body, var: str) -> bool:
 
 
 def _is_item(node, var: str) -> bool:
-    return isinstance(node, ast.Attribute) and node.attr == "item" and isinstance(node.ctx, ast.Load) \
-        and isinstance(node.value, ast.Name) and node.value.id == var
+    return (
+        isinstance(node, ast.Attribute)
+        and node.attr == "item"
+        and isinstance(node.ctx, ast.Load)
+        and isinstance(node.value, ast.Name)
+        and node.value.id == var
+    )
 
 
 class _ItemToValue(ast.NodeTransformer):

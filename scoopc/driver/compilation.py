@@ -4,6 +4,7 @@ computes each once, on first use, so every caller (the command line, the Python 
 gets the same pipeline and no phase is built as a side effect of another. Long phases report
 through the `progress` callback.
 """
+
 from __future__ import annotations
 
 import ast
@@ -42,35 +43,55 @@ from .roots import Root, choose_root
 
 Progress = Callable[[str], None] | None
 PathLike = str | Path
-Modules = dict[str, tuple[ast.Module, str]]     # file name -> (module, its Eiffel source file)
+Modules = dict[str, tuple[ast.Module, str]]  # file name -> (module, its Eiffel source file)
 ASSERTIONS = ("all", "require", "none")
 
 
 @dataclass(frozen=True)
 class CompiledProgram:
     """A program compiled into a package on disk, ready to run."""
-    folder: Path                # holds the program's package
-    package: str                # its name
+
+    folder: Path  # holds the program's package
+    package: str  # its name
     root: Root
-    library: Path               # holds the compiled library's package, eiffel_base
-    shadowed: dict[str, str] = field(default_factory=dict)   # user classes named like library classes
-    roboscoop: bool = False     # does it use the Roboscoop library (then it runs with a robot)?
+    library: Path  # holds the compiled library's package, eiffel_base
+    shadowed: dict[str, str] = field(default_factory=dict)  # user classes named like library classes
+    roboscoop: bool = False  # does it use the Roboscoop library (then it runs with a robot)?
 
     def meta(self) -> dict[str, Any]:
-        return {"package": self.package, "root": self.root.key, "creator": self.root.creator,
-                "base": str(self.library), "shadowed": self.shadowed, "roboscoop": self.roboscoop}
+        return {
+            "package": self.package,
+            "root": self.root.key,
+            "creator": self.root.creator,
+            "base": str(self.library),
+            "shadowed": self.shadowed,
+            "roboscoop": self.roboscoop,
+        }
 
     @classmethod
     def from_meta(cls, folder: Path, meta: dict[str, Any]) -> CompiledProgram:
-        return cls(folder, meta["package"], Root(meta["root"], meta["creator"]), Path(meta["base"]),
-                   meta["shadowed"], meta["roboscoop"])
+        return cls(
+            folder,
+            meta["package"],
+            Root(meta["root"], meta["creator"]),
+            Path(meta["base"]),
+            meta["shadowed"],
+            meta["roboscoop"],
+        )
 
 
 class Compilation:
     """One program (the sources at `paths`) and the options that shape its compilation."""
 
-    def __init__(self, paths: Sequence[PathLike], *, target: str | None = None, root: str | None = None,
-                 assertions: str | None = None, progress: Progress = None):
+    def __init__(
+        self,
+        paths: Sequence[PathLike],
+        *,
+        target: str | None = None,
+        root: str | None = None,
+        assertions: str | None = None,
+        progress: Progress = None,
+    ):
         if not paths:
             raise UsageError("no PATH given: name a .e file, a directory or an .ecf project file")
         if assertions is not None and assertions not in ASSERTIONS:
@@ -110,7 +131,7 @@ class Compilation:
     def semantics(self) -> SemanticsChecked:
         """What the checker proved of a program without errors (SourceErrors otherwise)."""
         found = self.require_clean().semantics
-        assert found is not None            # no syntax errors: the checker ran
+        assert found is not None  # no syntax errors: the checker ran
         return found
 
     @cached_property
@@ -134,8 +155,14 @@ class Compilation:
             sem = self.semantics
             leaves: list[str] = []
             options = Options(assertions=self.assertions, package=package)
-            modules = generate(sem.universe, sem.tables, options, lambda info: not info.from_library, leaves,
-                               library_facts=self.library.facts)
+            modules = generate(
+                sem.universe,
+                sem.tables,
+                options,
+                lambda info: not info.from_library,
+                leaves,
+                library_facts=self.library.facts,
+            )
             self._modules[package] = (modules, leaves)
         return self._modules[package]
 
@@ -145,13 +172,13 @@ class Compilation:
         sem = self.semantics
         modules, leaves = self.modules(package)
         folder = out / package
-        write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).",
-                      (BASE_PACKAGE,))
+        write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).", (BASE_PACKAGE,))
         (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
         (folder / "__main__.py").write_text(_main_text(package, self.root, dict(sem.universe.shadowed)))
         outdir.mark(folder)
-        return CompiledProgram(out, package, self.root, self.library.path, dict(sem.universe.shadowed),
-                               uses_roboscoop(self.project.files))
+        return CompiledProgram(
+            out, package, self.root, self.library.path, dict(sem.universe.shadowed), uses_roboscoop(self.project.files)
+        )
 
     def compile_to(self, out: PathLike) -> CompiledProgram:
         """`scoopc compile -o OUT`: OUT/<root> and OUT/eiffel_base, replacing only what scoopc wrote
@@ -160,13 +187,14 @@ class Compilation:
         package = self.root.key.lower()
         library = out / BASE_PACKAGE
         outdir.prepare(out)
-        for folder in (out / package, library):        # both checked before either is touched
+        for folder in (out / package, library):  # both checked before either is touched
             outdir.check(folder)
         for folder in (out / package, library):
             outdir.clear(folder)
         compiled = self.write_package(out, package)
-        shutil.copytree(self.library.path / BASE_PACKAGE, library,
-                        ignore=shutil.ignore_patterns("__pycache__", outdir.MARKER))
+        shutil.copytree(
+            self.library.path / BASE_PACKAGE, library, ignore=shutil.ignore_patterns("__pycache__", outdir.MARKER)
+        )
         outdir.mark(library)
         return compiled
 
@@ -178,21 +206,27 @@ class Compilation:
         return self._program
 
     def _cached_program(self, use_cache: bool) -> CompiledProgram:
-        extra = json.dumps([self.root_option, self.assertions_option, self.project.settings.assertions,
-                            self.project.root.class_name if self.project.root else None])
+        extra = json.dumps(
+            [
+                self.root_option,
+                self.assertions_option,
+                self.project.settings.assertions,
+                self.project.root.class_name if self.project.root else None,
+            ]
+        )
         key = program_key([Path(p) for p in self.project.files], extra)
         folder = cache_dir() / "programs" / key
         found = _read_cached(folder) if use_cache else None
         if found is None:
             self.require_clean()
-            self.rebuild_library |= not use_cache        # no cache at all: the library is compiled again too
+            self.rebuild_library |= not use_cache  # no cache at all: the library is compiled again too
             found = self._cache(folder, key)
         ensure_bytecode(found.library)
         return found
 
     def _cache(self, folder: Path, key: str) -> CompiledProgram:
         writable_cache()
-        staging = folder.with_name(f"{key}.{os.getpid()}.tmp")      # per process: runs may race
+        staging = folder.with_name(f"{key}.{os.getpid()}.tmp")  # per process: runs may race
         if staging.exists():
             shutil.rmtree(staging)
         staging.mkdir(parents=True)
@@ -200,7 +234,7 @@ class Compilation:
         write_manifest(staging / "program")
         (staging / "program.json").write_text(json.dumps(compiled.meta()))
         write_bytecode(staging / "program")
-        if folder.exists():                  # no cache wanted, or another process compiled it meanwhile
+        if folder.exists():  # no cache wanted, or another process compiled it meanwhile
             old = folder.with_name(f"{key}.{os.getpid()}.old")
             try:
                 folder.rename(old)
@@ -209,7 +243,7 @@ class Compilation:
                 pass
         try:
             staging.rename(folder)
-        except OSError:                      # another process put its copy in place first: use it
+        except OSError:  # another process put its copy in place first: use it
             shutil.rmtree(staging, ignore_errors=True)
         return CompiledProgram.from_meta(folder, compiled.meta())
 
@@ -225,13 +259,15 @@ def _read_cached(folder: Path) -> CompiledProgram | None:
 
 
 def _main_text(package: str, root: Root, shadowed: dict[str, str]) -> str:
-    return (f'"""Run the program: python -m {package} [ARGS]."""\n'
-            f"import sys\n\n"
-            f"from scoopc.kernel import launcher\n\n"
-            f"if __name__ == '__main__':\n"
-            f"    from {package}.{module_name(root.key)} import {class_name(root.key)}\n"
-            f"    sys.exit(launcher.main({class_name(root.key)}, {root.creator!r}, sys.argv, "
-            f"shadowed={shadowed!r}))\n")
+    return (
+        f'"""Run the program: python -m {package} [ARGS]."""\n'
+        f"import sys\n\n"
+        f"from scoopc.kernel import launcher\n\n"
+        f"if __name__ == '__main__':\n"
+        f"    from {package}.{module_name(root.key)} import {class_name(root.key)}\n"
+        f"    sys.exit(launcher.main({class_name(root.key)}, {root.creator!r}, sys.argv, "
+        f"shadowed={shadowed!r}))\n"
+    )
 
 
 def uses_roboscoop(files: Sequence[PathLike]) -> bool:

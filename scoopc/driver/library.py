@@ -1,6 +1,7 @@
 """Driver, the compiled standard library: stdlib/ checked with bodies and compiled once into the
 package `eiffel_base`, cached by content ($SCOOPC_CACHE_DIR/base-<key>/), with the SCOOP facts of
 its routines beside it (codegen.scoop), which programs' leaf analysis reads."""
+
 from __future__ import annotations
 
 import json
@@ -36,8 +37,8 @@ class LibraryError(Exception):
 
 @dataclass(frozen=True)
 class Library:
-    path: Path          # the folder holding the package eiffel_base
-    facts: dict[str, Any]   # {routine version key: [leaf verdict, callees]} (codegen.scoop.library_facts)
+    path: Path  # the folder holding the package eiffel_base
+    facts: dict[str, Any]  # {routine version key: [leaf verdict, callees]} (codegen.scoop.library_facts)
 
 
 def compiled_library(progress: Progress = None, rebuild: bool = False) -> Library:
@@ -58,7 +59,7 @@ def _build(target: Path, progress: Progress) -> None:
     if checked.has_errors:
         raise LibraryError("the standard library does not check: " + str(checked.diagnostics[0]))
     sem = checked.semantics
-    assert sem is not None                     # no errors: the checker ran
+    assert sem is not None  # no errors: the checker ran
     options = Options(package=BASE_PACKAGE)
     modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library)
     staging = Path(tempfile.mkdtemp(prefix="base-", dir=writable_cache()))
@@ -67,7 +68,7 @@ def _build(target: Path, progress: Progress) -> None:
     write_manifest(staging / BASE_PACKAGE)
     try:
         staging.rename(target)
-    except OSError:                            # another process won the race: use its copy
+    except OSError:  # another process won the race: use its copy
         shutil.rmtree(staging, ignore_errors=True)
 
 

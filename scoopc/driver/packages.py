@@ -5,6 +5,7 @@ A package's `__init__` loads its modules parents first (scoopc.kernel.link); `_l
 every generated module's lines back to its Eiffel file and lines ({module: [eiffel file,
 {python line: eiffel line}]}), which the launcher reads to print Eiffel traces.
 """
+
 from __future__ import annotations
 
 import ast
@@ -23,7 +24,7 @@ from ..semantics.universe import stdlib_files
 from ..version import __version__
 
 BASE_PACKAGE = "eiffel_base"
-MANIFEST = "_manifest.json"       # {module file: size}: a cached package is whole when these match
+MANIFEST = "_manifest.json"  # {module file: size}: a cached package is whole when these match
 
 
 class DamagedCache(Exception):
@@ -45,8 +46,10 @@ def writable_cache() -> Path:
         with tempfile.TemporaryFile(dir=folder):
             pass
     except OSError as problem:
-        raise UsageError(f"cannot write scoopc's cache folder {folder} ({problem.strerror or problem}): set "
-                         f"SCOOPC_CACHE_DIR to a folder you can write") from None
+        raise UsageError(
+            f"cannot write scoopc's cache folder {folder} ({problem.strerror or problem}): set "
+            f"SCOOPC_CACHE_DIR to a folder you can write"
+        ) from None
     return folder
 
 
@@ -97,15 +100,17 @@ def program_key(sources: list[Path], extra: str) -> str:
     return digest.hexdigest()[:24]
 
 
-def write_modules(folder: Path, modules: dict[str, tuple[ast.Module, str]], init_doc: str,
-                  uses: tuple[str, ...] = ()) -> None:
+def write_modules(
+    folder: Path, modules: dict[str, tuple[ast.Module, str]], init_doc: str, uses: tuple[str, ...] = ()
+) -> None:
     """Write the modules of one package (readable Python text) and its __init__, which loads
     them parents first (scoopc.kernel.link)."""
     folder.mkdir(parents=True, exist_ok=True)
     order = [name[:-3] for name in modules]
     (folder / "__init__.py").write_text(
         f'"""{init_doc}"""\nfrom scoopc.kernel import link\n\n'
-        f"CLASSES_BY_NAME = link.load(__name__, {order!r}, uses={uses!r})\n")
+        f"CLASSES_BY_NAME = link.load(__name__, {order!r}, uses={uses!r})\n"
+    )
     lines: dict[str, list[object]] = {}
     for filename, (module, source) in modules.items():
         text = ast.unparse(module) + "\n"
@@ -148,7 +153,7 @@ def ensure_bytecode(base: Path) -> None:
     """The compiled library's bytecode, written by the first run that needs it (`scoopc compile`
     never does: it copies the sources only)."""
     package = base / BASE_PACKAGE
-    done = package / "__pycache__" / "scoopc-complete"     # written last: an interrupted run redoes it
+    done = package / "__pycache__" / "scoopc-complete"  # written last: an interrupted run redoes it
     if not done.exists():
         write_bytecode(package)
         done.touch()

@@ -1,6 +1,7 @@
 """Driver, the root: which class and creation procedure start the program (DESIGN section 8):
 `--root CLASS[.creation]`, else the .ecf's root, else the class named like the single file or
 directory given, else the one class with a `make` that no other given class mentions."""
+
 from __future__ import annotations
 
 import re
@@ -18,8 +19,8 @@ from ..semantics.universe import ClassInfo, Universe
 
 @dataclass(frozen=True)
 class Root:
-    key: str            # the class name, upper case
-    creator: str        # the creation procedure, lower case
+    key: str  # the class name, upper case
+    creator: str  # the creation procedure, lower case
 
 
 def parse_root_option(text: str | None) -> tuple[str, str] | None:
@@ -47,9 +48,10 @@ def choose_root(project: Project, universe: Universe, option: str | None, paths:
     if info is None:
         raise UsageError(f"root class {name} is not among the given classes")
     found: list[Diagnostic] = []
-    check_root(universe, name, creator, lambda code, span, **arguments: found.append(
-        diagnostics.make(code, span, **arguments)))
-    if found:                            # the checker's root rules (VSRT, VSRP), for a root it was not told of
+    check_root(
+        universe, name, creator, lambda code, span, **arguments: found.append(diagnostics.make(code, span, **arguments))
+    )
+    if found:  # the checker's root rules (VSRT, VSRP), for a root it was not told of
         raise UsageError("; ".join(f"{d.code}: {d.message}" for d in found))
     return Root(name, creator)
 

@@ -1,6 +1,7 @@
 """Driver, the run: a compiled program's package imported into this process and started on the
 SCOOP runtime by the launcher, with a robot (the simulator or ROS 2) when it uses Roboscoop.
 SIGINT, SIGTERM and SIGHUP end a run the same way (runtime.stop_signals)."""
+
 from __future__ import annotations
 
 import importlib
@@ -24,16 +25,18 @@ from .packages import BASE_PACKAGE, DamagedCache, ensure_on_path, remove_cached
 @dataclass
 class RunOptions:
     """How the runtime runs the program (the run options of `scoopc run`)."""
-    trace_processors: bool = False      # tag each output line with its processor ([P3] ...)
-    strict: bool = False                # an exception lost in an asynchronous call fails the run
-    virtual_clock: bool = False         # sleeps and timers on a clock that jumps when all wait
-    debug: bool = False                 # Python tracebacks too
-    stdout: TextIO | None = None     # where the program's output goes (default: sys.stdout)
-    stderr: TextIO | None = None     # where failures and scoopc's reports go (default: sys.stderr)
+
+    trace_processors: bool = False  # tag each output line with its processor ([P3] ...)
+    strict: bool = False  # an exception lost in an asynchronous call fails the run
+    virtual_clock: bool = False  # sleeps and timers on a clock that jumps when all wait
+    debug: bool = False  # Python tracebacks too
+    stdout: TextIO | None = None  # where the program's output goes (default: sys.stdout)
+    stderr: TextIO | None = None  # where failures and scoopc's reports go (default: sys.stderr)
 
 
-def run_compilation(compilation: Compilation, args: Sequence[str], options: RunOptions, robot: RobotOptions,
-                    use_cache: bool = True) -> RunResult:
+def run_compilation(
+    compilation: Compilation, args: Sequence[str], options: RunOptions, robot: RobotOptions, use_cache: bool = True
+) -> RunResult:
     """Compile (cached by content) and run. A cached package that does not load (a module deleted,
     truncated or garbled, bad bytecode) is compiled again, with a note on stderr: the program's
     first (cheap), then the standard library's too."""
@@ -43,38 +46,59 @@ def run_compilation(compilation: Compilation, args: Sequence[str], options: RunO
             return run_program(program, args, options, robot, compilation.paths)
         except DamagedCache:
             if not rebuild_library:
-                (options.stderr or sys.stderr).write("scoopc: note: the compiled program in scoopc's cache was "
-                                                     "damaged (a module did not load): compiling it again\n")
+                (options.stderr or sys.stderr).write(
+                    "scoopc: note: the compiled program in scoopc's cache was "
+                    "damaged (a module did not load): compiling it again\n"
+                )
         program = _recompiled(compilation, program, rebuild_library)
-    return run_program(program, args, options, robot, compilation.paths)    # a third failure is a bug
+    return run_program(program, args, options, robot, compilation.paths)  # a third failure is a bug
 
 
 def _recompiled(compilation: Compilation, damaged: CompiledProgram, rebuild_library: bool) -> CompiledProgram:
     remove_cached(damaged.folder)
-    again = Compilation(compilation.paths, target=compilation.target, root=compilation.root_option,
-                        assertions=compilation.assertions_option, progress=compilation.progress)
+    again = Compilation(
+        compilation.paths,
+        target=compilation.target,
+        root=compilation.root_option,
+        assertions=compilation.assertions_option,
+        progress=compilation.progress,
+    )
     again.rebuild_library = rebuild_library
     return again.cached_program()
 
 
-def run_program(program: CompiledProgram, args: Sequence[str], options: RunOptions,
-                robot: RobotOptions, program_paths: Sequence[str] = ()) -> RunResult:
+def run_program(
+    program: CompiledProgram,
+    args: Sequence[str],
+    options: RunOptions,
+    robot: RobotOptions,
+    program_paths: Sequence[str] = (),
+) -> RunResult:
     """Run `program` with the command-line arguments `args`; `program_paths` are its sources
     (where the simulator looks for world.yaml)."""
     root_cls = _load(program)
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
 
-    def launch(on_start: Callable[[Runtime], None] | None = None,
-               virtual_clock: bool | None = options.virtual_clock) -> int:
-        return launcher.main(root_cls, program.root.creator, argv, shadowed=program.shadowed,
-                             trace_processors=options.trace_processors, strict=options.strict,
-                             virtual_clock=options.virtual_clock if virtual_clock is None else virtual_clock,
-                             debug=options.debug, on_start=on_start, stdout=options.stdout,
-                             stderr=options.stderr)
+    def launch(
+        on_start: Callable[[Runtime], None] | None = None, virtual_clock: bool | None = options.virtual_clock
+    ) -> int:
+        return launcher.main(
+            root_cls,
+            program.root.creator,
+            argv,
+            shadowed=program.shadowed,
+            trace_processors=options.trace_processors,
+            strict=options.strict,
+            virtual_clock=options.virtual_clock if virtual_clock is None else virtual_clock,
+            debug=options.debug,
+            on_start=on_start,
+            stdout=options.stdout,
+            stderr=options.stderr,
+        )
 
     kind = robot.robot or ("sim" if program.roboscoop else "none")
-    with stop_on_signals():                  # SIGTERM and SIGHUP end a run the way Ctrl-C does
+    with stop_on_signals():  # SIGTERM and SIGHUP end a run the way Ctrl-C does
         if kind == "none":
             result = RunResult(launch())
         else:
@@ -97,7 +121,7 @@ def _load(program: CompiledProgram) -> type:
         module = importlib.import_module(f"{package}.{module_name(program.root.key)}")
         root_class: type = getattr(module, class_name(program.root.key))
         return root_class
-    except Exception as error:                   # generated modules only define: a failure is damage
+    except Exception as error:  # generated modules only define: a failure is damage
         for name in [m for m in sys.modules if m.split(".")[0] in (package, BASE_PACKAGE)]:
             del sys.modules[name]
         link.forget(package)

@@ -4,6 +4,7 @@ the basic types, the `external "Python"` features of stdlib/base in ext/).
 The registry maps a class's universe key ("STRING_8", "CELL@BASE") to its generated Python class;
 every generated module registers its class when it is imported.
 """
+
 CLASSES = {}
 
 

@@ -9,6 +9,7 @@ compiled to functions `(region, current, *arguments)`, plus ANY's features for v
 templates' `B` is scoopc.kernel.basic_ops, the helpers (the templates of basic classes name
 no dispatch function); scoopc.kernel.basic, which generated code imports, re-exports both.
 """
+
 import ast
 
 from . import basic_ops as B
@@ -16,9 +17,8 @@ from .basic_inline import specs
 from .boxes import KINDS as BOXES
 
 _KINDS = {bool: "BOOLEAN", int: "INTEGER_32", float: "REAL_64", str: "CHARACTER_8"}
-_KINDS.update(BOXES)                      # values boxed on reattachment (scoopc/kernel/boxes.py)
-_TABLES = {}        # basic class name -> {seed name: function (region, current, *arguments)}
-
+_KINDS.update(BOXES)  # values boxed on reattachment (scoopc/kernel/boxes.py)
+_TABLES = {}  # basic class name -> {seed name: function (region, current, *arguments)}
 
 
 def call(target, name, arguments=(), region=None):
@@ -67,6 +67,7 @@ def generating_type(region, value, kind=None):
     static class when known: a NATURAL_8 is a Python int too)."""
     from .support import type_object  # deferred: a cycle (support imports this module's B)
     from .types import of, t
+
     return type_object(region, t(kind) if kind is not None else of(value))
 
 
@@ -133,15 +134,23 @@ def deep_equal(a, b):
 # --- Tables --------------------------------------------------------------------------------
 
 _DEFAULTS = {"BOOLEAN": False, "REAL_32": 0.0, "REAL_64": 0.0, "CHARACTER_8": "\x00", "CHARACTER_32": "\x00"}
-_SEEDS = {"integer_quotient": "quotient", "unapplicable_opposite": "opposite"}   # renamed NUMERIC features
+_SEEDS = {"integer_quotient": "quotient", "unapplicable_opposite": "opposite"}  # renamed NUMERIC features
 
 
 def _compile(spec):
-    names = ["R", "X", "Y", "Z"][:spec.arity + 2]
-    body = spec.build(ast.Name("X", ast.Load()), [ast.Name(n, ast.Load()) for n in names[2:]],
-                      ast.Name("R", ast.Load()))
-    args = ast.arguments(posonlyargs=[], args=[ast.arg(n) for n in names], vararg=None, kwonlyargs=[],
-                         kw_defaults=[], kwarg=None, defaults=[])
+    names = ["R", "X", "Y", "Z"][: spec.arity + 2]
+    body = spec.build(
+        ast.Name("X", ast.Load()), [ast.Name(n, ast.Load()) for n in names[2:]], ast.Name("R", ast.Load())
+    )
+    args = ast.arguments(
+        posonlyargs=[],
+        args=[ast.arg(n) for n in names],
+        vararg=None,
+        kwonlyargs=[],
+        kw_defaults=[],
+        kwarg=None,
+        defaults=[],
+    )
     tree = ast.fix_missing_locations(ast.Expression(ast.Lambda(args, body)))
     return eval(compile(tree, "<scoopc.kernel.basic>", "eval"), {"B": B})
 
@@ -152,20 +161,25 @@ def _make_table(kind):
         if own in table:
             table[seed] = table[own]
     out = table["out"]
-    py_type = {"BOOLEAN": bool, "REAL_32": float, "REAL_64": float, "CHARACTER_8": str,
-               "CHARACTER_32": str}.get(kind, int)
+    py_type = {"BOOLEAN": bool, "REAL_32": float, "REAL_64": float, "CHARACTER_8": str, "CHARACTER_32": str}.get(
+        kind, int
+    )
     default = _DEFAULTS.get(kind, 0)
     for name, fn in {
         "tagged_out": out,
         "debug_output": out,
         "generator": lambda r, x: B.s8(r, kind),
         "generating_type": lambda r, x: generating_type(r, x, kind),
-        "twin": lambda r, x: x, "standard_twin": lambda r, x: x, "deep_twin": lambda r, x: x,
-        "copy": lambda r, x, other: None, "standard_copy": lambda r, x, other: None,
+        "twin": lambda r, x: x,
+        "standard_twin": lambda r, x: x,
+        "deep_twin": lambda r, x: x,
+        "copy": lambda r, x, other: None,
+        "standard_copy": lambda r, x, other: None,
         "deep_copy": lambda r, x, other: None,
         "same_type": lambda r, x, other: type(other) is py_type and _wide(x) == _wide(other),
         "conforms_to": lambda r, x, other: _conforms(x, other, py_type),
-        "standard_is_equal": table["is_equal"], "is_deep_equal": table["is_equal"],
+        "standard_is_equal": table["is_equal"],
+        "is_deep_equal": table["is_equal"],
         "is_equal": table["is_equal"],
         "equal": lambda r, x, a, b: equal(a, b),
         "standard_equal": lambda r, x, a, b: standard_equal(a, b),
@@ -188,7 +202,7 @@ def _wide(x):
 def _conforms(x, other, py_type):
     if type(other) in _KINDS:
         return type(other) is py_type and _wide(x) == _wide(other)
-    return getattr(type(other), "_key_", None) == "ANY"      # an object of class ANY itself
+    return getattr(type(other), "_key_", None) == "ANY"  # an object of class ANY itself
 
 
 def _print(region, o):
@@ -199,5 +213,6 @@ def _print(region, o):
         text = B.out_text(o)
     else:
         from .strings import text as string_text
+
         text = string_text(o.out)
     region.print(text)

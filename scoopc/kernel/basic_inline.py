@@ -8,6 +8,7 @@ is a name or a constant may be repeated); the last one always applies. An operan
 does not use is still evaluated (`B.seq (x, result)`) unless it is a name or a constant.
 The nodes returned have no positions: run `ast.fix_missing_locations` on the module.
 """
+
 import ast
 
 _PLACES = ("X", "Y", "Z")
@@ -96,10 +97,11 @@ def _constant(node):
 def _trivial(node):
     """May the operand be evaluated twice, or not at all (a name or a constant)?"""
     return isinstance(node, (ast.Name, ast.Constant)) or (
-        isinstance(node, ast.UnaryOp) and isinstance(node.operand, ast.Constant))
+        isinstance(node, ast.UnaryOp) and isinstance(node.operand, ast.Constant)
+    )
 
 
-def _y_const(nodes):            # Y is a number (not NaN)
+def _y_const(nodes):  # Y is a number (not NaN)
     return _constant(nodes["Y"]) is not None
 
 
@@ -142,8 +144,14 @@ def specs():
 # --- The tables ----------------------------------------------------------------------------
 
 INTEGER_CLASSES = {
-    "INTEGER_8": (8, True), "INTEGER_16": (16, True), "INTEGER_32": (32, True), "INTEGER_64": (64, True),
-    "NATURAL_8": (8, False), "NATURAL_16": (16, False), "NATURAL_32": (32, False), "NATURAL_64": (64, False),
+    "INTEGER_8": (8, True),
+    "INTEGER_16": (16, True),
+    "INTEGER_32": (32, True),
+    "INTEGER_64": (64, True),
+    "NATURAL_8": (8, False),
+    "NATURAL_16": (16, False),
+    "NATURAL_32": (32, False),
+    "NATURAL_64": (64, False),
 }
 
 
@@ -179,15 +187,23 @@ def _integer(name, bits, signed):
         twice as fast as masking when nothing overflows. Unsigned results: a mask."""
         if not signed:
             return _wrap_text(e, bits, signed)
-        test = {None: f"{low} <= (_t := {e}) <= {high}", "high": f"(_t := {e}) <= {high}",
-                "low": f"{low} <= (_t := {e})"}[check]
+        test = {
+            None: f"{low} <= (_t := {e}) <= {high}",
+            "high": f"(_t := {e}) <= {high}",
+            "low": f"{low} <= (_t := {e})",
+        }[check]
         return f"(_t if {test} else B.wrap_{p}(_t))"
+
     t = {
         "item": "X",
         "hash_code": "X & 2147483647",
         "sign": [(None, "(X > 0) - (X < 0)"), (None, "B.isign(X)")] if signed else "(1 if X > 0 else 0)",
-        "one": "1", "zero": "0",
-        "is_less": "X < Y", "is_less_equal": "X <= Y", "is_greater": "X > Y", "is_greater_equal": "X >= Y",
+        "one": "1",
+        "zero": "0",
+        "is_less": "X < Y",
+        "is_less_equal": "X <= Y",
+        "is_greater": "X > Y",
+        "is_greater_equal": "X >= Y",
         "is_equal": "X == Y",
         "three_way_comparison": [(None, "(X > Y) - (X < Y)"), (None, "B.cmp(X, Y)")],
         "max": [(None, "(X if X >= Y else Y)"), (None, "B.imax(X, Y)")],
@@ -201,17 +217,21 @@ def _integer(name, bits, signed):
         "minus": [(_y_nonnegative, wrap("X - Y", "low")), (_y_negative, wrap("X - Y", "high")), (None, wrap("X - Y"))],
         "product": wrap("X * Y"),
         "quotient": [(_y_nonzero, "X / Y"), (_y_name, "(X / Y if Y else B.fdiv(X, Y))"), (None, "B.fdiv(X, Y)")]
-        if bits < 64 else "B.fquot(X, Y)",                       # x / 0 is an infinity, as in C
+        if bits < 64
+        else "B.fquot(X, Y)",  # x / 0 is an infinity, as in C
         "identity": "X",
         "power": "B.power(X, Y)",
         "interval": "B.interval(R, X, Y)",
         "to_boolean": "X != 0",
         "to_real": "B.r32(X + 0.0)" if bits < 64 else "B.i2r32(X)",
         "to_double": "X + 0.0",
-        "to_character_8": "B.chr(X & 255)", "to_character_32": "B.chr(X)",     # C casts
+        "to_character_8": "B.chr(X & 255)",
+        "to_character_32": "B.chr(X)",  # C casts
         "to_hex_string": f"B.hex_string(R, X, {bits})",
         "to_hex_character": "B.HEX_DIGITS[X]",
-        "bit_and": "X & Y", "bit_or": "X | Y", "bit_xor": "X ^ Y",
+        "bit_and": "X & Y",
+        "bit_or": "X | Y",
+        "bit_xor": "X ^ Y",
         "bit_not": "~X" if signed else f"X ^ {(1 << bits) - 1}",
         "bit_shift": f"B.shift_{p}(X, Y)",
         "bit_shift_left": wrap("X << Y"),
@@ -243,16 +263,36 @@ def _integer(name, bits, signed):
 
 _REAL_COMPARISONS = {
     # eif_helpers.h: NaN is the smallest value, equal to itself.
-    "is_less": [(_y_const, "not (X >= Y)"), (_x_const, "X < Y"), (None, "(X < Y or (X != X and Y == Y))"),
-                (None, "B.flt(X, Y)")],
-    "is_less_equal": [(_y_const, "not (X > Y)"), (_x_const, "X <= Y"), (None, "(X <= Y or X != X)"),
-                      (None, "B.fle(X, Y)")],
-    "is_greater": [(_y_const, "X > Y"), (_x_const, "not (X <= Y)"), (None, "(X > Y or (Y != Y and X == X))"),
-                   (None, "B.fgt(X, Y)")],
-    "is_greater_equal": [(_y_const, "X >= Y"), (_x_const, "not (X < Y)"), (None, "(X >= Y or Y != Y)"),
-                         (None, "B.fge(X, Y)")],
-    "is_equal": [(_y_const, "X == Y"), (_x_const, "X == Y"), (None, "(X == Y or (X != X and Y != Y))"),
-                 (None, "B.feq(X, Y)")],
+    "is_less": [
+        (_y_const, "not (X >= Y)"),
+        (_x_const, "X < Y"),
+        (None, "(X < Y or (X != X and Y == Y))"),
+        (None, "B.flt(X, Y)"),
+    ],
+    "is_less_equal": [
+        (_y_const, "not (X > Y)"),
+        (_x_const, "X <= Y"),
+        (None, "(X <= Y or X != X)"),
+        (None, "B.fle(X, Y)"),
+    ],
+    "is_greater": [
+        (_y_const, "X > Y"),
+        (_x_const, "not (X <= Y)"),
+        (None, "(X > Y or (Y != Y and X == X))"),
+        (None, "B.fgt(X, Y)"),
+    ],
+    "is_greater_equal": [
+        (_y_const, "X >= Y"),
+        (_x_const, "not (X < Y)"),
+        (None, "(X >= Y or Y != Y)"),
+        (None, "B.fge(X, Y)"),
+    ],
+    "is_equal": [
+        (_y_const, "X == Y"),
+        (_x_const, "X == Y"),
+        (None, "(X == Y or (X != X and Y != Y))"),
+        (None, "B.feq(X, Y)"),
+    ],
 }
 
 
@@ -263,11 +303,15 @@ def _real(bits):
         "item": "X",
         "hash_code": "B.trunc32(X) & 2147483647",
         "sign": "B.fsign(X)",
-        "one": "1.0", "zero": "0.0",
-        "nan": "B.NAN", "negative_infinity": "B.NEG_INF", "positive_infinity": "B.POS_INF",
+        "one": "1.0",
+        "zero": "0.0",
+        "nan": "B.NAN",
+        "negative_infinity": "B.NEG_INF",
+        "positive_infinity": "B.POS_INF",
         "ieee_is_equal": "X == Y",
         "three_way_comparison": "B.fcmp(X, Y)",
-        "max": "B.fmax(X, Y)", "min": "B.fmin(X, Y)",
+        "max": "B.fmax(X, Y)",
+        "min": "B.fmin(X, Y)",
         "divisible": "Y != 0.0",
         "exponentiable": "B.exponentiable(X, Y)",
         "is_hashable": "X != 0.0",
@@ -275,11 +319,17 @@ def _real(bits):
         "is_negative_infinity": "X == B.NEG_INF",
         "is_positive_infinity": "X == B.POS_INF",
         "abs": [(None, "(X if X > 0 else -X)"), (None, "B.fabs(X)")],
-        "plus": rnd("X + Y"), "minus": rnd("X - Y"), "product": rnd("X * Y"),
-        "quotient": [(_y_nonzero, rnd("X / Y")), (_y_name, rnd("(X / Y if Y else B.fdiv(X, Y))")),
-                     (None, rnd("B.fdiv(X, Y)"))],
+        "plus": rnd("X + Y"),
+        "minus": rnd("X - Y"),
+        "product": rnd("X * Y"),
+        "quotient": [
+            (_y_nonzero, rnd("X / Y")),
+            (_y_name, rnd("(X / Y if Y else B.fdiv(X, Y))")),
+            (None, rnd("B.fdiv(X, Y)")),
+        ],
         "power": "B.power(X, Y)",
-        "identity": "X", "opposite": "-X",
+        "identity": "X",
+        "opposite": "-X",
         "truncated_to_integer": "B.trunc32(X)",
         "truncated_to_integer_64": "B.trunc64(X)",
         "ceiling": "B.trunc32(B.fceil(X))",
@@ -300,25 +350,45 @@ def _real(bits):
 
 _BOOLEAN = {
     "item": "X",
-    "hash_code": "(1 if X else 0)", "to_integer": "(1 if X else 0)",
+    "hash_code": "(1 if X else 0)",
+    "to_integer": "(1 if X else 0)",
     "is_equal": "X == Y",
-    "conjuncted": "X & Y", "conjuncted_semistrict": "X and Y",
-    "disjuncted": "X | Y", "disjuncted_semistrict": "X or Y",
+    "conjuncted": "X & Y",
+    "conjuncted_semistrict": "X and Y",
+    "disjuncted": "X | Y",
+    "disjuncted_semistrict": "X or Y",
     "disjuncted_exclusive": "X ^ Y",
     "implication": "not X or Y",
     "negated": "not X",
     "out": "B.out_bool(R, X)",
 }
 
-_CLASSIFY = ("alpha", "upper", "lower", "digit", "hexa_digit", "space", "punctuation", "alpha_numeric",
-             "printable", "graph", "control")
+_CLASSIFY = (
+    "alpha",
+    "upper",
+    "lower",
+    "digit",
+    "hexa_digit",
+    "space",
+    "punctuation",
+    "alpha_numeric",
+    "printable",
+    "graph",
+    "control",
+)
 
 
 def _character(wide):
     code = "B.ord(X)"
     t = {
-        "item": "X", "code": code, "natural_32_code": code, "hash_code": code,
-        "is_less": "X < Y", "is_less_equal": "X <= Y", "is_greater": "X > Y", "is_greater_equal": "X >= Y",
+        "item": "X",
+        "code": code,
+        "natural_32_code": code,
+        "hash_code": code,
+        "is_less": "X < Y",
+        "is_less_equal": "X <= Y",
+        "is_greater": "X > Y",
+        "is_greater_equal": "X >= Y",
         "is_equal": "X == Y",
         "three_way_comparison": [(None, "(X > Y) - (X < Y)"), (None, "B.cmp(X, Y)")],
         "max": [(None, "(X if X >= Y else Y)"), (None, "B.imax(X, Y)")],
@@ -328,26 +398,36 @@ def _character(wide):
         "to_hexa_digit": "B.hexa_value(X)",
     }
     if wide:
-        t.update({
-            "plus": "B.chr(B.ord(X) + Y)", "minus": "B.chr(B.ord(X) - Y)",
-            "next": "B.chr(B.ord(X) + 1)", "previous": "B.chr(B.ord(X) - 1)",
-            "to_character_8": "B.chr(B.ord(X) & 255)",
-            "as_upper": "B.upper32(X)", "as_lower": "B.lower32(X)",
-            "is_digit": "'0' <= X <= '9'",
-            "is_hexa_digit": "X in B.C8_HEXA",
-            "is_character_8": "X <= '\\xff'",
-            "out": "B.out_c32(R, X)",
-        })
+        t.update(
+            {
+                "plus": "B.chr(B.ord(X) + Y)",
+                "minus": "B.chr(B.ord(X) - Y)",
+                "next": "B.chr(B.ord(X) + 1)",
+                "previous": "B.chr(B.ord(X) - 1)",
+                "to_character_8": "B.chr(B.ord(X) & 255)",
+                "as_upper": "B.upper32(X)",
+                "as_lower": "B.lower32(X)",
+                "is_digit": "'0' <= X <= '9'",
+                "is_hexa_digit": "X in B.C8_HEXA",
+                "is_character_8": "X <= '\\xff'",
+                "out": "B.out_c32(R, X)",
+            }
+        )
         for prop in _CLASSIFY:
             t.setdefault("is_" + prop, f"B.is_{prop}32(X)")
     else:
-        t.update({
-            "plus": "B.chr((B.ord(X) + Y) & 255)", "minus": "B.chr((B.ord(X) - Y) & 255)",
-            "next": "B.chr((B.ord(X) + 1) & 255)", "previous": "B.chr((B.ord(X) - 1) & 255)",
-            "to_character_8": "X",
-            "as_upper": "B.UPPER8[X]", "as_lower": "B.LOWER8[X]",
-            "out": "B.out_c8(R, X)",
-        })
+        t.update(
+            {
+                "plus": "B.chr((B.ord(X) + Y) & 255)",
+                "minus": "B.chr((B.ord(X) - Y) & 255)",
+                "next": "B.chr((B.ord(X) + 1) & 255)",
+                "previous": "B.chr((B.ord(X) - 1) & 255)",
+                "to_character_8": "X",
+                "as_upper": "B.UPPER8[X]",
+                "as_lower": "B.LOWER8[X]",
+                "out": "B.out_c8(R, X)",
+            }
+        )
         for prop in _CLASSIFY:
             t["is_" + prop] = f"X in B.C8_{'HEXA' if prop == 'hexa_digit' else prop.upper()}"
     t["upper"], t["lower"] = t["as_upper"], t["as_lower"]
@@ -366,10 +446,16 @@ _POINTER = {
 }
 
 # ANY's built-ins on any target (a basic value or an object): through the dynamic dispatch.
-_ANY = {name: f"B.query(X, {name!r}, R)" for name in
-        ("generator", "generating_type", "tagged_out", "twin", "standard_twin", "deep_twin")}
-_ANY.update({name: f"B.call(X, {name!r}, (Y,), R)" for name in
-             ("conforms_to", "same_type", "standard_is_equal", "is_deep_equal", "copy", "standard_copy")})
+_ANY = {
+    name: f"B.query(X, {name!r}, R)"
+    for name in ("generator", "generating_type", "tagged_out", "twin", "standard_twin", "deep_twin")
+}
+_ANY.update(
+    {
+        name: f"B.call(X, {name!r}, (Y,), R)"
+        for name in ("conforms_to", "same_type", "standard_is_equal", "is_deep_equal", "copy", "standard_copy")
+    }
+)
 
 
 def _arity(tree_and_counts):
@@ -379,9 +465,17 @@ def _arity(tree_and_counts):
 
 def _build():
     tables = {name: _integer(name, *shape) for name, shape in INTEGER_CLASSES.items()}
-    tables.update({"REAL_32": _real(32), "REAL_64": _real(64), "BOOLEAN": _BOOLEAN,
-                   "CHARACTER_8": _character(False), "CHARACTER_32": _character(True),
-                   "POINTER": _POINTER, "ANY": _ANY})
+    tables.update(
+        {
+            "REAL_32": _real(32),
+            "REAL_64": _real(64),
+            "BOOLEAN": _BOOLEAN,
+            "CHARACTER_8": _character(False),
+            "CHARACTER_32": _character(True),
+            "POINTER": _POINTER,
+            "ANY": _ANY,
+        }
+    )
     result = {}
     for class_name, table in tables.items():
         for feature, alts in table.items():

@@ -5,6 +5,7 @@ through scoopc.kernel.basic, which adds the dynamic dispatch and the code genera
 points; semantics and sources are described there. This module imports no other module of
 the kernel at load time, so scoopc.kernel.basic_dispatch can import it.
 """
+
 import math
 import struct
 import unicodedata
@@ -15,7 +16,7 @@ NAN = math.nan
 POS_INF = math.inf
 NEG_INF = -math.inf
 HEX_DIGITS = "0123456789ABCDEF"
-chr = chr        # `B.chr`, `B.ord`: a generated local may shadow the builtins
+chr = chr  # `B.chr`, `B.ord`: a generated local may shadow the builtins
 ord = ord
 
 
@@ -26,10 +27,12 @@ def seq(*values):
 
 # --- Integers ------------------------------------------------------------------------------
 
+
 def _sized(bits, signed):
     mask = (1 << bits) - 1
     half = 1 << (bits - 1)
     if signed:
+
         def wrap(x):
             return ((x + half) & mask) - half
 
@@ -50,6 +53,7 @@ def _sized(bits, signed):
         def iabs(x):
             return x if x >= 0 else ((half - x) & mask) - half
     else:
+
         def wrap(x):
             return x & mask
 
@@ -114,6 +118,7 @@ def exponentiable(x, other):
 def interval(region, lower, upper):
     """`lower |..| upper`: a new INTEGER_INTERVAL (`make (lower, upper)`) in `region`."""
     from . import CLASSES
+
     cls = CLASSES.get("INTEGER_INTERVAL@BASE") or CLASSES["INTEGER_INTERVAL"]
     result = region.new(cls)
     result.make(wrap_i32(lower), upper)
@@ -167,11 +172,11 @@ def power(x, y):
         return math.pow(x, y)
     except (ValueError, OverflowError):
         x = float(x)
-        if x == 0.0:                                     # pow (±0, y < 0)
+        if x == 0.0:  # pow (±0, y < 0)
             return math.copysign(math.inf, x) if _odd_integer(y) else math.inf
-        if x < 0.0 and y != math.floor(y):               # negative base, fractional exponent
+        if x < 0.0 and y != math.floor(y):  # negative base, fractional exponent
             return NAN
-        return -math.inf if x < 0.0 and _odd_integer(y) else math.inf    # overflow
+        return -math.inf if x < 0.0 and _odd_integer(y) else math.inf  # overflow
 
 
 def trunc32(x):
@@ -191,7 +196,7 @@ def fceil(x):
     """C `ceil`: a double, keeps the sign of zero (ceil (-0.5) = -0.0)."""
     try:
         return math.copysign(float(math.ceil(x)), x)
-    except (OverflowError, ValueError):                  # infinities, NaN
+    except (OverflowError, ValueError):  # infinities, NaN
         return x
 
 
@@ -266,6 +271,7 @@ def fcmp(a, b):
 
 
 # --- Characters ----------------------------------------------------------------------------
+
 
 def _c8_set(*ranges):
     return frozenset(chr(c) for lo, hi in ranges for c in range(lo, hi + 1))
@@ -345,7 +351,7 @@ def is_control32(c):
 
 # --- Output --------------------------------------------------------------------------------
 
-_S8 = [None]        # scoopc.kernel.strings.new_string_8, imported on first use (tests set it)
+_S8 = [None]  # scoopc.kernel.strings.new_string_8, imported on first use (tests set it)
 
 
 def s8(region, text):
@@ -353,6 +359,7 @@ def s8(region, text):
     make = _S8[0]
     if make is None:
         from .strings import new_string_8 as make
+
         _S8[0] = make
     return make(region, text)
 

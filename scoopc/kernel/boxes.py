@@ -23,11 +23,14 @@ def _integer(kind):
 
 
 Integer8, Integer16, Integer64 = (_integer(k) for k in ("INTEGER_8", "INTEGER_16", "INTEGER_64"))
-Natural8, Natural16, Natural32, Natural64 = (_integer(k) for k in ("NATURAL_8", "NATURAL_16", "NATURAL_32",
-                                                                    "NATURAL_64"))
+Natural8, Natural16, Natural32, Natural64 = (
+    _integer(k) for k in ("NATURAL_8", "NATURAL_16", "NATURAL_32", "NATURAL_64")
+)
 
-KINDS = {cls: cls._kind_ for cls in (Real32, Character32, Integer8, Integer16, Integer64,
-                                      Natural8, Natural16, Natural32, Natural64)}
+KINDS = {
+    cls: cls._kind_
+    for cls in (Real32, Character32, Integer8, Integer16, Integer64, Natural8, Natural16, Natural32, Natural64)
+}
 BY_KIND = {kind: cls for cls, kind in KINDS.items()}
 
 

@@ -4,6 +4,7 @@ run-time failure (the violated assertion, then class, routine and file:line of e
 Generated modules are mapped back to Eiffel lines through `_lines.json`, written beside them by
 the compiler: {module: [eiffel file, {python line: eiffel line}]}.
 """
+
 from __future__ import annotations
 
 import json
@@ -18,7 +19,7 @@ from .errors import EiffelFailure
 from .support import GUARDS, ContractViolation, EiffelRuntimeError
 
 _LINE_MAPS: dict = {}
-PROGRAM = [sys.argv[0] if sys.argv and sys.argv[0] else "program"]    # the command line ARGUMENTS reads
+PROGRAM = [sys.argv[0] if sys.argv and sys.argv[0] else "program"]  # the command line ARGUMENTS reads
 
 
 def set_arguments(args) -> None:
@@ -29,12 +30,23 @@ def set_arguments(args) -> None:
     PROGRAM[:] = args
 
 
-def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, strict=False,
-         virtual_clock=False, debug=False, stdout=None, stderr=None, on_start=None) -> int:
+def main(
+    root_cls,
+    creator: str,
+    argv,
+    shadowed=None,
+    trace_processors=False,
+    strict=False,
+    virtual_clock=False,
+    debug=False,
+    stdout=None,
+    stderr=None,
+    on_start=None,
+) -> int:
     from .. import runtime as rt
     from . import link
 
-    link.register_again("eiffel_base")                       # the registry may have been reset
+    link.register_again("eiffel_base")  # the registry may have been reset
     link.register_again(root_cls.__module__.rpartition(".")[0])
     for name, key in (shadowed or {}).items():
         CLASSES.setdefault(key, CLASSES.get(name))
@@ -50,9 +62,18 @@ def main(root_cls, creator: str, argv, shadowed=None, trace_processors=False, st
         return Exit.USAGE
     restore = _tune_collector()
     try:
-        return rt.run_main(root_cls, routine, (), describe=describe, trace_processors=trace_processors,
-                           strict=strict, virtual_clock=virtual_clock, stdout=stdout or sys.stdout,
-                           stderr=stderr, on_start=on_start)
+        return rt.run_main(
+            root_cls,
+            routine,
+            (),
+            describe=describe,
+            trace_processors=trace_processors,
+            strict=strict,
+            virtual_clock=virtual_clock,
+            stdout=stdout or sys.stdout,
+            stderr=stderr,
+            on_start=on_start,
+        )
     finally:
         restore()
 
@@ -70,6 +91,7 @@ def _tune_collector():
     def restore():
         gc.set_threshold(*before)
         gc.unfreeze()
+
     return restore
 
 
@@ -121,7 +143,7 @@ def _exception_text(exception) -> str:
         message = exception.message
         tag = text(message) if message is not None else ""
         return f"{type(exception)._key_}" + (f": {tag}" if tag else "")
-    except Exception:                        # noqa: BLE001 - a report must not fail
+    except Exception:  # noqa: BLE001 - a report must not fail
         return type(exception).__name__
 
 

@@ -1,6 +1,7 @@
 """Loading a compiled package: import its modules parents first, then give every module the
 names of the classes it may use (a generated module refers to other classes by their plain
 names, `ARRAY`, `STRING_8`; importing them module by module would make import cycles)."""
+
 from __future__ import annotations
 
 import importlib
@@ -13,7 +14,7 @@ _LOADED: dict = {}
 #: The file, in a compiled program's package, naming the library routines that are leaves in that
 #: program (scoopc.codegen.scoop.library_leaves); `load` reads it.
 LIBRARY_LEAVES_FILE = "_library_leaves.json"
-_LIBRARY_LEAVES: set = set()     # "CLASS.routine" of the program loaded in this process
+_LIBRARY_LEAVES: set = set()  # "CLASS.routine" of the program loaded in this process
 
 
 def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
@@ -21,7 +22,7 @@ def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
     loaded before, e.g. the standard library) and of this package (which take precedence)."""
     if package in _LOADED:
         return _LOADED[package]
-    if uses:                             # a program (the library itself uses nothing)
+    if uses:  # a program (the library itself uses nothing)
         _read_library_leaves(package)
     names: dict = {}
     for other in uses:
@@ -62,7 +63,7 @@ def _read_library_leaves(package: str) -> None:
     path = Path(getattr(module, "__file__", None) or ".").parent / LIBRARY_LEAVES_FILE
     try:
         leaves = set(json.loads(path.read_text()))
-    except (OSError, ValueError):       # a package compiled without the list: no library leaves
+    except (OSError, ValueError):  # a package compiled without the list: no library leaves
         leaves = set()
     _LIBRARY_LEAVES.clear()
     _LIBRARY_LEAVES.update(leaves)
@@ -75,6 +76,5 @@ def is_leaf_routine(cls: type, name: str) -> bool:
     for owner in cls.__mro__:
         function = owner.__dict__.get(name)
         if function is not None:
-            return bool(getattr(function, "_scoop_leaf_", False)) \
-                or f"{owner.__name__}.{name}" in _LIBRARY_LEAVES
+            return bool(getattr(function, "_scoop_leaf_", False)) or f"{owner.__name__}.{name}" in _LIBRARY_LEAVES
     return False

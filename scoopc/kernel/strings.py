@@ -17,6 +17,7 @@ Storage model (every STRING_8, STRING_32, IMMUTABLE_STRING_8, IMMUTABLE_STRING_3
 - `_hk`, `_hv`: cache of `hash_code` (`_hk` is the `_s` it was computed for).
 Immutable strings only have `_s` and `_cap`.
 """
+
 from __future__ import annotations
 
 from . import CLASSES
@@ -136,7 +137,7 @@ def sync_group(cur):
     for member in group:
         if member is cur:
             break
-    else:               # stale link copied by a twin: not a member, never write into the group
+    else:  # stale link copied by a twin: not a member, never write into the group
         cur._grp = None
         return
     s = cur._s
@@ -206,7 +207,7 @@ def leave_group(cur):
     for i, member in enumerate(group):
         if member is cur:
             del group[i]
-            if len(group) == 1:         # the last one left alone: an ordinary string again
+            if len(group) == 1:  # the last one left alone: an ordinary string again
                 group[0]._grp = None
                 group.clear()
             return
@@ -241,8 +242,10 @@ LOWER8 = {c: c + 32 for c in list(range(0x41, 0x5B)) + list(range(0xC0, 0xDF)) i
 UPPER8 = {c: c - 32 for c in list(range(0x61, 0x7B)) + list(range(0xE0, 0xFF)) if c != 0xF7}
 # CHARACTER_8 `is_space`; CHARACTER_32 (CHARACTER_PROPERTY.is_space) adds Unicode White_Space.
 WS8 = " \t\n\x0b\x0c\r"
-WS32 = WS8 + "\x85\xa0\u1680\u2000\u2001\u2002\u2003\u2004\u2005\u2006\u2007\u2008\u2009\u200a" \
+WS32 = (
+    WS8 + "\x85\xa0\u1680\u2000\u2001\u2002\u2003\u2004\u2005\u2006\u2007\u2008\u2009\u200a"
     "\u2028\u2029\u202f\u205f\u3000"
+)
 
 _LOWER32: dict = {}
 _UPPER32: dict = {}
@@ -252,7 +255,7 @@ def _lower_char(c):
     found = _LOWER32.get(c)
     if found is None:
         low = c.lower()
-        if len(low) != 1:           # U+0130: simple lower case mapping is 'i'
+        if len(low) != 1:  # U+0130: simple lower case mapping is 'i'
             low = "i" if c == "\u0130" else c
         found = _LOWER32[c] = low
     return found
@@ -262,8 +265,8 @@ def _upper_char(c):
     found = _UPPER32.get(c)
     if found is None:
         up = c.upper()
-        if len(up) != 1:            # only a full (multi-character) mapping: the simple one is
-            title = c.title()       # the title case when that is one character, else none
+        if len(up) != 1:  # only a full (multi-character) mapping: the simple one is
+            title = c.title()  # the title case when that is one character, else none
             up = title if len(title) == 1 else c
         found = _UPPER32[c] = up
     return found
@@ -334,6 +337,7 @@ def _ise_hash_wide(s):
 # Output of reals for `append_real`/`append_double`: the basic types' `out` texts
 # (scoopc/kernel/basic.py r32_text/r64_text); the classic ISE runtime's c_outr32 ("%g") and
 # c_outr64 ("%.17g") if that module is not there.
+
 
 def real_32_out(r) -> str:
     try:

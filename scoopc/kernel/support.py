@@ -4,6 +4,7 @@ calls with dynamic binding, agents, tuples, iteration, contracts and their failu
 Each helper is small and states the Eiffel rule it implements; codegen decides statically what
 it can, these handle what only the run time knows (the dynamic class of a target, lock passing).
 """
+
 from __future__ import annotations
 
 from . import CLASSES, register as _register, types as T
@@ -70,7 +71,7 @@ def old(fn):
     """`old e`, evaluated at routine entry; a failure surfaces only if the postcondition uses it."""
     try:
         return fn()
-    except Exception as error:               # noqa: BLE001 - kept and re-raised where it is used
+    except Exception as error:  # noqa: BLE001 - kept and re-raised where it is used
         return _OldFailure(error)
 
 
@@ -83,11 +84,19 @@ def caught(here, error):
     _LAST[here] = exception_object(here, error)
 
 
-_CONTRACT_CLASSES = {"precondition": "PRECONDITION_VIOLATION", "postcondition": "POSTCONDITION_VIOLATION",
-                     "invariant": "INVARIANT_VIOLATION", "check": "CHECK_VIOLATION",
-                     "loop_invariant": "LOOP_INVARIANT_VIOLATION", "variant": "VARIANT_VIOLATION"}
-_RUNTIME_CLASSES = {"bad_inspect_value": "BAD_INSPECT_VALUE", "void_target": "VOID_TARGET",
-                    "external_failure": "EXTERNAL_FAILURE"}
+_CONTRACT_CLASSES = {
+    "precondition": "PRECONDITION_VIOLATION",
+    "postcondition": "POSTCONDITION_VIOLATION",
+    "invariant": "INVARIANT_VIOLATION",
+    "check": "CHECK_VIOLATION",
+    "loop_invariant": "LOOP_INVARIANT_VIOLATION",
+    "variant": "VARIANT_VIOLATION",
+}
+_RUNTIME_CLASSES = {
+    "bad_inspect_value": "BAD_INSPECT_VALUE",
+    "void_target": "VOID_TARGET",
+    "external_failure": "EXTERNAL_FAILURE",
+}
 
 
 def exception_object(here, error):
@@ -97,6 +106,7 @@ def exception_object(here, error):
     if isinstance(error, EiffelFailure):
         return error
     from ..runtime import DirtyRegionError, PreconditionViolation
+
     while isinstance(error, DirtyRegionError) and error.__cause__ is not None:
         error = error.__cause__
     tag = None
@@ -118,11 +128,12 @@ def exception_object(here, error):
     exception = create(here, cls, None, None, ())
     if tag:
         from .strings import new_string_32
+
         exception.description = new_string_32(here, tag)
     return EiffelFailure(exception)
 
 
-GUARDS = set()          # code objects of the precondition checks generated around externals
+GUARDS = set()  # code objects of the precondition checks generated around externals
 
 
 def guard(fn):
@@ -139,6 +150,7 @@ def last_caught(here):
 def missing_external(cls, name):
     def missing(*args):
         raise EiffelRuntimeError("external_failure", f"external feature {cls}.{name} is not available")
+
     missing.__name__ = name
     return missing
 
@@ -300,8 +312,10 @@ def routine_of(target, name):
         elif callable(member):
             found = member
         else:
+
             def found(obj, _name=name):
                 return getattr(obj, _name)
+
         _ROUTINES[key] = found
     return found
 
@@ -317,7 +331,7 @@ def getter(name):
         if not name.isidentifier():
             raise ValueError(f"not an attribute name: {name!r}")
         scope: dict = {}
-        exec(f"def get_{name}(obj):\n    return obj.{name}\n", scope)   # noqa: S102 - an identifier
+        exec(f"def get_{name}(obj):\n    return obj.{name}\n", scope)  # noqa: S102 - an identifier
         found = scope[f"get_{name}"]
         found._scoop_leaf_ = True
         _GETTERS[name] = found
@@ -371,8 +385,9 @@ def tuple_put(t, index, value):
 
 def manifest_array(here, cls, gen, items):
     """`<<a, b, c>>`: an ARRAY indexed from 1."""
-    array = create(here, cls, gen, "make_filled", (gen[0].default(here), 1, len(items)) if items else
-                   (gen[0].default(here), 1, 0))
+    array = create(
+        here, cls, gen, "make_filled", (gen[0].default(here), 1, len(items)) if items else (gen[0].default(here), 1, 0)
+    )
     for index, item in enumerate(items, start=1):
         array.put(item, index)
     return array
@@ -430,19 +445,22 @@ def dispatcher(name, is_property):
         from . import basic
 
         if is_property:
+
             def found(target, _name=name):
                 result = basic.query(target, _name)
                 check = getattr(target, "_invariant_", None)
-                if check is not None:             # an agent call is a qualified call
+                if check is not None:  # an agent call is a qualified call
                     check()
                 return result
         else:
+
             def found(target, *args, _name=name):
                 result = basic.call(target, _name, args)
                 check = getattr(target, "_invariant_", None)
                 if check is not None:
                     check()
                 return result
+
         _DISPATCHERS[key] = found
     return found
 

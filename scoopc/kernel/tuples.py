@@ -4,6 +4,7 @@ its items, and `_gen_`, the TypeDescs of its item types).
 `new_tuple` builds a TUPLE in a region; `items_of` reads the items of anything tuple-like that the
 externals accept (a TUPLE object, a Python tuple or list, Void).
 """
+
 from . import cls
 
 

@@ -5,22 +5,43 @@ A TypeDesc names a class by its universe key and lists its actual generics; desc
 interned (`t(key, generics)` returns the same object for the same type), so building one inside
 a routine costs a dictionary lookup.
 """
+
 from __future__ import annotations
 
 from . import CLASSES
 from .boxes import KINDS as BOXES
 
 _BASIC_DEFAULTS = {
-    "INTEGER_8": 0, "INTEGER_16": 0, "INTEGER_32": 0, "INTEGER_64": 0,
-    "NATURAL_8": 0, "NATURAL_16": 0, "NATURAL_32": 0, "NATURAL_64": 0,
-    "REAL_32": 0.0, "REAL_64": 0.0, "BOOLEAN": False,
-    "CHARACTER_8": "\x00", "CHARACTER_32": "\x00", "POINTER": 0,
+    "INTEGER_8": 0,
+    "INTEGER_16": 0,
+    "INTEGER_32": 0,
+    "INTEGER_64": 0,
+    "NATURAL_8": 0,
+    "NATURAL_16": 0,
+    "NATURAL_32": 0,
+    "NATURAL_64": 0,
+    "REAL_32": 0.0,
+    "REAL_64": 0.0,
+    "BOOLEAN": False,
+    "CHARACTER_8": "\x00",
+    "CHARACTER_32": "\x00",
+    "POINTER": 0,
 }
 _PYTHON_TYPES = {
-    "INTEGER_8": int, "INTEGER_16": int, "INTEGER_32": int, "INTEGER_64": int,
-    "NATURAL_8": int, "NATURAL_16": int, "NATURAL_32": int, "NATURAL_64": int,
-    "REAL_32": float, "REAL_64": float, "BOOLEAN": bool,
-    "CHARACTER_8": str, "CHARACTER_32": str, "POINTER": int,
+    "INTEGER_8": int,
+    "INTEGER_16": int,
+    "INTEGER_32": int,
+    "INTEGER_64": int,
+    "NATURAL_8": int,
+    "NATURAL_16": int,
+    "NATURAL_32": int,
+    "NATURAL_64": int,
+    "REAL_32": float,
+    "REAL_64": float,
+    "BOOLEAN": bool,
+    "CHARACTER_8": str,
+    "CHARACTER_32": str,
+    "POINTER": int,
 }
 # The basic classes' conforming ancestors (a Python value's dynamic type is one of them).
 _BASIC_ANCESTORS = {
@@ -66,6 +87,7 @@ class TypeDesc:
         cls = self.pyclass
         if cls is not None and getattr(cls, "_expanded_", False):
             from .support import new_expanded
+
             return new_expanded(region, cls, self.generics)
         return None
 
@@ -102,7 +124,7 @@ class TypeDesc:
             return True
         actual = ancestor_generics(type(value), getattr(value, "_gen_", ()), self.key)
         if actual is None or len(actual) != len(self.generics):
-            return True           # generics not known at run time
+            return True  # generics not known at run time
         return all(mine.conforms_to(theirs) for mine, theirs in zip(actual, self.generics))
 
     def conforms_to(self, other: TypeDesc) -> bool:

@@ -4,6 +4,7 @@ Input: a SourceFile. Output: ParseResult (the ClassDeclaration or None, and diag
 lark's LALR(1) parser with the basic lexer (so keywords are reserved) builds AST nodes in its
 reduction callbacks (scoopc/parse_tree); there is no intermediate parse tree.
 """
+
 from __future__ import annotations
 
 import os
@@ -21,7 +22,7 @@ from ..source import SourceFile, Span
 from . import syntax_errors
 from .builders import AstBuilder
 
-GRAMMAR_PATH = Path(__file__).parents[1] / "grammar.lark"   # where users and docs look for it
+GRAMMAR_PATH = Path(__file__).parents[1] / "grammar.lark"  # where users and docs look for it
 
 _lock = threading.Lock()
 _instance: tuple[Lark, AstBuilder] | None = None
@@ -48,9 +49,16 @@ def _accelerator() -> dict:
 def make_parser(builder: object, accelerate: bool = True) -> Lark:
     """A lark LALR parser for the grammar that calls `builder`'s methods on each reduction."""
     options = _accelerator() if accelerate else {}
-    return Lark(GRAMMAR_PATH.read_text(encoding="utf-8"), parser="lalr", lexer="basic",
-                transformer=builder, maybe_placeholders=True, propagate_positions=False,
-                cache=True, **options)
+    return Lark(
+        GRAMMAR_PATH.read_text(encoding="utf-8"),
+        parser="lalr",
+        lexer="basic",
+        transformer=builder,
+        maybe_placeholders=True,
+        propagate_positions=False,
+        cache=True,
+        **options,
+    )
 
 
 def _parser() -> tuple[Lark, AstBuilder]:
@@ -117,7 +125,7 @@ def _recover(source: SourceFile, error: Diagnostic) -> list[Diagnostic]:
         resume = _CLAUSE_START.search(text, at + 1 if clause is not None and clause == at else at)
         if clause is None or resume is None:
             break
-        text = text[:clause] + re.sub(r"[^\n]", " ", text[clause:resume.start()]) + text[resume.start():]
+        text = text[:clause] + re.sub(r"[^\n]", " ", text[clause : resume.start()]) + text[resume.start() :]
         _, problems, error = _parse_once(SourceFile(source.path, text))
         later = [p for p in problems + ([error] if error else []) if _offset(source, p) >= resume.start()]
         if error is not None and _offset(source, error) < resume.start():
@@ -138,23 +146,32 @@ def _offset(source: SourceFile, d: Diagnostic) -> int:
 
 
 def _stray_open_operands(builder: AstBuilder) -> list[Diagnostic]:
-    return [diagnostics.make("SYNTAX", operand.span, found="`?`",
-                             expected="an expression (`?` is an open operand, only allowed "
-                                      "among the arguments of an agent)")
-            for operand in builder.unopened_operands()]
+    return [
+        diagnostics.make(
+            "SYNTAX",
+            operand.span,
+            found="`?`",
+            expected="an expression (`?` is an open operand, only allowed among the arguments of an agent)",
+        )
+        for operand in builder.unopened_operands()
+    ]
 
 
 def _one_class(classes: list, source: SourceFile, problems: list[Diagnostic]) -> ParseResult:
     if not classes:
         end = source.position(len(source.text))
-        problems.append(diagnostics.make("SYNTAX-CLASS", Span.point(source.path, *end),
-                                         reason="the file holds no class"))
+        problems.append(
+            diagnostics.make("SYNTAX-CLASS", Span.point(source.path, *end), reason="the file holds no class")
+        )
         return ParseResult(None, _sorted(problems))
     for extra in classes[1:]:
-        problems.append(diagnostics.make(
-            "SYNTAX-CLASS", Span.point(source.path, extra.span.line, extra.span.column),
-            reason=f"class `{extra.name.text}` is a second class in this file "
-                   f"(after `{classes[0].name.text}`)"))
+        problems.append(
+            diagnostics.make(
+                "SYNTAX-CLASS",
+                Span.point(source.path, extra.span.line, extra.span.column),
+                reason=f"class `{extra.name.text}` is a second class in this file (after `{classes[0].name.text}`)",
+            )
+        )
     return ParseResult(classes[0], _sorted(problems))
 
 

@@ -6,6 +6,7 @@ SYNTAX-OBSOLETE).
 Diagnosis tries repairs on copies of the parser: if inserting `end` lets the parse go on, an
 `end` is missing; if reading the keyword as a name does, a reserved word was used as a name.
 """
+
 from __future__ import annotations
 
 import copy
@@ -31,8 +32,9 @@ def describe(error: UnexpectedInput, source: SourceFile, lark_parser: Any) -> Di
         return _lexical(error, source)
     if isinstance(error, UnexpectedToken):
         return _unexpected(error, source, lark_parser)
-    return diagnostics.make("SYNTAX", Span.point(source.path, error.line, error.column),
-                            found="this text", expected="Eiffel text")
+    return diagnostics.make(
+        "SYNTAX", Span.point(source.path, error.line, error.column), found="this text", expected="Eiffel text"
+    )
 
 
 # ---- lexical errors ---------------------------------------------------------------------
@@ -45,20 +47,20 @@ def _lexical(error: UnexpectedCharacters, source: SourceFile) -> Diagnostic:
 
 def _lexical_reason(char: str, text: str, pos: int) -> str:
     if char == '"':
-        if text[pos + 1:pos + 2] in ("[", "{") and text[pos + 2:].lstrip(" \t")[:1] == "\n":
+        if text[pos + 1 : pos + 2] in ("[", "{") and text[pos + 2 :].lstrip(" \t")[:1] == "\n":
             closer = "]" if text[pos + 1] == "[" else "}"
             return f'unterminated verbatim string: no line `{closer}"` closes it'
-        return ('unterminated string: a manifest string ends with `"` on the same line '
-                "(end a line with `%` and start the next with `%` to continue it)")
+        return (
+            'unterminated string: a manifest string ends with `"` on the same line '
+            "(end a line with `%` and start the next with `%` to continue it)"
+        )
     if char == "'":
-        return ("bad character constant: write one character between single quotes, "
-                "such as `'a'` or `'%N'`")
+        return "bad character constant: write one character between single quotes, such as `'a'` or `'%N'`"
     if char == "\\":
         return "`\\` is not an Eiffel escape character; special characters are written `%N`, `%T`, `%%`"
     if char.isprintable() and not char.isspace():
         return f"`{char}` (U+{ord(char):04X}) is not part of any Eiffel token"
-    return f"the character U+{ord(char):04X} is not allowed in Eiffel text" if char else \
-        "unexpected end of the file"
+    return f"the character U+{ord(char):04X} is not allowed in Eiffel text" if char else "unexpected end of the file"
 
 
 # ---- unexpected tokens ------------------------------------------------------------------
@@ -83,9 +85,13 @@ def _unexpected(error: UnexpectedToken, source: SourceFile, lark_parser: Any) ->
             return diagnostics.make("SYNTAX-END", span, construct=construct, opened=where)
     patterns = {t.name: t.pattern.value for t in lark_parser.terminals}
     stack = parser.parser_state.value_stack if parser is not None else []
-    return diagnostics.make("SYNTAX", span, found=describe_token(token),
-                            expected=expected_phrase(expected, patterns),
-                            hint=_hint(token, expected, stack))
+    return diagnostics.make(
+        "SYNTAX",
+        span,
+        found=describe_token(token),
+        expected=expected_phrase(expected, patterns),
+        hint=_hint(token, expected, stack),
+    )
 
 
 def _hint(token: Token, expected: set, stack: list) -> str:
@@ -113,14 +119,19 @@ def _hint(token: Token, expected: set, stack: list) -> str:
 # Pre-ECMA spellings still found in old course material and old example programs.
 _OBSOLETE = {
     ("IDENTIFIER", "indexing"): ("`indexing` is the obsolete spelling of `note`", "write `note` instead"),
-    ("IDENTIFIER", "creation"): ("`creation` is the obsolete spelling of `create`",
-                                 "write `create` instead"),
-    ("IS", "is"): ("`is` before a routine body or a constant's value is obsolete syntax",
-                   "delete `is` before a routine's body; write a constant as `Name: TYPE = value`"),
-    ("IDENTIFIER", "infix"): ("`infix \"op\"` feature names are obsolete syntax",
-                              "name the feature and give it an alias: `plus alias \"+\" (other: like Current)`"),
-    ("IDENTIFIER", "prefix"): ("`prefix \"op\"` feature names are obsolete syntax",
-                               "name the feature and give it an alias: `negated alias \"-\"`"),
+    ("IDENTIFIER", "creation"): ("`creation` is the obsolete spelling of `create`", "write `create` instead"),
+    ("IS", "is"): (
+        "`is` before a routine body or a constant's value is obsolete syntax",
+        "delete `is` before a routine's body; write a constant as `Name: TYPE = value`",
+    ),
+    ("IDENTIFIER", "infix"): (
+        '`infix "op"` feature names are obsolete syntax',
+        'name the feature and give it an alias: `plus alias "+" (other: like Current)`',
+    ),
+    ("IDENTIFIER", "prefix"): (
+        '`prefix "op"` feature names are obsolete syntax',
+        'name the feature and give it an alias: `negated alias "-"`',
+    ),
 }
 
 
@@ -132,8 +143,13 @@ def _obsolete(token: Token, expected: set, stack: list) -> dict | None:
         entry = _OBSOLETE.get(("IDENTIFIER", str(previous.value).lower()))
     if entry is None and token.type == "QUESTION" and "DETACHABLE" in expected:
         entry = ("`?T` is the obsolete spelling of `detachable T`", "write `detachable T`")
-    if entry is None and token.type == "COLON" and len(stack) >= 2 \
-            and getattr(stack[-2], "type", None) == "LBRACE" and getattr(stack[-1], "type", None) == "IDENTIFIER":
+    if (
+        entry is None
+        and token.type == "COLON"
+        and len(stack) >= 2
+        and getattr(stack[-2], "type", None) == "LBRACE"
+        and getattr(stack[-1], "type", None) == "IDENTIFIER"
+    ):
         entry = ("`{x: T} e` is the obsolete form of an object test", "write `attached {T} e as x`")
     if entry is None:
         return None
@@ -183,8 +199,7 @@ def _feeds(parser: Any, tokens: list) -> bool:
 
 
 def _borrow(type_: str, value: str, token: Token) -> Token:
-    return Token(type_, value, token.start_pos, token.line, token.column, token.line,
-                 token.column, token.start_pos)
+    return Token(type_, value, token.start_pos, token.line, token.column, token.line, token.column, token.start_pos)
 
 
 def _is_reserved_name(parser: Any, token: Token, expected: set, following: Token | None) -> bool:
@@ -234,9 +249,15 @@ def _innermost_opener(stack: list) -> tuple[str, str] | None:
     return None
 
 
-_CONSTRUCTS = {syntax.Conditional: "if", syntax.MultiBranch: "inspect", syntax.Loop: "from",
-               syntax.Across: "across", syntax.Check: "check", syntax.Debug: "debug",
-               syntax.SeparateInstruction: "separate"}
+_CONSTRUCTS = {
+    syntax.Conditional: "if",
+    syntax.MultiBranch: "inspect",
+    syntax.Loop: "from",
+    syntax.Across: "across",
+    syntax.Check: "check",
+    syntax.Debug: "debug",
+    syntax.SeparateInstruction: "separate",
+}
 
 
 def _misaligned_within(values: list) -> tuple[str, str] | None:
@@ -290,8 +311,12 @@ def _opener(value: Any) -> tuple[str, int, int] | None:
     return word, value.span.line, value.span.column
 
 
-_BODIES = {syntax.InternalBody: "do", syntax.DeferredBody: "deferred",
-           syntax.ExternalBody: "external", syntax.AttributeBody: "attribute"}
+_BODIES = {
+    syntax.InternalBody: "do",
+    syntax.DeferredBody: "deferred",
+    syntax.ExternalBody: "external",
+    syntax.AttributeBody: "attribute",
+}
 
 
 def expected_phrase(expected: set, patterns: dict[str, str]) -> str:

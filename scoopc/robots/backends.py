@@ -10,6 +10,7 @@ The environment variable SCOOPC_ROS2_BACKEND chooses: `auto` (the default: rclpy
 else dds), `rclpy` (an error when rclpy cannot be imported) or `dds`. An explicit `backend=`
 argument wins over the variable.
 """
+
 from __future__ import annotations
 
 import importlib
@@ -39,13 +40,13 @@ def rclpy_problem() -> str | None:
         importlib.import_module("rclpy")
     except ImportError as e:
         return f"{type(e).__name__}: {e}"
-    except Exception as e:               # a broken ROS 2 environment fails in other ways too
+    except Exception as e:  # a broken ROS 2 environment fails in other ways too
         return f"{type(e).__name__}: {e}"
     return None
 
 
 def resolve(backend: str | None = None) -> str:
-    """"rclpy" or "dds": the backend `open_ros2_bus` would use now."""
+    """ "rclpy" or "dds": the backend `open_ros2_bus` would use now."""
     choice = requested(backend)
     if choice == "dds":
         return "dds"
@@ -54,7 +55,8 @@ def resolve(backend: str | None = None) -> str:
         raise BackendError(
             f"{ENV}=rclpy but rclpy cannot be imported ({problem}). Source a ROS 2 installation "
             f"(e.g. `source /opt/ros/jazzy/setup.bash`) in this shell, or set {ENV}=dds (or auto) "
-            f"to speak ROS 2 over cyclonedds without rclpy.")
+            f"to speak ROS 2 over cyclonedds without rclpy."
+        )
     return "rclpy" if problem is None else "dds"
 
 
@@ -62,8 +64,10 @@ def open_ros2_bus(domain: int | None = None, *, backend: str | None = None, type
     """A ROS 2 bus on `domain` (None: ROS_DOMAIN_ID, default 0), through the chosen backend."""
     if resolve(backend) == "rclpy":
         from .rclpy_bus import RclpyBus
+
         return RclpyBus(domain=domain, types=types)
     from .dds import DdsBus
+
     return DdsBus(domain=domain, types=types)
 
 

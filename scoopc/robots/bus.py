@@ -10,6 +10,7 @@ exception is re-raised to the publisher once every subscriber has had the messag
 `tap(callback)` sees every message published on the bus, whatever its topic: `callback(topic, msg)`
 runs before the topic's subscribers (a recorder uses it; a tap does not count as a subscriber).
 """
+
 import threading
 
 
@@ -69,7 +70,7 @@ class Tapped:
         for tap in self._taps:
             try:
                 tap(topic, msg)
-            except Exception as e:              # a broken tap must not break the transport
+            except Exception as e:  # a broken tap must not break the transport
                 if len(self.errors) < 100:
                     self.errors.append(e)
 
@@ -84,8 +85,8 @@ class Bus(Tapped):
 
     def __init__(self):
         self._lock = threading.Condition(threading.Lock())
-        self._subs = {}              # [_lock] topic -> list of Subscription (subscription order)
-        self._taps = []              # Taps (a list replaced on change: read without the lock)
+        self._subs = {}  # [_lock] topic -> list of Subscription (subscription order)
+        self._taps = []  # Taps (a list replaced on change: read without the lock)
 
     def subscribe(self, topic, callback, msgtype=None):
         """Call `callback(msg)` for every message on `topic` (`msgtype`: ignored, the in-process bus
@@ -117,7 +118,7 @@ class Bus(Tapped):
             if not sub.closed:
                 try:
                     sub.callback(msg)
-                except Exception as e:         # the other subscribers still get the message
+                except Exception as e:  # the other subscribers still get the message
                     error = error or e
         if error is not None:
             raise error

@@ -32,9 +32,21 @@ from .ros_messages import ARRAY, BASE, DTYPES, NAME
 
 HEADER_LE = b"\x00\x01\x00\x00"
 HEADER_BE = b"\x00\x00\x00\x00"
-_FORMATS = {"bool": "?", "byte": "b", "char": "B", "int8": "b", "uint8": "B", "int16": "h",
-            "uint16": "H", "int32": "i", "uint32": "I", "int64": "q", "uint64": "Q",
-            "float32": "f", "float64": "d"}
+_FORMATS = {
+    "bool": "?",
+    "byte": "b",
+    "char": "B",
+    "int8": "b",
+    "uint8": "B",
+    "int16": "h",
+    "uint16": "H",
+    "int32": "i",
+    "uint32": "I",
+    "int64": "q",
+    "uint64": "Q",
+    "float32": "f",
+    "float64": "d",
+}
 
 
 def serialize(msg: Any, typename: str | None = None, store=None) -> bytes:
@@ -58,8 +70,8 @@ def deserialize(data: bytes, typename: str, store=None) -> Any:
 
 # -- the compiled plans --------------------------------------------------------------------------
 
-_plans: dict = {}                 # (id(store), typename, order) -> _Plan
-_plans_lock = threading.RLock()     # a plan makes the plans of its sequences' element types
+_plans: dict = {}  # (id(store), typename, order) -> _Plan
+_plans_lock = threading.RLock()  # a plan makes the plans of its sequences' element types
 
 
 def _plan(typename: str, store, order: str) -> _Plan:
@@ -95,10 +107,14 @@ class _Source:
     def __init__(self, plan: _Plan):
         self.plan, self.order = plan, plan.order
         self.lines: list[str] = []
-        self.consts: dict[str, Any] = {"np": np, "pack": struct.pack, "unpack_from": struct.unpack_from,
-                                        "ZEROS": bytes(8)}
+        self.consts: dict[str, Any] = {
+            "np": np,
+            "pack": struct.pack,
+            "unpack_from": struct.unpack_from,
+            "ZEROS": bytes(8),
+        }
         self.count = 0
-        self.run_format, self.run_items = None, []   # the pending run of one primitive type
+        self.run_format, self.run_items = None, []  # the pending run of one primitive type
 
     def var(self, prefix: str = "v") -> str:
         self.count += 1
@@ -166,7 +182,7 @@ def _decode_string(data, pos: int, order: str = "<"):
     pos += 4
     if pos + length > len(data):
         raise ValueError("CDR data ends early")
-    text = bytes(data[pos:pos + length - 1]).decode("utf-8") if length else ""
+    text = bytes(data[pos : pos + length - 1]).decode("utf-8") if length else ""
     return text, pos + length
 
 
@@ -204,7 +220,7 @@ class _EncoderSource(_Source):
             return
         self.flush()
         if kind == BASE:
-            self.element_plan(desc, "encode")     # refuses wstring
+            self.element_plan(desc, "encode")  # refuses wstring
             self.emit(f"{self.const(_encode_string, 'S')}(out, {expr})")
             return
         element, size = detail
@@ -263,7 +279,7 @@ class _DecoderSource(_Source):
             return v
         self.flush()
         if kind == BASE:
-            self.element_plan(desc, "decode")     # refuses wstring
+            self.element_plan(desc, "decode")  # refuses wstring
             self.emit(f"{v}, pos = {self.string_decoder()}(data, pos)")
             return v
         element, size = detail
@@ -280,11 +296,13 @@ class _DecoderSource(_Source):
             if native.itemsize > 1:
                 self.emit(f"if {count}:")
                 self.emit(f"    pos += -pos % {native.itemsize}")
-            self.emit(f"{v} = np.frombuffer(data, dtype={wire}, count={count}, offset=pos)"
-                      f".astype({self.const(native, 'D')}) if {count} else np.zeros(0, {self.const(native, 'D')})")
+            self.emit(
+                f"{v} = np.frombuffer(data, dtype={wire}, count={count}, offset=pos)"
+                f".astype({self.const(native, 'D')}) if {count} else np.zeros(0, {self.const(native, 'D')})"
+            )
             self.emit(f"pos += {count} * {native.itemsize}")
         else:
-            plan = self.element_plan(element, "decode")      # refuses wstring
+            plan = self.element_plan(element, "decode")  # refuses wstring
             decoder = self.string_decoder() if element[0] == BASE else self.const(plan, "P")
             item = self.var("i")
             self.emit(f"{v} = []")

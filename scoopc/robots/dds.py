@@ -26,6 +26,7 @@ order. A callback that raises is logged (and kept in `errors`); the other callba
 A subscription needs the topic's message type: `subscribe(topic, cb, msgtype=...)`, or the `types`
 mapping given to the bus, or the robot interface's default (`default_type(topic)`).
 """
+
 from __future__ import annotations
 
 import logging
@@ -53,8 +54,10 @@ SENSOR_TOPICS = ("odom", "scan", "battery_state")
 SENSOR_GROUPS = ("proximity", "ground")
 #: message types of the robot interface (DESIGN section 7), by topic name relative to the namespace
 DEFAULT_TYPES = {
-    "cmd_vel": "geometry_msgs/msg/Twist", "odom": "nav_msgs/msg/Odometry",
-    "scan": "sensor_msgs/msg/LaserScan", "battery_state": "sensor_msgs/msg/BatteryState",
+    "cmd_vel": "geometry_msgs/msg/Twist",
+    "odom": "nav_msgs/msg/Odometry",
+    "scan": "sensor_msgs/msg/LaserScan",
+    "battery_state": "sensor_msgs/msg/BatteryState",
     "clock": "rosgraph_msgs/msg/Clock",
 }
 
@@ -77,7 +80,7 @@ def _parts(topic: str) -> list[str]:
 
 
 def topic_kind(topic: str) -> str:
-    """"sensor", "clock" or "command" (the QoS family of a ROS topic)."""
+    """ "sensor", "clock" or "command" (the QoS family of a ROS topic)."""
     parts = _parts(topic)
     if parts == ["clock"]:
         return "clock"
@@ -89,8 +92,11 @@ def topic_kind(topic: str) -> str:
 def qos_policies(topic: str) -> list:
     kind = topic_kind(topic)
     if kind == "command":
-        return [Policy.Reliability.Reliable(max_blocking_time=duration(milliseconds=100)),
-                Policy.Durability.Volatile, Policy.History.KeepLast(10)]
+        return [
+            Policy.Reliability.Reliable(max_blocking_time=duration(milliseconds=100)),
+            Policy.Durability.Volatile,
+            Policy.History.KeepLast(10),
+        ]
     depth = 5 if kind == "sensor" else 1
     return [Policy.Reliability.BestEffort, Policy.Durability.Volatile, Policy.History.KeepLast(depth)]
 
@@ -130,16 +136,29 @@ def loopback_environment(folder, domain: int) -> dict:
     returns {"CYCLONEDDS_URI": its file URI, "ROS_DOMAIN_ID": str(domain)} (set them before the
     first participant of a process exists, or pass them to a child process)."""
     from pathlib import Path
+
     path = Path(folder) / "cyclonedds.xml"
     path.write_text(LOOPBACK_CONFIG)
     return {"CYCLONEDDS_URI": path.resolve().as_uri(), "ROS_DOMAIN_ID": str(domain)}
 
 
-_BASES = {"bool": bool, "byte": idl.byte, "char": idl.uint8, "int8": idl.int8, "uint8": idl.uint8,
-          "int16": idl.int16, "uint16": idl.uint16, "int32": idl.int32, "uint32": idl.uint32,
-          "int64": idl.int64, "uint64": idl.uint64, "float32": idl.float32, "float64": idl.float64}
-_HANDLE_MASK = (1 << 64) - 1            # instance handles are uint64; the Python API may give them signed
-_idl_types: dict = {}          # [_idl_lock] (id(store), typename) -> IdlStruct class
+_BASES = {
+    "bool": bool,
+    "byte": idl.byte,
+    "char": idl.uint8,
+    "int8": idl.int8,
+    "uint8": idl.uint8,
+    "int16": idl.int16,
+    "uint16": idl.uint16,
+    "int32": idl.int32,
+    "uint32": idl.uint32,
+    "int64": idl.int64,
+    "uint64": idl.uint64,
+    "float32": idl.float32,
+    "float64": idl.float64,
+}
+_HANDLE_MASK = (1 << 64) - 1  # instance handles are uint64; the Python API may give them signed
+_idl_types: dict = {}  # [_idl_lock] (id(store), typename) -> IdlStruct class
 _idl_lock = threading.Lock()
 
 
@@ -201,31 +220,31 @@ class _Reader:
         self.dds_topic = dds_topic
         self.reader = reader
         self.condition = condition
-        self.subs = []           # [DdsBus._lock] open Subscriptions, in subscription order
+        self.subs = []  # [DdsBus._lock] open Subscriptions, in subscription order
 
 
 class DdsBus(Tapped):
     """Publish/subscribe on ROS 2 topics over DDS (cyclonedds), with ROS 2's names, types and QoS."""
 
-    own_thread_callbacks = True               # the reader thread (see bus.Bus)
+    own_thread_callbacks = True  # the reader thread (see bus.Bus)
 
     def __init__(self, domain: int | None = None, types: dict | None = None, store=None):
         self.domain = domain_id() if domain is None else domain
         self.store = store
         self.types = dict(types or {})
-        self.errors = []                      # exceptions raised by callbacks (the first few)
+        self.errors = []  # exceptions raised by callbacks (the first few)
         self.participant = DomainParticipant(self.domain)
         self._lock = threading.RLock()
-        self._topics = {}                     # [_lock] ROS topic -> (typename, Topic)
-        self._writers = {}                    # [_lock] ROS topic -> DataWriter
-        self._readers = {}                    # [_lock] ROS topic -> _Reader
+        self._topics = {}  # [_lock] ROS topic -> (typename, Topic)
+        self._writers = {}  # [_lock] ROS topic -> DataWriter
+        self._readers = {}  # [_lock] ROS topic -> _Reader
         self._waitset = WaitSet(self.participant)
         self._wake = GuardCondition(self.participant)
         self._waitset.attach(self._wake)
-        self._thread = None                   # [_lock] the reader thread, started on first subscribe
+        self._thread = None  # [_lock] the reader thread, started on first subscribe
         self._closed = False
-        self._taps = []                       # Taps (a list replaced on change: read without the lock)
-        self._own = set()                     # [_lock] instance handles of our writers
+        self._taps = []  # Taps (a list replaced on change: read without the lock)
+        self._own = set()  # [_lock] instance handles of our writers
 
     # -- entities ---------------------------------------------------------------------------------
     def _topic(self, topic: str, typename: str) -> Topic:
@@ -236,8 +255,9 @@ class DdsBus(Tapped):
                 if known[0] != typename:
                     raise TypeError(f"topic {topic} carries {known[0]}, not {typename}")
                 return known[1]
-            entity = Topic(self.participant, dds_topic_name(topic), idl_type(typename, self.store),
-                           qos=Qos(*qos_policies(topic)))
+            entity = Topic(
+                self.participant, dds_topic_name(topic), idl_type(typename, self.store), qos=Qos(*qos_policies(topic))
+            )
             self._topics[topic] = (typename, entity)
             return entity
 
@@ -249,7 +269,7 @@ class DdsBus(Tapped):
                 dds_topic = self._topic(topic, typename)
                 writer = DataWriter(self.participant, dds_topic, qos=qos_for(topic, typename, self.store))
                 self._writers[topic] = writer
-                self._own.add(writer.get_instance_handle() & _HANDLE_MASK)    # as SampleInfo has it: unsigned
+                self._own.add(writer.get_instance_handle() & _HANDLE_MASK)  # as SampleInfo has it: unsigned
             elif self._topics[topic][0] != typename:
                 raise TypeError(f"topic {topic} carries {self._topics[topic][0]}, not {typename}")
             return writer
@@ -359,7 +379,7 @@ class DdsBus(Tapped):
                 entries = list(self._readers.values())
             for entry in entries:
                 self._drain(entry)
-            with self._lock:                     # a callback may have closed the bus
+            with self._lock:  # a callback may have closed the bus
                 if self._closed:
                     return
             self._waitset.wait(duration(seconds=1))
@@ -383,7 +403,7 @@ class DdsBus(Tapped):
                 targets = subs
                 try:
                     msg = cdr.deserialize(data, entry.typename, self.store)
-                except Exception as e:           # a malformed sample: drop it, keep the bus alive
+                except Exception as e:  # a malformed sample: drop it, keep the bus alive
                     log.error("undecodable %s sample on %s: %s", entry.typename, entry.topic, e)
                     targets = tuple(sub for sub in subs if sub.raw)
                     msg = None
@@ -394,7 +414,7 @@ class DdsBus(Tapped):
                         continue
                     try:
                         sub.callback(data if sub.raw else msg)
-                    except Exception as e:       # the other subscribers still get the message
+                    except Exception as e:  # the other subscribers still get the message
                         log.exception("subscriber of %s raised", entry.topic)
                         if len(self.errors) < 100:
                             self.errors.append(e)

@@ -7,6 +7,7 @@ Values follow the codegen object model (/work/plan/codegen_spec.md): basic types
 floats and bools, STRING is a kernel string (`_s`), ARRAY [T] has `area` (a SPECIAL with `_items`),
 `lower` and `upper`.
 """
+
 from __future__ import annotations
 
 import keyword
@@ -25,8 +26,6 @@ def python_name(field: str) -> str:
     return name + "_" if keyword.iskeyword(name) else name
 
 
-
-
 def typename_of_class(name: str, store=None) -> str:
     """The ROS type name of a generated class (GEOMETRY_MSGS_TWIST -> geometry_msgs/msg/Twist)."""
     store = ros_messages.typestore() if store is None else store
@@ -41,6 +40,7 @@ def _host(desc: tuple, value: Any, store) -> Any:
     if kind == BASE:
         if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings
+
             return strings.text(value)
         return value
     if kind == NAME:
@@ -56,22 +56,27 @@ def _host(desc: tuple, value: Any, store) -> Any:
 def to_message(obj: Any, typename: str | None = None, store=None) -> Any:
     """The type-store message with the field values of an Eiffel object of a generated class."""
     typename = typename or typename_of_class(type(obj).__name__, store)
-    values = {field: _host(desc, getattr(obj, python_name(field)), store)
-              for field, desc in ros_messages.fields(typename, store)}
+    values = {
+        field: _host(desc, getattr(obj, python_name(field)), store)
+        for field, desc in ros_messages.fields(typename, store)
+    }
     return ros_messages.new(typename, store, **values)
 
 
 def _type_desc(type_name: str):
     from ..kernel import types
+
     return types.t("STRING_8" if type_name == "STRING" else type_name)
 
 
 def _eiffel(desc: tuple, value: Any, region, store) -> Any:
     from .. import kernel
+
     kind, detail = desc
     if kind == BASE:
         if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings
+
             return strings.new_string_8(region, value)
         if detail[0] == "bool":
             return bool(value)
@@ -91,6 +96,7 @@ def _eiffel(desc: tuple, value: Any, region, store) -> Any:
 def from_message(msg: Any, region, store=None) -> Any:
     """A new Eiffel object (in `region`) of the generated class of `msg`'s type, with its values."""
     from .. import kernel
+
     typename = ros_messages.typename_of(msg)
     obj = region.new(kernel.cls(class_name(typename)))
     for field, desc in ros_messages.fields(typename, store):

@@ -17,6 +17,7 @@ sensor topics, a best-effort keep-last-1 profile for /clock, ROS's default (reli
 10) for the rest. One node per bus, spun by a SingleThreadedExecutor on a thread of the bus
 (callbacks run there, as with DdsBus); `close()` stops and joins it and shuts the context down.
 """
+
 from __future__ import annotations
 
 import threading
@@ -26,12 +27,12 @@ from . import cdr, ros_messages
 from .bus import Subscription, Tapped
 from .dds import default_type, topic_kind
 
-try:                                   # rclpy comes with a ROS 2 installation, never from PyPI
+try:  # rclpy comes with a ROS 2 installation, never from PyPI
     import rclpy
     from rclpy.executors import SingleThreadedExecutor
     from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy, qos_profile_sensor_data
     from rosidl_runtime_py.utilities import get_message
-except ImportError:                    # pragma: no cover - the backends module reports this
+except ImportError:  # pragma: no cover - the backends module reports this
     rclpy = None
 
 
@@ -47,7 +48,7 @@ def _qos(topic: str):
 class RclpyBus(Tapped):
     """Publish/subscribe on ROS 2 topics through an rclpy node (see the module's note: unverified)."""
 
-    own_thread_callbacks = True               # the executor's thread (see bus.Bus)
+    own_thread_callbacks = True  # the executor's thread (see bus.Bus)
 
     def __init__(self, domain: int | None = None, types: dict | None = None, node_name: str = "scoopc"):
         if rclpy is None:
@@ -55,15 +56,15 @@ class RclpyBus(Tapped):
         self.types = dict(types or {})
         self.errors = []
         self.context = rclpy.Context()
-        rclpy.init(context=self.context, domain_id=domain)     # None: ROS_DOMAIN_ID
+        rclpy.init(context=self.context, domain_id=domain)  # None: ROS_DOMAIN_ID
         self.node = rclpy.create_node(node_name, context=self.context)
         self.executor = SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         self._lock = threading.RLock()
-        self._publishers = {}          # [_lock] topic -> (typename, Publisher)
-        self._subscriptions = {}       # [_lock] topic -> (typename, rclpy Subscription, [Subscription])
+        self._publishers = {}  # [_lock] topic -> (typename, Publisher)
+        self._subscriptions = {}  # [_lock] topic -> (typename, rclpy Subscription, [Subscription])
         self._closed = False
-        self._taps = []                # Taps (a list replaced on change: read without the lock)
+        self._taps = []  # Taps (a list replaced on change: read without the lock)
         self._thread = threading.Thread(target=self._spin, name="rclpy-bus", daemon=True)
         self._thread.start()
 
@@ -113,9 +114,9 @@ class RclpyBus(Tapped):
             entry = self._subscriptions.get(topic)
             if entry is None:
                 subs = []
-                handle = self.node.create_subscription(get_message(typename), topic,
-                                                       lambda data, t=topic: self._deliver(t, data),
-                                                       _qos(topic), raw=True)
+                handle = self.node.create_subscription(
+                    get_message(typename), topic, lambda data, t=topic: self._deliver(t, data), _qos(topic), raw=True
+                )
                 entry = (typename, handle, subs)
                 self._subscriptions[topic] = entry
             elif entry[0] != typename:
@@ -137,7 +138,7 @@ class RclpyBus(Tapped):
                 continue
             try:
                 sub.callback(data if sub.raw else msg)
-            except Exception as e:            # the other subscribers still get the message
+            except Exception as e:  # the other subscribers still get the message
                 if len(self.errors) < 100:
                     self.errors.append(e)
 

@@ -16,6 +16,7 @@ Foxglove opens and `ros2 bag info/play` reads. `close()` finishes the file (idem
 is a context manager too. Messages may come from several threads (a DDS reader thread and the
 simulator's): writes are serialised by a lock.
 """
+
 from __future__ import annotations
 
 import threading
@@ -56,14 +57,14 @@ class Recorder:
         self.clock = clock
         self.store = store
         self.count = 0
-        self.counts = {}                       # topic -> messages written
+        self.counts = {}  # topic -> messages written
         self._lock = threading.Lock()
         self._stream = open(self.path, "wb")
         kind = {"zstd": CompressionType.ZSTD, "lz4": CompressionType.LZ4, "none": CompressionType.NONE}[compression]
         self._writer = Writer(self._stream, compression=kind)
         self._writer.start(profile=PROFILE, library="scoopc")
-        self._schemas = {}                     # typename -> schema id
-        self._channels = {}                    # topic -> (typename, channel id)
+        self._schemas = {}  # typename -> schema id
+        self._channels = {}  # topic -> (typename, channel id)
         self._last_stamp = None
         self._closed = False
         self._tap = bus.tap(self.write) if bus is not None else None
@@ -101,8 +102,7 @@ class Recorder:
             channel = self._channel(topic, typename)
             when = self._log_time(msg) if log_time is None else int(log_time)
             self.counts[topic] = self.counts.get(topic, 0) + 1
-            self._writer.add_message(channel, log_time=when, data=data, publish_time=when,
-                                     sequence=self.counts[topic])
+            self._writer.add_message(channel, log_time=when, data=data, publish_time=when, sequence=self.counts[topic])
             self.count += 1
 
     def close(self) -> str:
@@ -128,6 +128,7 @@ def read(path, store=None):
     """The messages of an MCAP file written by a Recorder: [(topic, log_time_ns, message)] in
     log-time order, decoded with our CDR decoder (for tests and tools)."""
     from mcap.reader import make_reader
+
     found = []
     with open(path, "rb") as f:
         for schema, channel, message in make_reader(f).iter_messages(log_time_order=True):

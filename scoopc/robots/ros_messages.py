@@ -8,6 +8,7 @@ arrays, as rosbags makes them; arrays and sequences of strings or messages are P
 A field description is rosbags' `(Nodetype, detail)` pair: `(BASE, (name, bound))`, `(NAME, typename)`,
 `(ARRAY, (element, length))` or `(SEQUENCE, (element, bound))` (bound 0: unbounded).
 """
+
 from __future__ import annotations
 
 from functools import lru_cache
@@ -22,12 +23,19 @@ BASE, NAME, ARRAY, SEQUENCE = Nodetype.BASE, Nodetype.NAME, Nodetype.ARRAY, Node
 #: numpy dtypes (little endian) of the numeric base types. As in rosbags, `byte` holds a signed
 #: octet (-128..127) and `char` an unsigned one (0..255); on the wire both are one octet.
 DTYPES = {
-    "bool": np.dtype("bool"), "byte": np.dtype("int8"), "char": np.dtype("uint8"),
-    "int8": np.dtype("int8"), "uint8": np.dtype("uint8"),
-    "int16": np.dtype("<i2"), "uint16": np.dtype("<u2"),
-    "int32": np.dtype("<i4"), "uint32": np.dtype("<u4"),
-    "int64": np.dtype("<i8"), "uint64": np.dtype("<u8"),
-    "float32": np.dtype("<f4"), "float64": np.dtype("<f8"),
+    "bool": np.dtype("bool"),
+    "byte": np.dtype("int8"),
+    "char": np.dtype("uint8"),
+    "int8": np.dtype("int8"),
+    "uint8": np.dtype("uint8"),
+    "int16": np.dtype("<i2"),
+    "uint16": np.dtype("<u2"),
+    "int32": np.dtype("<i4"),
+    "uint32": np.dtype("<u4"),
+    "int64": np.dtype("<i8"),
+    "uint64": np.dtype("<u8"),
+    "float32": np.dtype("<f4"),
+    "float64": np.dtype("<f8"),
 }
 STRING_TYPES = ("string", "wstring")
 
@@ -112,8 +120,7 @@ def new(typename: str, store=None, **values: Any) -> Any:
     unknown = set(values) - {name for name, _ in described}
     if unknown:
         raise TypeError(f"{typename} has no field {', '.join(sorted(unknown))}")
-    arguments = {name: values[name] if name in values else default_value(desc, store)
-                 for name, desc in described}
+    arguments = {name: values[name] if name in values else default_value(desc, store) for name, desc in described}
     return message_class(typename, store)(**arguments)
 
 

@@ -11,6 +11,7 @@ every processor idle and no timer pending but the simulator's.
 Safety: whatever ends the run (normal end, uncaught exception, deadlock, Ctrl-C, the duration),
 every cmd_vel topic the program published on gets a zero velocity before the run returns.
 """
+
 from __future__ import annotations
 
 import math
@@ -48,16 +49,17 @@ class RobotError(UsageError):
 @dataclass
 class RobotOptions:
     """How a Roboscoop program runs (the robot options of `scoopc run`, docs/ROBOTS.md)."""
-    robot: str | None = None         # "sim", "ros2" or "none"; None: "sim" for Roboscoop programs
-    world: Any = None                   # a world file's path, a dict or a World; None: world.yaml beside
+
+    robot: str | None = None  # "sim", "ros2" or "none"; None: "sim" for Roboscoop programs
+    world: Any = None  # a world file's path, a dict or a World; None: world.yaml beside
     #                                     the program, else the built-in arena
-    namespace: str | None = None     # which robot of the world, or a ROS 2 robot's topic prefix
-    realtime: bool = False              # pace the simulator to the wall clock
-    duration: float | None = None    # seconds to run (default: the world's duration; ROS 2: none)
-    goal: tuple | None = None        # (x, y) told to the program (default: the world's)
-    png: str | Path | bool | None = None    # the trajectory picture; True: <program>.png
+    namespace: str | None = None  # which robot of the world, or a ROS 2 robot's topic prefix
+    realtime: bool = False  # pace the simulator to the wall clock
+    duration: float | None = None  # seconds to run (default: the world's duration; ROS 2: none)
+    goal: tuple | None = None  # (x, y) told to the program (default: the world's)
+    png: str | Path | bool | None = None  # the trajectory picture; True: <program>.png
     gif: str | Path | None = None
-    record: str | Path | None = None       # an MCAP recording of every topic
+    record: str | Path | None = None  # an MCAP recording of every topic
 
     def __post_init__(self):
         if self.robot not in (None, "sim", "ros2", "none"):
@@ -67,17 +69,18 @@ class RobotOptions:
 @dataclass
 class RobotSettings:
     """What ROBOT_ENVIRONMENT tells the program (stdlib/roboscoop/util/robot_environment.e)."""
-    mode: str = "none"                  # "none", "sim" or "ros2"
-    namespaces: list = field(default_factory=list)     # topic prefixes: "/robot1" or ""
-    limits: list = field(default_factory=list)         # (max_linear, max_angular) per robot
-    main: int = 0                       # index of "the" robot (`namespace`)
+
+    mode: str = "none"  # "none", "sim" or "ros2"
+    namespaces: list = field(default_factory=list)  # topic prefixes: "/robot1" or ""
+    limits: list = field(default_factory=list)  # (max_linear, max_angular) per robot
+    main: int = 0  # index of "the" robot (`namespace`)
     goal: tuple | None = None
-    station: tuple | None = None        # (x, y, radius)
+    station: tuple | None = None  # (x, y, radius)
     duration: float = -1.0
 
 
-ROS2_LIMITS = (0.2, 1.0)                # speed limits reported for a ROS 2 robot (m/s, rad/s)
-SERVICE = "robot"                       # the RobotSettings' key in the runtime's services
+ROS2_LIMITS = (0.2, 1.0)  # speed limits reported for a ROS 2 robot (m/s, rad/s)
+SERVICE = "robot"  # the RobotSettings' key in the runtime's services
 
 
 def settings_of(rt) -> RobotSettings:
@@ -91,7 +94,7 @@ class SafetyBus:
 
     def __init__(self, bus):
         self.bus = bus
-        self.command_topics = {}        # topic -> stamped?
+        self.command_topics = {}  # topic -> stamped?
         self._lock = threading.Lock()
 
     def publish(self, topic, msg):
@@ -107,17 +110,19 @@ class SafetyBus:
     def stop_robots(self):
         """A zero velocity on every cmd_vel topic used (Twist or TwistStamped as the program sent)."""
         from .velocity import twist, twist_stamped  # deferred: loads rosbags (start-up)
+
         with self._lock:
             topics = dict(self.command_topics)
         for topic, stamped in topics.items():
             try:
                 self.bus.publish(topic, twist_stamped(0.0, 0.0) if stamped else twist(0.0, 0.0))
-            except Exception as e:                     # noqa: BLE001 - keep stopping the others
+            except Exception as e:  # noqa: BLE001 - keep stopping the others
                 print(f"scoopc: could not stop the robot on {topic}: {e}", file=sys.stderr)
         return sorted(topics)
 
 
 # ---- the simulator on the runtime's clock ------------------------------------------------------
+
 
 class _Driver:
     """Lives on the SIMULATOR processor; its periodic timer steps the world."""
@@ -128,7 +133,7 @@ class SimDriver:
         self.sim = sim
         self.end_ns = int(round(duration * 1e9)) if duration is not None and duration >= 0 else None
         self.progress = progress
-        self.stopped_by = None          # "duration" or "program", once the simulation is over
+        self.stopped_by = None  # "duration" or "program", once the simulation is over
         self.timer = None
         self.rt = None
         self._next_report = 0.0
@@ -137,6 +142,7 @@ class SimDriver:
     def attach(self, rt):
         """Called on the root's thread once the runtime exists, before the root is created."""
         import scoopc.runtime as srt
+
         self.rt = rt
         proc = srt.Processor(rt, False, "SIMULATOR")
         self.holder = proc.new(_Driver)
@@ -159,12 +165,14 @@ class SimDriver:
     def _program_over(self):
         """Is every processor but SIMULATOR idle, with no timer pending but ours?"""
         from scoopc.runtime.clock import Timer
+
         rt = self.rt
         with rt.glock:
             if rt.n_running != 1 or rt.runnable or rt.clock.due:
                 return False
-            return not any(isinstance(e[-1], Timer) and e[-1] is not self.timer and not e[-1].cancelled
-                           for e in rt.clock.heap)
+            return not any(
+                isinstance(e[-1], Timer) and e[-1] is not self.timer and not e[-1].cancelled for e in rt.clock.heap
+            )
 
     def _finish(self, reason):
         self.stopped_by = reason
@@ -187,10 +195,12 @@ def _tick(holder):
 
 # ---- choosing the world and the settings -------------------------------------------------------
 
+
 def find_world(program_paths, world=None):
     """The world to simulate: `world` (path, dict or World), else world.yaml beside the program,
     else the built-in arena. Returns (World, where it came from)."""
     from .sim.world import World, WorldError
+
     if isinstance(world, World):
         return world, world.name
     if isinstance(world, dict):
@@ -216,6 +226,7 @@ def find_world(program_paths, world=None):
 
 def _load(make, where):
     from .sim.world import WorldError
+
     try:
         return make()
     except WorldError as e:
@@ -233,34 +244,58 @@ def sim_settings(world, namespace=None, goal=None, duration=None):
     if namespace is not None:
         wanted = _prefix(namespace)
         if wanted not in namespaces:
-            raise RobotError(f"the world has no robot with namespace {wanted or '/'!r} "
-                             f"(it has {', '.join(namespaces)})")
+            raise RobotError(
+                f"the world has no robot with namespace {wanted or '/'!r} (it has {', '.join(namespaces)})"
+            )
         main = namespaces.index(wanted)
     station = (*world.station, world.station_radius) if world.station is not None else None
-    return RobotSettings(mode="sim", namespaces=namespaces, main=main,
-                         limits=[(r.max_linear, r.max_angular) for r in world.robots],
-                         goal=tuple(goal) if goal is not None else world.goal, station=station,
-                         duration=world.duration if duration is None else duration)
+    return RobotSettings(
+        mode="sim",
+        namespaces=namespaces,
+        main=main,
+        limits=[(r.max_linear, r.max_angular) for r in world.robots],
+        goal=tuple(goal) if goal is not None else world.goal,
+        station=station,
+        duration=world.duration if duration is None else duration,
+    )
 
 
 def ros2_settings(namespace=None, goal=None, duration=None):
-    return RobotSettings(mode="ros2", namespaces=[_prefix(namespace)], limits=[ROS2_LIMITS],
-                         goal=tuple(goal) if goal is not None else None,
-                         duration=-1.0 if duration is None else duration)
+    return RobotSettings(
+        mode="ros2",
+        namespaces=[_prefix(namespace)],
+        limits=[ROS2_LIMITS],
+        goal=tuple(goal) if goal is not None else None,
+        duration=-1.0 if duration is None else duration,
+    )
 
 
 # ---- runs --------------------------------------------------------------------------------------
 
-def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=None, png=None, gif=None,
-                   progress=None, stderr=None, extra_start=None):
+
+def run_with_robot(
+    launch,
+    settings,
+    bus,
+    *,
+    sim=None,
+    duration=None,
+    recorder=None,
+    png=None,
+    gif=None,
+    progress=None,
+    stderr=None,
+    extra_start=None,
+):
     """Run `launch(on_start)` (which runs the program and returns its exit status) with `bus` as the
     transport and, when `sim` is given, the simulator stepped on the runtime's clock. The program
     reads `settings` through ROBOT_ENVIRONMENT (the runtime's `services`)."""
     stderr = stderr or sys.stderr
     safety = SafetyBus(bus)
     previous_bus = transport.use(safety)
-    driver = SimDriver(sim, duration if duration is not None else settings.duration, progress) \
-        if sim is not None else None
+    driver = (
+        SimDriver(sim, duration if duration is not None else settings.duration, progress) if sim is not None else None
+    )
     result = RunResult(status=0, sim=sim)
 
     def on_start(rt):
@@ -269,13 +304,14 @@ def run_with_robot(launch, settings, bus, *, sim=None, duration=None, recorder=N
             driver.attach(rt)
         if extra_start is not None:
             extra_start(rt)
+
     try:
         result.status = launch(on_start)
-    except KeyboardInterrupt as interrupt:   # a signal after the runtime had handled the first
+    except KeyboardInterrupt as interrupt:  # a signal after the runtime had handled the first
         result.status = status_of(interrupt)
         stderr.write(f"scoopc: stopped by {getattr(interrupt, 'signal_name', 'SIGINT')}\n")
     finally:
-        with shielded():                  # a second signal must not cut the robot's stop short
+        with shielded():  # a second signal must not cut the robot's stop short
             result.stopped_topics = safety.stop_robots()
             if recorder is not None:
                 result.record = str(recorder.close())
@@ -296,6 +332,7 @@ def _recorder(bus, path, clock=None):
     if not path:
         return None
     from .record import Recorder
+
     try:
         return Recorder(bus, str(path), clock=clock)
     except OSError as e:
@@ -310,8 +347,9 @@ def _render(sim, path, how, stderr):
             sim.render_png(str(path))
         else:
             from .sim.render import render_gif
+
             render_gif(sim, str(path))
-    except Exception as e:                         # noqa: BLE001 - the run itself succeeded
+    except Exception as e:  # noqa: BLE001 - the run itself succeeded
         stderr.write(f"scoopc: could not write {path}: {e}\n")
         return None
     return str(path)
@@ -321,7 +359,8 @@ def describe_end(result, wall) -> str:
     """One line for stderr after a simulated run."""
     sim = result.sim
     why = {"duration": "the world's duration", "program": "the program ended"}.get(
-        result.stopped_by, f"stopped by {result.stopped_by}")
+        result.stopped_by, f"stopped by {result.stopped_by}"
+    )
     parts = []
     for robot in sim.robots:
         text = f"{robot.name} moved {robot.distance:.2f} m"
@@ -348,6 +387,7 @@ def open_ros2_bus():
         from .backends import open_ros2_bus as choose
     except ImportError:
         from .dds import DdsBus
+
         return DdsBus()
     return choose()
 
@@ -375,6 +415,7 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
 def _run_simulated(options, launch, program_paths, program_name, stderr, progress) -> RunResult:
     from .bus import Bus
     from .sim.simulator import Simulator
+
     world, source = find_world(program_paths, options.world)
     settings = sim_settings(world, options.namespace, options.goal, options.duration)
     bus = Bus()
@@ -385,15 +426,24 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     if progress is not None:
         progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
     png = f"{program_name.lower()}.png" if options.png is True else (options.png or None)
-    return run_with_robot(lambda on_start: launch(on_start, not options.realtime), settings, bus, sim=sim,
-                          recorder=recorder, png=png, gif=options.gif, progress=progress, stderr=stderr)
+    return run_with_robot(
+        lambda on_start: launch(on_start, not options.realtime),
+        settings,
+        bus,
+        sim=sim,
+        recorder=recorder,
+        png=png,
+        gif=options.gif,
+        progress=progress,
+        stderr=stderr,
+    )
 
 
 def _run_ros2(options, launch, stderr) -> RunResult:
     settings = ros2_settings(options.namespace, options.goal, options.duration)
     try:
         bus = open_ros2_bus()
-    except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
+    except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
         raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
     try:
         recorder = _recorder(bus, options.record)
@@ -402,8 +452,14 @@ def _run_ros2(options, launch, stderr) -> RunResult:
         raise
     expired = threading.Event()
     try:
-        result = run_with_robot(lambda on_start: launch(on_start, None), settings, bus, recorder=recorder,
-                                stderr=stderr, extra_start=_deadline(settings.duration, expired))
+        result = run_with_robot(
+            lambda on_start: launch(on_start, None),
+            settings,
+            bus,
+            recorder=recorder,
+            stderr=stderr,
+            extra_start=_deadline(settings.duration, expired),
+        )
     finally:
         _close_ros2(bus)
     if expired.is_set():
@@ -426,12 +482,13 @@ def _deadline(duration, expired):
         timer.daemon = True
         timer.start()
         rt.shutdown_hooks.append(timer.cancel)
+
     return on_start
 
 
 def _close_ros2(bus):
     with shielded():
-        time.sleep(0.2)                   # let the zero velocity reach the robot
+        time.sleep(0.2)  # let the zero velocity reach the robot
         close = getattr(bus, "close", None)
         if close is not None:
             close()
@@ -457,4 +514,5 @@ def _progress_line(stderr):
         if final and message:
             stderr.write("\n")
         stderr.flush()
+
     return show

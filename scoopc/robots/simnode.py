@@ -17,6 +17,7 @@ Ctrl-C / SIGTERM (a clean stop, exit status 0): every robot is stopped, `--png`,
 For scoopc's argument parser: `add_arguments(parser)` declares the options, `command(args)` runs
 a parsed command, `main(argv)` does both (`python -m scoopc.robots.simnode WORLD ...`).
 """
+
 from __future__ import annotations
 
 import argparse
@@ -31,31 +32,49 @@ from ..exits import Exit
 from .backends import describe, open_ros2_bus
 from .bus import Tap
 
-MAX_LAG = 0.25            # wall-clock seconds the node may fall behind before it drops the debt
+MAX_LAG = 0.25  # wall-clock seconds the node may fall behind before it drops the debt
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
     parser.add_argument("world", metavar="WORLD", help="the world file (YAML, see docs/ROBOTS.md)")
     pace = parser.add_mutually_exclusive_group()
-    pace.add_argument("--realtime", action="store_true",
-                      help="step at real-time speed, one simulated second per second (the default)")
-    pace.add_argument("--rate", type=float, metavar="X",
-                      help="simulated seconds per wall-clock second (2: twice as fast; 0: as fast as possible)")
-    parser.add_argument("--duration", type=float, metavar="S",
-                        help="simulated seconds to run (default: the world's duration; 0: until interrupted)")
+    pace.add_argument(
+        "--realtime", action="store_true", help="step at real-time speed, one simulated second per second (the default)"
+    )
+    pace.add_argument(
+        "--rate",
+        type=float,
+        metavar="X",
+        help="simulated seconds per wall-clock second (2: twice as fast; 0: as fast as possible)",
+    )
+    parser.add_argument(
+        "--duration",
+        type=float,
+        metavar="S",
+        help="simulated seconds to run (default: the world's duration; 0: until interrupted)",
+    )
     parser.add_argument("--domain", type=int, metavar="N", help="the ROS 2 domain id (default: ROS_DOMAIN_ID, else 0)")
     parser.add_argument("--png", metavar="FILE", help="write the trajectories as a PNG at the end")
     parser.add_argument("--gif", metavar="FILE", help="write an animated GIF of the run at the end")
     parser.add_argument("--record", metavar="FILE", help="record every topic into an MCAP file (ROS 2 schemas, CDR)")
-    parser.add_argument("--progress", type=float, default=5.0, metavar="S",
-                        help="wall-clock seconds between progress lines on stderr (default 5; 0: none)")
+    parser.add_argument(
+        "--progress",
+        type=float,
+        default=5.0,
+        metavar="S",
+        help="wall-clock seconds between progress lines on stderr (default 5; 0: none)",
+    )
     return parser
 
 
 def build_parser() -> argparse.ArgumentParser:
-    return add_arguments(argparse.ArgumentParser(
-        prog="scoopc sim", description="Run the simulator as a ROS 2 node (DDS): it subscribes each robot's "
-        "cmd_vel and publishes its sensors and /clock, paced to the wall clock."))
+    return add_arguments(
+        argparse.ArgumentParser(
+            prog="scoopc sim",
+            description="Run the simulator as a ROS 2 node (DDS): it subscribes each robot's "
+            "cmd_vel and publishes its sensors and /clock, paced to the wall clock.",
+        )
+    )
 
 
 class NodeBus:
@@ -64,7 +83,7 @@ class NodeBus:
 
     def __init__(self, bus):
         self.bus = bus
-        self._pending = collections.deque()      # (topic, callback, msg); deque appends are atomic
+        self._pending = collections.deque()  # (topic, callback, msg); deque appends are atomic
         self._taps = []
 
     def publish(self, topic, msg):
@@ -113,13 +132,26 @@ def _progress(sim, wall, commands):
     return f"t={sim.time:.1f} s (wall {wall:.1f} s), {commands} commands; {poses}"
 
 
-def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, record=None, progress=5.0,
-        bus=None, stderr=None, stop=None) -> int:
+def run(
+    world,
+    *,
+    rate=1.0,
+    duration=None,
+    domain=None,
+    png=None,
+    gif=None,
+    record=None,
+    progress=5.0,
+    bus=None,
+    stderr=None,
+    stop=None,
+) -> int:
     """Run the node; returns the exit status. `bus`: a bus to use instead of opening one (closed by the
     caller); `stop`: a threading.Event that ends the run (tests)."""
     import yaml
 
     from .sim import Simulator, World, WorldError
+
     stderr = sys.stderr if stderr is None else stderr
     try:
         loaded = world if isinstance(world, World) else World.load(world)
@@ -130,11 +162,14 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
     end = math.inf if not end or end <= 0 else end
     own_bus = bus is None
     if own_bus:
-        stamped = {f"/{spec.namespace}/cmd_vel" if spec.namespace else "/cmd_vel": "geometry_msgs/msg/TwistStamped"
-                   for spec in loaded.robots if spec.cmd_vel_stamped}
+        stamped = {
+            f"/{spec.namespace}/cmd_vel" if spec.namespace else "/cmd_vel": "geometry_msgs/msg/TwistStamped"
+            for spec in loaded.robots
+            if spec.cmd_vel_stamped
+        }
         try:
             bus = open_ros2_bus(domain, types=stamped)
-        except Exception as e:             # noqa: BLE001 - no backend, DDS cannot start, ...
+        except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
             _say(stderr, f"error: cannot open the ROS 2 transport: {e}")
             return Exit.USAGE
     backend = describe(bus)
@@ -148,6 +183,7 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
     try:
         if record:
             from .record import Recorder
+
             clock = {"sim": None}
             recorder = Recorder(node, record, clock=lambda: clock["sim"].time_ns if clock["sim"] else 0)
         sim = Simulator(loaded, node)
@@ -172,17 +208,25 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
                     time.sleep(ahead)
                 else:
                     lag = max(lag, -ahead)
-                    if -ahead > MAX_LAG:          # too far behind: slow the simulated time, no burst
+                    if -ahead > MAX_LAG:  # too far behind: slow the simulated time, no burst
                         start -= ahead
             if progress and now - last_report >= progress:
                 last_report = now
                 _say(stderr, _progress(sim, now - start, commands))
         commands += node.drain()
-        why = f"stopped by {flag.requested}" if flag.requested else \
-            "stopped" if stop is not None and stop.is_set() else "duration reached"
+        why = (
+            f"stopped by {flag.requested}"
+            if flag.requested
+            else "stopped"
+            if stop is not None and stop.is_set()
+            else "duration reached"
+        )
         sim.stop_all()
-        _say(stderr, f"{why} at t={sim.time:.2f} s; {_progress(sim, time.monotonic() - start, commands)}"
-             + (f"; fell behind the wall clock by up to {lag * 1000:.0f} ms" if lag > 0.05 else ""))
+        _say(
+            stderr,
+            f"{why} at t={sim.time:.2f} s; {_progress(sim, time.monotonic() - start, commands)}"
+            + (f"; fell behind the wall clock by up to {lag * 1000:.0f} ms" if lag > 0.05 else ""),
+        )
         for robot in sim.robots:
             if robot.collisions or robot.fallen:
                 fell = ", fell into a hole" if robot.fallen else ""
@@ -212,7 +256,9 @@ def run(world, *, rate=1.0, duration=None, domain=None, png=None, gif=None, reco
 def _gif(sim):
     def render(path):
         from .sim.render import render_gif
+
         return render_gif(sim, path)
+
     return render
 
 
@@ -222,14 +268,22 @@ def command(args: argparse.Namespace) -> int:
     if rate < 0:
         print("scoopc sim: error: --rate must be 0 or more", file=sys.stderr)
         return Exit.USAGE
-    return run(args.world, rate=rate, duration=args.duration, domain=args.domain, png=args.png, gif=args.gif,
-               record=args.record, progress=args.progress)
+    return run(
+        args.world,
+        rate=rate,
+        duration=args.duration,
+        domain=args.domain,
+        png=args.png,
+        gif=args.gif,
+        record=args.record,
+        progress=args.progress,
+    )
 
 
 def main(argv=None) -> int:
     try:
         args = build_parser().parse_args(argv)
-    except SystemExit as e:              # argparse: --help (0) or a usage error (2)
+    except SystemExit as e:  # argparse: --help (0) or a usage error (2)
         return int(e.code or 0)
     return command(args)
 

@@ -4,12 +4,13 @@ the Eiffel library (ROS_PUBLISHER / ROS_SUBSCRIBER) meet.
 `current()` is a process-wide default Bus unless `use(bus)` installed another one; `use(None)`
 goes back to a fresh default. `reset()` gives a fresh default bus (tests).
 """
+
 import threading
 
 from .bus import Bus
 
 _lock = threading.Lock()
-_current = None          # [_lock] the Bus in use
+_current = None  # [_lock] the Bus in use
 
 
 def current():

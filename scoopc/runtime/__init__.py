@@ -1,4 +1,5 @@
 """scoopc.runtime: the SCOOP processor runtime that generated code imports (docs/RUNTIME.md)."""
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -18,10 +19,30 @@ if TYPE_CHECKING:
     from .clock import Timer
     from .sched import Runtime
 
-__all__ = ["Agent", "DeadlockError", "DirtyRegionError", "OutsideClient", "PreconditionViolation",
-           "Processor", "ScoopError", "Session", "Shutdown", "UncontrolledTarget", "add_shutdown_hook",
-           "call_later", "current", "dump", "finish", "leaf", "now_ns", "once_object", "once_process",
-           "outside_client", "run_main", "start"]
+__all__ = [
+    "Agent",
+    "DeadlockError",
+    "DirtyRegionError",
+    "OutsideClient",
+    "PreconditionViolation",
+    "Processor",
+    "ScoopError",
+    "Session",
+    "Shutdown",
+    "UncontrolledTarget",
+    "add_shutdown_hook",
+    "call_later",
+    "current",
+    "dump",
+    "finish",
+    "leaf",
+    "now_ns",
+    "once_object",
+    "once_process",
+    "outside_client",
+    "run_main",
+    "start",
+]
 
 F = TypeVar("F", bound=Callable[..., object])
 
@@ -31,12 +52,14 @@ def now_ns() -> int:
     return current().clock.now_ns()
 
 
-def call_later(delay_ns: int, target: Separate, routine: Routine, args: Args = (),
-               period_ns: int | None = None, phase: int = 1) -> Timer:
+def call_later(
+    delay_ns: int, target: Separate, routine: Routine, args: Args = (), period_ns: int | None = None, phase: int = 1
+) -> Timer:
     """Log `routine(target, *args)` on target's processor after `delay_ns` (then every
     `period_ns`); returns a Timer with `cancel()`. `phase=0`: on the virtual clock, fire before
     the sleepers and timers due at the same instant (a simulator's step)."""
     from .clock import Timer
+
     rt = current()
     src = _timer_source(rt)
     return rt.clock.add_timer(Timer(delay_ns, target, routine, args, period_ns, src, phase))
@@ -46,7 +69,7 @@ def _timer_source(rt: Runtime) -> OutsideClient:
     src: OutsideClient | None = getattr(rt, "_timer_source", None)
     if src is None:
         src = rt._timer_source = OutsideClient(rt, "timers")
-        src.close()           # pending timers are counted by the clock, not as a source
+        src.close()  # pending timers are counted by the clock, not as a source
     return src
 
 

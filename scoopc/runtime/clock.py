@@ -9,6 +9,7 @@ therefore always sees that step's sensor data.
 Timers fire on the clock thread (owned and joined by the runtime), which logs the timer's
 command on its target processor like an outside client would.
 """
+
 from __future__ import annotations
 
 import heapq
@@ -37,13 +38,21 @@ class Timer:
     source: OutsideClient
     phase: int
 
-    def __init__(self, deadline: int, target: Separate, routine: Routine, args: Args,
-                 period: int | None, source: OutsideClient, phase: int = 1) -> None:
+    def __init__(
+        self,
+        deadline: int,
+        target: Separate,
+        routine: Routine,
+        args: Args,
+        period: int | None,
+        source: OutsideClient,
+        phase: int = 1,
+    ) -> None:
         self.deadline = deadline
         self.phase = phase
         self.target, self.routine, self.args = target, routine, args
         self.period = period
-        self.cancelled = False   # [rt.glock]
+        self.cancelled = False  # [rt.glock]
         self.source = source
 
     def cancel(self) -> None:
@@ -55,6 +64,7 @@ class Timer:
 
 class Clock:
     """Fields marked [g] are protected by the runtime's glock."""
+
     heap: list[tuple[int, int, int, Timer | Block]]
     due: list[Timer]
     thread: threading.Thread | None
@@ -62,17 +72,17 @@ class Clock:
     def __init__(self, rt: Runtime, virtual: bool) -> None:
         self.rt = rt
         self.virtual = virtual
-        self.vnow = 0                 # [g] virtual time, ns
-        self.heap = []                # [g] (deadline, phase, seq, Timer or Block)
+        self.vnow = 0  # [g] virtual time, ns
+        self.heap = []  # [g] (deadline, phase, seq, Timer or Block)
         self.seq = itertools.count()  # [g]
-        self.due = []                 # [g] timers handed to the clock thread
+        self.due = []  # [g] timers handed to the clock thread
         self.cv = threading.Condition(rt.glock)
-        self.thread = None            # [g] the clock thread, started with the first timer
-        self.stopped = False          # [g]
+        self.thread = None  # [g] the clock thread, started with the first timer
+        self.stopped = False  # [g]
 
     def now_ns(self) -> int:
         if self.virtual:
-            return self.vnow          # a plain read of an int: never torn
+            return self.vnow  # a plain read of an int: never torn
         return time.monotonic_ns()
 
     # -- sleeping ----------------------------------------------------------------------
@@ -104,8 +114,7 @@ class Clock:
             timer.deadline += self.vnow if self.virtual else time.monotonic_ns()
             heapq.heappush(self.heap, (timer.deadline, timer.phase, next(self.seq), timer))
             if self.thread is None and not self.stopped:
-                start = self.thread = threading.Thread(target=self._run, name="scoop-clock",
-                                                       daemon=True)
+                start = self.thread = threading.Thread(target=self._run, name="scoop-clock", daemon=True)
             self.cv.notify_all()
         if start is not None:
             start.start()
@@ -113,8 +122,7 @@ class Clock:
 
     def pending_locked(self) -> bool:
         """[g] Is a timer still to fire (keeps the program alive)?"""
-        return bool(self.due) or any(isinstance(e[-1], Timer) and not e[-1].cancelled
-                                     for e in self.heap)
+        return bool(self.due) or any(isinstance(e[-1], Timer) and not e[-1].cancelled for e in self.heap)
 
     def advance_locked(self) -> None:
         """[g] Virtual clock, every processor thread waiting: jump to the next deadline and
@@ -133,7 +141,7 @@ class Clock:
             else:
                 self.rt.unblock_locked(item)
         if self.due:
-            self.rt.n_running += 1     # the clock thread runs until it has logged them
+            self.rt.n_running += 1  # the clock thread runs until it has logged them
             self.cv.notify_all()
 
     def _run(self) -> None:
@@ -142,7 +150,7 @@ class Clock:
             while not self.stopped:
                 if self.due:
                     due, self.due = self.due, []
-                    if not self.virtual:        # virtual: counted by advance_locked
+                    if not self.virtual:  # virtual: counted by advance_locked
                         rt.n_running += 1
                     rt.glock.release()
                     try:
@@ -176,9 +184,8 @@ class Clock:
     def _fire(self, t: Timer) -> None:
         try:
             t.source.call(t.target, t.routine, t.args)
-        except Exception as e:             # e.g. a timer on a passive region: collected
-            self.rt.fail(f"timer {getattr(t.routine, '__qualname__', t.routine)} "
-                         f"could not be logged: {e}", e)
+        except Exception as e:  # e.g. a timer on a passive region: collected
+            self.rt.fail(f"timer {getattr(t.routine, '__qualname__', t.routine)} could not be logged: {e}", e)
             return
         if t.period:
             with self.rt.glock:

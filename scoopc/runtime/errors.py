@@ -1,4 +1,5 @@
 """Exceptions the SCOOP runtime raises into generated code, and the run-time failure record."""
+
 from __future__ import annotations
 
 

@@ -16,6 +16,7 @@ costs about as much as the work it guards, so these entry points skip them:
 Every guarantee is kept by falling back to the general path whenever the fast one does
 not apply; the fast paths only skip checks whose answer codegen promised.
 """
+
 from __future__ import annotations
 
 import threading
@@ -34,14 +35,16 @@ if TYPE_CHECKING:
 
 class _Nothing:
     """The reservation of a Void separate argument: nothing to take or release."""
+
     __slots__ = ()
     taken = None
 
     def __enter__(self) -> _Nothing:
         return self
 
-    def __exit__(self, et: type[BaseException] | None = None, ev: BaseException | None = None,
-                 tb: TracebackType | None = None) -> None:
+    def __exit__(
+        self, et: type[BaseException] | None = None, ev: BaseException | None = None, tb: TracebackType | None = None
+    ) -> None:
         return None
 
     enter = __enter__
@@ -55,11 +58,17 @@ class FastPaths:
     """Mixin of `Processor` (fields documented there). Its methods take `self: Processor`, which
     mypy refuses for a subclass (error code misc, ignored on each `def`): a Protocol would not
     do, since they pass `self` on as the client of a Session or the waiter of a Block."""
-    __slots__ = ()
-    spare: Session | None            # Processor's slot
 
-    def reserve1(self: Processor, x: Separate | None, where: Where | None = None,  # type: ignore[misc]
-                 pre: Sequence[Clause] | None = None, pre_args: Args = ()) -> Session | _Nothing:
+    __slots__ = ()
+    spare: Session | None  # Processor's slot
+
+    def reserve1(
+        self: Processor,
+        x: Separate | None,
+        where: Where | None = None,  # type: ignore[misc]
+        pre: Sequence[Clause] | None = None,
+        pre_args: Args = (),
+    ) -> Session | _Nothing:
         """`with here.reserve1(x, where):` reserves the one separate argument `x` (Void
         or already held: nothing). With `pre` (a tuple of clauses `(pred, targets, tag,
         where)`, `pred(*pre_args) -> bool`, `targets` `(0,)` if the clause calls `x`,
@@ -89,7 +98,7 @@ class FastPaths:
         while True:
             s.__enter__()
             try:
-                for clause in pre:            # in order; the first false one decides
+                for clause in pre:  # in order; the first false one decides
                     if not clause[0](*pre_args):
                         break
                 else:
@@ -97,16 +106,16 @@ class FastPaths:
             except BaseException:
                 s.__exit__()
                 raise
-            if not clause[1] or self.held.get(p) is not s:   # not newly reserved by us
+            if not clause[1] or self.held.get(p) is not s:  # not newly reserved by us
                 s.__exit__()
                 raise PreconditionViolation(clause[2], clause[3])
             self._wait1(s, p, clause)
-            s = self._session1(p, s.where)    # a private queue for the next try
+            s = self._session1(p, s.where)  # a private queue for the next try
 
     def _wait1(self: Processor, s: Session, p: Processor, clause: Clause) -> None:  # type: ignore[misc]
         """Register the wake-up and release `s` under one hold of `p.lock` (no change can
         slip in between), sleep until another client's session with a command ends."""
-        lk = threading.Lock()                # the one-shot wake-up, already held
+        lk = threading.Lock()  # the one-shot wake-up, already held
         lk.acquire()
         blk = Block("wait", self, (p,), clause[3] or s.where, lk, None, clause[2])
         del self.held[p]
@@ -114,25 +123,30 @@ class FastPaths:
         lock.acquire()
         p.waiters.append(blk)
         if s.claimed and not p.qoq and s.dirty is None and not s.changed:
-            s.claimed = False                # the common case of `close_locked`: only
-            s.closed = True                  # queries ran, nobody queued behind us
+            s.claimed = False  # the common case of `close_locked`: only
+            s.closed = True  # queries ran, nobody queued behind us
             p.exec = None
             p.state = IDLE
             p.head = None
             lock.release()
-            self.spare = s                   # unreferenced now: reusable
+            self.spare = s  # unreferenced now: reusable
         else:
-            close_locked(p, s)               # releases p.lock
+            close_locked(p, s)  # releases p.lock
         try:
             self.rt.block(self.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
         finally:
-            if blk.value is not p:           # our waker did not unlist us already
+            if blk.value is not p:  # our waker did not unlist us already
                 with p.lock:
                     if blk in p.waiters:
                         p.waiters.remove(blk)
 
-    def command1(self: Processor, x: Separate, routine: Routine, args: Args = (),  # type: ignore[misc]
-                 where: Where | None = None) -> None:
+    def command1(
+        self: Processor,
+        x: Separate,
+        routine: Routine,
+        args: Args = (),  # type: ignore[misc]
+        where: Where | None = None,
+    ) -> None:
         """`with here.reserve1(x, where): here.call(x, routine, args)` in one step: a
         routine (or separate block) with one separate argument `x`, no precondition, whose
         body is the single command `x.routine (args)`, none of whose arguments can pass
@@ -148,7 +162,7 @@ class FastPaths:
         if not getattr(routine, "_scoop_leaf_", False):
             self._log1(p, x, routine, args, where)
             return
-        s = self.spare                              # `_session1`, inlined (hot path)
+        s = self.spare  # `_session1`, inlined (hot path)
         if s is None:
             s = Session(self, p, where)
         else:
@@ -159,9 +173,9 @@ class FastPaths:
         lock = p.lock
         lock.acquire()
         if p.head is not None or p.state != IDLE:
-            self._busy1(p, s, x, routine, args)     # releases p.lock
+            self._busy1(p, s, x, routine, args)  # releases p.lock
             return
-        p.head = s                                  # claim, as `Session.__enter__`
+        p.head = s  # claim, as `Session.__enter__`
         p.state = RUNNING
         p.exec = self.exec
         s.claimed = True
@@ -173,13 +187,13 @@ class FastPaths:
             lock.acquire()
             close_locked(p, s)
             raise
-        except BaseException as e:                 # dirty, then lost: reported at close
+        except BaseException as e:  # dirty, then lost: reported at close
             lock.acquire()
             s.dirty = e
             close_locked(p, s)
             return
         lock.acquire()
-        if not p.qoq:                              # the common case of `close_locked`
+        if not p.qoq:  # the common case of `close_locked`
             if p.waiters:
                 p.wake_waiters_locked(s)
             s.claimed = False
@@ -188,12 +202,18 @@ class FastPaths:
             p.state = IDLE
             p.head = None
             lock.release()
-            self.spare = s                          # unreferenced now: reusable
+            self.spare = s  # unreferenced now: reusable
             return
         close_locked(p, s)
 
-    def _busy1(self: Processor, p: Processor, s: Session, x: Separate, routine: Routine,  # type: ignore[misc]
-               args: Args) -> None:
+    def _busy1(
+        self: Processor,
+        p: Processor,
+        s: Session,
+        x: Separate,
+        routine: Routine,  # type: ignore[misc]
+        args: Args,
+    ) -> None:
         """[p.lock held; released] `command1` on a busy supplier: the general path with the
         private queue `s`, enqueued behind the others (never blocks)."""
         s.changed = False
@@ -205,8 +225,14 @@ class FastPaths:
         finally:
             s.__exit__()
 
-    def _log1(self: Processor, p: Processor, x: Separate, routine: Routine, args: Args,  # type: ignore[misc]
-              where: Where | None) -> None:
+    def _log1(
+        self: Processor,
+        p: Processor,
+        x: Separate,
+        routine: Routine,
+        args: Args,  # type: ignore[misc]
+        where: Where | None,
+    ) -> None:
         """Log a non-leaf command in a new closed private queue (one lock round)."""
         s = Session(self, p, where)
         s.calls.append((routine, x, args, None, None))
@@ -235,12 +261,15 @@ class FastPaths:
             return
         self.call(target, routine, args)
 
-    def leaf_query(self: Processor, target: Separate, routine: Routine, args: Args = (),  # type: ignore[misc]
-                   where: Where | None = None) -> object:
+    def leaf_query(
+        self: Processor,
+        target: Separate,
+        routine: Routine,
+        args: Args = (),  # type: ignore[misc]
+        where: Where | None = None,
+    ) -> object:
         """`query` of a `@leaf` routine whose arguments cannot pass locks (as `leaf_call`)."""
         s = self.held.get(target._region_)
-        if s.__class__ is Session and s.claimed and s.dirty is None \
-                and not self.rt.stopping:
+        if s.__class__ is Session and s.claimed and s.dirty is None and not self.rt.stopping:
             return routine(target, *args)
         return self.query(target, routine, args, where)
-

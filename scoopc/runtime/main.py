@@ -1,6 +1,7 @@
 """The program entry point for generated code: run the root creation procedure as the root
 processor on the main thread, wait for termination, and shut down (Ctrl-C, deadlock,
 failure) with every thread joined and every failure reported."""
+
 from __future__ import annotations
 
 import signal
@@ -21,11 +22,12 @@ from .stop_signals import Stopped, status_of
 if TYPE_CHECKING:
     from typing_extensions import Unpack  # in typing from Python 3.11
 
-_current: Runtime | None = None        # the runtime of the running program (one at a time)
+_current: Runtime | None = None  # the runtime of the running program (one at a time)
 
 
 class Options(TypedDict, total=False):
     """The keyword options of `start` and `run_main`: those of `Runtime`."""
+
     virtual_clock: bool
     trace_processors: bool
     strict: bool
@@ -92,9 +94,14 @@ def finish(rt: Runtime, root: Processor, interrupted: KeyboardInterrupt | None =
     return status
 
 
-def run_main(root_cls: type[Separate], creator: Routine | None, args: Args = (),
-             describe: Callable[[BaseException, Processor], str] | None = None,
-             on_start: Callable[[Runtime], object] | None = None, **options: Unpack[Options]) -> int:
+def run_main(
+    root_cls: type[Separate],
+    creator: Routine | None,
+    args: Args = (),
+    describe: Callable[[BaseException, Processor], str] | None = None,
+    on_start: Callable[[Runtime], object] | None = None,
+    **options: Unpack[Options],
+) -> int:
     """Run a program: `creator(root_object, *args)` on the root processor. Exit status.
     `describe(exception, processor)`: the text reporting an uncaught exception (default: the
     exception and the processor's innermost frame). `on_start(rt)`: called on the root's thread
@@ -134,13 +141,12 @@ def _run_hooks(rt: Runtime) -> None:
     for fn in hooks:
         try:
             fn()
-        except Exception as e:     # a failing hook must not stop the others
+        except Exception as e:  # a failing hook must not stop the others
             rt.stderr.write(f"scoopc: shutdown hook {fn!r} failed: {e!r}\n")
 
 
 def _install_dump_signal(rt: Runtime) -> Callable[[], object]:
-    if threading.current_thread() is not threading.main_thread() or \
-            not hasattr(signal, "SIGUSR1"):
+    if threading.current_thread() is not threading.main_thread() or not hasattr(signal, "SIGUSR1"):
         return lambda: None
     old = signal.signal(signal.SIGUSR1, lambda *_: rt.stderr.write(dump(rt)))
     return lambda: signal.signal(signal.SIGUSR1, old)

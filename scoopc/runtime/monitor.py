@@ -7,6 +7,7 @@ no timer, no open outside client" is a wait-condition deadlock. The monitor thre
 once a tick, and only reports a candidate seen again, unchanged (same Block objects: a
 thread that moved got a new one), on the next tick: no false report from a racy snapshot.
 """
+
 from __future__ import annotations
 
 import threading
@@ -30,7 +31,7 @@ def _target(blk: Block) -> Exec | None:
     assert isinstance(s, Session), "a sync or turn Block is on a Session"
     p = s.proc
     with p.lock:
-        if p.state == 2:                       # RUNNING: whoever runs it
+        if p.state == 2:  # RUNNING: whoever runs it
             return p.exec
         h = p.head
         if h is s or h is None or h.calls:
@@ -70,8 +71,7 @@ def snapshot(rt: Runtime) -> tuple[dict[Exec, Block], bool]:
     with rt.glock:
         blocks = {ex: ex.blocked for ex in rt.blocked if ex.blocked is not None}
         all_blocked = rt.n_running == len(rt.blocked) and not rt.runnable
-        no_wakers = (rt.sources == 0 and not rt.clock.pending_locked()
-                     and not rt.clock.heap)
+        no_wakers = rt.sources == 0 and not rt.clock.pending_locked() and not rt.clock.heap
     return blocks, all_blocked and no_wakers
 
 
@@ -88,14 +88,13 @@ def find_deadlock(rt: Runtime) -> tuple[frozenset[Block], list[str]] | None:
             path.append(ex)
             ex = edges[ex]
         if ex in path:
-            cycle = path[path.index(ex):]
+            cycle = path[path.index(ex) :]
             lines = ["deadlock: a cycle of synchronous calls"]
             lines += ["  " + _describe(blocks[e]) for e in cycle]
             return frozenset(blocks[e] for e in cycle), lines
     kinds = {blk.kind for blk in blocks.values()}
     if stuck and "wait" in kinds and "sleep" not in kinds:
-        lines = ["deadlock: every processor is idle or blocked and none can make a "
-                 "wait condition true"]
+        lines = ["deadlock: every processor is idle or blocked and none can make a wait condition true"]
         lines += ["  " + _describe(blk) for blk in blocks.values()]
         return frozenset(blocks.values()), lines
     return None
@@ -104,6 +103,7 @@ def find_deadlock(rt: Runtime) -> tuple[frozenset[Block], list[str]] | None:
 def dump(rt: Runtime) -> str:
     """A text dump of every live processor and every blocked thread."""
     from .processor import STATE_NAMES
+
     with rt.idlock:
         procs = sorted(rt.procs.values(), key=lambda p: p.id)
     lines = [f"scoop runtime dump: {len(procs)} processors"]
@@ -143,7 +143,7 @@ class Monitor:
         try:
             while not self.stopped.wait(rt.deadlock_tick):
                 self.check()
-        except BaseException as e:          # collected by the owner
+        except BaseException as e:  # collected by the owner
             rt.fail(f"internal error in the deadlock monitor: {e!r}", e)
 
     def check(self) -> None:

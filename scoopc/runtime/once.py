@@ -2,6 +2,7 @@
 
 Values are keyed by region, never by thread: a call run on another thread on a region's
 behalf (client executes, callbacks) sees that region's values."""
+
 from __future__ import annotations
 
 import threading
@@ -16,6 +17,7 @@ if TYPE_CHECKING:
 
 class _Failed:
     """A once routine whose first call raised: later calls raise the same exception."""
+
     __slots__ = ("exc",)
 
     def __init__(self, exc: BaseException) -> None:
@@ -39,12 +41,12 @@ def once_in(table: OnceTable, key: OnceKey, fn: Callable[..., object], args: Arg
     return v
 
 
-_process_lock = threading.RLock()     # serialises first calls of process-wide onces
+_process_lock = threading.RLock()  # serialises first calls of process-wide onces
 
 
 def once_process(rt: Runtime, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
     table = rt.process_onces
-    v = table.get(key, table)          # fast path: a plain dict read once computed
+    v = table.get(key, table)  # fast path: a plain dict read once computed
     if v is not table and v.__class__ is not _Failed:
         return v
     with _process_lock:

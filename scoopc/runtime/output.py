@@ -1,5 +1,6 @@
 """Untorn program output: one print call writes its text whole; with processor tracing,
 every output line carries the tag of the processor that wrote it."""
+
 from __future__ import annotations
 
 import threading
@@ -16,8 +17,8 @@ class Output:
         self.stream = stream
         self.trace = trace
         self.lock = threading.Lock()
-        self.partial = {}     # [lock] processor -> unfinished line (trace mode only)
-        self.broken = False   # [lock] the reader of the stream has gone
+        self.partial = {}  # [lock] processor -> unfinished line (trace mode only)
+        self.broken = False  # [lock] the reader of the stream has gone
 
     def write(self, proc: Processor, text: str) -> None:
         if not self.trace:

@@ -3,6 +3,7 @@
 An outside client logs commands from any thread without ever waiting for a processor: each
 call is a closed private queue of one call put in the supplier's queue of queues, so calls
 of one source to one processor run in the order they were logged."""
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
@@ -18,13 +19,14 @@ if TYPE_CHECKING:
 
 class OutsideClient:
     """A source of commands from outside the processors; counted open until `close`."""
+
     exec: Exec | None
 
     def __init__(self, rt: Runtime, name: str) -> None:
         self.rt = rt
         self.name = name
-        self.exec = None       # not a processor: nothing to wait for in the wait-for graph
-        self.open = True       # [rt.glock]
+        self.exec = None  # not a processor: nothing to wait for in the wait-for graph
+        self.open = True  # [rt.glock]
         with rt.glock:
             rt.sources += 1
 
@@ -50,7 +52,7 @@ class OutsideClient:
         enqueue(p, s)
         run = p.state == IDLE and p.head is s
         if run:
-            if ex is not None and not self.rt.stopping:      # `leaf`
+            if ex is not None and not self.rt.stopping:  # `leaf`
                 p.state = RUNNING
                 p.exec = ex
                 lock.release()
@@ -72,6 +74,7 @@ class Agent:
     """An agent object: lives in its target's region; `call` runs routine(target, *closed,
     *operands). On a separate agent, `here.call(agent, Agent.call, (None,))` is
     asynchronous and `(operands_tuple,)` passes locks (a tuple is a client reference)."""
+
     __slots__ = ("_region_", "target", "routine", "closed")
     _region_: Processor
     target: Separate

@@ -16,6 +16,7 @@ computation or a blocking external call never stops the other processors for mor
 about two slices. Correctness never depends on permits: every shared structure has its
 own lock; permits only decide who runs.
 """
+
 from __future__ import annotations
 
 import os
@@ -28,7 +29,7 @@ from .errors import Shutdown
 if TYPE_CHECKING:
     from .sched import Exec, Runtime
 
-SLICE = 0.005      # seconds
+SLICE = 0.005  # seconds
 
 
 def base_permits() -> int:
@@ -39,16 +40,17 @@ def base_permits() -> int:
 
 class Permits:
     """Fields marked [g] are protected by the runtime's glock (`rt.glock`)."""
+
     waiting: deque[Exec]
 
     def __init__(self, rt: Runtime) -> None:
         self.rt = rt
         self.base = base_permits()
-        self.total = self.base        # [g] permits, including extra ones for stuck holders
-        self.held = 0                 # [g]
-        self.waiting = deque()        # [g] Execs waiting for a permit, FIFO
-        self.moves = 0                # [g] permits changed hands (progress, for stuck checks)
-        self.want_yield = False       # [g] written; read racily at yield points
+        self.total = self.base  # [g] permits, including extra ones for stuck holders
+        self.held = 0  # [g]
+        self.waiting = deque()  # [g] Execs waiting for a permit, FIFO
+        self.moves = 0  # [g] permits changed hands (progress, for stuck checks)
+        self.want_yield = False  # [g] written; read racily at yield points
 
     def acquire(self, ex: Exec) -> None:
         """Take a permit for thread `ex` (waiting for one if none is free)."""
@@ -76,11 +78,11 @@ class Permits:
         self.moves += 1
         if self.waiting:
             self._want_yield(False)
-            self.waiting.popleft().plock.release()     # the permit moves over
+            self.waiting.popleft().plock.release()  # the permit moves over
             return
         self.held -= 1
         if self.total > self.base:
-            self.total -= 1                            # an extra permit is given back
+            self.total -= 1  # an extra permit is given back
 
     def release(self, ex: Exec) -> None:
         with self.rt.glock:
@@ -117,13 +119,13 @@ class Permits:
             if spawn is not None:
                 spawn.thread.start()
             with rt.glock:
-                if ex not in self.waiting:    # handed over just now: take it
+                if ex not in self.waiting:  # handed over just now: take it
                     continue
                 if not rt.stopping and (seen != self.moves or not self.want_yield):
-                    seen = self.moves         # ask the holders to yield, wait a slice more
+                    seen = self.moves  # ask the holders to yield, wait a slice more
                     self._want_yield(True)
                     continue
-                self.waiting.remove(ex)       # stuck holders (or stopping): one more permit
+                self.waiting.remove(ex)  # stuck holders (or stopping): one more permit
                 self.total += 1
                 self.held += 1
                 break

@@ -10,6 +10,7 @@ itself on its own thread ("client executes", as SCOOP/Qs): no thread hand-off. I
 that claim (`Session.claimed`) until it releases the reservation, so its later calls on the
 supplier take no lock at all.
 """
+
 from __future__ import annotations
 
 import threading
@@ -37,8 +38,8 @@ else:
 S = TypeVar("S", bound=Separate)
 # The sessions a server or a client running calls on a supplier's behalf takes at once.
 Batches = list[tuple[Session, list[Call]]]
-BATCH_SESSIONS = 64     # sessions a server takes under one lock hold
-HELP_LIMIT = 256        # leaf calls a releasing client serves for others before handing off
+BATCH_SESSIONS = 64  # sessions a server takes under one lock hold
+HELP_LIMIT = 256  # leaf calls a releasing client serves for others before handing off
 STATE_NAMES = ("idle", "scheduled", "running")
 # Argument types that are never references into a region (no lock passing): checked first,
 # since `getattr(a, "_region_", None)` on them costs an AttributeError inside getattr.
@@ -48,8 +49,24 @@ VALUES = frozenset((int, float, str, bool, type(None), bytes, complex))
 class Processor(FastPaths):
     """A region and its processor. The public methods (and those of `FastPaths`, fast.py)
     are the API for generated code."""
-    __slots__ = ("id", "rt", "lock", "head", "qoq", "state", "passive", "exec", "held",
-                 "waiters", "onces", "frames", "name", "spare", "__weakref__")
+
+    __slots__ = (
+        "id",
+        "rt",
+        "lock",
+        "head",
+        "qoq",
+        "state",
+        "passive",
+        "exec",
+        "held",
+        "waiters",
+        "onces",
+        "frames",
+        "name",
+        "spare",
+        "__weakref__",
+    )
     id: int
     rt: Runtime
     lock: threading.Lock
@@ -69,17 +86,17 @@ class Processor(FastPaths):
         self.rt = rt
         self.id = rt.register(self)
         self.lock = threading.Lock()
-        self.head = None          # [lock] Session being served
-        self.qoq = deque()        # [lock] Sessions waiting behind the head, FIFO
-        self.state = IDLE         # [lock]
+        self.head = None  # [lock] Session being served
+        self.qoq = deque()  # [lock] Sessions waiting behind the head, FIFO
+        self.state = IDLE  # [lock]
         self.passive = passive
-        self.exec = None          # [lock to set] Exec of the thread running on our behalf
+        self.exec = None  # [lock to set] Exec of the thread running on our behalf
         self.held = {self: self}  # [executor] region -> Session, or region itself (own/borrowed)
-        self.waiters = []         # [lock] Blocks of processors in wait conditions on us
-        self.onces = {}           # [executor] once-per-region values
-        self.frames = []          # [executor] optional Eiffel frame stack (where tuples)
-        self.name = name          # class name of the first object, for reports
-        self.spare = None         # [executor] a finished Session of ours no one refers to,
+        self.waiters = []  # [lock] Blocks of processors in wait conditions on us
+        self.onces = {}  # [executor] once-per-region values
+        self.frames = []  # [executor] optional Eiffel frame stack (where tuples)
+        self.name = name  # class name of the first object, for reports
+        self.spare = None  # [executor] a finished Session of ours no one refers to,
         #                           reused by the next `reserve1` (saves an allocation)
 
     def __repr__(self) -> str:
@@ -92,24 +109,21 @@ class Processor(FastPaths):
         obj._region_ = self
         return obj
 
-    def new_separate(self, cls: type[S], creator: Routine | None, args: Args = (),
-                     gen: object = None) -> S:
+    def new_separate(self, cls: type[S], creator: Routine | None, args: Args = (), gen: object = None) -> S:
         """Separate creation: a new processor; `creator` is logged on it as a command.
         `gen`: the actual generics of a generic class (set as `_gen_` before `creator` runs)."""
         return self._create(Processor(self.rt, False, cls.__name__), cls, creator, args, gen)
 
-    def new_passive(self, cls: type[S], creator: Routine | None, args: Args = (),
-                    gen: object = None) -> S:
+    def new_passive(self, cls: type[S], creator: Routine | None, args: Args = (), gen: object = None) -> S:
         """`create <NONE>`: a passive region whose calls its clients run under reservation."""
         return self._create(Processor(self.rt, True, cls.__name__), cls, creator, args, gen)
 
-    def _create(self, proc: Processor, cls: type[S], creator: Routine | None, args: Args,
-                gen: object = None) -> S:
+    def _create(self, proc: Processor, cls: type[S], creator: Routine | None, args: Args, gen: object = None) -> S:
         obj = proc.new(cls)
         if gen is not None:
             obj._gen_ = gen  # type: ignore[attr-defined]  # only generic classes have `_gen_`
         s = Session(self, proc)
-        proc.head = s             # the new processor is ours alone: no lock needed yet
+        proc.head = s  # the new processor is ours alone: no lock needed yet
         self.held[proc] = s
         try:
             if creator is not None:
@@ -126,7 +140,7 @@ class Processor(FastPaths):
         s = self.held.get(p)
         if s.__class__ is Session:
             if s.claimed and s.dirty is None and (not args or not self._passes(args)):
-                if p.passive:                  # synchronous, failures reach the client
+                if p.passive:  # synchronous, failures reach the client
                     if self.rt.stopping:
                         raise Shutdown()
                     s.changed = True
@@ -142,16 +156,15 @@ class Processor(FastPaths):
             lock.acquire()
             if s.claimed:
                 drop_claim_locked(p, s)
-            if s.dirty is None:      # a dirty region skips later calls
+            if s.dirty is None:  # a dirty region skips later calls
                 if getattr(routine, "_scoop_leaf_", False):
                     if p.state != RUNNING and not s.heavy:
-                        if p.head is s and not s.calls:    # the fast path
+                        if p.head is s and not s.calls:  # the fast path
                             self._leaf_now(p, s, routine, target, args)
                             return
                         ahead = _ahead_locked(p, s)
-                        if ahead is not None:      # client executes the short command
-                            self._inline(p, s, _take(p, s, ahead), routine, target, args,
-                                         None, True)
+                        if ahead is not None:  # client executes the short command
+                            self._inline(p, s, _take(p, s, ahead), routine, target, args, None, True)
                             return
                 else:
                     s.heavy = True
@@ -170,15 +183,13 @@ class Processor(FastPaths):
         else:
             raise UncontrolledTarget(f"{self} calls {routine.__qualname__} on {p}, not reserved")
 
-    def query(self, target: Separate, routine: Routine, args: Args = (),
-              where: Where | None = None) -> object:
+    def query(self, target: Separate, routine: Routine, args: Args = (), where: Where | None = None) -> object:
         """A separate query: synchronous (wait by necessity)."""
         p = target._region_
         s = self.held.get(p)
         if s.__class__ is Session:
-            if s.claimed and s.dirty is None and not self.rt.stopping \
-                    and (not args or not self._passes(args)):
-                return routine(target, *args)   # `p` is ours until we release it
+            if s.claimed and s.dirty is None and not self.rt.stopping and (not args or not self._passes(args)):
+                return routine(target, *args)  # `p` is ours until we release it
             return self._sync(s, p, routine, target, args, where, False)
         if s is p:
             if p is self:
@@ -197,8 +208,16 @@ class Processor(FastPaths):
                 return True
         return False
 
-    def _sync(self, s: Session, p: Processor, routine: Routine, target: Separate, args: Args,
-              where: Where | None, is_cmd: bool) -> object:
+    def _sync(
+        self,
+        s: Session,
+        p: Processor,
+        routine: Routine,
+        target: Separate,
+        args: Args,
+        where: Where | None,
+        is_cmd: bool,
+    ) -> object:
         """A synchronous call: run it ourselves if `p` is free for us, else wait for it."""
         if self.rt.stopping:
             raise Shutdown()
@@ -206,22 +225,20 @@ class Processor(FastPaths):
         lock = p.lock
         while True:
             lock.acquire()
-            if s.claimed:            # queued or passing calls need `p` free for its thread
+            if s.claimed:  # queued or passing calls need `p` free for its thread
                 drop_claim_locked(p, s)
-            if s.dirty is not None:          # not executed; delivering cleans the region
+            if s.dirty is not None:  # not executed; delivering cleans the region
                 err = s.dirty
                 s.dirty = None
                 lock.release()
                 raise dirty_error(p, err)
             if p.state != RUNNING:
-                if p.head is s and not s.calls and passer is None:     # the fast path
+                if p.head is s and not s.calls and passer is None:  # the fast path
                     return self._query_now(p, s, routine, target, args, is_cmd)
                 ahead = _ahead_locked(p, s)
                 if ahead is not None:
-                    return self._inline(p, s, _take(p, s, ahead), routine, target, args,
-                                        passer, is_cmd)
-            blk = Block("turn" if p.passive else "sync", self, s, where, locked_lock(), None,
-                        routine)
+                    return self._inline(p, s, _take(p, s, ahead), routine, target, args, passer, is_cmd)
+            blk = Block("turn" if p.passive else "sync", self, s, where, locked_lock(), None, routine)
             if p.passive:
                 s.turn = blk
             else:
@@ -250,8 +267,7 @@ class Processor(FastPaths):
         p.lock.release()
         return False
 
-    def _leaf_now(self, p: Processor, s: Session, routine: Routine, target: Separate,
-                  args: Args) -> None:
+    def _leaf_now(self, p: Processor, s: Session, routine: Routine, target: Separate, args: Args) -> None:
         """[p.lock held, p free, our session at its head with nothing pending] Run a leaf
         command ourselves. A leaf never blocks, so no frame is pushed for the monitor."""
         if self._claim_locked(p, s):
@@ -262,8 +278,7 @@ class Processor(FastPaths):
         finally:
             p.release_claim()
 
-    def _leaf_claimed(self, p: Processor, s: Session, routine: Routine, target: Separate,
-                      args: Args) -> None:
+    def _leaf_claimed(self, p: Processor, s: Session, routine: Routine, target: Separate, args: Args) -> None:
         """[`p` claimed for `s`] A leaf command: its failure only makes `s` dirty."""
         s.changed = True
         try:
@@ -276,8 +291,9 @@ class Processor(FastPaths):
             s.dirty = e
             lock.release()
 
-    def _query_now(self, p: Processor, s: Session, routine: Routine, target: Separate, args: Args,
-                   is_cmd: bool) -> object:
+    def _query_now(
+        self, p: Processor, s: Session, routine: Routine, target: Separate, args: Args, is_cmd: bool
+    ) -> object:
         """[p.lock held, p free, our session at its head with nothing pending] Run a
         synchronous call ourselves on `p`'s behalf (client executes)."""
         if is_cmd:
@@ -289,8 +305,17 @@ class Processor(FastPaths):
         finally:
             p.release_claim()
 
-    def _inline(self, p: Processor, s: Session, batches: Batches, routine: Routine,
-                target: Separate, args: Args, passer: Processor | None, is_cmd: bool) -> object:
+    def _inline(
+        self,
+        p: Processor,
+        s: Session,
+        batches: Batches,
+        routine: Routine,
+        target: Separate,
+        args: Args,
+        passer: Processor | None,
+        is_cmd: bool,
+    ) -> object:
         """[p.lock held, p claimed by `_take`] Run the calls queued ahead of ours, then this
         one, on our own thread on `p`'s behalf; a leaf command's failure only dirties `s`."""
         p.exec = self.exec
@@ -300,14 +325,14 @@ class Processor(FastPaths):
                 p._run_backlog(batches)
                 if s.dirty is not None:
                     if is_cmd and passer is None:
-                        return None                  # skipped: the region is dirty
+                        return None  # skipped: the region is dirty
                     with p.lock:
                         err = s.dirty
                         s.dirty = None
                     raise dirty_error(p, err)
             if is_cmd:
                 s.changed = True
-                if passer is None and not p.passive:   # a leaf command: failure dirties
+                if passer is None and not p.passive:  # a leaf command: failure dirties
                     try:
                         return routine(target, *args)
                     except PASS_THROUGH:
@@ -332,8 +357,7 @@ class Processor(FastPaths):
         finally:
             p.exec = saved
 
-    def _invoke_passing(self, passer: Processor, routine: Routine, target: Separate,
-                        args: Args) -> object:
+    def _invoke_passing(self, passer: Processor, routine: Routine, target: Separate, args: Args) -> object:
         """Run a call while holding every lock of `passer` (lock passing)."""
         saved = self.held
         held = dict(saved)
@@ -372,12 +396,12 @@ class Processor(FastPaths):
         """Worker entry: serve the queue of queues until it has nothing runnable."""
         lock = self.lock
         lock.acquire()
-        if self.state != SCHEDULED:      # taken by a client in the meantime
+        if self.state != SCHEDULED:  # taken by a client in the meantime
             lock.release()
             return
         self.state = RUNNING
         self.exec = ex
-        self._serve_locked()         # the same lock hold: one round fewer per hand-off
+        self._serve_locked()  # the same lock hold: one round fewer per hand-off
 
     def _serve_locked(self) -> None:
         """[lock held] Serve the queue of queues. Under one lock hold it takes the head's
@@ -409,14 +433,14 @@ class Processor(FastPaths):
                 if batch:
                     self._run_calls(q, batch)
             lock.acquire()
-            for _ in range(len(batches) - 1):       # all but the last are closed
+            for _ in range(len(batches) - 1):  # all but the last are closed
                 self._advance_locked()
 
     def _run_calls(self, s: Session, batch: list[Call]) -> None:
         rt = self.rt
         for routine, target, args, blk, passer in batch:
             if s.dirty is not None:
-                if blk is not None:          # not executed; delivering cleans the region
+                if blk is not None:  # not executed; delivering cleans the region
                     with self.lock:
                         err = s.dirty
                         s.dirty = None
@@ -507,7 +531,7 @@ class Processor(FastPaths):
             if blk.proc is s.client:
                 keep.append(blk)
             else:
-                blk.value = self          # tells the waiter it is off our list already
+                blk.value = self  # tells the waiter it is off our list already
                 self.rt.unblock(blk)
         self.waiters = keep
 
@@ -544,8 +568,13 @@ class Processor(FastPaths):
     def pop_frame(self) -> None:
         self.frames.pop()
 
-    def reserve(self, objs: Sequence[Separate | None], pre: Sequence[Clause] | None = None,
-                where: Where | None = None, pre_args: Args | None = None) -> Session | _Nothing | Reservation:
+    def reserve(
+        self,
+        objs: Sequence[Separate | None],
+        pre: Sequence[Clause] | None = None,
+        where: Where | None = None,
+        pre_args: Args | None = None,
+    ) -> Session | _Nothing | Reservation:
         """A reservation of the separate arguments `objs` (see reservation.py); the common
         one-supplier reservation without wait condition is its private queue itself.
         `pre_args`: None (each clause's `pred()` takes no argument) or the tuple passed

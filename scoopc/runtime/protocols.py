@@ -2,6 +2,7 @@
 
 Generated code is not type-checked; these types describe what it passes and what it gets,
 and let mypy check the runtime itself (tests/test_habits.py)."""
+
 from __future__ import annotations
 
 from collections.abc import Callable, Hashable
@@ -14,6 +15,7 @@ if TYPE_CHECKING:
 
 class Separate(Protocol):
     """An object of generated code (or an `Agent`): it lives in the region `_region_`."""
+
     _region_: Processor
 
 

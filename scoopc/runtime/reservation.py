@@ -6,6 +6,7 @@ under their locks taken in processor-id order (never blocking: a private queue i
 in the queue of queues). A failed wait condition releases what this reservation took,
 registers a targeted wake-up on the suppliers its failing clause queried, and sleeps.
 """
+
 from __future__ import annotations
 
 from collections.abc import Sequence
@@ -28,6 +29,7 @@ def _id(p: Processor) -> int:
 
 class Reservation:
     """`with here.reserve(objs, pre, where):` — also `enter()` / `exit()` explicitly."""
+
     __slots__ = ("here", "objs", "pre", "where", "taken", "pre_args")
     here: Processor
     objs: Sequence[Separate | None]
@@ -36,23 +38,29 @@ class Reservation:
     taken: Taken | None
     pre_args: Args | None
 
-    def __init__(self, here: Processor, objs: Sequence[Separate | None], pre: Sequence[Clause] | None,
-                 where: Where | None, pre_args: Args | None = None) -> None:
+    def __init__(
+        self,
+        here: Processor,
+        objs: Sequence[Separate | None],
+        pre: Sequence[Clause] | None,
+        where: Where | None,
+        pre_args: Args | None = None,
+    ) -> None:
         self.here = here
         self.pre_args = pre_args  # None: clauses are closures; else passed to each `pred`
         self.objs = objs
         self.pre = pre
         self.where = where
-        self.taken = None   # [here's executor] [(region, Session)] this reservation took
+        self.taken = None  # [here's executor] [(region, Session)] this reservation took
 
     def enter(self) -> Reservation:
         here = self.here
         rt = here.rt
-        if rt.attention:                  # a permit waiter asked to yield, or stopping
+        if rt.attention:  # a permit waiter asked to yield, or stopping
             rt.attend(here.exec)  # type: ignore[arg-type]  # running: its exec is set
         objs = self.objs
         regs: Sequence[Processor]
-        if len(objs) == 1:                # the common case, with few calls
+        if len(objs) == 1:  # the common case, with few calls
             o = objs[0]
             regs = () if o is None or o._region_ in here.held else (o._region_,)
         else:
@@ -67,7 +75,7 @@ class Reservation:
                 return self
             args = self.pre_args
             try:
-                for clause in pre:            # in order; the first false one decides
+                for clause in pre:  # in order; the first false one decides
                     if not (clause[0]() if args is None else clause[0](*args)):
                         break
                 else:
@@ -79,8 +87,7 @@ class Reservation:
 
     __enter__ = enter
 
-    def __exit__(self, et: type[BaseException] | None, ev: BaseException | None,
-                 tb: TracebackType | None) -> None:
+    def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.exit()
 
     def _regions(self) -> list[Processor]:
@@ -110,14 +117,13 @@ class Reservation:
             self.exit()
             raise PreconditionViolation(clause[2], clause[3])
         here = self.here
-        blk = Block("wait", here, tuple(queried), clause[3] or self.where, locked_lock(), None,
-                    clause[2])
-        _register(blk, queried)           # before releasing: no change can slip in between
+        blk = Block("wait", here, tuple(queried), clause[3] or self.where, locked_lock(), None, clause[2])
+        _register(blk, queried)  # before releasing: no change can slip in between
         self.exit()
         try:
             here.rt.block(here.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
         finally:
-            done = blk.value              # the region whose waker already unlisted blk
+            done = blk.value  # the region whose waker already unlisted blk
             for r in queried:
                 if r is not done:
                     with r.lock:
@@ -135,7 +141,7 @@ class Reservation:
 
 
 def _register(blk: Block, regions: Sequence[Processor]) -> None:
-    for r in regions:                     # `regions` has no duplicates
+    for r in regions:  # `regions` has no duplicates
         with r.lock:
             r.waiters.append(blk)
 

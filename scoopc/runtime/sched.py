@@ -14,6 +14,7 @@ Blocking (synchronous calls, wait conditions, passive-region turns, sleep) goes 
 
 Lock order: a processor's `lock` may be held while taking `glock`, never the reverse.
 """
+
 from __future__ import annotations
 
 import itertools
@@ -36,11 +37,12 @@ if TYPE_CHECKING:
     from .session import Session
 
 STARVE_AFTER = 0.005  # seconds a runnable processor may wait for a permit before a worker comes
-MAX_PARKED = 16       # parked workers kept; more exit (joined by the runtime)
+MAX_PARKED = 16  # parked workers kept; more exit (joined by the runtime)
 
 
 class Exec:
     """One OS thread running processor code (a worker, the main thread, a client)."""
+
     __slots__ = ("blocked", "name", "permit", "plock")
     blocked: Block | None
     name: str
@@ -48,16 +50,16 @@ class Exec:
     plock: threading.Lock
 
     def __init__(self, name: str) -> None:
-        self.blocked = None    # Block or None; written by the owner thread under rt.glock
+        self.blocked = None  # Block or None; written by the owner thread under rt.glock
         self.name = name
-        self.permit = False    # [rt.glock] this thread holds a run permit (permits.py)
-        self.plock = threading.Lock()   # locked while waiting for a permit
+        self.permit = False  # [rt.glock] this thread holds a run permit (permits.py)
+        self.plock = threading.Lock()  # locked while waiting for a permit
 
 
 class Block:
     """What a blocked thread waits for; a new one per episode, so identity marks progress."""
-    __slots__ = ("kind", "proc", "on", "where", "lock", "deadline", "exec", "value", "error",
-                 "what")
+
+    __slots__ = ("kind", "proc", "on", "where", "lock", "deadline", "exec", "value", "error", "what")
     kind: str
     proc: Processor
     on: Session | tuple[Processor, ...] | None
@@ -69,20 +71,27 @@ class Block:
     error: BaseException | None
     what: object
 
-    def __init__(self, kind: str, proc: Processor, on: Session | tuple[Processor, ...] | None,
-                 where: Where | None, lock: threading.Lock, deadline: int | None = None,
-                 what: object = None) -> None:
-        self.kind = kind          # 'sync' | 'turn' | 'wait' | 'sleep'
-        self.proc = proc          # the processor that waits (innermost context)
-        self.on = on              # sync/turn: the Session; wait: tuple of processors
+    def __init__(
+        self,
+        kind: str,
+        proc: Processor,
+        on: Session | tuple[Processor, ...] | None,
+        where: Where | None,
+        lock: threading.Lock,
+        deadline: int | None = None,
+        what: object = None,
+    ) -> None:
+        self.kind = kind  # 'sync' | 'turn' | 'wait' | 'sleep'
+        self.proc = proc  # the processor that waits (innermost context)
+        self.on = on  # sync/turn: the Session; wait: tuple of processors
         self.where = where
-        self.lock = lock          # released (once) to wake the thread
+        self.lock = lock  # released (once) to wake the thread
         self.deadline = deadline  # sleep only
-        self.exec = None          # the blocked thread's Exec, set by `block`
-        self.value = None         # sync: the result, written before `unblock`; wait: the
+        self.exec = None  # the blocked thread's Exec, set by `block`
+        self.value = None  # sync: the result, written before `unblock`; wait: the
         #                           region whose waker took it off its `waiters` list
-        self.error = None         # sync: the exception to re-raise in the client
-        self.what = what          # sync: the routine called; wait: the clause tag
+        self.error = None  # sync: the exception to re-raise in the client
+        self.what = what  # sync: the routine called; wait: the clause tag
 
 
 def wake(lock: threading.Lock) -> None:
@@ -102,7 +111,7 @@ class Worker:
 
     def __init__(self, rt: Runtime, n: int) -> None:
         self.rt = rt
-        self.lock = threading.Lock()      # held while parked; released by `schedule`
+        self.lock = threading.Lock()  # held while parked; released by `schedule`
         self.lock.acquire()
         self.exec = Exec(f"worker-{n}")
         self.thread = threading.Thread(target=self.run, name=self.exec.name, daemon=True)
@@ -110,7 +119,7 @@ class Worker:
     def run(self) -> None:
         rt, ex = self.rt, self.exec
         try:
-            fresh = True     # started by `schedule`, which counted it in n_waking
+            fresh = True  # started by `schedule`, which counted it in n_waking
             while True:
                 p = rt.next_work(self, fresh)
                 fresh = False
@@ -121,13 +130,14 @@ class Worker:
                 p.run_scheduled(ex)
         except Shutdown:
             rt.leave_running(ex)
-        except BaseException as e:   # an internal error: the owner collects it
+        except BaseException as e:  # an internal error: the owner collects it
             rt.fail(f"internal error in {ex.name}: {e!r}", e)
             rt.leave_running(ex)
 
 
 class Runtime:
     """Process-wide runtime state. `glock` protects every field marked [g]."""
+
     describe: Callable[[BaseException, Processor], str] | None
     runnable: deque[Processor]
     parked: list[Worker]
@@ -141,46 +151,54 @@ class Runtime:
     process_onces: OnceTable
     monitor: Monitor | None
     watchers: list[tuple[Callable[[Block], object], threading.Event]]
-    _timer_source: OutsideClient     # the source of timers' commands, made by the first call_later
+    _timer_source: OutsideClient  # the source of timers' commands, made by the first call_later
 
-    def __init__(self, *, virtual_clock: bool = False, trace_processors: bool = False,
-                 strict: bool = False, stdout: TextIO | None = None, stderr: TextIO | None = None,
-                 deadlock_tick: float = 0.2) -> None:
+    def __init__(
+        self,
+        *,
+        virtual_clock: bool = False,
+        trace_processors: bool = False,
+        strict: bool = False,
+        stdout: TextIO | None = None,
+        stderr: TextIO | None = None,
+        deadlock_tick: float = 0.2,
+    ) -> None:
         from .clock import Clock
         from .output import Output
         from .permits import Permits
+
         self.glock = threading.Lock()
-        self.describe = None             # describe(exception, processor) -> text, set by run_main
+        self.describe = None  # describe(exception, processor) -> text, set by run_main
         self.permits = Permits(self)
-        self.runnable = deque()          # [g] processors in state SCHEDULED, FIFO
-        self.runnable_since = 0.0        # [g] monotonic time the runnable queue's head was queued
-        self.parked = []                 # [g] parked Workers
-        self.n_waking = 0                # [g] workers woken but not yet looking for work
-        self.n_running = 0               # [g] threads counted as running processor code
-        self.blocked = set()             # [g] Execs currently blocked
-        self.workers = []                # [g] every Worker started and not yet joined
-        self.sources = 0                 # [g] open outside clients
-        self.failures = []               # [g] (message, exception) run-time failures
-        self.stopping = False            # [g] set once; read racily as a fast check
-        self.attention = False           # [g] stopping or permits.want_yield: one racy read
+        self.runnable = deque()  # [g] processors in state SCHEDULED, FIFO
+        self.runnable_since = 0.0  # [g] monotonic time the runnable queue's head was queued
+        self.parked = []  # [g] parked Workers
+        self.n_waking = 0  # [g] workers woken but not yet looking for work
+        self.n_running = 0  # [g] threads counted as running processor code
+        self.blocked = set()  # [g] Execs currently blocked
+        self.workers = []  # [g] every Worker started and not yet joined
+        self.sources = 0  # [g] open outside clients
+        self.failures = []  # [g] (message, exception) run-time failures
+        self.stopping = False  # [g] set once; read racily as a fast check
+        self.attention = False  # [g] stopping or permits.want_yield: one racy read
         #                                  at reservation entry instead of two
-        self.changed = threading.Condition(self.glock)   # quiescence / stop, for run_main
-        self.wait_set = 0                # [g] number of blocked threads of kind 'wait'
+        self.changed = threading.Condition(self.glock)  # quiescence / stop, for run_main
+        self.wait_set = 0  # [g] number of blocked threads of kind 'wait'
         self.idlock = threading.Lock()
-        self.ids = itertools.count(1)    # [idlock]
-        self.procs = weakref.WeakValueDictionary()   # [idlock] id -> Processor, for the dump
+        self.ids = itertools.count(1)  # [idlock]
+        self.procs = weakref.WeakValueDictionary()  # [idlock] id -> Processor, for the dump
         self.strict = strict
         self.trace_processors = trace_processors
         self.deadlock_tick = deadlock_tick
         self.stderr = stderr or sys.stderr
         self.out = Output(stdout or sys.stdout, trace_processors)
         self.clock = Clock(self, virtual_clock)
-        self.shutdown_hooks = []         # [g]
-        self.services = {}               # what the embedding run offers the program's externals, by
+        self.shutdown_hooks = []  # [g]
+        self.services = {}  # what the embedding run offers the program's externals, by
         #                                  name (set by `on_start`, before the root object exists)
-        self.process_onces = {}          # [g] once ("PROCESS") values
+        self.process_onces = {}  # [g] once ("PROCESS") values
         self.monitor = None
-        self.watchers = []               # [g] (predicate, Event): scheduling hooks for tests
+        self.watchers = []  # [g] (predicate, Event): scheduling hooks for tests
         self._outside = threading.local()  # .exec: the Exec of an outside thread (run_here)
 
     # -- identities ------------------------------------------------------------------
@@ -296,19 +314,18 @@ class Runtime:
                 self.permits.wait_turn(ex)
             batch, s.calls = s.calls, []
             p._run_calls(s, batch)
-        except Shutdown:                 # stopping: the transport's thread goes on (and stops)
+        except Shutdown:  # stopping: the transport's thread goes on (and stops)
             pass
         finally:
             lock = p.lock
             lock.acquire()
             p.exec = None
             p.state = IDLE
-            if p.head is s and not s.calls and not p.qoq and s.dirty is None \
-                    and not (s.changed and p.waiters):
-                p.head = None            # the common case: nothing else to do
+            if p.head is s and not s.calls and not p.qoq and s.dirty is None and not (s.changed and p.waiters):
+                p.head = None  # the common case: nothing else to do
                 lock.release()
             else:
-                p.settle_locked(None)    # end `s` (wakes waiters); the pool takes the rest
+                p.settle_locked(None)  # end `s` (wakes waiters); the pool takes the rest
             self.leave_running(ex)
 
     def leave_running(self, ex: Exec) -> None:
@@ -382,7 +399,7 @@ class Runtime:
                 if blk.kind == "wait":
                     self.wait_set -= 1
                 stopping = self.stopping
-                if woke and had_permit and not stopping:   # one glock round for both
+                if woke and had_permit and not stopping:  # one glock round for both
                     queued = self.permits.acquire_locked(ex)
         if stopping:
             raise Shutdown()
@@ -428,8 +445,10 @@ class Runtime:
         e = s.dirty
         assert e is not None, "a lost exception is a dirty session's"
         detail = self.describe(e, proc) if self.describe is not None else f"{type(e).__name__}: {e}"
-        self.stderr.write(f"scoopc: exception lost in an asynchronous call on {proc!r} "
-                          f"(client {s.client!r}, reservation at {fmt_where(s.where)}): {detail}\n")
+        self.stderr.write(
+            f"scoopc: exception lost in an asynchronous call on {proc!r} "
+            f"(client {s.client!r}, reservation at {fmt_where(s.where)}): {detail}\n"
+        )
         if self.strict:
             self.fail(f"lost exception on {proc!r}: {detail}", e)
 
@@ -445,7 +464,7 @@ class Runtime:
                 assert blk is not None, "[g] a thread in `blocked` has its Block"
                 self.unblock_locked(blk)
             self.permits.stop_locked()
-            for w in self.parked:      # counted as woken, as `schedule` does
+            for w in self.parked:  # counted as woken, as `schedule` does
                 self.n_waking += 1
                 self.n_running += 1
                 wake(w.lock)
@@ -472,6 +491,7 @@ class Runtime:
     def wait_quiet(self) -> None:
         """Block the main thread until quiescence or stop; interruptible by Ctrl-C."""
         with self.glock:
-            while not self.stopping and not (self.n_running == 0 and not self.runnable
-                                             and not self.clock.pending_locked()):
+            while not self.stopping and not (
+                self.n_running == 0 and not self.runnable and not self.clock.pending_locked()
+            ):
                 self.changed.wait(0.5)

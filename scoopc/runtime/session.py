@@ -10,6 +10,7 @@ queue is at the head. The claim is dropped (under the supplier's lock) when a ca
 queued for the supplier's own thread (a non-leaf command, a lock-passing call) and at
 release.
 """
+
 from __future__ import annotations
 
 from types import TracebackType
@@ -29,8 +30,8 @@ class Session:
     """A private queue: the calls of one client to one supplier within one reservation.
     It is also the reservation object of the common one-supplier reservation without
     wait condition (`Processor.reserve`): `with` enters and releases it."""
-    __slots__ = ("client", "proc", "calls", "closed", "dirty", "changed",
-                 "turn", "where", "heavy", "claimed")
+
+    __slots__ = ("client", "proc", "calls", "closed", "dirty", "changed", "turn", "where", "heavy", "claimed")
     client: Processor | OutsideClient
     proc: Processor
     calls: list[Call]
@@ -43,21 +44,20 @@ class Session:
     heavy: bool
     claimed: bool
 
-    def __init__(self, client: Processor | OutsideClient, proc: Processor,
-                 where: Where | None = None) -> None:
-        self.client = client      # Processor or OutsideClient (immutable)
-        self.proc = proc          # the supplier (set by the client before it enqueues the
+    def __init__(self, client: Processor | OutsideClient, proc: Processor, where: Where | None = None) -> None:
+        self.client = client  # Processor or OutsideClient (immutable)
+        self.proc = proc  # the supplier (set by the client before it enqueues the
         #                           session; a reused spare is re-targeted, see `__exit__`)
-        self.calls = []           # [proc.lock] (routine, target, args, Block|None, passer|None)
-        self.closed = False       # [proc.lock] the client released the reservation
-        self.dirty = None         # [proc.lock] exception of a failed asynchronous call, until
+        self.calls = []  # [proc.lock] (routine, target, args, Block|None, passer|None)
+        self.closed = False  # [proc.lock] the client released the reservation
+        self.dirty = None  # [proc.lock] exception of a failed asynchronous call, until
         #                           the next synchronous call delivers it (then None again)
-        self.changed = False      # [executor of proc] a command ran (wakes wait conditions)
-        self.turn = None          # [proc.lock] passive only: Block of the client awaiting its turn
-        self.where = where        # reservation position, for reports
-        self.heavy = False        # [proc.lock] a non-leaf call was logged: no client may
+        self.changed = False  # [executor of proc] a command ran (wakes wait conditions)
+        self.turn = None  # [proc.lock] passive only: Block of the client awaiting its turn
+        self.where = where  # reservation position, for reports
+        self.heavy = False  # [proc.lock] a non-leaf call was logged: no client may
         #                           run this session's calls on its own thread
-        self.claimed = False      # [set/cleared under proc.lock by the session's user; read
+        self.claimed = False  # [set/cleared under proc.lock by the session's user; read
         #   by it] `proc` is RUNNING on behalf of this session's user: it is the head, no call
         #   is queued, so the user runs its calls directly, lock-free, until it drops the
         #   claim (close, a queued or lock-passing call). Only one thread uses a session at a
@@ -77,9 +77,9 @@ class Session:
             if rt.attention and held[p] is not self:
                 rt.attend(here.exec)  # type: ignore[arg-type]  # running: its exec is set
         else:
-            if rt.attention:              # a permit waiter asked to yield, or stopping
+            if rt.attention:  # a permit waiter asked to yield, or stopping
                 rt.attend(here.exec)  # type: ignore[arg-type]  # running: its exec is set
-            lock = p.lock                 # `enqueue_claim`, inlined (the hottest path)
+            lock = p.lock  # `enqueue_claim`, inlined (the hottest path)
             lock.acquire()
             if p.head is None:
                 p.head = self
@@ -93,8 +93,9 @@ class Session:
             held[p] = self
         return self
 
-    def __exit__(self, et: type[BaseException] | None = None, ev: BaseException | None = None,
-                 tb: TracebackType | None = None) -> None:
+    def __exit__(
+        self, et: type[BaseException] | None = None, ev: BaseException | None = None, tb: TracebackType | None = None
+    ) -> None:
         client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
         held = client.held
         p = self.proc
@@ -106,7 +107,7 @@ class Session:
             if self.claimed and not p.qoq and self.dirty is None:
                 if self.changed and p.waiters:
                     p.wake_waiters_locked(self)
-                self.claimed = False      # the common case of `close_locked`, inlined
+                self.claimed = False  # the common case of `close_locked`, inlined
                 p.exec = None
                 p.state = IDLE
                 p.head = None
@@ -173,7 +174,7 @@ def close_locked(p: Processor, s: Session) -> None:
     if p.head is s and p.state == IDLE:
         if not s.calls:
             if not p.qoq and s.dirty is None and not (s.changed and p.waiters):
-                p.head = None          # the common case: nothing else to do
+                p.head = None  # the common case: nothing else to do
                 lock.release()
                 return
             p._advance_locked()

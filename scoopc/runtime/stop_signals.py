@@ -9,6 +9,7 @@ short, such as sending the robot its zero velocity: a signal that arrives then i
 dropped, since the run is ending already. Signals a platform lacks (SIGHUP on Windows) are
 skipped; off the main thread nothing is installed (Python delivers signals to it only).
 """
+
 from __future__ import annotations
 
 import signal
@@ -35,6 +36,7 @@ class Stopped(KeyboardInterrupt):
 class _State:
     """Shared by the handler and `shielded` (the handler runs on the main thread, between its
     bytecodes, so a plain counter needs no lock)."""
+
     shield_depth = 0
     ignored: list[str] = []
 
@@ -78,4 +80,3 @@ def shielded() -> Iterator[None]:
         yield
     finally:
         _State.shield_depth -= 1
-

@@ -5,6 +5,7 @@ creation, instructions, contracts, onces; SCOOP rules in scoop.py; void safety v
 A class that fails a pass is skipped by later passes, so one mistake gives one diagnostic.
 Output: Checked (the universe, the recorded tables, the diagnostics).
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -29,11 +30,11 @@ def prepare(trees, found: list, base=None):
     universe = universe_module.build(trees, found, base)
     fresh = [i for i in universe.classes.values() if base is None or base.classes.get(i.name) is not i]
     order = ancestors.compute(universe, _reporter(universe, found, None), fresh)
-    for info in order:                   # after an unknown parent, its features are missing: stay silent
+    for info in order:  # after an unknown parent, its features are missing: stay silent
         flatten.flatten(universe, info, _reporter(universe, found, info) if not info.failed else _silent)
         if any((parent := universe.get(ty.name)) is not None and parent.failed for _, ty, _ in info.parents):
-            info.failed = True           # an heir of a broken class would only repeat its errors
-    for info in order:                   # a bad signature skips that feature's body, not the class
+            info.failed = True  # an heir of a broken class would only repeat its errors
+    for info in order:  # a bad signature skips that feature's body, not the class
         signatures.resolve_all(universe, info, _reporter(universe, found, None))
     for info in order:
         if not info.failed:
@@ -42,8 +43,9 @@ def prepare(trees, found: list, base=None):
     return universe, order
 
 
-def check(trees, void_safety=None, library_bodies: bool = True, base=None,
-          root: tuple[str, str] | None = None) -> Checked:
+def check(
+    trees, void_safety=None, library_bodies: bool = True, base=None, root: tuple[str, str] | None = None
+) -> Checked:
     """`trees`: [(ClassDeclaration, from_library)]. library_bodies False skips the routine
     bodies of library classes (already known clean, e.g. from the cache). `base`: the library's
     prepared universe (its classes are then not in `trees`). `root`: (class, creation procedure)
@@ -51,7 +53,7 @@ def check(trees, void_safety=None, library_bodies: bool = True, base=None,
     found: list = []
     level = VOID_LEVELS.get((void_safety or "complete").lower(), 3)
     if base is not None and any(base.get(tree.name.text) is not None for tree, _ in trees):
-        base = None                      # a user class replaces a library class: start afresh
+        base = None  # a user class replaces a library class: start afresh
     universe, order = prepare(trees, found, base)
     universe.void_safe = level >= 1
     tables = Tables()
@@ -76,4 +78,5 @@ def _reporter(universe, found: list, info):
         found.append(diagnostics.make(code, span, **arguments))
         if info is not None:
             info.failed = True
+
     return report

@@ -1,6 +1,7 @@
 """Checker, agents: `agent f (?, x)`, `agent t.f`, `agent {T}.f` and inline agents; their types
 are PROCEDURE / FUNCTION / PREDICATE [TUPLE [open operand types]].
 """
+
 from __future__ import annotations
 
 from .. import syntax
@@ -34,7 +35,7 @@ class AgentChecks:
             return Value(routine_type(True, item, tuple(open_types)))
         info = self.universe.get(base_class.name)
         if info is not None and info.failed:
-            return None                   # the class's own errors are reported there
+            return None  # the class's own errors are reported there
         feature = info.features.get(node.name.key) if info is not None else None
         if feature is None:
             self.report("VEEN", node.name.span, name=node.name.text, where=f"among the features of {base_class.name}")
@@ -66,11 +67,17 @@ class AgentChecks:
         the routine's own (an agent accepting READABLE_STRING_8 serves as a PROCEDURE [STRING])."""
         from .conformance import conforms
 
-        if expected is None or expected.name not in ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE") \
-                or not expected.generics or expected.generics[0].name != "TUPLE":
+        if (
+            expected is None
+            or expected.name not in ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
+            or not expected.generics
+            or expected.generics[0].name != "TUPLE"
+        ):
             return open_types
         wanted = expected.generics[0].generics
-        if len(wanted) == len(open_types) and all(conforms(self.universe, w, t, self.info) for w, t in zip(wanted, open_types)):
+        if len(wanted) == len(open_types) and all(
+            conforms(self.universe, w, t, self.info) for w, t in zip(wanted, open_types)
+        ):
             return tuple(wanted)
         return open_types
 

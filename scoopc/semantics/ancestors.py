@@ -4,6 +4,7 @@ ancestors as types in its own context.
 Input: the universe. Output: ClassInfo.parents, .ancestors (conforming), .all_ancestors, the
 formal generics' constraints; the classes in an order where parents come before heirs.
 """
+
 from __future__ import annotations
 
 from .typeresolve import TypeResolver
@@ -30,8 +31,13 @@ def _resolve_parents(universe, info, report) -> None:
         constraints.append(bounds)
         creators.append(tuple(c.key for c in formal.creators or ()))
         # `G -> A rename f as g end`: on a G, A's `f` is called `g` (and no longer `f`).
-        renames.append({t.name: {r.new_name.name.key: r.old_name.key for r in c.renames}
-                        for c, t in resolved if t is not None and c.renames})
+        renames.append(
+            {
+                t.name: {r.new_name.name.key: r.old_name.key for r in c.renames}
+                for c, t in resolved
+                if t is not None and c.renames
+            }
+        )
     info.constraints, info.formal_creators = tuple(constraints), tuple(creators)
     info.constraint_renames = tuple(renames)
     for clause in info.decl.inherit_clauses:
@@ -61,8 +67,9 @@ def _topological(universe, report, infos) -> list:
             if other is None:
                 continue
             if state.get(other.name) == "active":
-                report("VHPR(1)", parent.type.span if parent else info.decl.name.span,
-                       name=info.name, parent=other.name)
+                report(
+                    "VHPR(1)", parent.type.span if parent else info.decl.name.span, name=info.name, parent=other.name
+                )
                 info.failed = True
                 continue
             visit(other, path + [info.name])

@@ -4,6 +4,7 @@ instructions, contracts, onces, scoop). Also VEVI for attributes a creation proc
 
 Input: a flattened class with signatures. Output: diagnostics and the recorded tables.
 """
+
 from __future__ import annotations
 
 from contextlib import contextmanager
@@ -33,8 +34,8 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.result_type = None
         self.result_context = "a procedure"
         self.in_postcondition = False
-        self.in_precondition = False        # the routine's own precondition: VAPE
-        self.in_agent = False               # inside an inline agent: not the feature's own body
+        self.in_precondition = False  # the routine's own precondition: VAPE
+        self.in_agent = False  # inside an inline agent: not the feature's own body
         self.in_rescue = False
         self.object_tests: dict = {}
         self.reported_unset: set = set()
@@ -53,7 +54,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         else:
             ty = resolver.resolve(node)
         if ty is not None:
-            self.tables.types[node] = ty         # the type as written: codegen's run-time types
+            self.tables.types[node] = ty  # the type as written: codegen's run-time types
         return ty
 
     def resolve_quiet(self, node, info):
@@ -75,11 +76,19 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         return clashes(self, name)
 
     def use_entity(self, node, name: str) -> None:
-        if self.void_level >= 2 and self.facts is not UNREACHABLE and name in self.facts.unset \
-                and name not in self.reported_unset:
+        if (
+            self.void_level >= 2
+            and self.facts is not UNREACHABLE
+            and name in self.facts.unset
+            and name not in self.reported_unset
+        ):
             self.reported_unset.add(name)
-            self.report("VEVI", node.span, name="Result" if name == "result" else name,
-                        where="is used before it is given a value")
+            self.report(
+                "VEVI",
+                node.span,
+                name="Result" if name == "result" else name,
+                where="is used before it is given a value",
+            )
 
     def branches(self, node):
         """What holds when a condition is true and when it is false: (entities, attached names)."""
@@ -121,16 +130,34 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             self.facts = saved
 
     def enter_nested(self):
-        saved = (self.scopes, self.facts, self.result_type, self.result_context, self.in_rescue,
-                 self.in_postcondition, self.in_precondition, self.in_agent, self.reported_unset)
+        saved = (
+            self.scopes,
+            self.facts,
+            self.result_type,
+            self.result_context,
+            self.in_rescue,
+            self.in_postcondition,
+            self.in_precondition,
+            self.in_agent,
+            self.reported_unset,
+        )
         self.scopes, self.facts, self.in_rescue, self.in_postcondition = Scopes(), Facts(), False, False
         self.in_precondition, self.in_agent = False, True
         self.reported_unset = set()
         return saved
 
     def leave_nested(self, saved) -> None:
-        (self.scopes, self.facts, self.result_type, self.result_context, self.in_rescue,
-         self.in_postcondition, self.in_precondition, self.in_agent, self.reported_unset) = saved
+        (
+            self.scopes,
+            self.facts,
+            self.result_type,
+            self.result_context,
+            self.in_rescue,
+            self.in_postcondition,
+            self.in_precondition,
+            self.in_agent,
+            self.reported_unset,
+        ) = saved
 
     # --- routines ---------------------------------------------------------------------------
     def check_feature(self, feature) -> None:
@@ -138,7 +165,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.object_tests = {}
         signature = feature.signature
         if signature is None or not signature.complete or (feature.is_query and signature.result is None):
-            return                        # its type was reported: the body would only repeat it
+            return  # its type was reported: the body would only repeat it
         own = member_signature(self.universe, self.current, feature)
         decl = feature.decl
         self.scopes, self.facts, self.reported_unset = Scopes(), Facts(), set()
@@ -166,9 +193,18 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         if isinstance(inner, (syntax.InternalBody, syntax.AttributeBody)):
             self.facts = Facts(frozenset(), self._unset_at_start(body.locals, result))
             self.instructions(inner.instructions)
-            if self.facts is not UNREACHABLE and "result" in self.facts.unset and self.void_level >= 2 \
-                    and "result" not in self.reported_unset:
-                self.report("VEVI", name_span, name="Result", where="is not given a value on every path to the end of the routine")
+            if (
+                self.facts is not UNREACHABLE
+                and "result" in self.facts.unset
+                and self.void_level >= 2
+                and "result" not in self.reported_unset
+            ):
+                self.report(
+                    "VEVI",
+                    name_span,
+                    name="Result",
+                    where="is not given a value on every path to the end of the routine",
+                )
         self.facts = Facts()
         contracts.check_postcondition(self, body.postcondition)
         if body.rescue is not None:
@@ -181,8 +217,13 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         """Is the routine being checked a creation procedure of this class, written in it? Its
         attached attributes are then unset at its start (VEVI at a read before they are set)."""
         feature, creators = self.feature, self.info.creators
-        if feature is None or self.in_agent or feature.written_in != self.info.name or self.info.is_deferred \
-                or self.info.is_expanded:
+        if (
+            feature is None
+            or self.in_agent
+            or feature.written_in != self.info.name
+            or self.info.is_deferred
+            or self.info.is_expanded
+        ):
             return False
         return feature.name in creators if creators is not None else feature.name == "default_create"
 
@@ -199,8 +240,13 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         return frozenset(names)
 
     def _needs_value(self, ty) -> bool:
-        return ty is not None and ty.attached and not ty.is_formal and not scoop.is_expanded(self.universe, ty) \
+        return (
+            ty is not None
+            and ty.attached
+            and not ty.is_formal
+            and not scoop.is_expanded(self.universe, ty)
             and ty.name != "<Current>"
+        )
 
     def check_invariant(self) -> None:
         self.feature = None
@@ -255,8 +301,14 @@ def check_attribute_initialization(universe, info, found) -> None:
         missing = sorted(required - _set_by(universe, info, feature, set()))
         if missing:
             span = _creator_span(info, name)
-            found.append(diagnostics.make("VEVI", span, name=", ".join(missing),
-                                          where=f"{'is' if len(missing) == 1 else 'are'} not set by the creation procedure `{name}`"))
+            found.append(
+                diagnostics.make(
+                    "VEVI",
+                    span,
+                    name=", ".join(missing),
+                    where=f"{'is' if len(missing) == 1 else 'are'} not set by the creation procedure `{name}`",
+                )
+            )
 
 
 def _required_attributes(universe, info) -> set:
@@ -283,11 +335,16 @@ def _set_by(universe, info, feature, visiting: set) -> set:
         return names
 
     def visit(node):
-        if isinstance(node, (syntax.Assignment, syntax.CreationInstruction)) and isinstance(node.target, syntax.UnqualifiedCall):
+        if isinstance(node, (syntax.Assignment, syntax.CreationInstruction)) and isinstance(
+            node.target, syntax.UnqualifiedCall
+        ):
             names.add(node.target.name.key)
         if isinstance(node, (syntax.UnqualifiedCall, syntax.Precursor)):
-            callee = info.features.get(node.name.key) if isinstance(node, syntax.UnqualifiedCall) else \
-                next((p for _, p in feature.precursors), None)
+            callee = (
+                info.features.get(node.name.key)
+                if isinstance(node, syntax.UnqualifiedCall)
+                else next((p for _, p in feature.precursors), None)
+            )
             if callee is not None and callee.is_routine:
                 names.update(_set_by(universe, info, callee, visiting))
         for child in walk.children(node):

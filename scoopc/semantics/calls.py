@@ -2,6 +2,7 @@
 Precursor, operators) with the rules VEEN, VUEX(2), VUAR(1), VUAR(2), VKCN(1), VKCN(2), VUTA(2),
 VDPR(1), VDPR(2), and the SCOOP rules through scoop.py. Records the feature of every call.
 """
+
 from __future__ import annotations
 
 from dataclasses import replace
@@ -37,7 +38,9 @@ class CallChecks:
             self.report("VEEN", node.name.span, name=node.name.text, where=f"in class {self.info.name}")
             self.evaluate(node.arguments)
             return None
-        value = self.call_feature(node, None, Value(self.current), feature, node.arguments, node.name.span, as_instruction)
+        value = self.call_feature(
+            node, None, Value(self.current), feature, node.arguments, node.name.span, as_instruction
+        )
         if value is not None and feature.kind == "attribute" and name in self.facts.attached:
             value = Value(value.ty.with_marks(attached=True), value.handler)
         return value
@@ -94,7 +97,7 @@ class CallChecks:
         base, feature = self._find_feature(ty, name)
         if feature is None and (owner := self.universe.get(base.name)) is not None and owner.failed:
             self.evaluate(arguments)
-            return None                   # the class's own errors are reported there
+            return None  # the class's own errors are reported there
         if base.name == "TUPLE" and name is not None and name.key in base.labels and not arguments:
             item = base.generics[base.labels.index(name.key)]
             if ty.separate:
@@ -106,14 +109,22 @@ class CallChecks:
             return None
         if ty.separate and not scoop.check_target(self, target_node, target):
             self.evaluate(arguments)
-            return None                 # reported: the enclosing expression stays silent
+            return None  # reported: the enclosing expression stays silent
         if target.handler == UNCONTROLLED and scoop.separate_by_constraint(self, ty):
             self.report("VUTA(3)", target_node.span, target=walk.describe(target_node), type=str(ty))
             self.evaluate(arguments)
             return None
-        current = ty.with_marks(attached=True) if ty.is_formal else None     # `like Current` is G, not its constraint
-        return self.call_feature(node, target_node, Value(base, target.handler), feature, arguments, name.span,
-                                 as_instruction, current=current)
+        current = ty.with_marks(attached=True) if ty.is_formal else None  # `like Current` is G, not its constraint
+        return self.call_feature(
+            node,
+            target_node,
+            Value(base, target.handler),
+            feature,
+            arguments,
+            name.span,
+            as_instruction,
+            current=current,
+        )
 
     def _find_feature(self, ty: Ty, name):
         """The feature `name` of the class of `ty` (of one of the constraints for a formal)."""
@@ -133,8 +144,18 @@ class CallChecks:
                 return bound.with_marks(attached=True), feature
         return bounds[0].with_marks(attached=True), None
 
-    def call_feature(self, node, target_node, target: Value, feature, arguments, name_span,
-                     as_instruction: bool = False, known=None, current=None) -> Value | None:
+    def call_feature(
+        self,
+        node,
+        target_node,
+        target: Value,
+        feature,
+        arguments,
+        name_span,
+        as_instruction: bool = False,
+        known=None,
+        current=None,
+    ) -> Value | None:
         """Arguments, exports and result of a call of `feature` on `target` (target_node None:
         the call is on Current, unqualified)."""
         self.tables.features[node] = feature
@@ -155,16 +176,23 @@ class CallChecks:
                 return None
             if separate:
                 return scoop.adapt_result(self, node, result, target)
-            return Value(result, UNCONTROLLED if result.separate or scoop.separate_by_constraint(self, result) else None)
+            return Value(
+                result, UNCONTROLLED if result.separate or scoop.separate_by_constraint(self, result) else None
+            )
         if not as_instruction:
             self.report("VKCN(2)", node.span, name=feature.text)
             return None
         return Value(NONE)
 
     def actuals(self, node, arguments, formals, separate_target: Value | None, known=None) -> list:
-        if not arguments and len(formals) == 1 and _no_operands(formals[0]) and \
-                self.tables.features.get(node) is not None and self.tables.features[node].written_in in AGENT_CLASSES:
-            self.tables.agent_calls.add(node)     # `p.call` for `p.call ([])`, as EiffelStudio accepts
+        if (
+            not arguments
+            and len(formals) == 1
+            and _no_operands(formals[0])
+            and self.tables.features.get(node) is not None
+            and self.tables.features[node].written_in in AGENT_CLASSES
+        ):
+            self.tables.agent_calls.add(node)  # `p.call` for `p.call ([])`, as EiffelStudio accepts
             return []
         if len(arguments) != len(formals):
             self.report("VUAR(1)", node.span, expected=len(formals), given=len(arguments))
@@ -201,7 +229,8 @@ class CallChecks:
             else:
                 kind = manifest_kind(node) if mode == "manifest" else None
                 fits = why_not(self.universe, value.ty, formal, self.info) is None or (
-                    kind is not None and manifest_fits(kind[0], kind[1], formal))
+                    kind is not None and manifest_fits(kind[0], kind[1], formal)
+                )
             if not fits:
                 return False
         return True
@@ -213,10 +242,21 @@ class CallChecks:
         if reason == "separate":
             scoop.separate_mismatch(self, code, node, value.ty, target)
         else:
-            detail = "it may be Void (detachable) and the target is attached" if reason == "detachable" else \
-                "it does not conform and no conversion applies"
-            self.report(code, node.span, source=str(value.ty), target=str(target), actual=str(value.ty),
-                        formal=str(target), reason=detail, hint=_hint(reason))
+            detail = (
+                "it may be Void (detachable) and the target is attached"
+                if reason == "detachable"
+                else "it does not conform and no conversion applies"
+            )
+            self.report(
+                code,
+                node.span,
+                source=str(value.ty),
+                target=str(target),
+                actual=str(value.ty),
+                formal=str(target),
+                reason=detail,
+                hint=_hint(reason),
+            )
         return False
 
     def attribute_use(self, node, feature) -> None:
@@ -268,8 +308,15 @@ class CallChecks:
         if target.ty.separate and not scoop.check_target(self, node.target, target):
             self.evaluate(node.arguments)
             return None
-        return self.call_feature(node, node.target, Value(base.with_marks(attached=True), target.handler), feature,
-                                 node.arguments, node.span, as_instruction)
+        return self.call_feature(
+            node,
+            node.target,
+            Value(base.with_marks(attached=True), target.handler),
+            feature,
+            node.arguments,
+            node.span,
+            as_instruction,
+        )
 
     def static_call(self, node, as_instruction: bool = False) -> Value | None:
         ty = self.resolve_type(node.type)
@@ -300,7 +347,9 @@ class CallChecks:
             return None
         if self.facts and self.facts.unset:
             self.attribute_use(node, effective[0][1])
-        return self.call_feature(node, None, Value(self.current), effective[0][1], node.arguments, node.span, as_instruction)
+        return self.call_feature(
+            node, None, Value(self.current), effective[0][1], node.arguments, node.span, as_instruction
+        )
 
     def evaluate(self, nodes) -> None:
         for n in nodes:

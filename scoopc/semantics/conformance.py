@@ -3,6 +3,7 @@
 
 Input: the universe with ancestors computed. Output: yes/no answers and the reason for a no.
 """
+
 from __future__ import annotations
 
 from .types import RANGES, STRINGS, Ty, substitute
@@ -27,8 +28,10 @@ def _constraints(context, formal: int, visiting: frozenset = frozenset()) -> lis
         if not c.is_formal:
             found.append(c)
         elif c.formal not in visiting and c.formal != formal:
-            found.extend(b.with_marks(separate=b.separate or c.separate)
-                         for b in _constraints(context, c.formal, visiting | {formal}))
+            found.extend(
+                b.with_marks(separate=b.separate or c.separate)
+                for b in _constraints(context, c.formal, visiting | {formal})
+            )
     return found
 
 
@@ -60,8 +63,11 @@ def why_not(universe, source: Ty, target: Ty, context=None) -> str | None:
     """None when `source` conforms to `target`; else "separate", "detachable" or "type"."""
     if source.is_none:
         expanded = (info := universe.get(target.name)) is not None and info.is_expanded
-        return None if not expanded and (not target.attached or not universe.void_safe or target.is_formal) \
+        return (
+            None
+            if not expanded and (not target.attached or not universe.void_safe or target.is_formal)
             else ("type" if expanded else "detachable")
+        )
     if source.separate and not target.separate:
         return "separate" if _class_conforms(universe, source, target, context) else "type"
     if not _class_conforms(universe, source, target, context):
@@ -77,7 +83,7 @@ def _is_expanded(universe, ty: Ty) -> bool:
 
 
 def _class_conforms(universe, source: Ty, target: Ty, context, visiting: frozenset = frozenset()) -> bool:
-    if source.is_none:                  # NONE conforms to every reference type
+    if source.is_none:  # NONE conforms to every reference type
         return not _is_expanded(universe, target)
     if source.is_formal or target.is_formal:
         if source.is_formal and target.is_formal and source.formal == target.formal:
@@ -87,13 +93,14 @@ def _class_conforms(universe, source: Ty, target: Ty, context, visiting: frozens
         # A formal conforms to what its constraints conform to; constraints may name other
         # formals, even in a cycle (`[G -> H, H -> G]`), so each formal is followed once.
         if target.name == "ANY" and not target.generics:
-            return True                 # every type conforms to ANY, a cyclic constraint too
+            return True  # every type conforms to ANY, a cyclic constraint too
         if source.formal in visiting:
             return False
         return _constraint_conforms(universe, source, target, context, visiting | {source.formal})
     if target.name == "TUPLE" and source.name == "TUPLE":
         return len(source.generics) >= len(target.generics) and all(
-            _generic_conforms(universe, s, t, context) for s, t in zip(source.generics, target.generics))
+            _generic_conforms(universe, s, t, context) for s, t in zip(source.generics, target.generics)
+        )
     seen = ancestor(universe, source, target.name)
     if seen is None:
         return False

@@ -2,6 +2,7 @@
 postconditions (where `old` is allowed), class invariants (no `Result`). Every clause is BOOLEAN
 (VWBE); `old` elsewhere is VAOL(1) (expressions.py).
 """
+
 from __future__ import annotations
 
 from . import scoop

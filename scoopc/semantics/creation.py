@@ -2,6 +2,7 @@
 VGCC(6)), creation through formal generics' `create` constraints, and separate creation (the
 new object's processor receives the arguments: the separate-argument rules apply).
 """
+
 from __future__ import annotations
 
 from .. import syntax
@@ -18,7 +19,7 @@ class CreationChecks:
         info = self.universe.get(ty.name)
         if info is None or info.failed:
             self.evaluate(arguments)
-            return                            # a broken class's errors are reported in the class
+            return  # a broken class's errors are reported in the class
         if info.is_deferred:
             self.report("VGCC(1)", node.span, cls=info.name)
             self.evaluate(arguments)
@@ -57,6 +58,11 @@ class CreationChecks:
         allowed = self.info.formal_creators[ty.formal] if ty.formal < len(self.info.formal_creators) else ()
         name = procedure.key if procedure is not None else "default_create"
         if name not in allowed:
-            self.report("VGCC(6)", procedure.span if procedure is not None else node.span, name=name,
-                        cls=self.info.formals[ty.formal], procedures=", ".join(allowed) or "none")
+            self.report(
+                "VGCC(6)",
+                procedure.span if procedure is not None else node.span,
+                name=name,
+                cls=self.info.formals[ty.formal],
+                procedures=", ".join(allowed) or "none",
+            )
         self.evaluate(arguments)

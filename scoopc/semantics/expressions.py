@@ -4,6 +4,7 @@ object tests (VUOT(1)) and agents. Calls are in calls.py.
 
 A method returns a Value, or None after an error has been reported (callers stay silent then).
 """
+
 from __future__ import annotations
 
 from .. import syntax
@@ -19,8 +20,11 @@ EQUALITY = ("=", "/=", "~", "/~")
 
 class ExpressionChecks:
     def expr(self, node, expected: Ty | None = None) -> Value | None:
-        value = getattr(self, "e_" + type(node).__name__)(node, expected) if expected is not None \
+        value = (
+            getattr(self, "e_" + type(node).__name__)(node, expected)
+            if expected is not None
             else getattr(self, "e_" + type(node).__name__)(node)
+        )
         if value is not None:
             self.tables.types.setdefault(node, value.ty)
             if value.ty.separate and value.controlled:
@@ -96,7 +100,9 @@ class ExpressionChecks:
         return value.ty
 
     def e_ManifestArray(self, node, expected=None):
-        wanted = expected.generics[0] if expected is not None and expected.name == "ARRAY" and expected.generics else None
+        wanted = (
+            expected.generics[0] if expected is not None and expected.name == "ARRAY" and expected.generics else None
+        )
         values = [self.expr(item, wanted) for item in node.items]
         if any(v is None for v in values):
             return None
@@ -167,8 +173,10 @@ class ExpressionChecks:
             return
         if left.ty.is_formal or right.ty.is_formal:
             return
-        if self.meets(node.right, right, left.ty.with_marks(attached=False, separate=True)) in (None, "detachable") \
-                or self.meets(node.left, left, right.ty.with_marks(attached=False, separate=True)) in (None, "detachable"):
+        if self.meets(node.right, right, left.ty.with_marks(attached=False, separate=True)) in (
+            None,
+            "detachable",
+        ) or self.meets(node.left, left, right.ty.with_marks(attached=False, separate=True)) in (None, "detachable"):
             return
         self.warn("VWEQ", node.operator_span, left=str(left.ty), right=str(right.ty), operator=node.operator)
 
@@ -199,15 +207,24 @@ class ExpressionChecks:
             return None
         own = [c for c in candidates if c[1] is None]
         converted = [c for c in candidates if c[1] is not None]
-        chosen = next((c for c in own if self.arguments_fit(c[2], c[0], arguments, mode="manifest")), None) \
-            or next((c for c in converted if self.arguments_fit(c[2], c[0], arguments, mode="strict")), None) \
+        chosen = (
+            next((c for c in own if self.arguments_fit(c[2], c[0], arguments, mode="manifest")), None)
+            or next((c for c in converted if self.arguments_fit(c[2], c[0], arguments, mode="strict")), None)
             or next((c for c in candidates if self.arguments_fit(c[2], c[0], arguments)), candidates[0])
+        )
         ty, converter, feature = chosen
         if converter is not None:
             self.tables.conversions[target_node] = (converter, ty)
         where = node.operator_span if isinstance(node, syntax.BinaryExpression) else node.span
-        return self.call_feature(node, target_node, Value(ty, target.handler), feature, [n for n, _ in arguments],
-                                 where, known=dict(arguments))
+        return self.call_feature(
+            node,
+            target_node,
+            Value(ty, target.handler),
+            feature,
+            [n for n, _ in arguments],
+            where,
+            known=dict(arguments),
+        )
 
     def _operator_candidates(self, ty: Ty, op: str, arity: int) -> list:
         """(type, converter or None, feature) for each type that may serve `op` on a `ty` operand
@@ -241,7 +258,7 @@ class ExpressionChecks:
 
     def _alias(self, ty: Ty, op: str, arity: int):
         info = self.universe.get(ty.name)
-        for feature in (info.aliases.get(op, ()) if info is not None else ()):
+        for feature in info.aliases.get(op, ()) if info is not None else ():
             if len(feature.arguments) == arity:
                 return feature
         return None
@@ -253,13 +270,19 @@ class ExpressionChecks:
         if node.local is not None:
             if self.clashes(node.local.key):
                 self.report("VUOT(1)", node.local.span, name=node.local.text)
-            bound = (ty or (value.ty if value is not None else None))
+            bound = ty or (value.ty if value is not None else None)
             handler = None
             if bound is not None and bound.separate:
-                handler = value.handler if value is not None and value.ty.separate and value.controlled else UNCONTROLLED
-            self.object_tests[node] = Entity(node.local.key, "object_test",
-                                             bound.with_marks(attached=True) if bound is not None else None,
-                                             node.local.span, handler)
+                handler = (
+                    value.handler if value is not None and value.ty.separate and value.controlled else UNCONTROLLED
+                )
+            self.object_tests[node] = Entity(
+                node.local.key,
+                "object_test",
+                bound.with_marks(attached=True) if bound is not None else None,
+                node.local.span,
+                handler,
+            )
         return Value(BOOLEAN)
 
     def e_ConditionalExpression(self, node, expected=None):

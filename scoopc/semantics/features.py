@@ -1,6 +1,7 @@
 """Checker, features: one feature of a class as the passes see it (after renaming), and the
 signature of a feature (argument and result types) in the context of a class.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
@@ -8,20 +9,20 @@ from dataclasses import dataclass, field, replace
 from .. import syntax
 from .types import Ty, substitute
 
-CURRENT = Ty("<Current>")       # `like Current` until a call site says what Current is
+CURRENT = Ty("<Current>")  # `like Current` until a call site says what Current is
 
 
 @dataclass(eq=False)
 class Feature:
-    name: str                               # final name (lower case)
-    text: str                               # the final name as written
-    decl: object                            # syntax.Routine, Attribute or Constant
-    fname: syntax.FeatureName               # the name's declaration (span, aliases)
-    written_in: str                         # the class that declares this version
-    exports: frozenset | None = None     # client class names; None: every class
+    name: str  # final name (lower case)
+    text: str  # the final name as written
+    decl: object  # syntax.Routine, Attribute or Constant
+    fname: syntax.FeatureName  # the name's declaration (span, aliases)
+    written_in: str  # the class that declares this version
+    exports: frozenset | None = None  # client class names; None: every class
     deferred: bool = False
-    seed: str = ""                          # "CLASS.name" where the feature was introduced
-    precursors: tuple = ()                  # (parent class name, Feature) this version redeclares
+    seed: str = ""  # "CLASS.name" where the feature was introduced
+    precursors: tuple = ()  # (parent class name, Feature) this version redeclares
     shared: dict = field(default_factory=dict)  # shared by renamed/re-exported copies: the signature
 
     @property
@@ -103,8 +104,7 @@ class Signature:
         return all(a is not None for a in self.arguments)
 
 
-def member_signature(universe, target: Ty, feature: Feature, current: Ty | None = None,
-                     depth: int = 0) -> Signature:
+def member_signature(universe, target: Ty, feature: Feature, current: Ty | None = None, depth: int = 0) -> Signature:
     """The signature of `feature` at a call on `target` (a type whose class has the feature);
     `like Current` becomes `current` (default: the target; a formal generic when the target is
     its constraint)."""

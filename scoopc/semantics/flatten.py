@@ -4,6 +4,7 @@ parents' tables, applying rename, export, undefine, redefine and select.
 Input: classes in parents-first order. Output: ClassInfo.features, .aliases, .creators.
 Rules: VMFN, VHRC(1), VDRS(1), VDRS(4), VDUS(1), VDUS(2), VMSS(1), VMRC(2), VCCH(1).
 """
+
 from __future__ import annotations
 
 from dataclasses import replace
@@ -58,8 +59,9 @@ def _own_features(universe, info, report) -> dict:
                     report("VMFN", fname.name.span, name=fname.name.text, where="twice in this class")
                     continue
                 deferred = isinstance(decl, syntax.Routine) and isinstance(decl.body.body, syntax.DeferredBody)
-                own[key] = Feature(key, fname.name.text, decl, fname, info.name, exports, deferred,
-                                   seed=f"{info.name}.{key}")
+                own[key] = Feature(
+                    key, fname.name.text, decl, fname, info.name, exports, deferred, seed=f"{info.name}.{key}"
+                )
     return own
 
 
@@ -129,8 +131,12 @@ def _check_names(parent, parent_info, inherited, report) -> None:
 def _redeclare(feature: Feature, found: list, listed: bool, report) -> None:
     effective = [f for _, f in found if not f.deferred]
     if effective and not listed:
-        report("VMFN", feature.fname.name.span, name=feature.text,
-               where=f"also inherited from {found[0][0]}; list it in a `redefine` clause to redeclare it")
+        report(
+            "VMFN",
+            feature.fname.name.span,
+            name=feature.text,
+            where=f"also inherited from {found[0][0]}; list it in a `redefine` clause to redeclare it",
+        )
     feature.precursors = feature.precursors + tuple(found)
 
 
@@ -143,17 +149,20 @@ def _join(info, name: str, found: list, report):
         return distinct[0][1]
     effective = [(p, f) for p, f in distinct if not f.deferred]
     if len(effective) <= 1:
-        info.joins.append((name, [f for _, f in distinct]))     # signatures checked later (VDJR)
+        info.joins.append((name, [f for _, f in distinct]))  # signatures checked later (VDJR)
         return effective[0][1] if effective else distinct[0][1]
     if len({f.seed for _, f in effective}) == 1 or all(f.decl is effective[0][1].decl for _, f in effective):
         selected = _selected(info, name, effective)
         if selected is not None:
             return selected
-        report("VMRC(2)", info.decl.name.span, name=name,
-               versions=", ".join(f"from {p}" for p, _ in effective))
+        report("VMRC(2)", info.decl.name.span, name=name, versions=", ".join(f"from {p}" for p, _ in effective))
         return effective[0][1]
-    report("VMFN", info.decl.name.span, name=name,
-           where=f"inherited from both {effective[0][0]} and {effective[1][0]}; rename or undefine one")
+    report(
+        "VMFN",
+        info.decl.name.span,
+        name=name,
+        where=f"inherited from both {effective[0][0]} and {effective[1][0]}; rename or undefine one",
+    )
     return effective[0][1]
 
 
@@ -204,8 +213,24 @@ def _creators(universe, info):
 
 
 UNARY_ONLY = {"not"}
-BINARY_ONLY = {"*", "/", "//", "\\\\", "^", "<", ">", "<=", ">=", "and", "or", "xor", "and then", "or else",
-               "implies", "|..|"}
+BINARY_ONLY = {
+    "*",
+    "/",
+    "//",
+    "\\\\",
+    "^",
+    "<",
+    ">",
+    "<=",
+    ">=",
+    "and",
+    "or",
+    "xor",
+    "and then",
+    "or else",
+    "implies",
+    "|..|",
+}
 
 
 def _check_aliases(own: dict, report) -> None:
@@ -223,19 +248,36 @@ def _check_aliases(own: dict, report) -> None:
                 report("VFAV(4)", alias.span, name=feature.text, operator=alias.name, count=arity)
             if name == "()":
                 if feature.kind not in ("procedure", "function") or arity == 0:
-                    report("VFAV(3)", alias.span, name=feature.text, operator=alias.name,
-                           problem="it needs a routine with at least one argument")
+                    report(
+                        "VFAV(3)",
+                        alias.span,
+                        name=feature.text,
+                        operator=alias.name,
+                        problem="it needs a routine with at least one argument",
+                    )
                 continue
             if name == "[]":
                 if not feature.is_query or arity == 0:
-                    report("VFAV(2)", alias.span, name=feature.text, operator=alias.name,
-                           problem="it needs a query with at least one argument")
+                    report(
+                        "VFAV(2)",
+                        alias.span,
+                        name=feature.text,
+                        operator=alias.name,
+                        problem="it needs a query with at least one argument",
+                    )
                 continue
-            fits = feature.is_query and (arity == 0 and name not in BINARY_ONLY or arity == 1 and name not in UNARY_ONLY)
+            fits = feature.is_query and (
+                arity == 0 and name not in BINARY_ONLY or arity == 1 and name not in UNARY_ONLY
+            )
             if not fits:
-                report("VFAV(1)", alias.span, name=feature.text, operator=alias.name,
-                       problem="an operator alias needs a query with one argument (binary operator) "
-                               "or none (unary operator)")
+                report(
+                    "VFAV(1)",
+                    alias.span,
+                    name=feature.text,
+                    operator=alias.name,
+                    problem="an operator alias needs a query with one argument (binary operator) "
+                    "or none (unary operator)",
+                )
 
 
 def _check_alias_clashes(own: dict, table: dict, report) -> None:
@@ -249,15 +291,21 @@ def _check_alias_clashes(own: dict, table: dict, report) -> None:
             for other in table.values():
                 if other.name == feature.name or name not in (a.lower() for a in other.aliases):
                     continue
-                if code == "VFAV(1)" and (not other.is_query or not feature.is_query
-                                          or len(other.arguments) != len(feature.arguments)):
+                if code == "VFAV(1)" and (
+                    not other.is_query or not feature.is_query or len(other.arguments) != len(feature.arguments)
+                ):
                     continue
                 here, there = feature.fname.span, other.fname.span
                 if other.name in own and (there.line, there.column) > (here.line, here.column):
-                    continue                 # two own features: reported once, at the later one
-                report(code, alias.span, name=feature.text, operator=alias.name,
-                       problem=f"`{other.text}` has this alias too" + (
-                           " with as many arguments" if code == "VFAV(1)" else ""))
+                    continue  # two own features: reported once, at the later one
+                report(
+                    code,
+                    alias.span,
+                    name=feature.text,
+                    operator=alias.name,
+                    problem=f"`{other.text}` has this alias too"
+                    + (" with as many arguments" if code == "VFAV(1)" else ""),
+                )
                 break
 
 
@@ -270,8 +318,11 @@ def _check_creators(info, report) -> None:
             if ident.key in seen:
                 report("VGCP(3)", ident.span, name=ident.text)
             elif feature is None or feature.is_query:
-                what = "not a feature of the class" if feature is None else \
-                    f"{'an' if feature.kind[0] in 'aeiou' else 'a'} {feature.kind}, not a procedure"
+                what = (
+                    "not a feature of the class"
+                    if feature is None
+                    else f"{'an' if feature.kind[0] in 'aeiou' else 'a'} {feature.kind}, not a procedure"
+                )
                 report("VGCP(2)", ident.span, name=ident.text, what=what)
             seen.add(ident.key)
 

@@ -3,6 +3,7 @@ which attached locals are not yet set, at one point of a routine body.
 
 Facts are immutable; branches are joined (attached: intersection, unset: union).
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
@@ -10,8 +11,8 @@ from dataclasses import dataclass, replace
 
 @dataclass(frozen=True)
 class Facts:
-    attached: frozenset = frozenset()     # entity names known attached here
-    unset: frozenset = frozenset()        # attached locals (and Result) not yet given a value
+    attached: frozenset = frozenset()  # entity names known attached here
+    unset: frozenset = frozenset()  # attached locals (and Result) not yet given a value
 
     def with_attached(self, names) -> Facts:
         return replace(self, attached=self.attached | frozenset(names)) if names else self

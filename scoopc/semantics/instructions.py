@@ -2,6 +2,7 @@
 creation instructions, conditionals, inspect (VOMB), loops, across (VOIT), check, debug,
 separate blocks (scoop.py's V1SE rules) and retry (VXRT), with the flow facts of void safety.
 """
+
 from __future__ import annotations
 
 from contextlib import contextmanager
@@ -34,13 +35,13 @@ class InstructionChecks:
         value = self.expr(node.source, target.ty if target is not None else None)
         if target is None or target.ty is None:
             return
-        if value is None:                       # already reported: the target counts as set
+        if value is None:  # already reported: the target counts as set
             if self.facts is not UNREACHABLE:
                 self.facts = self.facts.set(target.name, target.ty.attached)
             return
         self.tables.types[node.target] = target.ty
         fits = self.expect(node.source, value, target.ty, "VJAR")
-        if self.facts is not UNREACHABLE:       # after a VJAR the target counts as set: no VEVI cascade
+        if self.facts is not UNREACHABLE:  # after a VJAR the target counts as set: no VEVI cascade
             attached = value.ty.attached or scoop.is_expanded(self.universe, value.ty)
             self.facts = self.facts.set(target.name, attached if fits else target.ty.attached)
 
@@ -184,7 +185,7 @@ class InstructionChecks:
             for choice in part.choices:
                 self._choice(choice, value, seen)
             after = join(after, self.branch(part.then_part, self.facts))
-        if node.else_part is None:              # no branch matches: an exception, not a path
+        if node.else_part is None:  # no branch matches: an exception, not a path
             self.facts = after if after is not UNREACHABLE else self.facts
         else:
             self.facts = join(after, self.branch(node.else_part, self.facts))
@@ -197,10 +198,15 @@ class InstructionChecks:
             if value is None or bound_value is None:
                 continue
             constant = _constant(bound)
-            if self.meets(bound, bound_value, value.ty) is not None or (constant is None and not self._is_constant(bound)):
+            if self.meets(bound, bound_value, value.ty) is not None or (
+                constant is None and not self._is_constant(bound)
+            ):
                 self.report("VOMB(2)", bound.span, type=str(value.ty))
                 return
-        low, high = _constant(choice.lower), _constant(choice.upper) if choice.upper is not None else _constant(choice.lower)
+        low, high = (
+            _constant(choice.lower),
+            _constant(choice.upper) if choice.upper is not None else _constant(choice.lower),
+        )
         if low is None or high is None:
             return
         if any(not (high < a or low > b) for a, b in seen.values()):
@@ -268,7 +274,11 @@ class InstructionChecks:
                     item = member_signature(self.universe, base, cursor).result if cursor is not None else item
                 if item is not None and value.ty.separate:
                     handler = value.handler if value.controlled else UNCONTROLLED
-                    item = item if item.separate or scoop.is_expanded(self.universe, item) else item.with_marks(separate=True)
+                    item = (
+                        item
+                        if item.separate or scoop.is_expanded(self.universe, item)
+                        else item.with_marks(separate=True)
+                    )
                     entity.handler = handler if item.separate else None
                 entity.ty = item.with_marks(attached=True) if item is not None else None
         if self.clashes(iteration.name.key):
@@ -285,7 +295,7 @@ class InstructionChecks:
 
         found = assertions(self, node.assertions)
         if any(isinstance(c.expression, syntax.ManifestBoolean) and not c.expression.value for c in node.assertions):
-            self.facts = UNREACHABLE          # `check False then end`: this point is never reached
+            self.facts = UNREACHABLE  # `check False then end`: this point is never reached
             return
         if node.then_part is not None:
             self.facts = self.guarded(node.then_part, found)
@@ -303,8 +313,13 @@ class InstructionChecks:
             if not scoop.check_separate_argument(self, argument, value, clash) or value is None:
                 entities.append(Entity(argument.name.key, "separate", None, argument.name.span))
                 continue
-            entity = Entity(argument.name.key, "separate", value.ty.with_marks(attached=True), argument.name.span,
-                            argument.name.key if value.ty.separate else None)
+            entity = Entity(
+                argument.name.key,
+                "separate",
+                value.ty.with_marks(attached=True),
+                argument.name.span,
+                argument.name.key if value.ty.separate else None,
+            )
             self.tables.entities[argument] = entity
             entities.append(entity)
         self.facts = self.guarded(node.body, (tuple(entities), frozenset()))
@@ -315,14 +330,19 @@ class InstructionChecks:
         self.facts = UNREACHABLE
 
 
-_KINDS = {"argument": "a formal argument (arguments are read-only)", "object_test": "an object-test local",
-          "across": "an iteration cursor", "result": "Result"}
+_KINDS = {
+    "argument": "a formal argument (arguments are read-only)",
+    "object_test": "an object-test local",
+    "across": "an iteration cursor",
+    "result": "Result",
+}
 
 
 def _inspectable(ty) -> bool:
     """VOMB(1): `inspect` works on integers, naturals, characters (and strings, as EiffelStudio 19)."""
-    return not ty.is_formal and (ty.name in INTEGERS + NATURALS or ty.name in ("CHARACTER_8", "CHARACTER_32")
-                                 or ty.name in STRINGS)
+    return not ty.is_formal and (
+        ty.name in INTEGERS + NATURALS or ty.name in ("CHARACTER_8", "CHARACTER_32") or ty.name in STRINGS
+    )
 
 
 def _constant(node):

@@ -4,6 +4,7 @@ compiler's version (so edits invalidate it).
 
 Cache directory: $SCOOPC_CACHE_DIR, else $XDG_CACHE_HOME/scoopc, else ~/.cache/scoopc.
 """
+
 from __future__ import annotations
 
 import gc
@@ -19,7 +20,7 @@ from ..version import __version__
 from .universe import stdlib_files
 
 CACHE_FORMAT = 4
-_PARSED: dict = {}     # the full trees of the last cold parse, by library key (one use)
+_PARSED: dict = {}  # the full trees of the last cold parse, by library key (one use)
 
 
 def cache_dir() -> Path:
@@ -47,7 +48,7 @@ def load(parse_file, prepare=None, use_cache: bool = True, progress=None):
     files = stdlib_files()
     key = _key(files)
     if not use_cache:
-        full = _PARSED.pop(key, None)        # parsed moments ago to fill the cache: not again
+        full = _PARSED.pop(key, None)  # parsed moments ago to fill the cache: not again
         return (full if full is not None else [parse_file(path) for path in files]), None
     cached = _read(key)
     if cached is not None:
@@ -56,7 +57,7 @@ def load(parse_file, prepare=None, use_cache: bool = True, progress=None):
         progress(f"reading the standard library ({len(files)} classes, once per scoopc version)")
     parsed = [parse_file(path) for path in files]
     _PARSED.clear()
-    _PARSED[key] = parsed                    # compiling the library next needs the bodies too
+    _PARSED[key] = parsed  # compiling the library next needs the bodies too
     # Kept: the declarations; not kept: the source texts (a cached library reports nothing).
     units = [(None, declarations_only(tree), found) for _, tree, found in parsed]
     prepared = prepare(units) if prepare is not None else None
@@ -69,8 +70,9 @@ def declarations_only(tree):
     other classes against it needs, and half the size to load."""
     if tree is None:
         return None
-    clauses = tuple(replace(clause, features=tuple(_without_body(f) for f in clause.features))
-                    for clause in tree.feature_clauses)
+    clauses = tuple(
+        replace(clause, features=tuple(_without_body(f) for f in clause.features)) for clause in tree.feature_clauses
+    )
     return replace(tree, feature_clauses=clauses)
 
 
@@ -85,11 +87,11 @@ def _without_body(feature):
 def _read(key: str) -> list | None:
     path = cache_dir() / f"stdlib-{key}.pickle"
     enabled = gc.isenabled()
-    gc.disable()                # a load creates many objects and no garbage: collections only cost time
+    gc.disable()  # a load creates many objects and no garbage: collections only cost time
     try:
         with open(path, "rb") as handle:
             return pickle.load(handle)
-    except Exception:           # a damaged or foreign cache file: parse the library again
+    except Exception:  # a damaged or foreign cache file: parse the library again
         return None
     finally:
         if enabled:
@@ -113,4 +115,4 @@ def _write(key: str, units) -> None:
             if stale.name != f"stdlib-{key}.pickle":
                 stale.unlink(missing_ok=True)
     except OSError:
-        pass            # a read-only home: work without the cache
+        pass  # a read-only home: work without the cache

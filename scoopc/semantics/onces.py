@@ -2,6 +2,7 @@
 anything else is ONCE-KEY), a once function's type may not depend on the object (VFFD(7)), and
 `once ("PROCESS")` results through scoop.py (VFFD(8)).
 """
+
 from __future__ import annotations
 
 from . import scoop

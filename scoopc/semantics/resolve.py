@@ -2,6 +2,7 @@
 Result, object-test/across/separate-block local, or a feature of the class), and the rules on
 declaring names: VRFA, VRLE(1), VRLE(2), VREG, and the clash test used by VUOT(1), VOIT(2), FRESH_IDENTIFIER.
 """
+
 from __future__ import annotations
 
 from .scoop import separate_by_constraint
@@ -42,9 +43,15 @@ def declare_routine_entities(ctx, arguments, locals_, signature_args, resolve_lo
         elif ctx.info.features.get(name) is not None:
             ctx.report("VRFA", decl.name.span, name=decl.name.text, cls=ctx.info.name)
         seen[name] = "argument"
-        ctx.scopes.add(Entity(name, "argument", ty, decl.name.span,
-                              handler=name if ty is not None and (ty.separate or separate_by_constraint(ctx, ty))
-                              else None))
+        ctx.scopes.add(
+            Entity(
+                name,
+                "argument",
+                ty,
+                decl.name.span,
+                handler=name if ty is not None and (ty.separate or separate_by_constraint(ctx, ty)) else None,
+            )
+        )
     for decl in locals_:
         name = decl.name.key
         ty = resolve_local(decl.type)
@@ -57,8 +64,15 @@ def declare_routine_entities(ctx, arguments, locals_, signature_args, resolve_lo
         elif ctx.info.features.get(name) is not None:
             ctx.report("VRLE(1)", decl.name.span, name=decl.name.text, cls=ctx.info.name)
         seen[name] = "local"
-        ctx.scopes.add(Entity(name, "local", ty, decl.name.span,
-                              handler="?" if ty is not None and (ty.separate or separate_by_constraint(ctx, ty)) else None))
+        ctx.scopes.add(
+            Entity(
+                name,
+                "local",
+                ty,
+                decl.name.span,
+                handler="?" if ty is not None and (ty.separate or separate_by_constraint(ctx, ty)) else None,
+            )
+        )
 
 
 def clashes(ctx, name: str) -> bool:

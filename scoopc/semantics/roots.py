@@ -2,6 +2,7 @@
 the root class is neither deferred nor generic, and its root procedure is one of its creation
 procedures, takes no argument and has no precondition. The checker applies them when the project
 names its root (an .ecf's <root>); the driver applies the same function to the root it chooses."""
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -20,10 +21,11 @@ def check_root(universe: Universe, class_name: str, creator: str, report: Report
     where = info.decl.name.span
     if info.is_deferred:
         report("VSRT", where, name=info.name, what="deferred: it cannot be instantiated")
-        return                           # no creation procedures to speak of
+        return  # no creation procedures to speak of
     elif info.formals:
-        report("VSRT", where, name=info.name,
-               what="generic: the root type must be a class type without actual generics")
+        report(
+            "VSRT", where, name=info.name, what="generic: the root type must be a class type without actual generics"
+        )
     creator = creator.lower()
     creators = info.creators
     allowed = (creators is None and creator == "default_create") or (creators is not None and creator in creators)

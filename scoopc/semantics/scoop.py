@@ -5,6 +5,7 @@ Controlled: a formal argument of the enclosing routine, a separate-block local, 
 across local over a controlled expression, or the result of a query on a controlled target within
 its expression (Value.handler names the controlling entity; "?" means not controlled).
 """
+
 from __future__ import annotations
 
 from .. import syntax
@@ -52,16 +53,27 @@ def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> 
             # EiffelStudio takes an unmarked formal generic as possibly expanded and accepts
             # the call (its partree example relies on it); an actual generic that is a reference
             # type would be a traitor, so we warn (docs/LANGUAGE.md).
-            ctx.warn("FORMAL-TRAITOR", actual_node.span, what=f"`{describe(actual_node)}`", formal=str(actual.ty),
-                     how=f"is passed in a call on a separate target to a formal of non-separate type {formal}",
-                     risk="the supplier would hold a reference into this processor")
+            ctx.warn(
+                "FORMAL-TRAITOR",
+                actual_node.span,
+                what=f"`{describe(actual_node)}`",
+                formal=str(actual.ty),
+                how=f"is passed in a call on a separate target to a formal of non-separate type {formal}",
+                risk="the supplier would hold a reference into this processor",
+            )
             return True
         ctx.report("VUAR(3)", actual_node.span, actual=describe(actual_node), type=str(formal))
         return False
     if actual.handler is not None and actual.handler != UNCONTROLLED and actual.handler == target.handler:
         return True
-    ctx.report("VUAR(2)", actual_node.span, actual=str(actual.ty), formal=str(formal),
-               reason="it is separate and the formal is not", **SEPARATE_ACTUAL)
+    ctx.report(
+        "VUAR(2)",
+        actual_node.span,
+        actual=str(actual.ty),
+        formal=str(formal),
+        reason="it is separate and the formal is not",
+        **SEPARATE_ACTUAL,
+    )
     return False
 
 
@@ -71,24 +83,41 @@ def _formal_mark(info, formal: int):
     return generics[formal].mark if formal < len(generics) else None
 
 
-SEPARATE_ACTUAL = {"hint": "declare the formal argument `separate`, or pass a non-separate copy "
-                           "(for a STRING: `create s.make_from_separate (x)`)"}
+SEPARATE_ACTUAL = {
+    "hint": "declare the formal argument `separate`, or pass a non-separate copy "
+    "(for a STRING: `create s.make_from_separate (x)`)"
+}
 
 
 def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, **extra) -> None:
     """VJAR / VUAR(2) when only separateness stops conformance: a separate value cannot become
     non-separate (the object lives on another processor)."""
-    ctx.report(code, node.span, source=str(source), target=str(target), actual=str(source), formal=str(target),
-               reason="it is separate and the target is not", **SEPARATE_ACTUAL, **extra)
+    ctx.report(
+        code,
+        node.span,
+        source=str(source),
+        target=str(target),
+        actual=str(source),
+        formal=str(target),
+        reason="it is separate and the target is not",
+        **SEPARATE_ACTUAL,
+        **extra,
+    )
 
 
 def lock_passing(ctx, call_node, actuals: list, formals) -> None:
     """Record, for a separate call, the arguments that can hand the client's locks to the
     supplier: references in a region the client holds (non-separate, or controlled separate).
     Whether they do is decided at run time (a Void one does not)."""
-    passing = tuple(index for index, (actual, formal) in enumerate(zip(actuals, formals))
-                    if actual is not None and formal is not None and not is_expanded(ctx.universe, actual.ty)
-                    and not actual.ty.is_none and (not actual.ty.separate or actual.controlled))
+    passing = tuple(
+        index
+        for index, (actual, formal) in enumerate(zip(actuals, formals))
+        if actual is not None
+        and formal is not None
+        and not is_expanded(ctx.universe, actual.ty)
+        and not actual.ty.is_none
+        and (not actual.ty.separate or actual.controlled)
+    )
     if passing:
         ctx.tables.lock_passing[call_node] = passing
 
@@ -106,9 +135,14 @@ def adapt_result(ctx, call_node, result: Ty, target: Value) -> Value:
     if result.is_formal and _formal_mark(ctx.info, result.formal) != "reference":
         # EiffelStudio does not make an unmarked formal generic result separate (G may be
         # expanded); partree relies on it. We follow and warn (docs/LANGUAGE.md).
-        ctx.warn("FORMAL-TRAITOR", call_node.span, what="this result", formal=str(result),
-                 how="comes from a call on a separate target and is used as non-separate",
-                 risk="this processor would hold a non-separate reference to an object of another one")
+        ctx.warn(
+            "FORMAL-TRAITOR",
+            call_node.span,
+            what="this result",
+            formal=str(result),
+            how="comes from a call on a separate target and is used as non-separate",
+            risk="this processor would hold a non-separate reference to an object of another one",
+        )
         return Value(result)
     return Value(result.with_marks(separate=True), target.handler)
 
@@ -120,12 +154,18 @@ def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Value
     if clashes:
         ctx.report("FRESH_IDENTIFIER", argument.name.span, name=argument.name.text)
         return False
-    if value is not None and (is_expanded(ctx.universe, value.ty) or
-                              not (value.ty.separate or separate_by_constraint(ctx, value.ty))):
+    if value is not None and (
+        is_expanded(ctx.universe, value.ty) or not (value.ty.separate or separate_by_constraint(ctx, value.ty))
+    ):
         expanded = is_expanded(ctx.universe, value.ty)
-        ctx.report("V1SE", argument.expression.span, type=str(value.ty),
-                   hint="values of expanded types are copied anyway: use them directly" if expanded else
-                   "a non-separate object needs no reservation: use it directly, or declare it `separate`")
+        ctx.report(
+            "V1SE",
+            argument.expression.span,
+            type=str(value.ty),
+            hint="values of expanded types are copied anyway: use them directly"
+            if expanded
+            else "a non-separate object needs no reservation: use it directly, or declare it `separate`",
+        )
         return False
     return True
 
@@ -148,14 +188,20 @@ def wait_arguments(ctx, clause: syntax.AssertionClause) -> tuple[str, ...]:
     """The separate formal arguments used as call targets in a precondition clause: the runtime
     makes the clause a wait condition when one of them was newly reserved by the call."""
     names: set[str] = set()
-    separate_formals = {e.name for e in ctx.scopes.frames[0].values() if e.kind == "argument" and e.ty is not None and e.ty.separate}
+    separate_formals = {
+        e.name for e in ctx.scopes.frames[0].values() if e.kind == "argument" and e.ty is not None and e.ty.separate
+    }
 
     def visit(node):
         if isinstance(node, (syntax.QualifiedCall, syntax.BracketExpression)):
             target = node.target
             while isinstance(target, syntax.Parenthesized):
                 target = target.expression
-            if isinstance(target, syntax.UnqualifiedCall) and not target.arguments and target.name.key in separate_formals:
+            if (
+                isinstance(target, syntax.UnqualifiedCall)
+                and not target.arguments
+                and target.name.key in separate_formals
+            ):
                 names.add(target.name.key)
         for child in children(node):
             visit(child)

@@ -3,6 +3,7 @@ class that declares it; redeclarations checked against their precursors (VDRD(2)
 
 Input: flattened classes. Output: Feature.signature for every feature.
 """
+
 from __future__ import annotations
 
 from .. import syntax
@@ -22,7 +23,7 @@ def signature_of(universe, info, feature: Feature, report=None) -> Signature:
     """The signature of a feature declared in `info` (computed once, reported once)."""
     if feature.signature is not None:
         return feature.signature
-    feature.signature = Signature((), None)          # guards against `like` cycles
+    feature.signature = Signature((), None)  # guards against `like` cycles
     silent = report or (lambda *a, **k: None)
     arguments = {a.name.key: a for a in feature.arguments}
 
@@ -46,8 +47,12 @@ def signature_of(universe, info, feature: Feature, report=None) -> Signature:
 
 def _feature_anchor(node, arguments) -> tuple | None:
     """(name, attachment mark) for a type `like name` where name is a feature (not an argument)."""
-    if isinstance(node, syntax.AnchoredType) and isinstance(node.anchor, syntax.UnqualifiedCall) \
-            and not node.anchor.arguments and node.anchor.name.key not in arguments:
+    if (
+        isinstance(node, syntax.AnchoredType)
+        and isinstance(node.anchor, syntax.UnqualifiedCall)
+        and not node.anchor.arguments
+        and node.anchor.name.key not in arguments
+    ):
         return node.anchor.name.key, node.attachment
     return None
 
@@ -119,20 +124,20 @@ def check_joins(universe, info, report) -> None:
                     theirs = member_signature(universe, own, feature)
                     problem = _mismatch(universe, info, effective[0], feature, mine, theirs)
                     if problem:
-                        report("VDRD(2)", info.decl.name.span, name=name, parent=feature.written_in,
-                               reason=problem)
+                        report("VDRD(2)", info.decl.name.span, name=name, parent=feature.written_in, reason=problem)
                         break
             continue
         signatures = [member_signature(universe, own, f) for f in versions]
         first = signatures[0]
         for other, feature in zip(signatures[1:], versions[1:]):
             if len(other.arguments) != len(first.arguments) or not _same(universe, info, first, other):
-                report("VDJR", info.decl.name.span, name=name, first=versions[0].written_in,
-                       second=feature.written_in)
+                report("VDJR", info.decl.name.span, name=name, first=versions[0].written_in, second=feature.written_in)
                 break
 
 
 def _same(universe, info, a: Signature, b: Signature) -> bool:
     pairs = list(zip(a.arguments, b.arguments)) + [(a.result, b.result)]
-    return all((x is None) == (y is None) and (x is None or (_loose(universe, x, y, info) and _loose(universe, y, x, info)))
-               for x, y in pairs)
+    return all(
+        (x is None) == (y is None) and (x is None or (_loose(universe, x, y, info) and _loose(universe, y, x, info)))
+        for x, y in pairs
+    )

@@ -3,6 +3,7 @@
 Input: a syntax type, the class it is written in, a way to resolve anchors. Output: Ty or None
 (None after reporting VTCT, VTUG, VTCG or VTAT; callers then stay silent about that entity).
 """
+
 from __future__ import annotations
 
 from collections.abc import Callable
@@ -16,14 +17,21 @@ Report = Callable[..., None]
 class TypeResolver:
     """Resolves types written in one class. `anchor(name)` gives the type of `like name`."""
 
-    def __init__(self, universe, info, report: Report, anchor: Callable[[str], Ty | None] | None = None,
-                 constraints: bool = True, current_anchor: bool = False):
+    def __init__(
+        self,
+        universe,
+        info,
+        report: Report,
+        anchor: Callable[[str], Ty | None] | None = None,
+        constraints: bool = True,
+        current_anchor: bool = False,
+    ):
         self.universe = universe
         self.info = info
         self.report = report
         self.anchor = anchor
         self.constraints = constraints
-        self.current_anchor = current_anchor    # `like Current` stays open (features.CURRENT) for call sites
+        self.current_anchor = current_anchor  # `like Current` stays open (features.CURRENT) for call sites
 
     def resolve(self, node) -> Ty | None:
         if isinstance(node, syntax.ClassType):
@@ -77,15 +85,29 @@ class TypeResolver:
         for index, (actual, actual_node) in enumerate(zip(ty.generics, node.generics)):
             for constraint in target.constraints[index] if index < len(target.constraints) else ():
                 bound = _instantiate(constraint, ty.generics)
-                if not conforms(self.universe, actual.with_marks(attached=True, separate=False),
-                                bound.with_marks(attached=True, separate=False), self.info):
-                    self.report("VTCG", actual_node.span, actual=str(actual), constraint=str(bound),
-                                formal=target.formals[index])
+                if not conforms(
+                    self.universe,
+                    actual.with_marks(attached=True, separate=False),
+                    bound.with_marks(attached=True, separate=False),
+                    self.info,
+                ):
+                    self.report(
+                        "VTCG",
+                        actual_node.span,
+                        actual=str(actual),
+                        constraint=str(bound),
+                        formal=target.formals[index],
+                    )
                     return False
             missing = self._missing_creators(target, index, actual)
             if missing:
-                self.report("VTCG", actual_node.span, actual=str(actual), formal=target.formals[index],
-                            constraint=f"`create {', '.join(missing)} end` (not creation procedures of {actual.name})")
+                self.report(
+                    "VTCG",
+                    actual_node.span,
+                    actual=str(actual),
+                    formal=target.formals[index],
+                    constraint=f"`create {', '.join(missing)} end` (not creation procedures of {actual.name})",
+                )
                 return False
         return True
 
@@ -160,10 +182,12 @@ def agent_generics(name: str, generics: tuple, tuple_formal=lambda ty: False) ->
     `PROCEDURE` (no operands), `PROCEDURE [A, B]` (operand types), `PROCEDURE [ANY, TUPLE [A]]`
     (base type first), `FUNCTION [A, R]`; all mean the TUPLE form."""
     results = 1 if name == "FUNCTION" else 0
-    second_is_tuple = len(generics) > 1 and (generics[1].name == "TUPLE" or (generics[1].is_formal and tuple_formal(generics[1])))
+    second_is_tuple = len(generics) > 1 and (
+        generics[1].name == "TUPLE" or (generics[1].is_formal and tuple_formal(generics[1]))
+    )
     if len(generics) == results + 2 and second_is_tuple and generics[0].name != "TUPLE":
-        generics = generics[1:]                       # old style: the base type first
-    operands, rest = generics[:len(generics) - results], generics[len(generics) - results:]
+        generics = generics[1:]  # old style: the base type first
+    operands, rest = generics[: len(generics) - results], generics[len(generics) - results :]
     if len(operands) == 1 and (operands[0].name == "TUPLE" or (operands[0].is_formal and tuple_formal(operands[0]))):
         return generics
     if name == "FUNCTION" and not generics:

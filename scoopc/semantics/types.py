@@ -2,27 +2,46 @@
 
 Input: none (a value module). Output: Ty values used by every later pass and recorded for codegen.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
 
 # Class-name aliases EiffelStudio's configuration maps onto kernel classes.
 ALIASES = {
-    "INTEGER": "INTEGER_32", "NATURAL": "NATURAL_32", "REAL": "REAL_32", "DOUBLE": "REAL_64",
-    "CHARACTER": "CHARACTER_8", "WIDE_CHARACTER": "CHARACTER_32", "STRING": "STRING_8",
+    "INTEGER": "INTEGER_32",
+    "NATURAL": "NATURAL_32",
+    "REAL": "REAL_32",
+    "DOUBLE": "REAL_64",
+    "CHARACTER": "CHARACTER_8",
+    "WIDE_CHARACTER": "CHARACTER_32",
+    "STRING": "STRING_8",
 }
 INTEGERS = ("INTEGER_8", "INTEGER_16", "INTEGER_32", "INTEGER_64")
 NATURALS = ("NATURAL_8", "NATURAL_16", "NATURAL_32", "NATURAL_64")
 REALS = ("REAL_32", "REAL_64")
 NUMERICS = INTEGERS + NATURALS + REALS
-STRINGS = ("STRING_8", "STRING_32", "READABLE_STRING_8", "READABLE_STRING_32", "READABLE_STRING_GENERAL",
-           "STRING_GENERAL", "IMMUTABLE_STRING_8", "IMMUTABLE_STRING_32", "IMMUTABLE_STRING_GENERAL")
+STRINGS = (
+    "STRING_8",
+    "STRING_32",
+    "READABLE_STRING_8",
+    "READABLE_STRING_32",
+    "READABLE_STRING_GENERAL",
+    "STRING_GENERAL",
+    "IMMUTABLE_STRING_8",
+    "IMMUTABLE_STRING_32",
+    "IMMUTABLE_STRING_GENERAL",
+)
 BASIC = frozenset(NUMERICS + ("BOOLEAN", "CHARACTER_8", "CHARACTER_32", "POINTER"))
 RANGES = {
-    "INTEGER_8": (-2**7, 2**7 - 1), "INTEGER_16": (-2**15, 2**15 - 1),
-    "INTEGER_32": (-2**31, 2**31 - 1), "INTEGER_64": (-2**63, 2**63 - 1),
-    "NATURAL_8": (0, 2**8 - 1), "NATURAL_16": (0, 2**16 - 1),
-    "NATURAL_32": (0, 2**32 - 1), "NATURAL_64": (0, 2**64 - 1),
+    "INTEGER_8": (-(2**7), 2**7 - 1),
+    "INTEGER_16": (-(2**15), 2**15 - 1),
+    "INTEGER_32": (-(2**31), 2**31 - 1),
+    "INTEGER_64": (-(2**63), 2**63 - 1),
+    "NATURAL_8": (0, 2**8 - 1),
+    "NATURAL_16": (0, 2**16 - 1),
+    "NATURAL_32": (0, 2**32 - 1),
+    "NATURAL_64": (0, 2**64 - 1),
 }
 
 

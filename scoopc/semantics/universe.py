@@ -3,6 +3,7 @@
 Input: the parsed units of the project and of stdlib/. Output: Universe, name -> ClassInfo.
 Duplicate class names are reported (VSCN); the user's class wins over the library's.
 """
+
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -20,18 +21,18 @@ class ClassInfo:
     name: str
     decl: syntax.ClassDeclaration
     from_library: bool
-    failed: bool = False                    # a pass reported an error: later passes skip it
+    failed: bool = False  # a pass reported an error: later passes skip it
     formals: tuple[str, ...] = ()
-    parents: list = field(default_factory=list)       # [(syntax.Parent, Ty, conforming)]
-    ancestors: dict = field(default_factory=dict)     # conforming ancestors: name -> Ty in this class's context
-    all_ancestors: dict = field(default_factory=dict) # every ancestor, conforming or not
-    features: dict = field(default_factory=dict)      # final name -> Feature
-    aliases: dict = field(default_factory=dict)       # (operator, arity) -> Feature
-    creators: dict | None = None                    # name -> clients (None: default_create)
-    constraints: tuple = ()                            # per formal: tuple of constraint Ty
-    formal_creators: tuple = ()                        # per formal: creation procedure names
-    constraint_renames: tuple = ()                     # per formal: {constraint class: {new name: old name}}
-    joins: list = field(default_factory=list)          # (name, features) inherited versions joined into one
+    parents: list = field(default_factory=list)  # [(syntax.Parent, Ty, conforming)]
+    ancestors: dict = field(default_factory=dict)  # conforming ancestors: name -> Ty in this class's context
+    all_ancestors: dict = field(default_factory=dict)  # every ancestor, conforming or not
+    features: dict = field(default_factory=dict)  # final name -> Feature
+    aliases: dict = field(default_factory=dict)  # (operator, arity) -> Feature
+    creators: dict | None = None  # name -> clients (None: default_create)
+    constraints: tuple = ()  # per formal: tuple of constraint Ty
+    formal_creators: tuple = ()  # per formal: creation procedure names
+    constraint_renames: tuple = ()  # per formal: {constraint class: {new name: old name}}
+    joins: list = field(default_factory=list)  # (name, features) inherited versions joined into one
 
     @property
     def is_deferred(self) -> bool:
@@ -50,8 +51,10 @@ class ClassInfo:
 class Universe:
     classes: dict[str, ClassInfo] = field(default_factory=dict)
     void_safe: bool = True
-    shadowed: dict[str, str] = field(default_factory=dict)   # library class name -> its key when a user class has the name
-    operator_memo: dict = field(default_factory=dict)      # (type, operator, arity, context) -> candidate features
+    shadowed: dict[str, str] = field(
+        default_factory=dict
+    )  # library class name -> its key when a user class has the name
+    operator_memo: dict = field(default_factory=dict)  # (type, operator, arity, context) -> candidate features
 
     def get(self, name: str) -> ClassInfo | None:
         key = name.upper()
@@ -82,8 +85,9 @@ def stdlib_files(clusters: tuple[str, ...] = ("base", "roboscoop")) -> list[Path
     return sorted(p for cluster in clusters for p in (root / cluster).rglob("*.e"))
 
 
-def build(trees: list[tuple[syntax.ClassDeclaration, bool]], found: list[Diagnostic],
-          base: Universe | None = None) -> Universe:
+def build(
+    trees: list[tuple[syntax.ClassDeclaration, bool]], found: list[Diagnostic], base: Universe | None = None
+) -> Universe:
     """The class table of `trees` (declaration, from_library); the user's classes first.
     `base`: classes already prepared (the library's, from the cache) to start from."""
     universe = Universe(dict(base.classes) if base is not None else {})
@@ -92,10 +96,9 @@ def build(trees: list[tuple[syntax.ClassDeclaration, bool]], found: list[Diagnos
         known = universe.classes.get(name)
         if known is not None and not (base is not None and name in base.classes):
             if not from_library:
-                found.append(diagnostics.make("VSCN", decl.name.span, name=name,
-                                              other=str(known.decl.name.span)))
+                found.append(diagnostics.make("VSCN", decl.name.span, name=name, other=str(known.decl.name.span)))
                 continue
-            universe.shadowed[name] = f"{name}@BASE"             # the user's class has the name
+            universe.shadowed[name] = f"{name}@BASE"  # the user's class has the name
             name = universe.shadowed[name]
         info = ClassInfo(name, decl, from_library)
         info.formals = tuple(g.name.key.upper() for g in decl.formal_generics)

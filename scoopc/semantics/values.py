@@ -1,6 +1,7 @@
 """Checker, values: the static result of typing an expression (its type and, for a separate
 value, which controlled entity's processor it lives on), and how a value meets a target type.
 """
+
 from __future__ import annotations
 
 from typing import NamedTuple
@@ -14,7 +15,7 @@ UNCONTROLLED = "?"
 
 class Value(NamedTuple):
     ty: Ty
-    handler: str | None = None        # None: not separate; a name: controlled through it; "?": not controlled
+    handler: str | None = None  # None: not separate; a name: controlled through it; "?": not controlled
 
     @property
     def controlled(self) -> bool:
@@ -25,13 +26,19 @@ def manifest_kind(node) -> tuple[str, object] | None:
     """The kind and value of a manifest constant whose type comes from its context."""
     if isinstance(node, syntax.ManifestInteger):
         return "integer", node.value
-    if isinstance(node, syntax.UnaryExpression) and node.operator in ("-", "+") \
-            and isinstance(node.operand, syntax.ManifestInteger):
+    if (
+        isinstance(node, syntax.UnaryExpression)
+        and node.operator in ("-", "+")
+        and isinstance(node.operand, syntax.ManifestInteger)
+    ):
         return "integer", -node.operand.value if node.operator == "-" else node.operand.value
     if isinstance(node, syntax.ManifestReal):
         return "real", node.value
-    if isinstance(node, syntax.UnaryExpression) and node.operator in ("-", "+") \
-            and isinstance(node.operand, syntax.ManifestReal):
+    if (
+        isinstance(node, syntax.UnaryExpression)
+        and node.operator in ("-", "+")
+        and isinstance(node.operand, syntax.ManifestReal)
+    ):
         return "real", node.operand.value
     if isinstance(node, syntax.ManifestString):
         return "string", node.value

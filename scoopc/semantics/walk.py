@@ -1,6 +1,7 @@
 """Checker, small helpers over syntax trees: the child nodes of a node, and a short text
 naming an expression in a message (`a.item`, `Current`, `"text"`).
 """
+
 from __future__ import annotations
 
 from .. import syntax
@@ -12,8 +13,11 @@ def children(node):
         value = getattr(node, name)
         if isinstance(value, tuple):
             yield from (v for v in value if hasattr(v, "__dataclass_fields__") and not isinstance(v, syntax.Identifier))
-        elif hasattr(value, "__dataclass_fields__") and not isinstance(value, (syntax.Identifier,)) \
-                and not type(value).__name__ == "Span":
+        elif (
+            hasattr(value, "__dataclass_fields__")
+            and not isinstance(value, (syntax.Identifier,))
+            and not type(value).__name__ == "Span"
+        ):
             yield value
 
 

@@ -13,6 +13,7 @@ Conventions:
 - The nodes live in one module per family; import them from here (`from scoopc import syntax`,
   `syntax.Assignment`).
 """
+
 from .base import *  # noqa: F401,F403
 from .declarations import *  # noqa: F401,F403
 from .dump import dump, where  # noqa: F401

@@ -1,4 +1,5 @@
 """Syntax tree, the base: the node decorator and names (Identifier)."""
+
 from __future__ import annotations
 
 from dataclasses import dataclass
@@ -6,7 +7,8 @@ from dataclasses import dataclass
 from ..source import Span
 
 __all__ = [
-    "node", "Identifier",
+    "node",
+    "Identifier",
 ]
 
 

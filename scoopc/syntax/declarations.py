@@ -1,4 +1,5 @@
 """Syntax tree, declarations: features (routines, attributes, constants) and classes."""
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
@@ -13,16 +14,34 @@ if TYPE_CHECKING:  # names used only in annotations (strings at run time)
 
 
 __all__ = [
-    "Alias", "FeatureName", "EntityDeclaration", "Note", "InternalBody", "DeferredBody",
-    "ExternalBody", "AttributeBody", "RoutineBody", "Routine", "Attribute", "Constant",
-    "FeatureClause", "Rename", "ExportItem", "Parent", "InheritClause", "CreationClause",
-    "Converter", "ClassDeclaration", "Feature",
+    "Alias",
+    "FeatureName",
+    "EntityDeclaration",
+    "Note",
+    "InternalBody",
+    "DeferredBody",
+    "ExternalBody",
+    "AttributeBody",
+    "RoutineBody",
+    "Routine",
+    "Attribute",
+    "Constant",
+    "FeatureClause",
+    "Rename",
+    "ExportItem",
+    "Parent",
+    "InheritClause",
+    "CreationClause",
+    "Converter",
+    "ClassDeclaration",
+    "Feature",
 ]
 
 
 @node
 class Alias:
     """`alias "+"` (operator or bracket alias) with its `convert` mark."""
+
     name: str
     convert: bool
     span: Span
@@ -39,6 +58,7 @@ class FeatureName:
 @node
 class EntityDeclaration:
     """One formal argument or local: a group `a, b: T` gives one per name, sharing the type."""
+
     name: Identifier
     type: Type
     span: Span
@@ -54,6 +74,7 @@ class Note:
 @node
 class InternalBody:
     """`do` or `once [("KEY", ...)]` with its instructions."""
+
     once: bool
     once_keys: tuple[str, ...]
     instructions: tuple[Instruction, ...]
@@ -67,7 +88,7 @@ class DeferredBody:
 
 @node
 class ExternalBody:
-    language: str                  # e.g. "C", "Python", "built_in"
+    language: str  # e.g. "C", "Python", "built_in"
     alias: str | None
     span: Span
 
@@ -75,6 +96,7 @@ class ExternalBody:
 @node
 class AttributeBody:
     """`attribute` with the instructions that compute a self-initializing attribute."""
+
     instructions: tuple[Instruction, ...]
     span: Span
 
@@ -82,6 +104,7 @@ class AttributeBody:
 @node
 class RoutineBody:
     """Everything from `obsolete`/`require` to `end` of a routine, attribute body or agent."""
+
     obsolete: str | None
     precondition: Precondition | None
     locals: tuple[EntityDeclaration, ...]
@@ -95,7 +118,7 @@ class RoutineBody:
 class Routine:
     names: tuple[FeatureName, ...]
     arguments: tuple[EntityDeclaration, ...]
-    type: Type | None           # None for a procedure
+    type: Type | None  # None for a procedure
     assigner: Identifier | None
     notes: tuple[Note, ...]
     body: RoutineBody
@@ -108,7 +131,7 @@ class Attribute:
     type: Type
     assigner: Identifier | None
     notes: tuple[Note, ...]
-    body: RoutineBody | None    # with an AttributeBody, or None for a plain attribute
+    body: RoutineBody | None  # with an AttributeBody, or None for a plain attribute
     span: Span
 
 
@@ -116,7 +139,7 @@ class Attribute:
 class Constant:
     names: tuple[FeatureName, ...]
     type: Type
-    value: Expression              # a manifest constant, TypedConstant or Unique
+    value: Expression  # a manifest constant, TypedConstant or Unique
     notes: tuple[Note, ...]
     span: Span
 
@@ -127,6 +150,7 @@ Feature = Routine | Attribute | Constant
 @node
 class FeatureClause:
     """`feature {A, B}`; clients None when unrestricted."""
+
     clients: tuple[Identifier, ...] | None
     features: tuple[Feature, ...]
     span: Span
@@ -142,6 +166,7 @@ class Rename:
 @node
 class ExportItem:
     """`{A, B} f, g`; features None for `all`."""
+
     clients: tuple[Identifier, ...]
     features: tuple[Identifier, ...] | None
     span: Span
@@ -161,6 +186,7 @@ class Parent:
 @node
 class InheritClause:
     """`inherit [{NONE}] parents`; conforming False for `inherit {NONE}`."""
+
     conforming: bool
     parents: tuple[Parent, ...]
     span: Span
@@ -169,6 +195,7 @@ class InheritClause:
 @node
 class CreationClause:
     """`create {A} make, make_from`; clients None when unrestricted."""
+
     clients: tuple[Identifier, ...] | None
     procedures: tuple[Identifier, ...]
     span: Span
@@ -177,6 +204,7 @@ class CreationClause:
 @node
 class Converter:
     """`make ({T})` (creation_mode) or `to_t: {T}`."""
+
     name: Identifier
     types: tuple[Type, ...]
     creation_mode: bool
@@ -186,7 +214,7 @@ class Converter:
 @node
 class ClassDeclaration:
     name: Identifier
-    marks: tuple[str, ...]         # "deferred", "expanded", "frozen", "external"
+    marks: tuple[str, ...]  # "deferred", "expanded", "frozen", "external"
     formal_generics: tuple[FormalGeneric, ...]
     obsolete: str | None
     inherit_clauses: tuple[InheritClause, ...]
@@ -194,7 +222,7 @@ class ClassDeclaration:
     converters: tuple[Converter, ...]
     feature_clauses: tuple[FeatureClause, ...]
     invariant: tuple[AssertionClause, ...]
-    notes: tuple[Note, ...]        # the leading and the trailing note clauses together
+    notes: tuple[Note, ...]  # the leading and the trailing note clauses together
     span: Span
 
     @property

@@ -2,6 +2,7 @@
 
 Iterative (an explicit stack), so a deeply nested expression cannot exhaust Python's stack.
 """
+
 from __future__ import annotations
 
 from dataclasses import fields
@@ -36,8 +37,9 @@ def _node(value: object, depth: int, label: str, lines: list[str]) -> list:
         lines.append(f"{pad}{label}{value!r}")
         return []
     lines.append(f"{pad}{label}{type(value).__name__} {where(span)}")
-    return [("field", getattr(value, f.name), depth + 1, f.name)
-            for f in fields(value) if f.name not in ("span", "key")]  # type: ignore[arg-type]
+    return [
+        ("field", getattr(value, f.name), depth + 1, f.name) for f in fields(value) if f.name not in ("span", "key")
+    ]  # type: ignore[arg-type]
 
 
 def _field(value: object, depth: int, name: str, lines: list[str]) -> list:

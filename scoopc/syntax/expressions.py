@@ -1,4 +1,5 @@
 """Syntax tree, expressions: calls, operators, manifest constants, agents, object tests."""
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
@@ -13,19 +14,48 @@ if TYPE_CHECKING:  # names used only in annotations (strings at run time)
 
 
 __all__ = [
-    "UnqualifiedCall", "QualifiedCall", "StaticCall", "Precursor", "BracketExpression",
-    "Current", "Result", "Void", "Parenthesized", "BinaryExpression", "UnaryExpression", "Old",
-    "ManifestInteger", "ManifestReal", "ManifestString", "ManifestCharacter", "ManifestBoolean",
-    "TypedConstant", "Unique", "ManifestType", "TupleExpression", "ManifestArray", "ObjectTest",
-    "OpenOperand", "Agent", "InlineAgent", "CreationExpression", "ConditionalExpression",
-    "InspectExpression", "WhenExpression",
-    "ElseifExpression", "AcrossExpression", "Address", "ClassAssertion", "Expression",
+    "UnqualifiedCall",
+    "QualifiedCall",
+    "StaticCall",
+    "Precursor",
+    "BracketExpression",
+    "Current",
+    "Result",
+    "Void",
+    "Parenthesized",
+    "BinaryExpression",
+    "UnaryExpression",
+    "Old",
+    "ManifestInteger",
+    "ManifestReal",
+    "ManifestString",
+    "ManifestCharacter",
+    "ManifestBoolean",
+    "TypedConstant",
+    "Unique",
+    "ManifestType",
+    "TupleExpression",
+    "ManifestArray",
+    "ObjectTest",
+    "OpenOperand",
+    "Agent",
+    "InlineAgent",
+    "CreationExpression",
+    "ConditionalExpression",
+    "InspectExpression",
+    "WhenExpression",
+    "ElseifExpression",
+    "AcrossExpression",
+    "Address",
+    "ClassAssertion",
+    "Expression",
 ]
 
 
 @node
 class UnqualifiedCall:
     """`f` or `f (args)`: a feature, local, argument or object-test local (resolved later)."""
+
     name: Identifier
     arguments: tuple[Expression, ...]
     span: Span
@@ -42,6 +72,7 @@ class QualifiedCall:
 @node
 class StaticCall:
     """`{T}.f (args)`."""
+
     type: Type
     name: Identifier
     arguments: tuple[Expression, ...]
@@ -58,6 +89,7 @@ class Precursor:
 @node
 class BracketExpression:
     """`target [arguments]`: a call of the feature aliased `[]`."""
+
     target: Expression
     arguments: tuple[Expression, ...]
     span: Span
@@ -87,6 +119,7 @@ class Parenthesized:
 @node
 class BinaryExpression:
     """`left operator right`; operator lowercased, `and then`/`or else` as two words."""
+
     operator: str
     left: Expression
     right: Expression
@@ -96,7 +129,7 @@ class BinaryExpression:
 
 @node
 class UnaryExpression:
-    operator: str                  # "not", "-", "+" or a free operator
+    operator: str  # "not", "-", "+" or a free operator
     operand: Expression
     span: Span
 
@@ -123,9 +156,9 @@ class ManifestReal:
 
 @node
 class ManifestString:
-    value: str                     # escapes decoded
+    value: str  # escapes decoded
     verbatim: bool
-    once: bool                     # `once "..."`
+    once: bool  # `once "..."`
     span: Span
 
 
@@ -144,6 +177,7 @@ class ManifestBoolean:
 @node
 class TypedConstant:
     """`{INTEGER_64} 1`: a manifest constant with an explicit type."""
+
     type: Type
     constant: Expression
     span: Span
@@ -152,12 +186,14 @@ class TypedConstant:
 @node
 class Unique:
     """The value `unique` of a constant attribute."""
+
     span: Span
 
 
 @node
 class ManifestType:
     """`{T}` as an expression (an object of TYPE [T])."""
+
     type: Type
     span: Span
 
@@ -177,6 +213,7 @@ class ManifestArray:
 @node
 class ObjectTest:
     """`attached [{T}] expression [as local]`."""
+
     type: Type | None
     expression: Expression
     local: Identifier | None
@@ -186,6 +223,7 @@ class ObjectTest:
 @node
 class OpenOperand:
     """`?` or `{T}` among an agent's operands; `type` is None for `?`."""
+
     type: Type | None
     span: Span
 
@@ -194,6 +232,7 @@ class OpenOperand:
 class Agent:
     """`agent [target.]f [(operands)]`. target None: unqualified (Current); a ManifestType
     target is an open target of that type. arguments None: every argument open."""
+
     target: Expression | None
     name: Identifier
     arguments: tuple[Expression, ...] | None
@@ -211,7 +250,7 @@ class InlineAgent:
 
 @node
 class CreationExpression:
-    processor: Identifier | None   # `create <NONE> {T}`
+    processor: Identifier | None  # `create <NONE> {T}`
     type: Type
     procedure: Identifier | None
     arguments: tuple[Expression, ...]
@@ -237,6 +276,7 @@ class ElseifExpression:
 @node
 class InspectExpression:
     """`inspect e when 1 then x when 2, 3 then y else z end` (EiffelStudio 22.05+)."""
+
     expression: Expression
     when_parts: tuple[WhenExpression, ...]
     else_part: Expression | None
@@ -245,7 +285,7 @@ class InspectExpression:
 
 @node
 class WhenExpression:
-    choices: tuple                 # of instructions.Choice
+    choices: tuple  # of instructions.Choice
     then_part: Expression
     span: Span
 
@@ -253,10 +293,11 @@ class WhenExpression:
 @node
 class AcrossExpression:
     """`across e as c ... all|some expression end`."""
+
     iteration: Iteration
     invariant: tuple[AssertionClause, ...]
     until: Expression | None
-    quantifier: str                # "all" or "some"
+    quantifier: str  # "all" or "some"
     body: Expression
     variant: Variant | None
     span: Span
@@ -265,6 +306,7 @@ class AcrossExpression:
 @node
 class Address:
     """`$name`: the address of a feature or entity (for externals)."""
+
     name: Identifier
     span: Span
 
@@ -272,12 +314,39 @@ class Address:
 @node
 class ClassAssertion:
     """The postcondition `class` (a feature that does not use Current)."""
+
     span: Span
 
 
-Expression = (UnqualifiedCall | QualifiedCall | StaticCall | Precursor | BracketExpression
-              | Current | Result | Void | Parenthesized | BinaryExpression | UnaryExpression
-              | Old | ManifestInteger | ManifestReal | ManifestString | ManifestCharacter
-              | ManifestBoolean | TypedConstant | ManifestType | TupleExpression | ManifestArray
-              | ObjectTest | OpenOperand | Agent | InlineAgent | CreationExpression
-              | ConditionalExpression | InspectExpression | AcrossExpression | Address)
+Expression = (
+    UnqualifiedCall
+    | QualifiedCall
+    | StaticCall
+    | Precursor
+    | BracketExpression
+    | Current
+    | Result
+    | Void
+    | Parenthesized
+    | BinaryExpression
+    | UnaryExpression
+    | Old
+    | ManifestInteger
+    | ManifestReal
+    | ManifestString
+    | ManifestCharacter
+    | ManifestBoolean
+    | TypedConstant
+    | ManifestType
+    | TupleExpression
+    | ManifestArray
+    | ObjectTest
+    | OpenOperand
+    | Agent
+    | InlineAgent
+    | CreationExpression
+    | ConditionalExpression
+    | InspectExpression
+    | AcrossExpression
+    | Address
+)

@@ -1,5 +1,6 @@
 """Syntax tree, instructions and contracts: assignments, creation, control structures,
 separate blocks, assertion clauses."""
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
@@ -13,16 +14,36 @@ if TYPE_CHECKING:  # names used only in annotations (strings at run time)
 
 
 __all__ = [
-    "Assignment", "AssignerCall", "AssignmentAttempt", "CallInstruction", "CreationInstruction",
-    "Conditional", "ElseifPart", "MultiBranch", "WhenPart", "Choice", "Loop", "Iteration",
-    "Across", "Check", "Debug", "SeparateInstruction", "SeparateArgument", "Retry",
-    "AssertionClause", "Precondition", "Postcondition", "Variant", "Instruction",
+    "Assignment",
+    "AssignerCall",
+    "AssignmentAttempt",
+    "CallInstruction",
+    "CreationInstruction",
+    "Conditional",
+    "ElseifPart",
+    "MultiBranch",
+    "WhenPart",
+    "Choice",
+    "Loop",
+    "Iteration",
+    "Across",
+    "Check",
+    "Debug",
+    "SeparateInstruction",
+    "SeparateArgument",
+    "Retry",
+    "AssertionClause",
+    "Precondition",
+    "Postcondition",
+    "Variant",
+    "Instruction",
 ]
 
 
 @node
 class Assignment:
     """`variable := expression`; target is an UnqualifiedCall without arguments or Result."""
+
     target: Expression
     source: Expression
     span: Span
@@ -31,6 +52,7 @@ class Assignment:
 @node
 class AssignerCall:
     """`a.f (i) := v` or `a [i] := v`: a call of the assigner command of the target query."""
+
     target: Expression
     source: Expression
     span: Span
@@ -39,6 +61,7 @@ class AssignerCall:
 @node
 class AssignmentAttempt:
     """`variable ?= expression` (obsolete Eiffel)."""
+
     target: Expression
     source: Expression
     span: Span
@@ -52,9 +75,9 @@ class CallInstruction:
 
 @node
 class CreationInstruction:
-    processor: Identifier | None   # `create <NONE> x`
+    processor: Identifier | None  # `create <NONE> x`
     type: Type | None
-    target: Expression                # UnqualifiedCall without arguments, or Result
+    target: Expression  # UnqualifiedCall without arguments, or Result
     procedure: Identifier | None
     arguments: tuple[Expression, ...]
     span: Span
@@ -79,6 +102,7 @@ class ElseifPart:
 @node
 class MultiBranch:
     """`inspect`."""
+
     expression: Expression
     when_parts: tuple[WhenPart, ...]
     else_part: tuple[Instruction, ...] | None
@@ -95,6 +119,7 @@ class WhenPart:
 @node
 class Choice:
     """One value, or an interval `lower..upper`."""
+
     lower: Expression
     upper: Expression | None
     span: Span
@@ -113,6 +138,7 @@ class Loop:
 @node
 class Iteration:
     """`expression as cursor` (cursor_mode) or `expression is item`."""
+
     expression: Expression
     name: Identifier
     cursor_mode: bool
@@ -147,6 +173,7 @@ class Debug:
 @node
 class SeparateInstruction:
     """`separate e as x, f as y do ... end`."""
+
     arguments: tuple[SeparateArgument, ...]
     body: tuple[Instruction, ...]
     span: Span
@@ -164,14 +191,27 @@ class Retry:
     span: Span
 
 
-Instruction = (Assignment | AssignerCall | AssignmentAttempt | CallInstruction
-               | CreationInstruction | Conditional | MultiBranch | Loop | Across | Check | Debug
-               | SeparateInstruction | Retry)
+Instruction = (
+    Assignment
+    | AssignerCall
+    | AssignmentAttempt
+    | CallInstruction
+    | CreationInstruction
+    | Conditional
+    | MultiBranch
+    | Loop
+    | Across
+    | Check
+    | Debug
+    | SeparateInstruction
+    | Retry
+)
 
 
 @node
 class AssertionClause:
     """`[tag:] expression`; expression None for a tag followed only by a comment."""
+
     tag: Identifier | None
     expression: Expression | None
     span: Span

@@ -1,4 +1,5 @@
 """Syntax tree, types: class types, tuple types, anchored types, formal generics."""
+
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
@@ -12,24 +13,31 @@ if TYPE_CHECKING:  # names used only in annotations (strings at run time)
 
 
 __all__ = [
-    "ClassType", "TupleType", "AnchoredType", "FormalGeneric", "Constraint", "Type",
+    "ClassType",
+    "TupleType",
+    "AnchoredType",
+    "FormalGeneric",
+    "Constraint",
+    "Type",
 ]
 
 
 @node
 class ClassType:
     """`NAME [generics]`; formal generic parameters are ClassTypes too (the checker tells)."""
+
     name: Identifier
     generics: tuple[Type, ...]
-    attachment: str | None      # "attached", "detachable" or None
+    attachment: str | None  # "attached", "detachable" or None
     separate: bool
-    variance: str | None        # "frozen", "variant" or None
+    variance: str | None  # "frozen", "variant" or None
     span: Span
 
 
 @node
 class TupleType:
     """`TUPLE [...]`; `labels` is empty or has one label per generic (`TUPLE [a: X; b: Y]`)."""
+
     generics: tuple[Type, ...]
     labels: tuple[Identifier, ...]
     attachment: str | None
@@ -41,6 +49,7 @@ class TupleType:
 @node
 class AnchoredType:
     """`like anchor`: anchor is Current, an UnqualifiedCall, a QualifiedCall chain or a StaticCall."""
+
     anchor: Expression
     attachment: str | None
     separate: bool
@@ -54,9 +63,9 @@ Type = ClassType | TupleType | AnchoredType
 @node
 class FormalGeneric:
     name: Identifier
-    mark: str | None            # "frozen", "expanded" or None
+    mark: str | None  # "frozen", "expanded" or None
     constraints: tuple[Constraint, ...]
-    creators: tuple[Identifier, ...] | None   # `create make end`; None when absent
+    creators: tuple[Identifier, ...] | None  # `create make end`; None when absent
     span: Span
 
 

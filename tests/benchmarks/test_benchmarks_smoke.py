@@ -1,5 +1,6 @@
 """Smoke test of benchmarks/run.py: tiny sizes, output format and result checks (never timings),
 for the hand-written variants and the dialect versions compiled by scoopc."""
+
 import contextlib
 import os
 import re
@@ -12,18 +13,31 @@ import pytest
 RUN = os.path.join(os.path.dirname(__file__), "..", "..", "benchmarks", "run.py")
 NAMES = ["mutex", "condition", "prodcons", "threadring", "chameneos"]
 NUMBER = r"\d+\.\d+"
-BENCH_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) compiled_s=({NUMBER}) "
-                        rf"baseline_s=({NUMBER}) ratio=({NUMBER}) compiled_ratio={NUMBER} "
-                        rf"compiled_vs_api=({NUMBER}) us_per_op={NUMBER}/{NUMBER}/{NUMBER} cpu_ratio={NUMBER}$")
-API_LINE = re.compile(rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) baseline_s=({NUMBER}) "
-                      rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER} cpu_ratio={NUMBER}$")
-COMPILED_LINE = re.compile(rf"^# compiled (\d+) dialect versions with scoopc in {NUMBER} s "
-                           rf"\(assertions=none; the standard library: {NUMBER} s, compiled once or cached\)$")
+BENCH_LINE = re.compile(
+    rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) compiled_s=({NUMBER}) "
+    rf"baseline_s=({NUMBER}) ratio=({NUMBER}) compiled_ratio={NUMBER} "
+    rf"compiled_vs_api=({NUMBER}) us_per_op={NUMBER}/{NUMBER}/{NUMBER} cpu_ratio={NUMBER}$"
+)
+API_LINE = re.compile(
+    rf"^(\w+) ((?:\w+=\d+ )+)scoop_s=({NUMBER}) baseline_s=({NUMBER}) "
+    rf"ratio=({NUMBER}) us_per_op={NUMBER}/{NUMBER} cpu_ratio={NUMBER}$"
+)
+COMPILED_LINE = re.compile(
+    rf"^# compiled (\d+) dialect versions with scoopc in {NUMBER} s "
+    rf"\(assertions=none; the standard library: {NUMBER} s, compiled once or cached\)$"
+)
 GEOMEAN_LINE = re.compile(rf"geomean_ratio={NUMBER} compiled_vs_api_geomean={NUMBER} compiled_vs_api_max={NUMBER}")
-MICRO_LINE = re.compile(
-    rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
-MICRO_KEYS = ["async_command", "async_command_queued", "sync_query", "reserve_1_wait_condition",
-              "reserve_1", "reserve_2", "reserve_4", "reserve_8"]
+MICRO_LINE = re.compile(rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
+MICRO_KEYS = [
+    "async_command",
+    "async_command_queued",
+    "sync_query",
+    "reserve_1_wait_condition",
+    "reserve_1",
+    "reserve_2",
+    "reserve_4",
+    "reserve_8",
+]
 
 
 def run(*options):
@@ -134,7 +148,7 @@ def test_each_compiled_version_runs_and_checks_its_output(name, builds, monkeypa
     assert isinstance(raised, CheckFailed), raised
 
 
-_REGISTRY: dict = {}      # the class registry as the compiled programs left it
+_REGISTRY: dict = {}  # the class registry as the compiled programs left it
 
 
 @contextlib.contextmanager
@@ -175,7 +189,7 @@ def test_a_failing_run_is_reported_and_fails_the_command(monkeypatch, capsys):
     import run as harness
 
     with pytest.raises(harness.RunFailed):
-        harness.run_child("nosuch", "scoop", "smoke")      # a crashing child: non-zero exit
+        harness.run_child("nosuch", "scoop", "smoke")  # a crashing child: non-zero exit
 
     def broken(name, variant, size, build=None):
         raise harness.RunFailed(f"{name} {variant}: exit 1: CheckFailed: count")

@@ -1,6 +1,7 @@
 """Code generation covers the whole dialect the checker accepts: every construct-covering program
 (tests/syntax/valid/) and every valid SCOOP program (tests/semantics/valid/) becomes Python that
 compiles, with no internal error of the code generator."""
+
 import ast
 from pathlib import Path
 
@@ -12,8 +13,12 @@ from scoopc.codegen.program import generate
 from scoopc.project import collect
 
 TESTS = Path(__file__).resolve().parents[1]
-PROGRAMS = sorted(p for folder in (TESTS / "syntax" / "valid", TESTS / "semantics" / "valid")
-                  for p in folder.iterdir() if p.suffix == ".e" or p.is_dir())
+PROGRAMS = sorted(
+    p
+    for folder in (TESTS / "syntax" / "valid", TESTS / "semantics" / "valid")
+    for p in folder.iterdir()
+    if p.suffix == ".e" or p.is_dir()
+)
 
 
 @pytest.mark.parametrize("program", PROGRAMS, ids=lambda p: f"{p.parent.parent.name}/{p.name}")

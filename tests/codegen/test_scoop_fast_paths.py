@@ -1,6 +1,7 @@
 """The SCOOP fast paths of codegen (scoopc/codegen/scoop.py, scoop_calls.py): which routines are
 leaves, which separate calls are bound statically, where `command1`, `reserve1`, `leaf_call`
 and ranges over integer intervals are emitted, and that each program still does what it says."""
+
 from __future__ import annotations
 
 import re
@@ -117,8 +118,7 @@ feature
 end
 """
 
-SOURCES = {"counter.e": COUNTER, "base_item.e": BASE_ITEM, "looping_item.e": LOOPING_ITEM,
-           "box.e": BOX, "fast.e": ROOT}
+SOURCES = {"counter.e": COUNTER, "base_item.e": BASE_ITEM, "looping_item.e": LOOPING_ITEM, "box.e": BOX, "fast.e": ROOT}
 
 
 @pytest.fixture(scope="module")
@@ -153,21 +153,21 @@ def test_leaves_are_decorated_and_only_leaves(program):
     counter = program[1]["counter.py"]
     for name in ("increment", "add", "add_square", "square", "register", "make"):
         assert is_leaf(counter, name), name
-    assert not is_leaf(counter, "looped")                      # a loop
-    assert not is_leaf(counter, "factorial")                   # recursion
+    assert not is_leaf(counter, "looped")  # a loop
+    assert not is_leaf(counter, "factorial")  # recursion
 
 
 def test_closed_world_an_heir_with_a_loop_makes_callers_non_leaves(program):
     base = program[1]["base_item.py"]
     assert is_leaf(base, "step")
-    assert not is_leaf(base, "bump")                           # LOOPING_ITEM's step loops
+    assert not is_leaf(base, "bump")  # LOOPING_ITEM's step loops
     assert not is_leaf(program[1]["looping_item.py"], "step")
 
 
 def test_short_library_routines_count_as_leaves_but_are_never_decorated(program):
     box = program[1]["box.py"]
-    assert is_leaf(box, "put") and is_leaf(box, "first")       # LINKED_QUEUE.extend / item
-    assert is_leaf(box, "keep")                                # stores its separate argument only
+    assert is_leaf(box, "put") and is_leaf(box, "first")  # LINKED_QUEUE.extend / item
+    assert is_leaf(box, "keep")  # stores its separate argument only
     assert "with here.reserve" not in routine(box, "keep")
     base = Path(program[0].library) / "eiffel_base"
     assert (base / "_scoop_facts.json").exists()
@@ -186,8 +186,8 @@ def test_leaf_calls_and_queries_inside_a_reservation(program):
     assert "here.leaf_call(c, COUNTER.add, (n,))" in body
     assert "here.leaf_call(c, COUNTER.add_square, (n,))" in body
     show = routine(text, "show")
-    assert "here.leaf_query(c, G_" in show                    # an attribute: a getter
-    assert "here.query(c, COUNTER.factorial, (4,)" in show     # not a leaf: the general query
+    assert "here.leaf_query(c, G_" in show  # an attribute: a getter
+    assert "here.query(c, COUNTER.factorial, (4,)" in show  # not a leaf: the general query
 
 
 def test_a_precondition_is_a_clause_table_not_command1(program):
@@ -210,22 +210,24 @@ def test_several_separate_arguments_reserve_together(program):
     body = routine(program[1]["fast.py"], "fill")
     assert "here.reserve((box, c), where=W_" in body
     assert "here.leaf_call(box, BOX.put, (7,))" in body
-    assert "here.call(box, BOX.keep, (c,))" in body             # c may pass locks
+    assert "here.call(box, BOX.keep, (c,))" in body  # c may pass locks
 
 
 def test_across_an_integer_interval_is_a_range(program):
     text = routine(program[1]["fast.py"], "make")
     assert "for i in range(1, 3 + 1):" in text and "print_(B.out_int(here, i))" in text
     assert "for k_ in range(4, 5 + 1):" in text
-    assert "for i in S.cursors(B.interval(here, 6, 7)):" in text   # `i` itself is used
+    assert "for i in S.cursors(B.interval(here, 6, 7)):" in text  # `i` itself is used
 
 
 def test_a_program_with_its_own_expanded_class_has_no_leaves(tmp_path):
     folder = tmp_path / "exp"
     folder.mkdir()
     (folder / "point.e").write_text("expanded class POINT\nfeature\n\tx: INTEGER\nend\n")
-    (folder / "exp.e").write_text("class EXP\ncreate\n\tmake\nfeature\n\tmake do set (3) end\n"
-                                  "\tn: INTEGER\n\tp: POINT\n\tset (v: INTEGER) do n := v end\nend\n")
+    (folder / "exp.e").write_text(
+        "class EXP\ncreate\n\tmake\nfeature\n\tmake do set (3) end\n"
+        "\tn: INTEGER\n\tp: POINT\n\tset (v: INTEGER) do n := v end\nend\n"
+    )
     compiled, texts = compile_program(folder, tmp_path / "out", "none")
     assert "@rt.leaf" not in texts["exp.py"]
 
@@ -268,6 +270,7 @@ end
 
 def _library_leaves(tmp_path, sources):
     import json
+
     folder = tmp_path / "listening"
     folder.mkdir()
     for name, text in sources.items():
@@ -279,19 +282,21 @@ def _library_leaves(tmp_path, sources):
 def test_listener_callbacks_of_the_library_are_listed_as_leaves(tmp_path):
     leaves = _library_leaves(tmp_path, {"listening.e": LISTENING_ROOT})
     assert {"ODOMETRY_SIGNALER.on_odometry", "RANGE_SIGNALER.on_range"} <= set(leaves)
-    assert "LASER_SIGNALER.on_scan" not in leaves              # it loops over the beams
+    assert "LASER_SIGNALER.on_scan" not in leaves  # it loops over the beams
     assert all(name.split(".")[0].endswith(("SIGNALER", "LISTENER")) for name in leaves)
 
 
 def test_a_programs_heir_can_take_a_library_callback_out_of_the_leaves(tmp_path):
-    leaves = _library_leaves(tmp_path, {"listening.e": LISTENING_ROOT, "noisy_odometry.e": NOISY_HEIR,
-                                        "counter.e": COUNTER})
+    leaves = _library_leaves(
+        tmp_path, {"listening.e": LISTENING_ROOT, "noisy_odometry.e": NOISY_HEIR, "counter.e": COUNTER}
+    )
     assert "ODOMETRY_SIGNALER.on_odometry" not in leaves
     assert "RANGE_SIGNALER.on_range" in leaves
 
 
 def test_is_leaf_routine_reads_the_mark_and_the_programs_list(monkeypatch):
     from scoopc.kernel import link
+
     monkeypatch.setattr(link, "_LIBRARY_LEAVES", {"LIB_SIGNALER.on_data"})
 
     class LIB_SIGNALER:
@@ -304,14 +309,15 @@ def test_is_leaf_routine_reads_the_mark_and_the_programs_list(monkeypatch):
     class MINE(LIB_SIGNALER):
         def on_other(self):
             pass
+
         on_other._scoop_leaf_ = True
 
     class REDEFINED(LIB_SIGNALER):
-        def on_data(self):                   # a program's version without the mark
+        def on_data(self):  # a program's version without the mark
             pass
 
-    assert link.is_leaf_routine(MINE, "on_data")           # inherited library leaf
-    assert link.is_leaf_routine(MINE, "on_other")          # the program's own mark
+    assert link.is_leaf_routine(MINE, "on_data")  # inherited library leaf
+    assert link.is_leaf_routine(MINE, "on_other")  # the program's own mark
     assert not link.is_leaf_routine(LIB_SIGNALER, "on_other")
     assert not link.is_leaf_routine(REDEFINED, "on_data")
     assert not link.is_leaf_routine(MINE, "missing")
@@ -322,6 +328,7 @@ def test_each_program_loaded_replaces_the_list_of_library_leaves(tmp_path, monke
     import types
 
     from scoopc.kernel import link
+
     monkeypatch.setattr(link, "_LIBRARY_LEAVES", set())
     for name, leaves in (("first", ["A.f", "B.g"]), ("second", ["B.g"]), ("third", None)):
         folder = tmp_path / name

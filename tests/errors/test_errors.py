@@ -2,6 +2,7 @@
 `-- E: CODE` markers name exactly the errors `scoopc check` must report (codes with parentheses
 are written with a dash in folder names: VUTA(3) -> VUTA-3). A case with an .ecf is checked
 through it (the root rules need the root it names)."""
+
 from pathlib import Path
 
 import pytest

@@ -2,6 +2,7 @@
 /work/plan/faithfulness.md), each in a small program of our own, run through `scoopc run` on the
 virtual clock. Outputs of concurrent programs are checked by their properties (per-actor order,
 counts, mutual exclusion), never as one interleaving."""
+
 from pathlib import Path
 
 from scoopc import cli
@@ -22,7 +23,7 @@ def test_a_once_function_is_once_per_processor_and_once_process_is_global(capsys
     assert code == 0, err
     lines = out.splitlines()
     assert sorted(line.split()[0] for line in lines) == ["greeter-1", "greeter-2", "greeter-3"]
-    assert len({line.split()[-1] for line in lines}) == 1          # one PROCESS-wide value
+    assert len({line.split()[-1] for line in lines}) == 1  # one PROCESS-wide value
 
 
 def test_lock_passing_makes_calls_with_current_synchronous_and_allows_callbacks(capsys):
@@ -33,8 +34,7 @@ def test_lock_passing_makes_calls_with_current_synchronous_and_allows_callbacks(
     assert len(lines) == 2 * 5 * 4
     for diner in ("1", "2"):
         mine = [line.rsplit(" ", 1)[0] for line in lines if line.endswith(" " + diner)]
-        assert mine == ["plate A taken by", "plate B taken by",
-                        "plate A given back by", "plate B given back by"] * 5
+        assert mine == ["plate A taken by", "plate B taken by", "plate A given back by", "plate B given back by"] * 5
     holder = {}
     for line in lines:
         plate, diner = line.split()[1], line.split()[-1]

@@ -15,6 +15,7 @@ integers, booleans or lists of strings):
   virtual_clock = true, strict = true, assertions = "require"
   stderr_lines = 2                                   lines of expected.err compared (default: all)
 """
+
 from __future__ import annotations
 
 import ast
@@ -86,8 +87,11 @@ def compile_program(folder: Path, out_dir: Path, assertions: str = "all"):
         raise AssertionError(f"{folder.name} does not compile:\n{errors}")
     package = compilation.root.key.lower()
     compiled = compilation.write_package(out_dir, package)
-    texts = {p.name: relative_text(p.read_text()) for p in sorted((out_dir / package).glob("*.py"))
-             if not p.name.startswith("__")}
+    texts = {
+        p.name: relative_text(p.read_text())
+        for p in sorted((out_dir / package).glob("*.py"))
+        if not p.name.startswith("__")
+    }
     return compiled, texts
 
 
@@ -98,7 +102,7 @@ class Outcome:
     err: str
 
 
-_REGISTRY: dict = {}      # the class registry as the compiled programs left it
+_REGISTRY: dict = {}  # the class registry as the compiled programs left it
 
 
 def run_program(compiled, config: Config) -> Outcome:
@@ -140,6 +144,7 @@ def _run_program(compiled, config: Config) -> Outcome:
     for name in [m for m in sys.modules if m == package or m.startswith(package + ".")]:
         del sys.modules[name]
     from scoopc.kernel import link
+
     link._LOADED.pop(package, None)
     importlib.invalidate_caches()
     module = importlib.import_module(f"{package}.{module_name(compiled.root.key)}")
@@ -148,9 +153,16 @@ def _run_program(compiled, config: Config) -> Outcome:
     saved_stdin = sys.stdin
     sys.stdin = io.StringIO(config.stdin or "")
     try:
-        status = launcher.main(root_cls, compiled.root.creator, [compiled.root.key.lower()] + list(config.args),
-                               trace_processors=config.trace, strict=config.strict,
-                               virtual_clock=config.virtual_clock, stdout=out, stderr=err)
+        status = launcher.main(
+            root_cls,
+            compiled.root.creator,
+            [compiled.root.key.lower()] + list(config.args),
+            trace_processors=config.trace,
+            strict=config.strict,
+            virtual_clock=config.virtual_clock,
+            stdout=out,
+            stderr=err,
+        )
     finally:
         sys.stdin = saved_stdin
         sys.path.remove(str(compiled.folder))
@@ -159,8 +171,9 @@ def _run_program(compiled, config: Config) -> Outcome:
 
 # What the user sees must never name a Python exception: every built-in exception class (from
 # `builtins`, as whole words) and the header of a Python traceback.
-HOST_EXCEPTION_NAMES = sorted(name for name, value in vars(builtins).items()
-                              if isinstance(value, type) and issubclass(value, BaseException))
+HOST_EXCEPTION_NAMES = sorted(
+    name for name, value in vars(builtins).items() if isinstance(value, type) and issubclass(value, BaseException)
+)
 HOST_EXCEPTION = re.compile(r"\b(?:" + "|".join(HOST_EXCEPTION_NAMES) + r")\b|Traceback \(most recent call last\)")
 
 

@@ -4,6 +4,7 @@ expected.out (exactly, per processor or sorted, as case.toml says); the exit sta
 lines of stderr (expected.err) are checked too, and neither stream may show a Python exception
 (a built-in exception class's name, a traceback). `pytest --update-golden` rewrites expected/ and
 the outputs from the current compiler: review the diff, the outputs are EiffelStudio's."""
+
 from __future__ import annotations
 
 import shutil
@@ -57,6 +58,6 @@ def test_golden(case: Path, tmp_path: Path, request):
     assert_output(config, out_path.read_text(), outcome.out, case.name)
     if err_path.exists():
         expected = err_path.read_text().splitlines()
-        assert outcome.err.splitlines()[:len(expected)] == expected, f"{case.name}: stderr differs"
+        assert outcome.err.splitlines()[: len(expected)] == expected, f"{case.name}: stderr differs"
     else:
         assert outcome.err == "", f"{case.name}: unexpected stderr:\n{outcome.err}"

@@ -4,6 +4,7 @@ in order) and satisfies the invariants the sample is about, read from the output
 own contracts (a buffer never exceeds its capacity, a fork is never picked up while held, ...)
 are checked at run time: a violation would fail the run (exit 3, stderr). Neither stream may name
 a Python exception; robot samples run 5 simulated seconds for that check alone."""
+
 from __future__ import annotations
 
 import re
@@ -17,11 +18,13 @@ from golden_support import REPO, Config, assert_no_host_exception, assert_output
 
 # Robot samples (a world.yaml beside the program) run on the simulator: tests/robots checks what
 # they do; here only that a short run shows no Python exception.
-SAMPLES = sorted(p for p in (REPO / "samples").iterdir()
-                 if p.is_dir() and any(p.glob("*.e")) and not (p / "world.yaml").exists())
-ROBOT_SAMPLES = sorted(p for p in (REPO / "samples").iterdir()
-                       if p.is_dir() and any(p.glob("*.e")) and (p / "world.yaml").exists())
-ROBOT_SECONDS = 5           # simulated: start-up, the first sensor readings and commands
+SAMPLES = sorted(
+    p for p in (REPO / "samples").iterdir() if p.is_dir() and any(p.glob("*.e")) and not (p / "world.yaml").exists()
+)
+ROBOT_SAMPLES = sorted(
+    p for p in (REPO / "samples").iterdir() if p.is_dir() and any(p.glob("*.e")) and (p / "world.yaml").exists()
+)
+ROBOT_SECONDS = 5  # simulated: start-up, the first sensor readings and commands
 EXPECTED = Path(__file__).parent / "samples_expected"
 
 
@@ -42,7 +45,7 @@ def check_producer_consumer(out: str) -> None:
         assert mine == [p * 100 + i for i in range(1, 6)], f"producer {p} put {mine}"
     took = sum(int(n) for (n,) in matching(out, r"consumer \d+ took (\d+) items$"))
     assert took == len(puts) == 15
-    (total,), = matching(out, r"consumers took items adding up to (\d+)$")
+    ((total,),) = matching(out, r"consumers took items adding up to (\d+)$")
     assert int(total) == sum(int(v) for _, v in puts)
 
 
@@ -57,7 +60,7 @@ def check_dining_philosophers(out: str) -> None:
 
 def check_readers_writers(out: str) -> None:
     edits = matching(out, r"Writer (\d+): edit (\d+) of (\d+) written$")
-    (revision, _), = matching(out, r"Document: revision (\d+), (\d+) lines$")
+    ((revision, _),) = matching(out, r"Document: revision (\d+), (\d+) lines$")
     assert int(revision) == len(edits) == 6
     readers = matching(out, r"Reader \d+: read up to revision (\d+), every revision read was whole$")
     assert [r for (r,) in readers] == [revision] * 3
@@ -65,7 +68,7 @@ def check_readers_writers(out: str) -> None:
 
 def check_parallel_sum(out: str) -> None:
     parts = matching(out, r"Worker \d+: squares of (\d+)\.\.(\d+) add up to (\d+)$")
-    (total,), = matching(out, r"Sum of the squares of 1\.\.10000: (\d+)$")
+    ((total,),) = matching(out, r"Sum of the squares of 1\.\.10000: (\d+)$")
     assert sum(int(s) for _, _, s in parts) == int(total) == 10000 * 10001 * 20001 // 6
     for low, high, s in parts:
         assert int(s) == sum(i * i for i in range(int(low), int(high) + 1))
@@ -76,9 +79,9 @@ def check_sleeping_barber(out: str) -> None:
     seated = matching(out, r"Customer (\d+): sits down in the waiting room$")
     left = matching(out, r"Customer (\d+): no free chair, leaves$")
     assert sorted(cuts) == sorted(seated) and len(cuts) + len(left) == 10
-    (customers, away), = matching(out, r"Shop: closes after (\d+) customers, (\d+) turned away$")
+    ((customers, away),) = matching(out, r"Shop: closes after (\d+) customers, (\d+) turned away$")
     assert int(customers) == 10 and int(away) == len(left)
-    (given,), = matching(out, r"Barber: shop closed, (\d+) haircuts given$")
+    ((given,),) = matching(out, r"Barber: shop closed, (\d+) haircuts given$")
     assert int(given) == len(cuts)
 
 
@@ -87,18 +90,18 @@ def check_eyes_follow_ball(out: str) -> None:
     throws = matching(out, r"Thrower: ball thrown to (-?\d+) degrees$")
     assert [b for b, _ in turns] == [b for (b,) in throws]
     assert all(int(h) == max(-45, min(45, int(b))) for b, h in turns), "the head never turns beyond 45 degrees"
-    (count, last), = matching(out, r"Head turned (\d+) times and looks at (-?\d+) degrees$")
+    ((count, last),) = matching(out, r"Head turned (\d+) times and looks at (-?\d+) degrees$")
     assert int(count) == len(turns) and last == turns[-1][1]
 
 
 def check_move_limbs(out: str) -> None:
     steps = matching(out, r"Walker: step (\d+), leg to (-?\d+), arm to (-?\d+)$")
     assert steps and all(int(leg) == -int(arm) for _, leg, arm in steps), "the arm moves opposite the leg"
-    (taken,), = matching(out, r"Walker: (\d+) steps taken$")
+    ((taken,),) = matching(out, r"Walker: (\d+) steps taken$")
     assert int(taken) == len(steps)
 
 
-CHECKS = {name[len("check_"):]: fn for name, fn in globals().items() if name.startswith("check_")}
+CHECKS = {name[len("check_") :]: fn for name, fn in globals().items() if name.startswith("check_")}
 
 
 def test_every_sample_has_a_check():

@@ -1,5 +1,6 @@
 """Shared by the tests of scoopc/kernel/basic*.py: a fake STRING_8, and `ev`, which builds the
 expression of a built-in with `inline` and evaluates it."""
+
 import ast
 import math
 
@@ -51,8 +52,15 @@ def compiled(cls, feature, count, form):
         else:
             nodes = [ast.Call(_load("once"), [ast.Constant(i), _load(p)], []) for i, p in enumerate(params)]
         expr = B.inline(cls, feature, nodes[0], nodes[1:])
-        args = ast.arguments(posonlyargs=[], args=[ast.arg(a) for a in ["once", "here", *params]], vararg=None,
-                             kwonlyargs=[], kw_defaults=[], kwarg=None, defaults=[])
+        args = ast.arguments(
+            posonlyargs=[],
+            args=[ast.arg(a) for a in ["once", "here", *params]],
+            vararg=None,
+            kwonlyargs=[],
+            kw_defaults=[],
+            kwarg=None,
+            defaults=[],
+        )
         tree = ast.fix_missing_locations(ast.Expression(ast.Lambda(args, expr)))
         fn = _COMPILED[key] = eval(compile(tree, "<test>", "eval"), {"B": B})
     return fn
@@ -70,6 +78,7 @@ def ev(cls, feature, *values, form="name", region="HERE"):
     def once(i, value):
         counter[i] += 1
         return value
+
     result = compiled(cls, feature, len(values), form)(once, region, *values)
     if form == "call":
         lazy = feature in SEMISTRICT
@@ -83,5 +92,3 @@ def same_value(a, b):
     if type(a) is float:
         return (a != a and b != b) or (a == b and math.copysign(1, a) == math.copysign(1, b))
     return a == b
-
-

@@ -1,6 +1,7 @@
 """Fakes for the string tests (test_strings*.py, test_string_*.py): objects laid out as
 codegen_spec.md says (`_region_`, `_s`, ...), fake classes registered as STRING_8, STRING_32,
 IMMUTABLE_STRING_8 and IMMUTABLE_STRING_32 while `registered()` is active."""
+
 import contextlib
 import math
 from pathlib import Path
@@ -14,12 +15,14 @@ GENERAL = {"READABLE_STRING_GENERAL", "COMPARABLE", "PART_COMPARABLE", "HASHABLE
 
 # --- Fakes -----------------------------------------------------------------------------------
 
+
 class Region:
     """Stands for a `scoopc.runtime.Processor`."""
 
 
 class Fake:
     """Binds a few features as codegen does (`name = ext.name`, `property(ext.name)`)."""
+
     count = property(g.count)
     capacity = property(g.capacity)
     hash_code = property(g.hash_code)
@@ -46,20 +49,19 @@ class S32(Fake):
 
 class I8(Fake):
     _key_ = "IMMUTABLE_STRING_8"
-    _conforms_ = frozenset(GENERAL | {"READABLE_STRING_8", "IMMUTABLE_STRING_GENERAL",
-                                      "IMMUTABLE_STRING_8"})
+    _conforms_ = frozenset(GENERAL | {"READABLE_STRING_8", "IMMUTABLE_STRING_GENERAL", "IMMUTABLE_STRING_8"})
     item = immutable_string_8.item
 
 
 class I32(Fake):
     _key_ = "IMMUTABLE_STRING_32"
-    _conforms_ = frozenset(GENERAL | {"READABLE_STRING_32", "IMMUTABLE_STRING_GENERAL",
-                                      "IMMUTABLE_STRING_32"})
+    _conforms_ = frozenset(GENERAL | {"READABLE_STRING_32", "IMMUTABLE_STRING_GENERAL", "IMMUTABLE_STRING_32"})
     item = immutable_string_32.item
 
 
 class MyString(S8):
     """A user descendant of STRING_8."""
+
     _key_ = "MY_STRING"
     _conforms_ = S8._conforms_ | {"MY_STRING"}
     extra = 7
@@ -72,8 +74,7 @@ R = Region()
 def registered():
     """The fake classes registered under the string classes' keys; the registry restored after."""
     saved = dict(kernel.CLASSES)
-    for key, pycls in (("STRING_8", S8), ("STRING_32", S32), ("IMMUTABLE_STRING_8", I8),
-                       ("IMMUTABLE_STRING_32", I32)):
+    for key, pycls in (("STRING_8", S8), ("STRING_32", S32), ("IMMUTABLE_STRING_8", I8), ("IMMUTABLE_STRING_32", I32)):
         kernel.register(key, pycls)
     try:
         yield

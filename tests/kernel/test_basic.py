@@ -2,6 +2,7 @@
 `inline` builds, evaluated, against straightforward references (C's printf and pow through
 ctypes, numpy's float32, table-driven integer arithmetic). Dynamic dispatch and equality:
 test_basic_dispatch.py."""
+
 import ast
 import math
 import re
@@ -25,15 +26,17 @@ NAN, INF = math.nan, math.inf
 
 # --- The feature list: every built-in of stdlib/base/kernel has a template --------------------
 
-DECL = re.compile(r'^\t(?:frozen )?([a-z][a-z0-9_]*(?:, *[a-z][a-z0-9_]*)*)(?: alias "[^"]*")?'
-                  r'(?: \(([^)]*)\))?(?:: ([^=]+?))?\s*$')
+DECL = re.compile(
+    r'^\t(?:frozen )?([a-z][a-z0-9_]*(?:, *[a-z][a-z0-9_]*)*)(?: alias "[^"]*")?'
+    r"(?: \(([^)]*)\))?(?:: ([^=]+?))?\s*$"
+)
 
 
 def declared_builtins(cls):
     """{feature: (arity, result type)} of the `external "built_in"` features of `cls`."""
     found, current = {}, None
     text = (KERNEL / f"{cls.lower()}.e").read_text()
-    for line in text[text.index("\nfeature"):].splitlines():
+    for line in text[text.index("\nfeature") :].splitlines():
         m = DECL.match(line)
         if m:
             args = m.group(2) or ""
@@ -68,12 +71,21 @@ def test_any_builtins_and_unknown_features():
 
 
 SAMPLES = {
-    "int": [-7, 0, 1, 7, 200], "real": [1.5, -2.5, 0.0, -0.0, NAN, INF, 3.0],
-    "BOOLEAN": [True, False], "CHARACTER_8": ["a", "Z", "5", " ", "\xe9", "%"],
-    "CHARACTER_32": ["a", "\xe9", "\u0416", "\u00df", "9"], "POINTER": [0, 4096],
+    "int": [-7, 0, 1, 7, 200],
+    "real": [1.5, -2.5, 0.0, -0.0, NAN, INF, 3.0],
+    "BOOLEAN": [True, False],
+    "CHARACTER_8": ["a", "Z", "5", " ", "\xe9", "%"],
+    "CHARACTER_32": ["a", "\xe9", "\u0416", "\u00df", "9"],
+    "POINTER": [0, 4096],
 }
-PY_TYPES = {"BOOLEAN": bool, "REAL_32": float, "REAL_64": float, "CHARACTER_8": str, "CHARACTER_32": str,
-            "STRING_8": Str}
+PY_TYPES = {
+    "BOOLEAN": bool,
+    "REAL_32": float,
+    "REAL_64": float,
+    "CHARACTER_8": str,
+    "CHARACTER_32": str,
+    "STRING_8": Str,
+}
 
 
 def samples(cls, feature, arity):
@@ -110,6 +122,7 @@ def test_operand_forms_agree_and_results_have_the_declared_type(cls):
 
 
 # --- Integers ------------------------------------------------------------------------------
+
 
 def ref_wrap(x, bits, signed):
     return int.from_bytes((x % (1 << bits)).to_bytes(bits // 8, "little"), "little", signed=signed)
@@ -149,8 +162,14 @@ def test_limits_wrap_around(cls):
 def test_arithmetic_wraps_like_the_reference(cls, data):
     bits, signed = INTEGER_CLASSES[cls]
     a, b = data.draw(values_of(cls)), data.draw(values_of(cls))
-    for feature, exact in (("plus", a + b), ("minus", a - b), ("product", a * b),
-                           ("bit_and", a & b), ("bit_or", a | b), ("bit_xor", a ^ b)):
+    for feature, exact in (
+        ("plus", a + b),
+        ("minus", a - b),
+        ("product", a * b),
+        ("bit_and", a & b),
+        ("bit_or", a | b),
+        ("bit_xor", a ^ b),
+    ):
         assert ev(cls, feature, a, b) == ref_wrap(exact, bits, signed), feature
         assert ev(cls, feature, a, b, form="call") == ref_wrap(exact, bits, signed), feature
     assert ev(cls, "bit_not", a) == ref_wrap(~a, bits, signed)
@@ -164,7 +183,7 @@ def test_arithmetic_wraps_like_the_reference(cls, data):
     assert ev(cls, "three_way_comparison", a, b, form="call") == (a > b) - (a < b)
     assert ev(cls, "max", a, b, form="call") == max(a, b) and ev(cls, "min", a, b) == min(a, b)
     assert ev(cls, "to_double", a) == float(a)
-    assert ev(cls, "to_real_32", a) == float(np.float32(np.int64(a) if a < 2 ** 63 else np.uint64(a)))
+    assert ev(cls, "to_real_32", a) == float(np.float32(np.int64(a) if a < 2**63 else np.uint64(a)))
 
 
 def c_div(a, b):
@@ -172,8 +191,17 @@ def c_div(a, b):
     return q if (a >= 0) == (b > 0) else -q
 
 
-SIGNS = [(7, 2, 3, 1), (-7, 2, -3, -1), (7, -2, -3, 1), (-7, -2, 3, -1), (6, 3, 2, 0), (-6, 3, -2, 0),
-         (1, 7, 0, 1), (-1, 7, 0, -1), (0, -5, 0, 0)]
+SIGNS = [
+    (7, 2, 3, 1),
+    (-7, 2, -3, -1),
+    (7, -2, -3, 1),
+    (-7, -2, 3, -1),
+    (6, 3, 2, 0),
+    (-6, 3, -2, 0),
+    (1, 7, 0, 1),
+    (-1, 7, 0, -1),
+    (0, -5, 0, 0),
+]
 
 
 @pytest.mark.parametrize("cls", [c for c in INTEGER_CLASSES if c.startswith("INTEGER")])
@@ -226,21 +254,23 @@ def test_shifts(cls, data):
 def test_shifts_by_the_whole_width():
     assert ev("INTEGER_32", "bit_shift_right", -5, 32) == -1
     assert ev("INTEGER_32", "bit_shift_left", -5, 32) == 0
-    assert ev("NATURAL_64", "bit_shift_right", 2 ** 64 - 1, 64) == 0
+    assert ev("NATURAL_64", "bit_shift_right", 2**64 - 1, 64) == 0
     assert ev("INTEGER_8", "bit_shift_right", -128, 7) == -1
     assert ev("NATURAL_8", "bit_shift_right", 128, 7) == 1
     assert ev("INTEGER_16", "bit_shift", 1, -15) == -32768
 
 
 def test_integer_conversions_and_queries():
-    assert ev("INTEGER_32", "to_integer_8", 200) == -56            # precondition off: C cast
-    assert ev("INTEGER_64", "to_integer_32", 2 ** 31) == -2 ** 31
+    assert ev("INTEGER_32", "to_integer_8", 200) == -56  # precondition off: C cast
+    assert ev("INTEGER_64", "to_integer_32", 2**31) == -(2**31)
     assert ev("NATURAL_32", "to_integer_32", 4294967295) == -1
     assert ev("INTEGER_8", "to_natural_8", -1) == 255
     assert ev("INTEGER_8", "to_integer_64", -1) == -1
-    assert ev("INTEGER_64", "to_real_32", 2 ** 62 + 2 ** 38 + 1) == float(np.float32(np.int64(2 ** 62 + 2 ** 38 + 1)))  # once, not via double
-    assert ev("NATURAL_64", "to_real_64", 2 ** 64 - 1) == 18446744073709551616.0
-    assert ev("NATURAL_64", "quotient", 2 ** 64 - 1, 2 ** 53 + 1) == float(2 ** 64 - 1) / float(2 ** 53 + 1)
+    assert ev("INTEGER_64", "to_real_32", 2**62 + 2**38 + 1) == float(
+        np.float32(np.int64(2**62 + 2**38 + 1))
+    )  # once, not via double
+    assert ev("NATURAL_64", "to_real_64", 2**64 - 1) == 18446744073709551616.0
+    assert ev("NATURAL_64", "quotient", 2**64 - 1, 2**53 + 1) == float(2**64 - 1) / float(2**53 + 1)
     assert ev("INTEGER_32", "to_character_8", 65) == "A" and ev("INTEGER_32", "to_character_32", 0x416) == "\u0416"
     assert ev("INTEGER_32", "is_valid_character_8_code", 256) is False
     assert ev("INTEGER_32", "is_valid_character_32_code", -1) is False
@@ -258,7 +288,7 @@ def test_integer_conversions_and_queries():
     assert ev("INTEGER_32", "divisible", 3, 0) is False
     assert ev("INTEGER_32", "one", 5) == 1 and ev("NATURAL_8", "zero", 5, form="call") == 0
     assert ev("INTEGER_64", "hash_code", -2) == 0x7FFFFFFE and ev("INTEGER_8", "hash_code", -1) == 0x7FFFFFFF
-    assert ev("NATURAL_64", "hash_code", 2 ** 64 - 1) == 0x7FFFFFFF
+    assert ev("NATURAL_64", "hash_code", 2**64 - 1) == 0x7FFFFFFF
 
 
 @pytest.mark.parametrize("cls", list(INTEGER_CLASSES))
@@ -286,24 +316,43 @@ def test_interval_creates_an_integer_interval(monkeypatch):
     region = Region()
     r = ev("INTEGER_8", "interval", -3, 4, region=region)
     assert (type(r), r.lower, r.upper, r._region_) == (Interval, -3, 4, region)
-    assert ev("INTEGER_64", "interval", 2 ** 32 + 5, 9, region=region).lower == 5
+    assert ev("INTEGER_64", "interval", 2**32 + 5, 9, region=region).lower == 5
 
 
-@given(st.lists(st.integers(-2 ** 31, 2 ** 31 - 1), min_size=4, max_size=4))
+@given(st.lists(st.integers(-(2**31), 2**31 - 1), min_size=4, max_size=4))
 def test_nested_signed_arithmetic_shares_its_temporary_safely(v):
     """(a + b) * (c - d) + -a: every `_t` is read right after it is set."""
+
     def node(i):
         return ast.Name(f"v{i}", ast.Load())
+
     left = B.inline("INTEGER_32", "plus", node(0), [node(1)])
     right = B.inline("INTEGER_32", "minus", node(2), [node(3)])
-    expr = B.inline("INTEGER_32", "plus", B.inline("INTEGER_32", "product", left, [right]),
-                    [B.inline("INTEGER_32", "opposite", node(0), [])])
-    tree = ast.fix_missing_locations(ast.Expression(ast.Lambda(
-        ast.arguments(posonlyargs=[], args=[ast.arg(f"v{i}") for i in range(4)], vararg=None, kwonlyargs=[],
-                      kw_defaults=[], kwarg=None, defaults=[]), expr)))
+    expr = B.inline(
+        "INTEGER_32",
+        "plus",
+        B.inline("INTEGER_32", "product", left, [right]),
+        [B.inline("INTEGER_32", "opposite", node(0), [])],
+    )
+    tree = ast.fix_missing_locations(
+        ast.Expression(
+            ast.Lambda(
+                ast.arguments(
+                    posonlyargs=[],
+                    args=[ast.arg(f"v{i}") for i in range(4)],
+                    vararg=None,
+                    kwonlyargs=[],
+                    kw_defaults=[],
+                    kwarg=None,
+                    defaults=[],
+                ),
+                expr,
+            )
+        )
+    )
     fn = eval(compile(tree, "<t>", "eval"), {"B": B})
     a, b, c, d = v
     assert fn(a, b, c, d) == ref_wrap((a + b) * (c - d) - a, 32, True)
-    assert ev("INTEGER_64", "plus", 2 ** 63 - 1, 1) == -2 ** 63
+    assert ev("INTEGER_64", "plus", 2**63 - 1, 1) == -(2**63)
     assert ev("INTEGER_16", "minus", -32768, 1, form="const") == 32767
     assert ev("INTEGER_8", "plus", -128, -1, form="const") == 127

@@ -1,6 +1,7 @@
 """CHARACTER_8/32, BOOLEAN and POINTER built-ins, the dynamic dispatch on Python values and on
 objects (`call`, `query`, `call_as`), and Eiffel `=` / `~` (`same`, `equal`) of
 scoopc/kernel/basic.py."""
+
 import ast
 import math
 import struct
@@ -35,10 +36,17 @@ def elks_flags(code):
 
 
 PROPERTIES = {
-    "is_alpha": UPPER | LOWER, "is_upper": UPPER, "is_lower": LOWER, "is_digit": DIGIT,
-    "is_hexa_digit": HEXA | DIGIT, "is_space": WHITE, "is_punctuation": PUNCT,
-    "is_alpha_numeric": UPPER | LOWER | DIGIT, "is_printable": UPPER | LOWER | DIGIT | PUNCT | SPACE,
-    "is_graph": UPPER | LOWER | DIGIT | PUNCT, "is_control": CONTROL,
+    "is_alpha": UPPER | LOWER,
+    "is_upper": UPPER,
+    "is_lower": LOWER,
+    "is_digit": DIGIT,
+    "is_hexa_digit": HEXA | DIGIT,
+    "is_space": WHITE,
+    "is_punctuation": PUNCT,
+    "is_alpha_numeric": UPPER | LOWER | DIGIT,
+    "is_printable": UPPER | LOWER | DIGIT | PUNCT | SPACE,
+    "is_graph": UPPER | LOWER | DIGIT | PUNCT,
+    "is_control": CONTROL,
 }
 
 
@@ -57,7 +65,7 @@ def test_character_8_classification_is_the_elks_table():
 
 def test_character_operations():
     assert ev("CHARACTER_8", "plus", "a", 2) == "c" and ev("CHARACTER_8", "minus", "c", 2) == "a"
-    assert ev("CHARACTER_8", "next", "\xff") == "\x00"                     # C cast to unsigned char
+    assert ev("CHARACTER_8", "next", "\xff") == "\x00"  # C cast to unsigned char
     assert ev("CHARACTER_8", "previous", "b", form="call") == "a"
     assert ev("CHARACTER_8", "difference", "a", "c") == -2
     assert ev("CHARACTER_32", "plus", "\u0416", 1) == "\u0417" and ev("CHARACTER_32", "next", "\xff") == "\u0100"
@@ -66,35 +74,66 @@ def test_character_operations():
     assert ev("CHARACTER_32", "max", "a", "\u0416") == "\u0416" and ev("CHARACTER_8", "min", "a", "B") == "B"
     assert ev("CHARACTER_8", "is_less", "A", "a") is True and ev("CHARACTER_8", "is_equal", "a", "a") is True
     assert ev("CHARACTER_8", "to_character_32", "\xe9") == "\xe9"
-    assert ev("CHARACTER_32", "to_character_8", "\u0141") == "A"            # C cast: low 8 bits
-    assert ev("CHARACTER_32", "natural_32_code", "\U0001F600") == 0x1F600
+    assert ev("CHARACTER_32", "to_character_8", "\u0141") == "A"  # C cast: low 8 bits
+    assert ev("CHARACTER_32", "natural_32_code", "\U0001f600") == 0x1F600
     assert ev("CHARACTER_32", "is_character_8", "\xff") and not ev("CHARACTER_32", "is_character_8", "\u0100")
 
 
-@pytest.mark.parametrize("c, text", [("a", "a"), ("~", "~"), ("\x7f", "\x7f"), ("\x80", "U+0080"), ("\xe9", "U+00E9"),
-                                     ("\u0416", "U+0416"), ("\U0001F600", "U+1F600"), ("\U0010FFFF", "U+10FFFF")])
+@pytest.mark.parametrize(
+    "c, text",
+    [
+        ("a", "a"),
+        ("~", "~"),
+        ("\x7f", "\x7f"),
+        ("\x80", "U+0080"),
+        ("\xe9", "U+00E9"),
+        ("\u0416", "U+0416"),
+        ("\U0001f600", "U+1F600"),
+        ("\U0010ffff", "U+10FFFF"),
+    ],
+)
 def test_character_32_out(c, text):
-    assert ev("CHARACTER_32", "out", c).text == text          # out.c eif_out__c4_s1
+    assert ev("CHARACTER_32", "out", c).text == text  # out.c eif_out__c4_s1
 
 
 def test_character_32_classification_is_unicode():
-    yes = {"is_alpha": "a\u0416\u00df\u4e2d", "is_upper": "A\u0416", "is_lower": "a\u0436\u00df",
-           "is_digit": "09", "is_hexa_digit": "0aF", "is_space": " \t\n\xa0\u2028\u3000",
-           "is_punctuation": "!,\u00bf\u3001", "is_alpha_numeric": "a5\u0663\u0416", "is_printable": "a \xa0\u0416",
-           "is_graph": "a\u0416!", "is_control": "\x00\x1f\x85"}
-    no = {"is_alpha": "5 _", "is_upper": "a\u01c5", "is_lower": "A", "is_digit": "\u0663a", "is_hexa_digit": "g\uff21",
-          "is_space": "a\u200b", "is_punctuation": "+$a", "is_alpha_numeric": "_ ", "is_printable": "\x00\u200b\u2028",
-          "is_graph": " \xa0\x00", "is_control": "a\u200b"}
+    yes = {
+        "is_alpha": "a\u0416\u00df\u4e2d",
+        "is_upper": "A\u0416",
+        "is_lower": "a\u0436\u00df",
+        "is_digit": "09",
+        "is_hexa_digit": "0aF",
+        "is_space": " \t\n\xa0\u2028\u3000",
+        "is_punctuation": "!,\u00bf\u3001",
+        "is_alpha_numeric": "a5\u0663\u0416",
+        "is_printable": "a \xa0\u0416",
+        "is_graph": "a\u0416!",
+        "is_control": "\x00\x1f\x85",
+    }
+    no = {
+        "is_alpha": "5 _",
+        "is_upper": "a\u01c5",
+        "is_lower": "A",
+        "is_digit": "\u0663a",
+        "is_hexa_digit": "g\uff21",
+        "is_space": "a\u200b",
+        "is_punctuation": "+$a",
+        "is_alpha_numeric": "_ ",
+        "is_printable": "\x00\u200b\u2028",
+        "is_graph": " \xa0\x00",
+        "is_control": "a\u200b",
+    }
     for feature, chars in yes.items():
         assert all(ev("CHARACTER_32", feature, c) for c in chars), feature
     for feature, chars in no.items():
         assert not any(ev("CHARACTER_32", feature, c) for c in chars), feature
     assert ev("CHARACTER_32", "as_upper", "\u0436") == "\u0416" and ev("CHARACTER_32", "lower", "\u0416") == "\u0436"
-    assert ev("CHARACTER_32", "as_upper", "\u00df") == "\u00df"                 # "SS" is not one character
-    assert ev("CHARACTER_32", "hash_code", "\U0001F600") == 0x1F600
+    assert ev("CHARACTER_32", "as_upper", "\u00df") == "\u00df"  # "SS" is not one character
+    assert ev("CHARACTER_32", "hash_code", "\U0001f600") == 0x1F600
 
 
 # --- BOOLEAN, POINTER -----------------------------------------------------------------------
+
 
 def boolean(feature, left, right_node):
     expr = B.inline("BOOLEAN", feature, ast.Constant(left), [right_node])
@@ -128,20 +167,26 @@ def test_semistrict_operators_short_circuit():
     assert boolean("conjuncted_semistrict", False, BOOM) is False
     assert boolean("disjuncted_semistrict", True, BOOM) is True
     assert boolean("implication", False, BOOM) is True
-    for strict, left in (("conjuncted", False), ("disjuncted", True), ("disjuncted_exclusive", True),
-                         ("conjuncted_semistrict", True), ("implication", True)):
+    for strict, left in (
+        ("conjuncted", False),
+        ("disjuncted", True),
+        ("disjuncted_exclusive", True),
+        ("conjuncted_semistrict", True),
+        ("implication", True),
+    ):
         with pytest.raises(RuntimeError):
             boolean(strict, left, BOOM)
 
 
 def test_pointer():
-    assert ev("POINTER", "out", 0).text == "0x0" and ev("POINTER", "out", 0xdeadbeef).text == "0xDEADBEEF"
+    assert ev("POINTER", "out", 0).text == "0x0" and ev("POINTER", "out", 0xDEADBEEF).text == "0xDEADBEEF"
     assert ev("POINTER", "plus", 4096, 8) == 4104 and ev("POINTER", "is_default_pointer", 0) is True
-    assert ev("POINTER", "to_integer_32", 2 ** 32 + 7) == 7 and ev("POINTER", "hash_code", 2 ** 40 + 5) == 5
+    assert ev("POINTER", "to_integer_32", 2**32 + 7) == 7 and ev("POINTER", "hash_code", 2**40 + 5) == 5
     assert ev("POINTER", "is_hashable", 0) is False and ev("POINTER", "is_equal", 3, 3) is True
 
 
 # --- Dynamic dispatch -------------------------------------------------------------------------
+
 
 class Region:
     def __init__(self):
@@ -163,7 +208,7 @@ class Obj:
 
 def test_call_and_query_on_values():
     assert B.call(5, "plus", (3,)) == 8 and B.call(2147483647, "plus", (1,)) == -2147483648
-    assert B.call(7, "quotient", (2,)) == 3 and B.call(-7, "quotient", (2,)) == -3    # NUMERIC's `/` on INTEGER
+    assert B.call(7, "quotient", (2,)) == 3 and B.call(-7, "quotient", (2,)) == -3  # NUMERIC's `/` on INTEGER
     assert B.call(-7, "integer_remainder", (2,)) == -1
     assert B.call(1.5, "quotient", (0.0,)) == INF and B.call(1.5, "opposite") == -1.5
     assert B.call(NAN, "is_less", (1.0,)) is True and B.call("a", "max", ("b",)) == "b"
@@ -174,10 +219,19 @@ def test_call_and_query_on_values():
     assert B.query("a", "is_hashable") is True
 
 
-@pytest.mark.parametrize("value, text, generator", [
-    (5, "5", "INTEGER_32"), (-2.5, "-2.5", "REAL_64"), (0.1, "0.10000000000000001", "REAL_64"),
-    (True, "True", "BOOLEAN"), (False, "False", "BOOLEAN"), ("a", "a", "CHARACTER_8"),
-    ("\xe9", "\xe9", "CHARACTER_8"), ("\u0416", "U+0416", "CHARACTER_32")])
+@pytest.mark.parametrize(
+    "value, text, generator",
+    [
+        (5, "5", "INTEGER_32"),
+        (-2.5, "-2.5", "REAL_64"),
+        (0.1, "0.10000000000000001", "REAL_64"),
+        (True, "True", "BOOLEAN"),
+        (False, "False", "BOOLEAN"),
+        ("a", "a", "CHARACTER_8"),
+        ("\xe9", "\xe9", "CHARACTER_8"),
+        ("\u0416", "U+0416", "CHARACTER_32"),
+    ],
+)
 def test_any_features_of_values(value, text, generator):
     region = Region()
     for name in ("out", "tagged_out", "debug_output"):
@@ -204,6 +258,7 @@ def test_types_of_values():
 
 def test_generating_type_is_the_type_object_of_the_basic_class(monkeypatch):
     from scoopc.kernel import support
+
     monkeypatch.setattr(support, "type_object", lambda region, desc: ("TYPE", region, desc.name))
     assert B.query(5, "generating_type", "R") == ("TYPE", "R", "INTEGER_32")
     assert B.query(0.5, "generating_type", "R")[2] == "REAL_64"
@@ -215,7 +270,7 @@ def test_call_as_a_known_basic_class():
     assert B.query_as("REAL_32", single, "out").text == "0.1"
     assert B.query(single, "out").text == "0.10000000149011612"
     assert B.call_as("NATURAL_8", 255, "plus", (1,)) == 0 and B.call_as("NATURAL_8", 5, "opposite") == 5
-    assert B.query_as("INTEGER_64", 2 ** 40, "out").text == "1099511627776"
+    assert B.query_as("INTEGER_64", 2**40, "out").text == "1099511627776"
 
 
 def test_call_and_query_on_objects():
@@ -234,10 +289,18 @@ def test_equal_through_a_value_target():
     assert B.call(0, "standard_equal", (1, 1.0)) is False and B.call("a", "deep_equal", (Obj(), None)) is False
 
 
-@given(st.integers(-2 ** 31, 2 ** 31 - 1), st.integers(-2 ** 31, 2 ** 31 - 1))
+@given(st.integers(-(2**31), 2**31 - 1), st.integers(-(2**31), 2**31 - 1))
 def test_dispatch_agrees_with_inline(a, b):
-    for feature in ("plus", "minus", "product", "is_less", "is_greater_equal", "max", "three_way_comparison",
-                    "bit_xor"):
+    for feature in (
+        "plus",
+        "minus",
+        "product",
+        "is_less",
+        "is_greater_equal",
+        "max",
+        "three_way_comparison",
+        "bit_xor",
+    ):
         assert B.call(a, feature, (b,)) == ev("INTEGER_32", feature, a, b)
     if b:
         assert B.call(a, "quotient", (b,)) == ev("INTEGER_32", "integer_quotient", a, b)
@@ -250,6 +313,7 @@ def test_real_dispatch_agrees_with_inline(a, b):
 
 
 # --- Eiffel `=` and `~` ---------------------------------------------------------------------
+
 
 class Point:
     _expanded_ = False
@@ -283,5 +347,5 @@ def test_equal_is_object_equality():
     assert B.equal(1, 1) and not B.equal(1, 1.0) and not B.equal(True, 1) and B.equal(NAN, NAN)
     p, q = Point(1), Point(1)
     assert B.equal(p, q) and p.compared == 1
-    assert not B.equal(Point(1), Exp(1))                     # different dynamic types: is_equal not called
+    assert not B.equal(Point(1), Exp(1))  # different dynamic types: is_equal not called
     assert not B.equal(Point(1), Point(2))

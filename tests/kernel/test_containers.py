@@ -1,6 +1,7 @@
 """The `external "Python"` features of SPECIAL and TUPLE (scoopc/kernel/ext/special.py, tuple.py)
 and scoopc/kernel/tuples.py, called directly on fake objects laid out as codegen_spec.md says.
 The agent classes' are in test_agents.py."""
+
 import pytest
 
 import scoopc.kernel as kernel
@@ -8,6 +9,7 @@ from scoopc.kernel import tuples, types
 from scoopc.kernel.ext import special, tuple as tup
 
 # --- Fakes ---------------------------------------------------------------------------------
+
 
 class Region:
     """Stands for a `scoopc.runtime.Processor`."""
@@ -87,6 +89,7 @@ def new_tuple(region, items, gen=()):
 
 # --- SPECIAL -------------------------------------------------------------------------------
 
+
 def test_make_empty(region):
     s = new_special(region, 5)
     assert (s.count, s.capacity, s._items) == (0, 5, [])
@@ -101,9 +104,9 @@ def test_extend_item_put(region):
     special.extend(s, 30)
     assert s._items == [10, 7, 30] and s.count == 3
     with pytest.raises(IndexError):
-        special.extend(s, 40)                   # full
+        special.extend(s, 40)  # full
     with pytest.raises(IndexError):
-        special.item(s, -1)                     # not Python's item from the end
+        special.item(s, -1)  # not Python's item from the end
     with pytest.raises(IndexError):
         special.put(s, 1, -1)
     with pytest.raises(IndexError):
@@ -114,17 +117,17 @@ def test_fill_with(region):
     s = new_special(region, 6, items=[1, 2, 3])
     special.fill_with(s, 9, 1, 1)
     assert s._items == [1, 9, 3]
-    special.fill_with(s, 5, 2, 4)               # past count: count grows to end + 1
+    special.fill_with(s, 5, 2, 4)  # past count: count grows to end + 1
     assert s._items == [1, 9, 5, 5, 5]
-    special.fill_with(s, 0, 5, 4)               # empty range
+    special.fill_with(s, 0, 5, 4)  # empty range
     assert s.count == 5
-    special.fill_with(s, 8, 5, 5)               # starting at count
+    special.fill_with(s, 8, 5, 5)  # starting at count
     assert s._items == [1, 9, 5, 5, 5, 8]
     with pytest.raises(IndexError):
-        special.fill_with(s, 0, 0, 6)           # beyond capacity
+        special.fill_with(s, 0, 0, 6)  # beyond capacity
     t = new_special(region, 6, items=[1])
     with pytest.raises(IndexError):
-        special.fill_with(t, 0, 2, 3)           # start beyond count
+        special.fill_with(t, 0, 2, 3)  # start beyond count
     with pytest.raises(IndexError):
         special.fill_with_default(t, 2, 3)
 
@@ -148,36 +151,36 @@ def test_fill_with_default_expanded_fresh_objects(region):
     gen = Desc("POINT", factory=make)
     s = new_special(region, 3, gen=gen)
     special.fill_with_default(s, 0, 2)
-    assert len(calls) == 3 and gen.regions == [region] * 3     # made in the SPECIAL's region
+    assert len(calls) == 3 and gen.regions == [region] * 3  # made in the SPECIAL's region
     assert len({id(p) for p in s._items}) == 3  # one object per slot
-    special.fill_with_default(s, 1, 0)          # empty range: no default asked
+    special.fill_with_default(s, 1, 0)  # empty range: no default asked
     assert len(calls) == 3
 
 
 def test_copy_data(region):
     src = new_special(region, 5, items=[1, 2, 3, 4, 5])
     dst = new_special(region, 6, items=[0, 0])
-    special.copy_data(dst, src, 1, 1, 3)        # extends the count
+    special.copy_data(dst, src, 1, 1, 3)  # extends the count
     assert dst._items == [0, 2, 3, 4]
-    special.copy_data(dst, src, 0, 0, 2)        # inside the count
+    special.copy_data(dst, src, 0, 0, 2)  # inside the count
     assert dst._items == [1, 2, 3, 4]
-    special.copy_data(dst, src, 0, 4, 0)        # nothing
+    special.copy_data(dst, src, 0, 4, 0)  # nothing
     assert dst.count == 4
     with pytest.raises(IndexError):
-        special.copy_data(dst, src, 0, 3, 4)    # beyond capacity
+        special.copy_data(dst, src, 0, 3, 4)  # beyond capacity
     with pytest.raises(IndexError):
-        special.copy_data(dst, src, 3, 0, 3)    # beyond the source's count
+        special.copy_data(dst, src, 3, 0, 3)  # beyond the source's count
     with pytest.raises(IndexError):
-        special.copy_data(dst, src, 0, 5, 1)    # destination beyond count
+        special.copy_data(dst, src, 0, 5, 1)  # destination beyond count
 
 
 def test_move_data_overlapping(region):
     s = new_special(region, 8, items=[1, 2, 3, 4, 5])
-    special.move_data(s, 0, 2, 4)               # forward overlap, extends count
+    special.move_data(s, 0, 2, 4)  # forward overlap, extends count
     assert s._items == [1, 2, 1, 2, 3, 4]
-    special.move_data(s, 2, 0, 4)               # backward overlap
+    special.move_data(s, 2, 0, 4)  # backward overlap
     assert s._items == [1, 2, 3, 4, 3, 4]
-    special.move_data(s, 0, 6, 2)               # to the end
+    special.move_data(s, 0, 6, 2)  # to the end
     assert s._items == [1, 2, 3, 4, 3, 4, 1, 2]
 
 
@@ -205,7 +208,7 @@ def test_resized_area(region):
     assert bigger._region_ is region and bigger._gen_ == (gen,)
     assert (bigger.count, bigger.capacity, bigger._items) == (3, 10, ["a", "b", "c"])
     special.put(bigger, "z", 0)
-    assert s._items == ["a", "b", "c"]          # storage of its own
+    assert s._items == ["a", "b", "c"]  # storage of its own
     with pytest.raises(ValueError):
         special.resized_area(s, -1)
     with pytest.raises(ValueError):
@@ -232,18 +235,19 @@ def test_wipe_out(region):
 def test_special_copy(region):
     s = new_special(region, 4, items=[1, 2])
     other_region = Region()
-    t = Special.__new__(Special)                # as `twin` makes it: only `_region_`
+    t = Special.__new__(Special)  # as `twin` makes it: only `_region_`
     t._region_ = other_region
     special.copy(t, s)
     assert (t._items, t.capacity, t._gen_) == ([1, 2], 4, s._gen_)
     assert t._items is not s._items and t._region_ is other_region
     special.extend(t, 3)
     assert s.count == 2
-    special.copy(s, s)                          # copying itself changes nothing
+    special.copy(s, s)  # copying itself changes nothing
     assert s._items == [1, 2]
 
 
 # --- TUPLE ---------------------------------------------------------------------------------
+
 
 def test_new_tuple(registry, region):
     items = [1, "x"]
@@ -256,7 +260,7 @@ def test_new_tuple(registry, region):
 def test_items_of(registry, region):
     assert tuples.items_of(None) == ()
     assert tuples.items_of((1, 2)) == (1, 2)
-    t = Tuple.__new__(Tuple)                    # `create t` (default_create): no host storage
+    t = Tuple.__new__(Tuple)  # `create t` (default_create): no host storage
     t._region_, t._gen_ = region, (INT, STRING, Desc("BOOLEAN", default=False))
     assert tuples.items_of(t) == [0, None, False]
     assert t.count == 3
@@ -290,10 +294,26 @@ def test_tuple_item_put_count(registry, region):
         tup.item(t, 4)
 
 
-KEYS_AND_CODES = [("ANY", 0), ("STRING_8", 0), ("CELL@BASE", 0), ("BOOLEAN", 1), ("CHARACTER_8", 2),
-                  ("REAL_64", 3), ("REAL_32", 4), ("POINTER", 5), ("INTEGER_8", 6), ("INTEGER_16", 7),
-                  ("INTEGER_32", 8), ("INTEGER_64", 9), ("NATURAL_8", 10), ("NATURAL_16", 11),
-                  ("NATURAL_32", 12), ("NATURAL_64", 13), ("CHARACTER_32", 14), ("INTEGER_32@BASE", 8)]
+KEYS_AND_CODES = [
+    ("ANY", 0),
+    ("STRING_8", 0),
+    ("CELL@BASE", 0),
+    ("BOOLEAN", 1),
+    ("CHARACTER_8", 2),
+    ("REAL_64", 3),
+    ("REAL_32", 4),
+    ("POINTER", 5),
+    ("INTEGER_8", 6),
+    ("INTEGER_16", 7),
+    ("INTEGER_32", 8),
+    ("INTEGER_64", 9),
+    ("NATURAL_8", 10),
+    ("NATURAL_16", 11),
+    ("NATURAL_32", 12),
+    ("NATURAL_64", 13),
+    ("CHARACTER_32", 14),
+    ("INTEGER_32@BASE", 8),
+]
 
 
 @pytest.mark.parametrize("key, code", KEYS_AND_CODES)
@@ -303,35 +323,44 @@ def test_item_code_from_declared_type(registry, region, key, code):
 
 
 def test_item_code_from_value_when_type_unknown(registry, region):
-    t = new_tuple(region, [True, 3, 2 ** 40, 1.5, "a", "\u0394", "ab", None, Str("s")], ())
+    t = new_tuple(region, [True, 3, 2**40, 1.5, "a", "\u0394", "ab", None, Str("s")], ())
     assert [tup.item_code(t, i) for i in range(1, 10)] == [1, 8, 9, 3, 2, 14, 0, 0, 0]
-    t = new_tuple(region, [1, 2], (Desc("INTEGER_64"),))   # `_gen_` shorter than the tuple
+    t = new_tuple(region, [1, 2], (Desc("INTEGER_64"),))  # `_gen_` shorter than the tuple
     assert (tup.item_code(t, 1), tup.item_code(t, 2)) == (9, 8)
     with pytest.raises(IndexError):
         tup.item_code(t, 3)
 
 
 def test_valid_type_for_index(registry, region):
-    gen = (Desc("INTEGER_32"), Desc("NATURAL_8"), Desc("BOOLEAN"), Desc("REAL_64"),
-           Desc("CHARACTER_8"), Desc("CHARACTER_32"), STRING, ANY_D, Desc("POINTER"))
+    gen = (
+        Desc("INTEGER_32"),
+        Desc("NATURAL_8"),
+        Desc("BOOLEAN"),
+        Desc("REAL_64"),
+        Desc("CHARACTER_8"),
+        Desc("CHARACTER_32"),
+        STRING,
+        ANY_D,
+        Desc("POINTER"),
+    )
     t = new_tuple(region, [d.default() for d in gen], gen)
     ok = tup.valid_type_for_index
     assert ok(t, 5, 1) and not ok(t, True, 1) and not ok(t, "5", 1) and not ok(t, None, 1)
-    assert not ok(t, 2 ** 31, 1) and ok(t, -2 ** 31, 1)
+    assert not ok(t, 2**31, 1) and ok(t, -(2**31), 1)
     assert ok(t, 255, 2) and not ok(t, 256, 2) and not ok(t, -1, 2)
     assert ok(t, False, 3) and not ok(t, 0, 3)
     assert ok(t, 1.5, 4) and ok(t, 1, 4) and not ok(t, True, 4) and not ok(t, "1", 4)
     assert ok(t, "a", 5) and not ok(t, "\u0394", 5) and not ok(t, "ab", 5)
     assert ok(t, "\u0394", 6) and not ok(t, 65, 6)
-    assert ok(t, Str("s"), 7) and not ok(t, None, 7)     # attached reference: Void refused
-    assert ok(t, None, 8) and ok(t, 3, 8)                # detachable ANY: anything
+    assert ok(t, Str("s"), 7) and not ok(t, None, 7)  # attached reference: Void refused
+    assert ok(t, None, 8) and ok(t, 3, 8)  # detachable ANY: anything
     assert ok(t, 12345, 9) and not ok(t, None, 9)
     u = new_tuple(region, [1, 2], (INT,))
-    assert ok(u, "anything", 2)                          # type not known: accepted
+    assert ok(u, "anything", 2)  # type not known: accepted
 
 
 def test_type_code_helpers():
-    assert tup.type_code(object()) == 0           # no key: a reference
+    assert tup.type_code(object()) == 0  # no key: a reference
     assert tup.value_fits(None, None) and tup.value_fits(None, "anything")
 
 
@@ -345,6 +374,7 @@ def test_object_comparison(registry, region):
 
 
 # --- With the real TypeDesc (scoopc/kernel/types.py) ---------------------------------------
+
 
 def test_real_typedesc_defaults(registry, region):
     s = new_special(region, 3, gen=types.t("REAL_64"))

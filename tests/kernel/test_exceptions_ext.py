@@ -1,4 +1,5 @@
 """EXCEPTION.raise, EXCEPTION_MANAGER (per-region state), EXCEPTIONS.die."""
+
 import pytest
 
 from scoopc import kernel
@@ -64,7 +65,7 @@ def test_failure_builds_a_predefined_exception(classes):
             self.description = d
 
     classes["STRING_32"] = STRING_32
-    classes["IO_FAILURE@BASE"] = IO_FAILURE                  # found by its class name too
+    classes["IO_FAILURE@BASE"] = IO_FAILURE  # found by its class name too
     region = Region()
     err = exception.failure(region, "IO_FAILURE", "disk full")
     assert isinstance(err, EiffelFailure) and type(err.exception) is IO_FAILURE
@@ -79,8 +80,8 @@ def test_ignore_and_catch_are_per_region_and_per_exact_type():
     dev = TY.t("DEVELOPER_EXCEPTION")
     dev_detachable = TY.t("DEVELOPER_EXCEPTION", (), False)
     assert not EM.is_ignored(m1, dev)
-    EM.ignore(m1, type_object(dev))                            # a TYPE object ...
-    assert EM.is_ignored(m1, dev) and EM.is_ignored(m1, dev_detachable)   # ... or a TypeDesc
+    EM.ignore(m1, type_object(dev))  # a TYPE object ...
+    assert EM.is_ignored(m1, dev) and EM.is_ignored(m1, dev_detachable)  # ... or a TypeDesc
     assert not EM.is_ignored(m2, dev)
     assert not EM.is_ignored(m1, TY.t("EXC"))
     assert EM.exception_is_ignored(r1, DEVELOPER_EXCEPTION()) and not EM.exception_is_ignored(r2, DEVELOPER_EXCEPTION())
@@ -95,11 +96,11 @@ def test_last_exception(monkeypatch):
     assert EM.last_exception(m) is None
     e = Obj(region)
     monkeypatch.setattr(support, "last_caught", lambda here: EiffelFailure(e) if here is region else None)
-    assert EM.last_exception(m) is e                            # recorded by the rescue clause
+    assert EM.last_exception(m) is e  # recorded by the rescue clause
     monkeypatch.setattr(support, "last_caught", lambda here: ValueError("host"))
     assert EM.last_exception(m) is None
     other = Obj(region)
-    EM.set_last_exception(region, other)                        # recorded by the runtime
+    EM.set_last_exception(region, other)  # recorded by the runtime
     assert EM.last_exception(m) is other
     EM.set_last_exception(region, None)
     assert EM.last_exception(Obj(Region())) is None

@@ -1,5 +1,6 @@
 """Host-service externals: DOUBLE_MATH, SINGLE_MATH, PLATFORM, MEMORY, ISE_SCOOP_RUNTIME,
 ARGUMENTS, ARGUMENTS_32, EXECUTION_ENVIRONMENT, OPERATING_ENVIRONMENT, C_DATE, TIME."""
+
 import calendar
 import gc
 import math
@@ -62,6 +63,7 @@ def single(x):
 
 # --- math ----------------------------------------------------------------------------------
 
+
 def test_double_math_is_libm(cur):
     assert D.cosine(cur, 0.5) == math.cos(0.5) and D.sine(cur, 1.0) == math.sin(1.0)
     assert D.tangent(cur, 0.3) == math.tan(0.3) and D.arc_tangent(cur, 2.0) == math.atan(2.0)
@@ -77,7 +79,7 @@ def test_double_math_gives_c_special_values_instead_of_python_errors(cur):
     assert D.log(cur, 0.0) == -math.inf and math.isnan(D.log10(cur, -1.0))
     assert D.exp(cur, 1000.0) == math.inf and math.isnan(D.cosine(cur, math.inf))
     assert D.floor(cur, math.inf) == math.inf and math.isnan(D.ceiling(cur, math.nan))
-    assert math.copysign(1.0, D.ceiling(cur, -0.5)) == -1.0      # C's ceil (-0.5) is -0.0
+    assert math.copysign(1.0, D.ceiling(cur, -0.5)) == -1.0  # C's ceil (-0.5) is -0.0
 
 
 def test_single_math_computes_in_double_and_rounds(cur):
@@ -91,12 +93,13 @@ def test_single_math_computes_in_double_and_rounds(cur):
 
 # --- platform, memory, runtime -----------------------------------------------------------------
 
+
 def test_platform(cur):
     assert platform.is_windows(cur) == (os.name == "nt")
     assert platform.is_unix(cur) != platform.is_windows(cur)
     assert platform.is_mac(cur) == (sys.platform == "darwin")
     assert platform.is_little_endian(cur) == (sys.byteorder == "little")
-    assert platform.is_64_bits(cur) == (sys.maxsize > 2 ** 32)
+    assert platform.is_64_bits(cur) == (sys.maxsize > 2**32)
     assert operating_environment.directory_separator(cur) == os.sep
     assert operating_environment.case_sensitive_path_names(cur) == (os.name != "nt")
 
@@ -117,13 +120,14 @@ def test_memory(cur):
 
 def test_region_id(cur):
     other = Obj(Region(5))
-    assert ise_scoop_runtime.region_id(cur, cur) == 0          # the root region is 0
+    assert ise_scoop_runtime.region_id(cur, cur) == 0  # the root region is 0
     assert ise_scoop_runtime.region_id(cur, other) == 4
-    assert ise_scoop_runtime.region_id(cur, 3) == 0             # a value: the caller's region
-    assert ise_scoop_runtime.region_id(cur, Obj(Region(0x10000))) == 0     # wraps short of 0xFFFF
+    assert ise_scoop_runtime.region_id(cur, 3) == 0  # a value: the caller's region
+    assert ise_scoop_runtime.region_id(cur, Obj(Region(0x10000))) == 0  # wraps short of 0xFFFF
 
 
 # --- arguments ---------------------------------------------------------------------------------
+
 
 def test_arguments(cur):
     saved = list(arguments.PROGRAM)
@@ -149,6 +153,7 @@ def check_arguments(cur):
 
 
 # --- execution environment --------------------------------------------------------------------
+
 
 def test_environment_variables(cur, monkeypatch):
     monkeypatch.delenv("SCOOPC_TEST_VAR", raising=False)
@@ -198,6 +203,7 @@ def test_system_and_launch(cur, tmp_path):
 
 # --- C_DATE and TIME ---------------------------------------------------------------------------
 
+
 def test_c_date_fields(cur):
     ts = calendar.timegm((2024, 1, 5, 15, 7, 9)) + 0.123456
     assert [c_date.field(cur, ts, True, i) for i in range(1, 8)] == [2024, 1, 5, 15, 7, 9, 123]
@@ -216,7 +222,7 @@ def test_c_date_and_time_read_the_wall_clock(cur):
     t = pytime.time()
     expected = t % 86400
     assert 0 <= secs < 86400 and (abs(secs - expected) < 2 or abs(secs - expected) > 86398)
-    assert round(secs * 1000) == pytest.approx(secs * 1000, abs=1e-6)    # milliseconds
+    assert round(secs * 1000) == pytest.approx(secs * 1000, abs=1e-6)  # milliseconds
 
 
 def test_virtual_clock_moves_c_date_and_time():
@@ -225,7 +231,7 @@ def test_virtual_clock_moves_c_date_and_time():
         probe = Obj(root)
         t0 = c_date.current_timestamp(probe)
         s0 = T.fine_seconds_now(probe, True)
-        root.sleep(3_600 * 10 ** 9)              # one virtual hour, at once
+        root.sleep(3_600 * 10**9)  # one virtual hour, at once
         t1 = c_date.current_timestamp(probe)
         s1 = T.fine_seconds_now(probe, True)
     finally:

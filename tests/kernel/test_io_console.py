@@ -1,5 +1,6 @@
 """CONSOLE: output through the runtime (untorn, stderr through `print_error`), input from
 `sys.stdin` read at call time with EiffelBase's CONSOLE behaviour."""
+
 import io
 import sys
 
@@ -69,7 +70,7 @@ def test_output_goes_through_the_runtime_one_call_one_write(region):
     M.put_integer(out, 7)
     M.put_double(out, 1.5)
     M.put_boolean(out, False)
-    M.put_string(out, K.new_string_8(region, ""))       # nothing written
+    M.put_string(out, K.new_string_8(region, ""))  # nothing written
     M.put_string(err, K.new_string_8(region, "oops\n"))
     assert region.out == ["hello", "\n", "7", "1.5", "False"]
     assert region.err == ["oops\n"]
@@ -99,7 +100,7 @@ def test_read_line_loop_until_end_of_file(region, monkeypatch):
         seen.append(last(inp))
         M.read_line(inp)
     assert seen == ["alpha", "beta"]
-    assert region.flushes >= 3            # the output is flushed before every read
+    assert region.flushes >= 3  # the output is flushed before every read
 
 
 def test_read_integer_consumes_the_rest_of_the_line_on_the_console(region, monkeypatch):
@@ -108,7 +109,7 @@ def test_read_integer_consumes_the_rest_of_the_line_on_the_console(region, monke
     assert M.last_integer(inp) == 12 and M.last_character(inp) == "\n"
     M.read_integer_16(inp)
     assert M.last_integer_16(inp) == -5
-    M.read_line(inp)                      # the next line, not the end of the previous one
+    M.read_line(inp)  # the next line, not the end of the previous one
     assert last(inp) == "name"
     M.read_natural(inp)
     assert M.last_natural(inp) == 7 and F.end_of_file(inp)
@@ -118,7 +119,7 @@ def test_read_double_swallows_one_new_line_on_the_console(region, monkeypatch):
     inp = stdin_console(region, monkeypatch, "2.5\n\nrest\n")
     M.read_double(inp)
     assert M.last_double(inp) == 2.5
-    M.read_line(inp)                      # one new line swallowed: the empty line remains
+    M.read_line(inp)  # one new line swallowed: the empty line remains
     assert last(inp) == ""
     M.read_line(inp)
     assert last(inp) == "rest"
@@ -144,15 +145,15 @@ def test_stdin_is_read_at_call_time(region, monkeypatch):
     M.read_line(inp)
     M.read_line(inp)
     assert F.end_of_file(inp)
-    monkeypatch.setattr(sys, "stdin", io.StringIO("second\n"))   # a new stdin: a fresh start
+    monkeypatch.setattr(sys, "stdin", io.StringIO("second\n"))  # a new stdin: a fresh start
     assert not F.end_of_file(inp)
     M.read_line(inp)
     assert last(inp) == "second"
-    other = console(region, C.make_open_stdin, "stdin")          # another region's `io.input`
+    other = console(region, C.make_open_stdin, "stdin")  # another region's `io.input`
     monkeypatch.setattr(sys, "stdin", io.StringIO("a\nb\n"))
     M.read_line(inp)
     M.read_line(other)
-    assert (last(inp), last(other)) == ("a", "b")                 # one shared stdin, as C's
+    assert (last(inp), last(other)) == ("a", "b")  # one shared stdin, as C's
 
 
 def test_writing_on_stdin_or_reading_stdout_fails(region, monkeypatch):

@@ -1,5 +1,6 @@
 """FILE / PLAIN_TEXT_FILE / IO_MEDIUM externals on real files (scoopc/kernel/ext/io_medium.py,
 file.py), called directly on small fake objects, as generated code would call them."""
+
 import os
 
 import pytest
@@ -78,7 +79,7 @@ def test_write_then_read_lines(region, tmp_path):
     assert last(f) == "first line" and not F.end_of_file(f)
     M.read_line(f)
     assert last(f) == "-42 True" and not F.end_of_file(f)
-    M.read_line(f)                       # the last line has no new line: feof is already set
+    M.read_line(f)  # the last line has no new line: feof is already set
     assert last(f) == "no newline at end" and F.end_of_file(f)
     assert not M.readable(f) and F.after(f) and F.off(f)
     M.close(f)
@@ -90,11 +91,11 @@ def test_end_of_file_becomes_true_only_when_a_read_hits_the_end(region, tmp_path
     f = new_file(region, path, F.make_open_read)
     lines = []
     M.read_line(f)
-    while not F.end_of_file(f):          # EiffelBase's classic loop
+    while not F.end_of_file(f):  # EiffelBase's classic loop
         lines.append(last(f))
         M.read_line(f)
     assert lines == ["x", "y"] and last(f) == ""
-    F.start(f)                           # moving clears the end-of-file flag
+    F.start(f)  # moving clears the end-of-file flag
     assert not F.end_of_file(f) and F.position(f) == 0
     M.read_line(f)
     assert last(f) == "x"
@@ -116,15 +117,15 @@ def test_read_integer_leaves_the_next_character_unread_in_a_file(region, tmp_pat
     f = new_file(region, path, F.make_open_read)
     M.read_integer(f)
     assert M.last_integer(f) == 42 and M.last_character(f) == "\n"
-    M.read_line(f)                       # the rest of the line: empty, as in EiffelBase
+    M.read_line(f)  # the rest of the line: empty, as in EiffelBase
     assert last(f) == ""
     M.read_integer_64(f)
     assert M.last_integer_64(f) == -7 and M.last_character(f) == " "
     M.read_word(f)
     assert last(f) == "x"
-    M.read_integer(f)                    # wraps around, as the converter's INTEGER_32 result
-    assert M.last_integer(f) == 99999999999 - 2 ** 32 * 23
-    M.read_natural_8(f)                  # at the end: nothing read
+    M.read_integer(f)  # wraps around, as the converter's INTEGER_32 result
+    assert M.last_integer(f) == 99999999999 - 2**32 * 23
+    M.read_natural_8(f)  # at the end: nothing read
     assert M.last_natural_8(f) == 0 and F.end_of_file(f) and M.last_character(f) == "\xff"
 
 
@@ -140,7 +141,7 @@ def test_read_double_and_real_skip_the_blanks_after_the_number(region, tmp_path)
     assert M.last_real(f) == 0.5 and M.last_real_32(f) == 0.5
     M.read_line(f)
     assert last(f) == "x"
-    with pytest.raises(OSError):         # no IO_FAILURE class in this test: a Python error
+    with pytest.raises(OSError):  # no IO_FAILURE class in this test: a Python error
         M.read_double(f)
 
 
@@ -162,7 +163,7 @@ def test_read_word_character_and_stream(region, tmp_path):
     assert M.last_character(f) == "\t"
     M.read_word(f)
     assert last(f) == "w\u00f6rld"
-    assert F.position(f) == len("  hello\tw\u00f6rld".encode())   # bytes
+    assert F.position(f) == len("  hello\tw\u00f6rld".encode())  # bytes
     F.next_line(f)
     M.read_stream(f, 4)
     assert last(f) == "abcd" and M.bytes_read(f) == 4 and not F.end_of_file(f)
@@ -197,9 +198,9 @@ def test_append_and_read_write_modes(region, tmp_path):
     assert path.read_bytes() == b"abc\ndef\n"
     f = new_file(region, path, F.make_open_read_append)
     assert M.is_open_read(f) and F.is_open_append(f)
-    M.read_line(f)                       # reads from the start
+    M.read_line(f)  # reads from the start
     assert last(f) == "abc"
-    M.put_string(f, s(region, "ghi\n"))   # writes at the end
+    M.put_string(f, s(region, "ghi\n"))  # writes at the end
     M.close(f)
     assert path.read_bytes() == b"abc\ndef\nghi\n"
     f = new_file(region, path, F.make_open_read_write)
@@ -218,7 +219,7 @@ def test_append_and_read_write_modes(region, tmp_path):
     f = new_file(region, path, F.make_create_read_write)
     assert F.count(f) == 0 and F.is_empty(f) and M.is_open_read(f) and M.is_open_write(f)
     M.put_string(f, s(region, "new"))
-    assert F.count(f) == 3          # flushed to tell the size
+    assert F.count(f) == 3  # flushed to tell the size
     M.close(f)
 
 
@@ -274,9 +275,9 @@ def test_reals_are_written_as_their_out(region, tmp_path, monkeypatch):
     M.put_double(f, 0.1)
     M.put_character(f, " ")
     M.put_real(f, 2.5)
-    monkeypatch.setattr(K, "real_64_out", lambda d: "D")   # the basic types' `out`, rebound
+    monkeypatch.setattr(K, "real_64_out", lambda d: "D")  # the basic types' `out`, rebound
     M.put_real_64(f, 1.0)
-    M.put_natural_64(f, 2 ** 64 - 1)
+    M.put_natural_64(f, 2**64 - 1)
     M.close(f)
     assert path.read_text() == "0.10000000000000001 2.5D18446744073709551615"
 

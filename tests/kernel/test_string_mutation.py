@@ -1,5 +1,6 @@
 """STRING_GENERAL's, STRING_8's and STRING_32's modifications (scoopc/kernel/ext/string_general.py,
 string_8.py, string_32.py), with EiffelBase's capacities."""
+
 import pytest
 
 from scoopc.kernel import strings as K
@@ -23,6 +24,7 @@ def fake_classes():
 
 # --- STRING_GENERAL ------------------------------------------------------------------------------
 
+
 def test_append_family_and_capacity():
     s = created(S8, g.make, 0)
     caps = []
@@ -32,11 +34,11 @@ def test_append_family_and_capacity():
     assert s._s == "abcdefghijklmnopqrstuvw"
     assert caps[:6] == [5, 5, 5, 5, 5, 10] and caps[10] == 15 and caps[15] == 22 and caps[22] == 33
     t = created(S8, g.make, 4)
-    string_8.append(t, K.s8(R, "abcdef"))                   # 6 > 4: 6 + max (4 // 2, 5)
+    string_8.append(t, K.s8(R, "abcdef"))  # 6 > 4: 6 + max (4 // 2, 5)
     assert t.capacity == 11
     sg.append(t, K.s32(R, "gh"))
     assert t._s == "abcdefgh" and t.capacity == 11
-    sg.append(t, K.s32(R, "\u20ac"))                        # precondition violated: '%U'
+    sg.append(t, K.s32(R, "\u20ac"))  # precondition violated: '%U'
     assert t._s.endswith("\x00")
     u = created(S32, g.make, 0)
     sg.append(u, K.s32(R, "\u20ac"))
@@ -62,7 +64,7 @@ def test_numbers_and_booleans_appended():
     sg.append_real(r, 0.25)
     assert r._s == "1.50.25"
     n = created(S8, g.make, 0)
-    sg.append_integer(n, 123456)                            # character by character as ISE
+    sg.append_integer(n, 123456)  # character by character as ISE
     assert n.capacity == 10
 
 
@@ -132,7 +134,7 @@ def test_adjust_and_justify():
     s = K.s8(R, " \t hi \xa0\n")
     sg.left_adjust(s)
     sg.right_adjust(s)
-    assert s._s == "hi \xa0"                                 # NBSP is not CHARACTER_8.is_space
+    assert s._s == "hi \xa0"  # NBSP is not CHARACTER_8.is_space
     w = K.s32(R, "\u3000 hi \xa0\n")
     sg.left_adjust(w)
     sg.right_adjust(w)
@@ -142,8 +144,16 @@ def test_adjust_and_justify():
     assert j._s == "ab  "
     string_8.right_justify(j)
     assert j._s == "  ab"
-    for text, expected in (("ab   ", "  ab "), ("   ab", "  ab "), ("ab", "ab"), ("  ab  ", "  ab  "),
-                           ("\tab", "\tab"), ("ab\t\t", " ab\t"), ("   ", "   "), ("", "")):
+    for text, expected in (
+        ("ab   ", "  ab "),
+        ("   ab", "  ab "),
+        ("ab", "ab"),
+        ("  ab  ", "  ab  "),
+        ("\tab", "\tab"),
+        ("ab\t\t", " ab\t"),
+        ("   ", "   "),
+        ("", ""),
+    ):
         c = K.s8(R, text)
         string_8.center_justify(c)
         assert c._s == expected, text

@@ -1,5 +1,6 @@
 """Numbers in strings as EiffelBase reads them (scoopc/kernel/ext/_string_numbers.py through
 READABLE_STRING_GENERAL's is_integer*, to_integer*, is_real*, to_double ...)."""
+
 import math
 import struct
 
@@ -19,17 +20,40 @@ def fake_classes():
 
 
 INTEGER_CASES = [
-    ("0", "i32", True), ("  42  ", "i32", True), ("+7", "i8", True), ("- 5", "i32", False),
-    ("-128", "i8", True), ("128", "i8", False), ("-129", "i8", False), ("127", "i8", True),
-    ("255", "n8", True), ("256", "n8", False), ("-0", "n8", True), ("-1", "n32", False),
-    ("", "i32", False), (" ", "i32", False), ("1 2", "i32", False), ("\t1", "i32", False),
-    ("1\t", "i32", False), ("\u0661", "i32", False), ("1_000", "i32", False), ("0x10", "i32", False),
-    ("2147483647", "i32", True), ("2147483648", "i32", False), ("-2147483648", "i32", True),
-    ("9223372036854775807", "i64", True), ("9223372036854775808", "i64", False),
-    ("-9223372036854775808", "i64", True), ("-9223372036854775809", "i64", False),
-    ("18446744073709551615", "n64", True), ("18446744073709551616", "n64", False),
-    ("0000000000000000000000000042", "i8", True), ("-00000000000000000000000128", "i8", True),
-    ("+", "i32", False), ("-", "n8", False), ("12a", "i64", False),
+    ("0", "i32", True),
+    ("  42  ", "i32", True),
+    ("+7", "i8", True),
+    ("- 5", "i32", False),
+    ("-128", "i8", True),
+    ("128", "i8", False),
+    ("-129", "i8", False),
+    ("127", "i8", True),
+    ("255", "n8", True),
+    ("256", "n8", False),
+    ("-0", "n8", True),
+    ("-1", "n32", False),
+    ("", "i32", False),
+    (" ", "i32", False),
+    ("1 2", "i32", False),
+    ("\t1", "i32", False),
+    ("1\t", "i32", False),
+    ("\u0661", "i32", False),
+    ("1_000", "i32", False),
+    ("0x10", "i32", False),
+    ("2147483647", "i32", True),
+    ("2147483648", "i32", False),
+    ("-2147483648", "i32", True),
+    ("9223372036854775807", "i64", True),
+    ("9223372036854775808", "i64", False),
+    ("-9223372036854775808", "i64", True),
+    ("-9223372036854775809", "i64", False),
+    ("18446744073709551615", "n64", True),
+    ("18446744073709551616", "n64", False),
+    ("0000000000000000000000000042", "i8", True),
+    ("-00000000000000000000000128", "i8", True),
+    ("+", "i32", False),
+    ("-", "n8", False),
+    ("12a", "i64", False),
 ]
 
 
@@ -48,8 +72,7 @@ def test_is_integer_features():
     assert g.is_natural_16(n) and g.is_natural_32(n) and not g.is_natural_8(n) and not g.is_integer_16(n)
 
 
-@given(st.text(alphabet="0123456789 +-", max_size=24),
-       st.sampled_from(sorted(N.KINDS)))
+@given(st.text(alphabet="0123456789 +-", max_size=24), st.sampled_from(sorted(N.KINDS)))
 def test_integer_fast_path_equals_ise_machine(text, kind):
     assert N.is_int(text, kind) == N._int_machine(text, kind)[0]
 
@@ -67,13 +90,33 @@ def test_to_integer_family():
 
 
 REAL_CASES = [
-    ("1.5e3", True, 1500.0), (" 1.5 ", True, 1.5), (".5", True, 0.5), ("5.", True, 5.0),
-    ("-2.25", True, -2.25), ("+3", True, 3.0), ("1e", True, 1.0), ("1e+", True, 1.0),
-    ("1E2", True, 100.0), ("2.5E-1", True, 0.25), ("1.e", False, None), ("1.5e", False, None),
-    (".", False, None), ("-", False, None), ("e5", False, None), ("1 e5", False, None),
-    ("nan", False, None), ("inf", False, None), ("", False, None), (" ", False, None),
-    ("1.5.2", False, None), ("- 1", False, None), ("1e5 ", True, 100000.0), ("-.5", True, -0.5),
-    ("0.1", True, 0.1), ("123.456", True, 123 + 456 / 1000.0), ("\u0661", False, None),
+    ("1.5e3", True, 1500.0),
+    (" 1.5 ", True, 1.5),
+    (".5", True, 0.5),
+    ("5.", True, 5.0),
+    ("-2.25", True, -2.25),
+    ("+3", True, 3.0),
+    ("1e", True, 1.0),
+    ("1e+", True, 1.0),
+    ("1E2", True, 100.0),
+    ("2.5E-1", True, 0.25),
+    ("1.e", False, None),
+    ("1.5e", False, None),
+    (".", False, None),
+    ("-", False, None),
+    ("e5", False, None),
+    ("1 e5", False, None),
+    ("nan", False, None),
+    ("inf", False, None),
+    ("", False, None),
+    (" ", False, None),
+    ("1.5.2", False, None),
+    ("- 1", False, None),
+    ("1e5 ", True, 100000.0),
+    ("-.5", True, -0.5),
+    ("0.1", True, 0.1),
+    ("123.456", True, 123 + 456 / 1000.0),
+    ("\u0661", False, None),
 ]
 
 
@@ -89,8 +132,8 @@ def test_reals(text, ok, value):
 def test_real_conversions_and_edges():
     assert g.to_real(K.s8(R, "0.1")) == struct.unpack("f", struct.pack("f", 0.1))[0]
     assert g.to_real_32(K.s8(R, "1e300")) == math.inf
-    assert g.is_real(K.s8(R, "1e300"))                  # ISE does not check REAL_32's range
+    assert g.is_real(K.s8(R, "1e300"))  # ISE does not check REAL_32's range
     assert g.to_double(K.s8(R, "1e400")) == math.inf
-    assert math.isnan(g.to_double(K.s8(R, "0e400")))   # 0 * (10.0 ^ 400) as ISE computes it
+    assert math.isnan(g.to_double(K.s8(R, "0e400")))  # 0 * (10.0 ^ 400) as ISE computes it
     minus_zero = g.to_double(K.s8(R, "-0"))
     assert minus_zero == 0.0 and math.copysign(1.0, minus_zero) == -1.0

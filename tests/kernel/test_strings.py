@@ -2,6 +2,7 @@
 scoopc/kernel/strings.py: construction, access, hashing, comparison, conversion, copy, share.
 Called directly on fakes (tests/kernel/string_fakes.py). Numbers: test_string_numbers.py;
 modifications: test_string_mutation.py."""
+
 import re
 
 import pytest
@@ -40,6 +41,7 @@ def fake_classes():
 
 # --- Construction -------------------------------------------------------------------------------
 
+
 def test_manifest_and_new_strings():
     a = K.s8(R, "abc")
     b = K.s32(R, "ab\u20ac")
@@ -73,6 +75,7 @@ def test_creation_procedures():
 
 # --- Access and search ------------------------------------------------------------------------
 
+
 def test_access_and_search():
     s = K.s8(R, "hello world")
     assert s.item(1) == "h" and string_8.item(s, 11) == "d"
@@ -98,6 +101,7 @@ def test_access_and_search():
 
 
 # --- Hash codes ---------------------------------------------------------------------------------
+
 
 def test_hash_code_is_ise():
     assert g.hash_code(K.s8(R, "")) == 0
@@ -132,6 +136,7 @@ def test_hash_code_cache_follows_changes():
 
 # --- Status ------------------------------------------------------------------------------------
 
+
 def test_whitespace_and_booleans():
     assert g.is_whitespace(K.s8(R, "")) and g.is_whitespace(K.s8(R, " \t\r\n\x0b\x0c"))
     assert not g.is_whitespace(K.s8(R, "\xa0")) and g.is_whitespace(K.s32(R, "\xa0\u3000 "))
@@ -143,6 +148,7 @@ def test_whitespace_and_booleans():
 
 
 # --- Comparison ---------------------------------------------------------------------------------
+
 
 def test_comparisons():
     a, b = K.s8(R, "abc"), K.s8(R, "abd")
@@ -159,6 +165,7 @@ def test_comparisons():
 
 
 # --- Conversion ---------------------------------------------------------------------------------
+
 
 def test_as_string_8_and_32():
     a = K.s8(R, "x")
@@ -184,7 +191,7 @@ def test_case_conversions():
     w = K.s32(R, "\xff\xdf\u03a3a\u0130\u1fb3")
     assert g.as_upper(w)._s == "\u0178\xdf\u03a3A\u0130\u1fbc"
     assert g.as_lower(w)._s == "\xff\xdf\u03c3ai\u1fb3"
-    assert g.as_lower(K.s32(R, "A\u03a3"))._s == "a\u03c3"      # no final-sigma rule
+    assert g.as_lower(K.s32(R, "A\u03a3"))._s == "a\u03c3"  # no final-sigma rule
     imm = K.new_immutable_32(R, "AbC")
     assert type(g.as_lower(imm)) is I32 and g.as_lower(imm)._s == "abc"
     t = K.s8(R, "MiXeD")
@@ -197,8 +204,13 @@ def test_case_conversions():
 def test_mirrored_plus_substring_keep_dynamic_class():
     mine = MyString.__new__(MyString)
     mine._region_, mine._s, mine._cap = R, "abc", 3
-    for made in (g.mirrored(mine), g.plus(mine, K.s8(R, "d")), g.substring(mine, 1, 2),
-                 g.as_lower(mine), g.as_upper(mine)):
+    for made in (
+        g.mirrored(mine),
+        g.plus(mine, K.s8(R, "d")),
+        g.substring(mine, 1, 2),
+        g.as_lower(mine),
+        g.as_upper(mine),
+    ):
         assert type(made) is MyString and made._region_ is R and made.extra == 7
     assert g.mirrored(mine)._s == "cba" and g.plus(mine, K.s32(R, "d"))._s == "abcd"
     s = K.s8(R, "hello")
@@ -209,7 +221,7 @@ def test_mirrored_plus_substring_keep_dynamic_class():
     assert s.substring(5, 5)._s == "o"
     imm = K.new_immutable_8(R, "abc")
     assert type(g.plus(imm, K.s8(R, "!"))) is I8 and type(g.substring(imm, 1, 1)) is I8
-    assert g.plus(K.s8(R, "a"), K.s32(R, "\u20ac"))._s == "a\x00"   # precondition violated
+    assert g.plus(K.s8(R, "a"), K.s32(R, "\u20ac"))._s == "a\x00"  # precondition violated
 
 
 def test_out_is_a_new_string_8():
@@ -222,6 +234,7 @@ def test_out_is_a_new_string_8():
 
 # --- copy, twin, share ----------------------------------------------------------------------------
 
+
 def test_copy_and_twin():
     a = K.s8(R, "abc")
     t = twin(a)
@@ -230,7 +243,7 @@ def test_copy_and_twin():
     assert a._s == "abc" and t._s == "abcd"
     big = created(S8, g.make, 50)
     g.copy(big, a)
-    assert big._s == "abc" and big.capacity == 50          # ISE keeps the larger area
+    assert big._s == "abc" and big.capacity == 50  # ISE keeps the larger area
     small = K.s8(R, "x")
     g.copy(small, K.s8(R, "longer"))
     assert small._s == "longer" and small.capacity == 6
@@ -253,18 +266,18 @@ def test_share_sees_changes_both_ways():
     sg.wipe_out(b)
     assert a._s == "" and a.count == 0
     c = K.s8(R, "")
-    string_8.share(c, b)                                    # a group of three
+    string_8.share(c, b)  # a group of three
     string_8.append_character(a, "q")
     assert b._s == c._s == "q"
-    t = twin(c)                                             # a twin has a buffer of its own
+    t = twin(c)  # a twin has a buffer of its own
     string_8.append_character(t, "!")
     assert (a._s, b._s, c._s, t._s) == ("q", "q", "q", "q!")
     string_8.append_character(c, "r")
     assert t._s == "q!" and a._s == "qr"
-    g.make(c, 5)                                            # make: a fresh area
+    g.make(c, 5)  # make: a fresh area
     string_8.append_character(a, "s")
     assert c._s == "" and b._s == "qrs"
-    string_8.set(b, K.s8(R, "hello"), 2, 3)                 # set: the area of a substring
+    string_8.set(b, K.s8(R, "hello"), 2, 3)  # set: the area of a substring
     assert b._s == "el" and a._s == "qrs"
     sg.remove(a, 1)
     assert a._s == "rs" and b._s == "el"
@@ -276,7 +289,7 @@ def test_share_with_a_stale_link_copied_by_standard_twin():
     a, b = K.s8(R, "ab"), K.s8(R, "")
     string_8.share(b, a)
     clone = S8.__new__(S8)
-    clone.__dict__.update(b.__dict__)                       # standard_twin: fields only
+    clone.__dict__.update(b.__dict__)  # standard_twin: fields only
     string_8.append_character(clone, "c")
     assert clone._s == "abc" and a._s == "ab" and b._s == "ab"
 
@@ -284,9 +297,9 @@ def test_share_with_a_stale_link_copied_by_standard_twin():
 def test_share_then_copy_keeps_or_leaves_the_group_as_ise():
     a, b = K.s8(R, "abcdef"), K.s8(R, "")
     string_8.share(b, a)
-    g.copy(b, K.s8(R, "xy"))                                # fits in the shared area
+    g.copy(b, K.s8(R, "xy"))  # fits in the shared area
     assert a._s == "xy"
-    g.copy(b, K.s8(R, "a much longer text"))               # needs a new area
+    g.copy(b, K.s8(R, "a much longer text"))  # needs a new area
     assert a._s == "xy" and b._s == "a much longer text"
 
 
@@ -323,12 +336,22 @@ def _python_externals(path):
     return names
 
 
-@pytest.mark.parametrize("module", [
-    "readable_string_general", "readable_string_8", "readable_string_32", "string_general",
-    "string_8", "string_32", "immutable_string_8", "immutable_string_32",
-])
+@pytest.mark.parametrize(
+    "module",
+    [
+        "readable_string_general",
+        "readable_string_8",
+        "readable_string_32",
+        "string_general",
+        "string_8",
+        "string_32",
+        "immutable_string_8",
+        "immutable_string_32",
+    ],
+)
 def test_every_python_external_has_a_function(module):
     import importlib
+
     path = ROOT / "stdlib" / "base" / "string" / f"{module}.e"
     names = _python_externals(path)
     assert names, path
@@ -344,5 +367,6 @@ def test_no_external_in_other_string_classes():
 
 def test_white_space_table_is_unicode_white_space():
     import sys
+
     wide = {chr(c) for c in range(128, sys.maxunicode + 1, 1) if chr(c).isspace()}
     assert wide == set(K.WS32) - set(K.WS8)

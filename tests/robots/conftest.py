@@ -1,4 +1,5 @@
 """Shared fixtures of the robot tests."""
+
 import pytest
 
 from scoopc.robots import transport

@@ -2,6 +2,7 @@
 the fallback to DdsBus. rclpy cannot be installed here: its presence is simulated with a stand-in
 module, and RclpyBus runs only against a stand-in of the rclpy calls it makes (its CDR conversion,
 subscriptions, taps and shutdown), never against rclpy itself (see rclpy_bus.py's note)."""
+
 import os
 import random
 import sys
@@ -19,6 +20,7 @@ pytest.importorskip("cyclonedds")
 def environment(monkeypatch, tmp_path):
     """Loopback DDS in a test domain; no backend chosen by the caller's environment."""
     from scoopc.robots import dds
+
     for name, value in dds.loopback_environment(tmp_path, random.randint(100, 200)).items():
         monkeypatch.setenv(name, value)
     monkeypatch.delenv(backends.ENV, raising=False)
@@ -26,7 +28,7 @@ def environment(monkeypatch, tmp_path):
 
 @pytest.fixture
 def no_rclpy(monkeypatch):
-    monkeypatch.setitem(sys.modules, "rclpy", None)        # `import rclpy` raises ImportError
+    monkeypatch.setitem(sys.modules, "rclpy", None)  # `import rclpy` raises ImportError
 
 
 @pytest.fixture
@@ -37,6 +39,7 @@ def fake_rclpy(monkeypatch):
     class StandIn:
         def __init__(self, domain=None, types=None):
             self.domain, self.types = domain, types
+
     monkeypatch.setattr(rclpy_bus, "RclpyBus", StandIn)
     return StandIn
 
@@ -46,7 +49,7 @@ def test_requested_reads_the_variable_and_checks_it(monkeypatch):
     for value, expected in (("dds", "dds"), ("RCLPY", "rclpy"), (" auto ", "auto"), ("", "auto")):
         monkeypatch.setenv(backends.ENV, value)
         assert backends.requested() == expected
-    assert backends.requested("dds") == "dds"          # an explicit choice wins over the variable
+    assert backends.requested("dds") == "dds"  # an explicit choice wins over the variable
     monkeypatch.setenv(backends.ENV, "fastdds")
     with pytest.raises(backends.BackendError, match="SCOOPC_ROS2_BACKEND='fastdds' is not a ROS 2 backend"):
         backends.requested()
@@ -68,6 +71,7 @@ def test_rclpy_forced_but_missing_is_a_clear_error(monkeypatch, no_rclpy):
 
 def test_auto_falls_back_to_dds_when_rclpy_is_missing(no_rclpy):
     from scoopc.robots.dds import DdsBus
+
     assert backends.resolve() == "dds"
     bus = backends.open_ros2_bus(domain=int(os.environ["ROS_DOMAIN_ID"]), types={"/chatter": "std_msgs/msg/String"})
     try:
@@ -87,6 +91,7 @@ def test_auto_prefers_rclpy_when_importable(fake_rclpy):
 
 def test_dds_forced_even_when_rclpy_is_there(monkeypatch, fake_rclpy):
     from scoopc.robots.dds import DdsBus
+
     monkeypatch.setenv(backends.ENV, "dds")
     assert backends.resolve() == "dds"
     bus = backends.open_ros2_bus()
@@ -97,11 +102,10 @@ def test_dds_forced_even_when_rclpy_is_there(monkeypatch, fake_rclpy):
 
 
 def test_rclpy_bus_without_rclpy_says_so():
-    if rclpy_bus.rclpy is not None:                        # a ROS 2 environment: nothing to check here
+    if rclpy_bus.rclpy is not None:  # a ROS 2 environment: nothing to check here
         pytest.skip("rclpy is importable")
     with pytest.raises(ImportError, match="source a ROS 2 installation"):
         rclpy_bus.RclpyBus()
-
 
 
 # -- RclpyBus against a stand-in of the rclpy API it calls (not rclpy itself: see the module's note) --
@@ -182,14 +186,19 @@ class FakeRclpy:
         qos.qos_profile_sensor_data = "sensor_data"
         utilities = types.ModuleType("rosidl_runtime_py.utilities")
         utilities.get_message = lambda typename: typename
-        self.modules = {"rclpy": rclpy, "rclpy.executors": executors, "rclpy.qos": qos,
-                        "rosidl_runtime_py": types.ModuleType("rosidl_runtime_py"),
-                        "rosidl_runtime_py.utilities": utilities}
+        self.modules = {
+            "rclpy": rclpy,
+            "rclpy.executors": executors,
+            "rclpy.qos": qos,
+            "rosidl_runtime_py": types.ModuleType("rosidl_runtime_py"),
+            "rosidl_runtime_py.utilities": utilities,
+        }
 
 
 @pytest.fixture
 def fake_ros():
     import importlib
+
     fake = FakeRclpy()
     saved = {name: sys.modules.get(name) for name in fake.modules}
     sys.modules.update(fake.modules)
@@ -205,6 +214,7 @@ def fake_ros():
 
 def test_rclpy_bus_converts_through_cdr_on_the_rclpy_api(fake_ros):
     from scoopc.robots import cdr, ros_messages
+
     fake, module = fake_ros
     bus = module.RclpyBus(domain=5)
     got, raw, tapped = [], [], []
@@ -216,9 +226,15 @@ def test_rclpy_bus_converts_through_cdr_on_the_rclpy_api(fake_ros):
     bus.publish("/robot1/cmd_vel", sent)
     assert fake.inits == [5] and fake.published == [("/robot1/cmd_vel", cdr.serialize(sent))]
     assert [m.linear.x for m in got] == [0.3] and raw == [cdr.serialize(sent)]
-    bus.publish("/robot1/odom", ros_messages.new("nav_msgs/msg/Odometry"))   # not subscribed: tapped here
-    assert tapped == [("/robot1/cmd_vel", "geometry_msgs/msg/Twist"),           # each once
-                      ("/robot1/odom", "nav_msgs/msg/Odometry")] and bus.errors == []
+    bus.publish("/robot1/odom", ros_messages.new("nav_msgs/msg/Odometry"))  # not subscribed: tapped here
+    assert (
+        tapped
+        == [
+            ("/robot1/cmd_vel", "geometry_msgs/msg/Twist"),  # each once
+            ("/robot1/odom", "nav_msgs/msg/Odometry"),
+        ]
+        and bus.errors == []
+    )
     assert fake.qos["/robot1/odom"] == "sensor_data" and fake.qos["/robot1/cmd_vel"][0] == "profile"
     assert bus.wait_for_publisher("/robot1/odom", 1) and bus.topics() == ["/robot1/cmd_vel"]
     with pytest.raises(TypeError):

@@ -1,5 +1,6 @@
 """CDR golden tests: our encoder equals rosbags' `serialize_cdr` byte for byte for every message type of
 the ROS 2 Humble type store (non-default values from a seeded generator), and our decoder round-trips."""
+
 import random
 import struct
 
@@ -75,19 +76,20 @@ def generate(desc, rng, store=STORE):
 
 
 def generate_message(typename, rng, store=STORE):
-    return ros_messages.new(typename, store, **{name: generate(desc, rng, store)
-                                            for name, desc in ros_messages.fields(typename, store)})
+    return ros_messages.new(
+        typename, store, **{name: generate(desc, rng, store) for name, desc in ros_messages.fields(typename, store)}
+    )
 
 
 def same(a, b):
     if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
-        return isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.dtype == b.dtype \
-            and np.array_equal(a, b)
+        return isinstance(a, np.ndarray) and isinstance(b, np.ndarray) and a.dtype == b.dtype and np.array_equal(a, b)
     if isinstance(a, list):
         return isinstance(b, list) and len(a) == len(b) and all(same(x, y) for x, y in zip(a, b))
     if hasattr(a, "__msgtype__"):
         return a.__msgtype__ == b.__msgtype__ and all(
-            same(getattr(a, n), getattr(b, n)) for n in a.__dataclass_fields__ if n != "__msgtype__")
+            same(getattr(a, n), getattr(b, n)) for n in a.__dataclass_fields__ if n != "__msgtype__"
+        )
     return type(a) is type(b) and a == b
 
 
@@ -130,8 +132,11 @@ def test_alignment_is_relative_to_the_end_of_the_header():
     odd = ros_messages.new("std_msgs/msg/String", data="")
     assert cdr.serialize(odd) == b"\x00\x01\x00\x00" + struct.pack("<I", 1) + b"\x00"
     twist = cdr.serialize(ros_messages.new("sensor_msgs/msg/Range", radiation_type=1, range=2.0))
-    assert twist == bytes(STORE.serialize_cdr(ros_messages.new("sensor_msgs/msg/Range", radiation_type=1, range=2.0),
-                                              "sensor_msgs/msg/Range"))
+    assert twist == bytes(
+        STORE.serialize_cdr(
+            ros_messages.new("sensor_msgs/msg/Range", radiation_type=1, range=2.0), "sensor_msgs/msg/Range"
+        )
+    )
 
 
 def test_big_endian_input_is_decoded():
@@ -151,7 +156,7 @@ def test_bounds_and_lengths_are_checked():
     with pytest.raises(ValueError):
         cdr.deserialize(b"\x00\x01\x00\x00\x01", "builtin_interfaces/msg/Time")
     whole = cdr.serialize(ros_messages.new("nav_msgs/msg/Odometry", child_frame_id="base_link"))
-    for end in (8, 14, 20, 30, 100, len(whole) - 1):   # cut in a string, in a run, in an array
+    for end in (8, 14, 20, 30, 100, len(whole) - 1):  # cut in a string, in a run, in an array
         with pytest.raises(ValueError):
             cdr.deserialize(whole[:end], "nav_msgs/msg/Odometry")
 

@@ -1,4 +1,5 @@
 """DdsBus: ROS 2 conventions over cyclonedds, on loopback only (CYCLONEDDS_URI set before any participant)."""
+
 import math
 import os
 import random
@@ -42,6 +43,7 @@ def buses():
         bus = dds.DdsBus(**kwargs)
         made.append(bus)
         return bus
+
     yield make
     for bus in made:
         bus.close()
@@ -95,23 +97,33 @@ def test_names_types_and_qos_families():
     assert dds.dds_type_name("nav_msgs/msg/Odometry") == "nav_msgs::msg::dds_::Odometry_"
     with pytest.raises(ValueError):
         dds.dds_topic_name("cmd_vel")
-    kinds = {"/cmd_vel": "command", "/robot1/cmd_vel": "command", "/robot1/odom": "sensor",
-             "/scan": "sensor", "/robot1/proximity/center_left": "sensor", "/robot1/ground/left": "sensor",
-             "/robot1/battery_state": "sensor", "/clock": "clock", "/chatter": "command"}
+    kinds = {
+        "/cmd_vel": "command",
+        "/robot1/cmd_vel": "command",
+        "/robot1/odom": "sensor",
+        "/scan": "sensor",
+        "/robot1/proximity/center_left": "sensor",
+        "/robot1/ground/left": "sensor",
+        "/robot1/battery_state": "sensor",
+        "/clock": "clock",
+        "/chatter": "command",
+    }
     assert {topic: dds.topic_kind(topic) for topic in kinds} == kinds
     assert dds.default_type("/robot1/proximity/left") == "sensor_msgs/msg/Range"
     assert dds.default_type("/robot2/odom") == "nav_msgs/msg/Odometry"
     assert dds.default_type("/chatter") is None
     # the ROS 2 (Jazzy) type hash of geometry_msgs/msg/Twist, as `ros2 topic info -v` shows it
-    assert dds.type_hash("geometry_msgs/msg/Twist") == \
-        "RIHS01_9c45bf16fe0983d80e3cfe750d6835843d265a9a6c46bd2e609fcddde6fb8d2a"
+    assert (
+        dds.type_hash("geometry_msgs/msg/Twist")
+        == "RIHS01_9c45bf16fe0983d80e3cfe750d6835843d265a9a6c46bd2e609fcddde6fb8d2a"
+    )
 
 
 def test_framing_pads_to_four_and_records_the_padding():
-    data = cdr.serialize(ros_messages.new("std_msgs/msg/String", data="ab"))   # 4 + 4 + 3 bytes
+    data = cdr.serialize(ros_messages.new("std_msgs/msg/String", data="ab"))  # 4 + 4 + 3 bytes
     framed = dds.frame(data)
     assert len(framed) % 4 == 0 and framed[:3] == data[:3] and framed[3] == 1
-    assert framed[4:len(data)] == data[4:] and framed[len(data):] == b"\x00"
+    assert framed[4 : len(data)] == data[4:] and framed[len(data) :] == b"\x00"
     assert dds.frame(framed) == framed
     assert_same(cdr.deserialize(framed, "std_msgs/msg/String"), ros_messages.new("std_msgs/msg/String", data="ab"))
 
@@ -165,9 +177,10 @@ def test_best_effort_reader_does_not_match_a_reliable_expectation(buses):
     """Sensor topics are best effort: a reliable reader (ROS default QoS) must not match our odom writer."""
     from cyclonedds.qos import Qos
     from cyclonedds.sub import DataReader
+
     a, b = buses(), buses()
     sensor = Inbox()
-    b.subscribe("/robot1/odom", sensor)        # best effort: matches
+    b.subscribe("/robot1/odom", sensor)  # best effort: matches
     topic = b._topic("/robot1/odom", "nav_msgs/msg/Odometry")
     reliable = DataReader(b.participant, topic, qos=Qos(*dds.qos_policies("/cmd_vel")))
     assert a.wait_for_subscriber("/robot1/odom", TIMEOUT)
@@ -181,12 +194,12 @@ def test_close_releases_everything(buses):
     bus = dds.DdsBus()
     inbox = Inbox()
     sub = bus.subscribe("/cmd_vel", inbox)
-    bus.publish("/cmd_vel", twist())            # our own participant's reader gets it too (ROS does)
+    bus.publish("/cmd_vel", twist())  # our own participant's reader gets it too (ROS does)
     inbox.get()
     thread = bus._thread
     bus.close()
     assert not thread.is_alive() and sub.closed
-    bus.close()                                 # idempotent
+    bus.close()  # idempotent
     with pytest.raises(RuntimeError):
         bus.publish("/cmd_vel", twist())
 
@@ -197,6 +210,7 @@ def test_subscription_close_and_callback_errors(buses):
 
     def broken(msg):
         raise ValueError("boom")
+
     b.subscribe("/cmd_vel", broken)
     sub1 = b.subscribe("/cmd_vel", first)
     b.subscribe("/cmd_vel", second)
@@ -240,8 +254,9 @@ def test_separate_process_over_loopback(buses):
     bus.subscribe("/robot1/odom", odom)
     root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
     env = dict(os.environ, PYTHONPATH=root + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    proc = subprocess.Popen([sys.executable, "-c", ECHO], stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                            env=env, text=True)
+    proc = subprocess.Popen(
+        [sys.executable, "-c", ECHO], stdin=subprocess.PIPE, stdout=subprocess.PIPE, env=env, text=True
+    )
     try:
         assert proc.stdout.readline().strip() == "ready"
         assert bus.wait_for_subscriber("/cmd_vel", TIMEOUT)
@@ -251,7 +266,7 @@ def test_separate_process_over_loopback(buses):
         assert (remote.topic_name, remote.type_name) == ("rt/robot1/odom", "nav_msgs::msg::dds_::Odometry_")
         sent = twist(0.125, 0.5)
         deadline = time.monotonic() + TIMEOUT
-        while not odom.items:                  # odom is best effort: resend until one arrives
+        while not odom.items:  # odom is best effort: resend until one arrives
             assert time.monotonic() < deadline, "no odometry from the other process"
             bus.publish("/cmd_vel", sent)
             with odom.cond:
@@ -259,9 +274,9 @@ def test_separate_process_over_loopback(buses):
         got = odom.get()
         assert got.child_frame_id == "robot1/base_link"
         assert_same(got.twist.twist, sent)
-        raw = echoed.get()                     # the bytes as they crossed the wire, twice
+        raw = echoed.get()  # the bytes as they crossed the wire, twice
         expected = ros_messages.typestore().serialize_cdr(sent, "geometry_msgs/msg/Twist")
-        assert bytes(raw) == bytes(expected)   # 52 bytes: no padding needed
+        assert bytes(raw) == bytes(expected)  # 52 bytes: no padding needed
     finally:
         proc.stdin.close()
         assert proc.wait(TIMEOUT) == 0

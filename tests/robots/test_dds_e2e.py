@@ -4,6 +4,7 @@ subprocess, driven (1) by this test's own DdsBus and (2) by a compiled Eiffel pr
 speeds), never on wall-clock timings; the time limits only bound a broken run. Last, the two robot
 benchmarks (benchmarks/robots_latency.py, robots_rate.py: processes talking over loopback DDS) at
 smoke sizes: their output's format only."""
+
 import os
 import random
 import re
@@ -40,7 +41,7 @@ def env(tmp_path_factory):
     saved = {name: os.environ.get(name) for name in settings}
     os.environ.update(settings)
     child = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
-    child["E2E_WORLD"] = str(folder / "world.yaml")          # a Thymio on /robot1 at (0.5, 0.5)
+    child["E2E_WORLD"] = str(folder / "world.yaml")  # a Thymio on /robot1 at (0.5, 0.5)
     yield child
     for name, value in saved.items():
         if value is None:
@@ -66,8 +67,9 @@ class Odometry:
 
     def wait(self, predicate, timeout=TIMEOUT):
         with self.cond:
-            assert self.cond.wait_for(lambda: self.count and predicate(self), timeout), \
+            assert self.cond.wait_for(lambda: self.count and predicate(self), timeout), (
                 f"odometry never satisfied the condition (last x={self.x}, v={self.v})"
+            )
             return self.x, self.v
 
     def settled(self):
@@ -86,8 +88,22 @@ class SimNode:
     def __init__(self, env, folder, *options):
         self.stderr_path = folder / "sim.err"
         self.png, self.mcap = folder / "sim.png", folder / "sim.mcap"
-        command = [sys.executable, "-m", "scoopc", "sim", env["E2E_WORLD"], "--duration", "0",
-                   "--progress", "0", "--png", str(self.png), "--record", str(self.mcap), *options]
+        command = [
+            sys.executable,
+            "-m",
+            "scoopc",
+            "sim",
+            env["E2E_WORLD"],
+            "--duration",
+            "0",
+            "--progress",
+            "0",
+            "--png",
+            str(self.png),
+            "--record",
+            str(self.mcap),
+            *options,
+        ]
         with open(self.stderr_path, "w") as err:
             self.proc = subprocess.Popen(command, stdout=subprocess.DEVNULL, stderr=err, env=env)
 
@@ -112,6 +128,7 @@ def node(env, tmp_path):
     def start(*options):
         made.append(SimNode(env, tmp_path, *options))
         return made[-1]
+
     yield start
     for sim in made:
         sim.stop()
@@ -134,7 +151,7 @@ def test_sim_node_driven_over_dds(node, bus):
     start_x, _ = odom.wait(lambda o: True)
     assert start_x == pytest.approx(0.5) and bus.wait_for_subscriber("/robot1/cmd_vel", TIMEOUT)
     deadline = time.monotonic() + TIMEOUT
-    with odom.cond:                                   # drive at 0.1 m/s until the robot has moved 5 cm
+    with odom.cond:  # drive at 0.1 m/s until the robot has moved 5 cm
         while not (odom.x > start_x + 0.05 and odom.v == pytest.approx(0.1)):
             assert time.monotonic() < deadline, "the robot did not move"
             bus.publish("/robot1/cmd_vel", twist(0.1))
@@ -158,16 +175,22 @@ def test_compiled_program_drives_the_sim_node_with_robot_ros2(env, node, bus, tm
     sim = node()
     odom = Odometry(bus)
     odom.wait(lambda o: True)
-    run = subprocess.run([sys.executable, "-m", "scoopc", "run", str(PROGRAM), "--robot", "ros2"],
-                         capture_output=True, text=True, env=env, cwd=tmp_path, timeout=120)
+    run = subprocess.run(
+        [sys.executable, "-m", "scoopc", "run", str(PROGRAM), "--robot", "ros2"],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        timeout=120,
+    )
     assert run.returncode == 0, run.stderr
     start, end = [line.split() for line in run.stdout.splitlines()]
     assert start[0] == "start" and end[0] == "end"
     assert float(start[1]) == pytest.approx(0.5) and float(end[2]) == pytest.approx(0.5)
     moved = float(end[1]) - float(start[1])
-    assert 0.1 < moved < 0.3, run.stdout                     # 2 s at 0.1 m/s, then stopped
+    assert 0.1 < moved < 0.3, run.stdout  # 2 s at 0.1 m/s, then stopped
     assert "sent a zero velocity on /robot1/cmd_vel" in run.stderr
-    final = odom.settled()                                   # the robot stays stopped
+    final = odom.settled()  # the robot stays stopped
     assert final == pytest.approx(float(end[1]), abs=1e-6)
     assert sim.stop() == 0, sim.stderr
     commands = [msg.linear.x for topic, _, msg in record.read(sim.mcap) if topic == "/robot1/cmd_vel"]
@@ -183,11 +206,26 @@ def test_a_stop_signal_on_a_ros2_run_stops_the_robot(env, node, bus, tmp_path, n
     odom = Odometry(bus)
     odom.wait(lambda o: True)
     number = getattr(signal, name)
-    proc = subprocess.Popen([sys.executable, "-m", "scoopc", "run", str(PROGRAM.parent / "drive_until_stopped"),
-                             "--robot", "ros2", "--namespace", "robot1"], stdout=subprocess.PIPE,
-                            stderr=subprocess.PIPE, text=True, env=dict(env, PYTHONUNBUFFERED="1"), cwd=tmp_path)
+    proc = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "scoopc",
+            "run",
+            str(PROGRAM.parent / "drive_until_stopped"),
+            "--robot",
+            "ros2",
+            "--namespace",
+            "robot1",
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=dict(env, PYTHONUNBUFFERED="1"),
+        cwd=tmp_path,
+    )
     try:
-        assert proc.stdout.readline() == "moving\n"          # the robot has moved under the program
+        assert proc.stdout.readline() == "moving\n"  # the robot has moved under the program
         proc.send_signal(number)
         _, err = proc.communicate(timeout=TIMEOUT)
     finally:
@@ -207,24 +245,38 @@ NUMBER = r"\d+"
 
 
 def test_latency_benchmark_smoke(env):
-    done = subprocess.run([sys.executable, str(BENCHMARKS / "robots_latency.py"), "--smoke"],
-                          capture_output=True, text=True, env=env, timeout=180)
+    done = subprocess.run(
+        [sys.executable, str(BENCHMARKS / "robots_latency.py"), "--smoke"],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=180,
+    )
     assert done.returncode == 0, done.stdout + done.stderr
     lines = done.stdout.splitlines()
     assert lines[0].startswith("# robots_latency:") and "size=smoke" in lines[0] and "loopback DDS" in lines[0]
     for variant, line in zip(("baseline", "compiled"), lines[1:3]):
-        assert re.fullmatch(rf"latency {variant} n=({NUMBER}) median_us={NUMBER} p99_us={NUMBER} "
-                            rf"mean_us={NUMBER} lost=({NUMBER})", line), line
+        assert re.fullmatch(
+            rf"latency {variant} n=({NUMBER}) median_us={NUMBER} p99_us={NUMBER} "
+            rf"mean_us={NUMBER} lost=({NUMBER})",
+            line,
+        ), line
     assert re.fullmatch(r"ratio compiled/baseline median=\d+\.\d\d p99=\d+\.\d\d", lines[3]), lines[3]
 
 
 def test_rate_benchmark_smoke(env):
-    done = subprocess.run([sys.executable, str(BENCHMARKS / "robots_rate.py"), "--smoke", "--transport", "dds",
-                           "--layout", "shared"], capture_output=True, text=True, env=env, timeout=180)
+    done = subprocess.run(
+        [sys.executable, str(BENCHMARKS / "robots_rate.py"), "--smoke", "--transport", "dds", "--layout", "shared"],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=180,
+    )
     assert done.returncode == 0, done.stdout + done.stderr
     lines = done.stdout.splitlines()
     assert lines[0].startswith("# robots_rate:") and "10 controllers x 0.2 s" in lines[0]
     assert len(lines) == 2 and re.fullmatch(
         rf"rate dds shared compiled_min_hz={NUMBER} compiled_median_hz={NUMBER} compiled_total_hz={NUMBER} "
         rf"baseline_median_hz={NUMBER} baseline_total_hz={NUMBER} ratio=\d+\.\d\d target_100hz=(met|MISSED)",
-        lines[1]), lines[1]
+        lines[1],
+    ), lines[1]

@@ -1,6 +1,7 @@
 """How a message reaches a signaler: always as a call on the signaler's processor; on a bus whose
 callbacks come on a thread of its own (DDS, rclpy), a leaf callback runs on that thread when the
 processor is idle (no thread switch per message), and the program sees the same readings."""
+
 import threading
 from pathlib import Path
 
@@ -27,6 +28,7 @@ def run_odometry_program(bus, capsys, monkeypatch):
     def deliver(listener, link):
         threads.append(threading.get_ident())
         real_deliver(listener, link)
+
     monkeypatch.setattr(ros_subscriber, "deliver", deliver)
     fed_here = threading.Event()
 
@@ -53,11 +55,11 @@ def test_on_a_bus_with_its_own_thread_a_leaf_callback_runs_there(bus, capsys, mo
     code, out, fed_here, _ = run_odometry_program(bus, capsys, monkeypatch)
     assert code == 0, out
     assert fed_here
-    assert "past " in out and "last 1000 " in out      # past: 2 or already 1000
+    assert "past " in out and "last 1000 " in out  # past: 2 or already 1000
 
 
 def test_on_the_in_process_bus_deliveries_go_to_the_processors_thread(bus, capsys, monkeypatch):
     code, out, fed_here, others = run_odometry_program(bus, capsys, monkeypatch)
     assert code == 0, out
-    assert not fed_here and others                 # a worker ran every delivery
-    assert "past " in out and "last 1000 " in out      # past: 2 or already 1000
+    assert not fed_here and others  # a worker ran every delivery
+    assert "past " in out and "last 1000 " in out  # past: 2 or already 1000

@@ -1,11 +1,17 @@
 """`scoopc msg`: generated Eiffel message classes pass `scoopc check`; the generic bridge converts both ways."""
+
 import numpy as np
 
 from scoopc import cli, kernel
 from scoopc.robots import eiffel_bridge, eiffel_messages, ros_messages
 
-TYPES = ["geometry_msgs/msg/Twist", "nav_msgs/msg/Odometry", "sensor_msgs/msg/LaserScan",
-         "sensor_msgs/msg/Range", "sensor_msgs/msg/BatteryState"]
+TYPES = [
+    "geometry_msgs/msg/Twist",
+    "nav_msgs/msg/Odometry",
+    "sensor_msgs/msg/LaserScan",
+    "sensor_msgs/msg/Range",
+    "sensor_msgs/msg/BatteryState",
+]
 
 
 def test_names_and_types():
@@ -31,14 +37,16 @@ def test_generated_classes_pass_check(tmp_path, capsys):
 
 def test_msg_file_with_keywords_and_arrays(tmp_path, capsys):
     definition = tmp_path / "Thing.msg"
-    definition.write_text("int32 class\nbool[2] flags\ngeometry_msgs/Point[2] corners\nstring[] names\n"
-                          "string<=8 label\nuint8 LEVEL=3\nfloat64 SCALE=0.5\nstring NAME=\"x\"\n")
+    definition.write_text(
+        "int32 class\nbool[2] flags\ngeometry_msgs/Point[2] corners\nstring[] names\n"
+        'string<=8 label\nuint8 LEVEL=3\nfloat64 SCALE=0.5\nstring NAME="x"\n'
+    )
     out = tmp_path / "out"
     assert cli.main(["msg", "--file", str(definition), "--type", "my_pkg/msg/Thing", "-o", str(out)]) == 0
     text = (out / "my_pkg_thing.e").read_text()
     assert "class_value: INTEGER_32" in text and "corners: ARRAY [GEOMETRY_MSGS_POINT]" in text
     assert "Level: NATURAL_8 = 3" in text and "Scale: REAL_64 = 0.5" in text
-    assert not (out / "geometry_msgs_point.e").exists()      # the library has it
+    assert not (out / "geometry_msgs_point.e").exists()  # the library has it
     assert cli.main(["check", "--format", "short", str(out)]) == 0, capsys.readouterr().err
     assert cli.main(["msg", "nope_msgs/msg/Missing", "-o", str(out)]) == 2
     assert cli.main(["msg", "-o", str(out)]) == 2
@@ -61,10 +69,15 @@ def _fake_classes(typename):
 
 def test_bridge_round_trip_on_the_object_model():
     _fake_classes("sensor_msgs/msg/LaserScan")
-    scan = ros_messages.new("sensor_msgs/msg/LaserScan", angle_max=1.5, range_max=2.0,
-                        ranges=np.array([0.5, 1.0, 2.0], dtype=np.float32),
-                        header=ros_messages.new("std_msgs/msg/Header", frame_id="laser",
-                                            stamp=ros_messages.new("builtin_interfaces/msg/Time", sec=3)))
+    scan = ros_messages.new(
+        "sensor_msgs/msg/LaserScan",
+        angle_max=1.5,
+        range_max=2.0,
+        ranges=np.array([0.5, 1.0, 2.0], dtype=np.float32),
+        header=ros_messages.new(
+            "std_msgs/msg/Header", frame_id="laser", stamp=ros_messages.new("builtin_interfaces/msg/Time", sec=3)
+        ),
+    )
     obj = eiffel_bridge.from_message(scan, _Region())
     assert type(obj).__name__ == "SENSOR_MSGS_LASER_SCAN"
     assert obj.range_max == 2.0 and obj.ranges.upper == 3 and obj.ranges.area._items == [0.5, 1.0, 2.0]

@@ -6,6 +6,7 @@ simulated time and every controller of the behaviour ends.
 
 The ten 5-minute runs are independent programs: they run two at a time in child processes (the
 first one in this process, which also compiles the program into the cache)."""
+
 import io
 import json
 import subprocess
@@ -38,14 +39,26 @@ print(json.dumps({
 
 def summary(result):
     robot = result.sim.robot()
-    return {"status": result.status, "time": result.sim.time, "coverage": result.sim.coverage(),
-            "collisions": len(robot.collisions), "fallen": robot.fallen, "distance": robot.distance,
-            "commands": robot.cmd_count, "watchdog_stops": len(robot.watchdog_stops)}
+    return {
+        "status": result.status,
+        "time": result.sim.time,
+        "coverage": result.sim.coverage(),
+        "collisions": len(robot.collisions),
+        "fallen": robot.fallen,
+        "distance": robot.distance,
+        "commands": robot.cmd_count,
+        "watchdog_stops": len(robot.watchdog_stops),
+    }
 
 
 def explore_in_child(world):
-    done = subprocess.run([sys.executable, "-c", CHILD, str(EXPLORATION), str(world)], capture_output=True,
-                          text=True, cwd=ROOT, timeout=240)
+    done = subprocess.run(
+        [sys.executable, "-c", CHILD, str(EXPLORATION), str(world)],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        timeout=240,
+    )
     assert done.returncode == 0, done.stderr[-2000:]
     return json.loads(done.stdout.strip().splitlines()[-1])
 
@@ -83,8 +96,9 @@ def stop_run(seconds, *more):
     world = yaml.safe_load(WORLDS[0].read_text())
     world["step"] = 0.01
     out = io.StringIO()
-    result = run_on_simulator(STOP_PROGRAM, world=world, argv=[seconds, *more], duration=60, stdout=out,
-                              stderr=io.StringIO())
+    result = run_on_simulator(
+        STOP_PROGRAM, world=world, argv=[seconds, *more], duration=60, stdout=out, stderr=io.StringIO()
+    )
     stop_time = float(out.getvalue().split()[-1])
     return result, stop_time
 
@@ -95,11 +109,11 @@ def test_a_stop_request_halts_the_robot_within_100_ms(seconds, how):
     result, stop_time = stop_run(seconds, how)
     assert result.status == 0
     assert stop_time == pytest.approx(float(seconds))
-    assert result.stopped_by == "program"          # every controller ended: the program was over
+    assert result.stopped_by == "program"  # every controller ended: the program was over
     trajectory = result.sim.trajectory()
     before = trajectory[(trajectory[:, 0] >= stop_time - 0.1) & (trajectory[:, 0] <= stop_time)]
-    assert np.ptp(before[:, 1:4], axis=0).max() > 0          # it was moving (or turning) just before
+    assert np.ptp(before[:, 1:4], axis=0).max() > 0  # it was moving (or turning) just before
     after = trajectory[trajectory[:, 0] >= stop_time + 0.1]
-    assert len(after) > 10                                   # the run went on for a second after the stop
-    assert np.ptp(after[:, 1:4], axis=0).max() == 0          # and the robot never moved again
+    assert len(after) > 10  # the run went on for a second after the stop
+    assert np.ptp(after[:, 1:4], axis=0).max() == 0  # and the robot never moved again
     assert result.sim.robot().cmd == (0.0, 0.0)

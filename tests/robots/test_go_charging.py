@@ -6,6 +6,7 @@ the battery never runs out, the robot charges several times and never touches a 
 history is replayed from the trajectory with the simulator's battery model (docs/ROBOTS.md) and checked
 against the simulator's final charge, so the minimum is the simulator's, not the program's report.
 """
+
 import io
 import math
 import re
@@ -70,7 +71,7 @@ def test_the_battery_never_runs_out(run):
     sim = result.sim
     robot = sim.robot()
     _, levels, _ = battery_history(sim)
-    assert abs(levels[-1] - robot.battery) < 0.01        # the replay is the simulator's battery
+    assert abs(levels[-1] - robot.battery) < 0.01  # the replay is the simulator's battery
     assert not robot.empty
     # The behaviour leaves at 20%; the farthest corner is about 5 m away, 45 s of driving (-10%).
     assert levels.min() > 0.08, f"lowest charge {levels.min():.3f}"
@@ -83,12 +84,12 @@ def test_the_robot_charges_and_goes_back_to_work(run):
     stays = [(a, b) for a, b in visits(charging) if times[b] - times[a] > 10.0]
     assert len(stays) >= 3, [(times[a], times[b]) for a, b in stays]
     for a, b in stays:
-        assert levels[a] < 0.25                           # it came because the battery was low
-        assert levels[b] >= 0.97                          # and left charged
+        assert levels[a] < 0.25  # it came because the battery was low
+        assert levels[b] >= 0.97  # and left charged
     # Each stay but a last one cut short by the end is followed by work: the robot roams away.
     traj = sim.trajectory()
     for _, b in stays:
-        later = traj[b + 1:b + 1 + 6000, 1:3]            # the next minute
+        later = traj[b + 1 : b + 1 + 6000, 1:3]  # the next minute
         if len(later) == 6000:
             assert np.hypot(*(later - traj[b, 1:3]).T).max() > 1.0
     reported = re.findall(r"Charging \[\d+ s\]: battery at (\d+)%, back to work", out)
@@ -101,7 +102,7 @@ def test_no_collision_no_fall_and_the_watchdog_never_needed(run):
     robot = result.sim.robot()
     assert robot.collisions == []
     assert not robot.fallen
-    assert robot.distance > 100.0                         # it did work: about 0.1 m/s for 25 minutes
+    assert robot.distance > 100.0  # it did work: about 0.1 m/s for 25 minutes
     # the controllers command every 100 ms: the simulator's watchdog (0.5 s) only fires at the end
     assert all(t > 1790.0 for t in robot.watchdog_stops), robot.watchdog_stops[:5]
 
@@ -116,7 +117,7 @@ def test_the_robot_drives_to_a_station_in_another_corner():
     stays = visits(charging)
     assert stays, out.getvalue()
     first = stays[0][0]
-    assert times[first] < 60.0                            # went there at once: about 3 m to drive
+    assert times[first] < 60.0  # went there at once: about 3 m to drive
     assert levels.min() > 0.1
     assert "back to work" in out.getvalue()
     assert sim.robot().collisions == []
@@ -129,8 +130,9 @@ def test_the_mission_stop_ends_every_stage_cleanly(duration, stage):
     the station (navigator cancelled) or while it charges (wait condition woken): the program ends
     by itself, before the run's duration."""
     out = io.StringIO()
-    result = run_on_simulator(SAMPLE, world=WORLDS / "charging_corner.yaml", duration=duration, stdout=out,
-                              stderr=io.StringIO())
+    result = run_on_simulator(
+        SAMPLE, world=WORLDS / "charging_corner.yaml", duration=duration, stdout=out, stderr=io.StringIO()
+    )
     assert result.status == 0
     assert result.stopped_by == "program", stage
     assert duration - 1.5 < result.sim.time < duration

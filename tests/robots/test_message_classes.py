@@ -1,5 +1,6 @@
 """The library's ROS 2 message classes (stdlib/roboscoop/communication/messages/) are what
 `scoopc msg` writes, and compiled programs publish Eiffel message objects as ROS 2 ros_messages."""
+
 from pathlib import Path
 
 from scoopc import cli
@@ -14,14 +15,15 @@ def test_library_message_classes_are_the_generated_ones(tmp_path):
     written = eiffel_messages.generate_library(str(tmp_path))
     assert sorted(Path(p).name for p in written) == sorted(p.name for p in LIBRARY.glob("*.e"))
     for path in written:
-        assert Path(path).read_text() == (LIBRARY / Path(path).name).read_text(), \
+        assert Path(path).read_text() == (LIBRARY / Path(path).name).read_text(), (
             f"{Path(path).name} is stale: regenerate with eiffel_messages.generate_library"
+        )
 
 
 def test_msg_skips_the_library_classes_unless_asked(tmp_path, capsys):
     assert cli.main(["msg", "sensor_msgs/msg/Imu", "-o", str(tmp_path / "a")]) == 0
     written = sorted(p.name for p in (tmp_path / "a").iterdir())
-    assert written == ["sensor_msgs_imu.e"]                  # Header, Quaternion, Vector3 are in the library
+    assert written == ["sensor_msgs_imu.e"]  # Header, Quaternion, Vector3 are in the library
     assert "the Roboscoop library already has STD_MSGS_HEADER" in capsys.readouterr().err
     assert cli.main(["msg", "sensor_msgs/msg/Imu", "--all", "-o", str(tmp_path / "b")]) == 0
     assert "std_msgs_header.e" in {p.name for p in (tmp_path / "b").iterdir()}
@@ -54,6 +56,7 @@ def _publish_until_done(bus, topic, make, done):
         while not done.wait(0.005):
             i += 1
             bus.publish(topic, make(i))
+
     thread = threading.Thread(target=run, daemon=True)
     thread.start()
     return thread
@@ -69,6 +72,7 @@ def test_a_listener_gets_message_objects(bus, capsys):
         msg.header.frame_id = "odom"
         msg.pose.pose.position.x = float(i)
         return msg
+
     done = threading.Event()
     thread = _publish_until_done(bus, "/odom", odometry, done)
     code = cli.main(["run", str(PROGRAMS / "generic_listen"), "--robot", "none"])
@@ -96,6 +100,7 @@ def test_a_listener_of_a_type_made_by_scoopc_msg(bus, tmp_path, capsys):
         msg.linear_acceleration.z = 9.75
         msg.orientation.w = 1.0
         return msg
+
     done = threading.Event()
     thread = _publish_until_done(bus, "/imu", imu, done)
     code = cli.main(["run", str(program), "--robot", "none"])

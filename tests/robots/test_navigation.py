@@ -6,6 +6,7 @@ corridor maze) before the world's duration with a path at most 4x the straight-l
 start to goal, and reports "unreachable" in the 3 worlds nav_enclosed_*.yaml (goal in a closed box,
 goal in a closed corner room, robot in a closed room); it never touches anything and the robot is
 still at the end."""
+
 import io
 import math
 import threading
@@ -27,7 +28,7 @@ GO_TO_GOAL = ROOT / "samples" / "go_to_goal"
 WORLDS = sorted((ROOT / "samples" / "worlds").glob("nav_*.yaml"))
 REACHABLE = [w for w in WORLDS if not w.stem.startswith("nav_enclosed_")]
 ENCLOSED = [w for w in WORLDS if w.stem.startswith("nav_enclosed_")]
-PATH_BOUND = 4.0            # path length <= 4x the straight line from start to goal
+PATH_BOUND = 4.0  # path length <= 4x the straight line from start to goal
 
 
 def run(program, world):
@@ -49,13 +50,24 @@ def test_listen_scan_feeds_a_laser_signaler(capsys):
 
     def publish():
         assert bus.wait_for_subscriber("/scan", 30)
-        for k, stamp in enumerate((3.0, 4.5)):       # coalesced or not, the last one arrives
-            header = ros_messages.new("std_msgs/msg/Header", stamp=ros_messages.new(
-                "builtin_interfaces/msg/Time", sec=int(stamp), nanosec=int(stamp % 1 * 1e9)))
+        for k, stamp in enumerate((3.0, 4.5)):  # coalesced or not, the last one arrives
+            header = ros_messages.new(
+                "std_msgs/msg/Header",
+                stamp=ros_messages.new("builtin_interfaces/msg/Time", sec=int(stamp), nanosec=int(stamp % 1 * 1e9)),
+            )
             ranges = np.array([0.5, math.inf, 2.5, 1.5 + k], dtype=np.float32)
-            bus.publish("/scan", ros_messages.new("sensor_msgs/msg/LaserScan", header=header, angle_min=-math.pi,
-                                              angle_increment=math.pi / 2, range_min=0.1, range_max=2.0,
-                                              ranges=ranges))
+            bus.publish(
+                "/scan",
+                ros_messages.new(
+                    "sensor_msgs/msg/LaserScan",
+                    header=header,
+                    angle_min=-math.pi,
+                    angle_increment=math.pi / 2,
+                    range_min=0.1,
+                    range_max=2.0,
+                    ranges=ranges,
+                ),
+            )
 
     thread = threading.Thread(target=publish, daemon=True)
     thread.start()
@@ -70,7 +82,7 @@ def test_listen_scan_feeds_a_laser_signaler(capsys):
     words = beams.split()
     assert words[:2] == ["beams", "4"] and abs(float(words[3]) + math.pi) < 1e-6
     assert abs(float(words[5]) - math.pi / 2) < 1e-6 and float(words[7]) == 2.0
-    assert ranges == "ranges 0.5 Infinity Infinity Infinity"   # inf and beyond range_max: no hit
+    assert ranges == "ranges 0.5 Infinity Infinity Infinity"  # inf and beyond range_max: no hit
     assert stale == "stale False updates>0 True"
     assert bus.subscriber_count("/scan") == 0
 
@@ -80,8 +92,8 @@ def test_laser_signaler_segments_endpoints_and_queries(capsys):
     out, err = capsys.readouterr()
     assert (code, err) == (0, "")
     assert out.splitlines() == [
-        "segments 1 1 1 0 0 0 2 2 2 1 count 2",     # beam 10 continues beam 1 (full circle)
-        "endpoints 3/1 7/-1 9/1",                   # obstacle ends next to free space / a farther one
+        "segments 1 1 1 0 0 0 2 2 2 1 count 2",  # beam 10 continues beam 1 (full circle)
+        "endpoints 3/1 7/-1 9/1",  # obstacle ends next to free space / a farther one
         "hit 1 nohit True",
         "range_at 0 True range_at 1.26 0.55000000000000004",
         "min_range_in 1 0.5",
@@ -145,6 +157,7 @@ def test_the_worlds_are_as_announced():
     assert len(REACHABLE) >= 10 and len(ENCLOSED) >= 3
     for world in WORLDS:
         from scoopc.robots.sim.world import World
+
         w = World.load(str(world))
         assert w.goal is not None and w.robots[0].kind == "diff_drive" and w.robots[0].laser is not None
 
@@ -157,7 +170,7 @@ def test_a_stopped_tangent_bug_halts_the_robot():
     stop_at = int(first.split()[2]) / 1000.0
     trajectory = result.sim.trajectory()
     before = trajectory[trajectory[:, 0] <= stop_at]
-    assert np.hypot(*(before[-1, 1:3] - before[0, 1:3])) > 0.5          # it was under way
+    assert np.hypot(*(before[-1, 1:3] - before[0, 1:3])) > 0.5  # it was under way
     after = trajectory[trajectory[:, 0] >= stop_at + 0.1]
     assert len(after) > 1 and np.allclose(after[:, 1:4], after[0, 1:4])  # still within 100 ms
     assert result.sim.robot().collisions == []

@@ -1,6 +1,7 @@
 """Recording (scoopc.robots.record): a simulated run taped off the bus into one MCAP file, read back
 by three independent readers (the mcap library with mcap-ros2-support's decoder, rosbags' rosbag2
 reader, ours); the schemas, channels and log times; Bus.tap and DdsBus.tap; the GIF animation."""
+
 import os
 import random
 import threading
@@ -13,14 +14,28 @@ from scoopc.robots import cdr, record, ros_messages
 from scoopc.robots.bus import Bus
 from scoopc.robots.sim import Simulator
 
-WORLD = {"name": "rec", "size": [3.0, 3.0], "duration": 10,
-         "robots": [{"name": "thymio", "namespace": "robot1", "kind": "thymio", "start": [0.5, 0.5, 0.0],
-                     "laser": {"range": 2.0, "beams": 90}}]}
+WORLD = {
+    "name": "rec",
+    "size": [3.0, 3.0],
+    "duration": 10,
+    "robots": [
+        {
+            "name": "thymio",
+            "namespace": "robot1",
+            "kind": "thymio",
+            "start": [0.5, 0.5, 0.0],
+            "laser": {"range": 2.0, "beams": 90},
+        }
+    ],
+}
 
 
 def twist(v, w=0.0):
-    return ros_messages.new("geometry_msgs/msg/Twist", linear=ros_messages.new("geometry_msgs/msg/Vector3", x=v),
-                        angular=ros_messages.new("geometry_msgs/msg/Vector3", z=w))
+    return ros_messages.new(
+        "geometry_msgs/msg/Twist",
+        linear=ros_messages.new("geometry_msgs/msg/Vector3", x=v),
+        angular=ros_messages.new("geometry_msgs/msg/Vector3", z=w),
+    )
 
 
 @pytest.fixture
@@ -29,7 +44,7 @@ def recorded_run(tmp_path):
     bus = Bus()
     published = []
     bus.tap(lambda topic, msg: published.append((topic, cdr.serialize(msg))))
-    sim = Simulator(WORLD, bus)            # its first sensor round is published before the recorder
+    sim = Simulator(WORLD, bus)  # its first sensor round is published before the recorder
     path = tmp_path / "run.mcap"
     published.clear()
     with record.Recorder(bus, path, clock=lambda: sim.time_ns) as recorder:
@@ -37,7 +52,7 @@ def recorded_run(tmp_path):
             if step % 10 == 5:
                 bus.publish("/robot1/cmd_vel", twist(0.1, 0.5))
             sim.step()
-    bus.publish("/robot1/cmd_vel", twist(0.0))          # after close: not recorded
+    bus.publish("/robot1/cmd_vel", twist(0.0))  # after close: not recorded
     return path, published[:-1], recorder
 
 
@@ -48,8 +63,14 @@ def test_mcap_file_has_ros2_schemas_channels_and_every_message(recorded_run):
         header, summary = reader.get_header(), reader.get_summary()
         assert header.profile == "ros2" and header.library == "scoopc"
         schemas = {s.name: s for s in summary.schemas.values()}
-        assert set(schemas) == {"geometry_msgs/msg/Twist", "rosgraph_msgs/msg/Clock", "nav_msgs/msg/Odometry",
-                                "sensor_msgs/msg/Range", "sensor_msgs/msg/LaserScan", "sensor_msgs/msg/BatteryState"}
+        assert set(schemas) == {
+            "geometry_msgs/msg/Twist",
+            "rosgraph_msgs/msg/Clock",
+            "nav_msgs/msg/Odometry",
+            "sensor_msgs/msg/Range",
+            "sensor_msgs/msg/LaserScan",
+            "sensor_msgs/msg/BatteryState",
+        }
         for name, schema in schemas.items():
             assert schema.encoding == "ros2msg"
             assert schema.data.decode() == ros_messages.typestore().generate_msgdef(name, ros_version=2)[0]
@@ -60,7 +81,7 @@ def test_mcap_file_has_ros2_schemas_channels_and_every_message(recorded_run):
         assert summary.statistics.message_count == len(published) == recorder.count
         f.seek(0)
         stored = [(channel.topic, message.data) for _, channel, message in make_reader(f).iter_messages()]
-    assert sorted(stored) == sorted(published)       # the same bytes, our CDR with its header
+    assert sorted(stored) == sorted(published)  # the same bytes, our CDR with its header
     assert recorder.counts["/robot1/cmd_vel"] == 20 and recorder.counts["/clock"] == 200
 
 
@@ -71,7 +92,7 @@ def test_log_times_are_stamps_or_the_simulated_clock(recorded_run):
     for topic, log_time, msg in rows:
         if topic == "/clock":
             assert log_time == msg.clock.sec * 10**9 + msg.clock.nanosec
-        elif topic == "/robot1/cmd_vel":                     # no stamp: the simulator's time
+        elif topic == "/robot1/cmd_vel":  # no stamp: the simulator's time
             assert log_time % 100_000_000 == 50_000_000
         else:
             assert log_time == msg.header.stamp.sec * 10**9 + msg.header.stamp.nanosec
@@ -80,11 +101,16 @@ def test_log_times_are_stamps_or_the_simulated_clock(recorded_run):
 
 def test_mcap_ros2_support_decodes_it(recorded_run):
     from mcap_ros2.decoder import DecoderFactory
+
     path, _, _ = recorded_run
     ours = record.read(path)
     with open(path, "rb") as f:
-        theirs = [(channel.topic, message.log_time, decoded) for _, channel, message, decoded
-                  in make_reader(f, decoder_factories=[DecoderFactory()]).iter_decoded_messages(log_time_order=True)]
+        theirs = [
+            (channel.topic, message.log_time, decoded)
+            for _, channel, message, decoded in make_reader(
+                f, decoder_factories=[DecoderFactory()]
+            ).iter_decoded_messages(log_time_order=True)
+        ]
     assert len(theirs) == len(ours)
     for (topic, t, mine), (their_topic, their_t, decoded) in zip(ours, theirs):
         assert (topic, t) == (their_topic, their_t)
@@ -103,6 +129,7 @@ def test_mcap_ros2_support_decodes_it(recorded_run):
 
 def test_rosbags_reads_the_single_file(recorded_run):
     from rosbags.rosbag2 import Reader
+
     path, published, _ = recorded_run
     store = ros_messages.typestore()
     with Reader(path) as reader:
@@ -123,15 +150,18 @@ def test_log_time_rules_without_a_clock(tmp_path):
     odom = ros_messages.new("nav_msgs/msg/Odometry")
     odom.header.stamp.sec, odom.header.stamp.nanosec = 3, 250
     bus.publish("/robot1/odom", odom)
-    bus.publish("/robot1/cmd_vel", twist(0.2))                # the latest stamp seen
+    bus.publish("/robot1/cmd_vel", twist(0.2))  # the latest stamp seen
     recorder.write("/note", ros_messages.new("std_msgs/msg/String", data="hello"), log_time=7)
     with pytest.raises(TypeError):
-        bus.publish("/robot1/odom", twist(0.1))               # one type per topic
+        bus.publish("/robot1/odom", twist(0.1))  # one type per topic
     assert recorder.close() == str(path) and recorder.close() == str(path)
-    bus.publish("/robot1/cmd_vel", twist(0.3))                # closed: nothing more
+    bus.publish("/robot1/cmd_vel", twist(0.3))  # closed: nothing more
     rows = record.read(path)
-    assert [(topic, t) for topic, t, _ in rows] == [("/note", 7), ("/robot1/odom", 3_000_000_250),
-                                                    ("/robot1/cmd_vel", 3_000_000_250)]
+    assert [(topic, t) for topic, t, _ in rows] == [
+        ("/note", 7),
+        ("/robot1/odom", 3_000_000_250),
+        ("/robot1/cmd_vel", 3_000_000_250),
+    ]
     assert rows[0][2].data == "hello" and record.stamp_ns(twist(0.0)) is None
 
 
@@ -141,15 +171,16 @@ def test_bus_tap_sees_every_topic_and_closes():
     tap = bus.tap(lambda topic, msg: seen.append(topic))
     bus.subscribe("/a", delivered.append)
     bus.publish("/a", 1)
-    bus.publish("/b", 2)                                      # no subscriber: still tapped
+    bus.publish("/b", 2)  # no subscriber: still tapped
     assert seen == ["/a", "/b"] and delivered == [1] and bus.subscriber_count("/b") == 0
 
     def broken(topic, msg):
         raise ValueError("tap")
+
     bus.tap(broken)
     with pytest.raises(ValueError):
         bus.publish("/a", 3)
-    assert delivered == [1, 3] and seen[-1] == "/a"           # the subscribers still got it
+    assert delivered == [1, 3] and seen[-1] == "/a"  # the subscribers still got it
     tap.close()
     tap.close()
     with pytest.raises(ValueError):
@@ -160,6 +191,7 @@ def test_bus_tap_sees_every_topic_and_closes():
 def test_dds_bus_tap_records_what_it_publishes_and_receives(tmp_path, monkeypatch):
     pytest.importorskip("cyclonedds")
     from scoopc.robots import dds
+
     for name, value in dds.loopback_environment(tmp_path, random.randint(100, 200)).items():
         monkeypatch.setenv(name, value)
     sender, receiver = dds.DdsBus(), dds.DdsBus()
@@ -174,7 +206,7 @@ def test_dds_bus_tap_records_what_it_publishes_and_receives(tmp_path, monkeypatc
         sender.publish("/robot1/cmd_vel", twist(0.25))
         assert got.wait(10)
         receiver.publish("/robot1/status", ros_messages.new("std_msgs/msg/String", data="ok"))
-        assert own.wait(10)                                   # its own reader got it too
+        assert own.wait(10)  # its own reader got it too
         recorder.close()
     finally:
         sender.close()
@@ -189,14 +221,15 @@ def test_render_gif_frames_timing_and_content(tmp_path):
     from PIL import Image
 
     from scoopc.robots.sim.render import COLORS, render_gif
+
     bus = Bus()
     sim = Simulator(WORLD, bus)
-    for step in range(1000):                                  # 10 s: a curve, then a collision-free stop
+    for step in range(1000):  # 10 s: a curve, then a collision-free stop
         if step % 10 == 0:
             bus.publish("/robot1/cmd_vel", twist(0.1 if step < 600 else 0.0, 0.4))
         sim.step()
     path = tmp_path / "run.gif"
-    assert render_gif(sim, path, fps=5, speed=2.0) == path    # a frame every 0.4 simulated seconds
+    assert render_gif(sim, path, fps=5, speed=2.0) == path  # a frame every 0.4 simulated seconds
     with Image.open(path) as gif:
         assert gif.n_frames == 26 and gif.info["loop"] == 0
         durations = []
@@ -205,10 +238,10 @@ def test_render_gif_frames_timing_and_content(tmp_path):
             durations.append(gif.info["duration"])
             if index in (1, gif.n_frames - 1):
                 colors = {color for _, color in gif.convert("RGB").getcolors(1 << 16)}
-                assert COLORS[0] in colors                   # the robot (and its trail)
+                assert COLORS[0] in colors  # the robot (and its trail)
         assert durations[:-1] == [200] * 25 and durations[-1] >= 1000
     capped = tmp_path / "capped.gif"
-    render_gif(sim, capped, max_frames=12)                   # default speed: the run fits in 12 frames
+    render_gif(sim, capped, max_frames=12)  # default speed: the run fits in 12 frames
     with Image.open(capped) as gif:
         assert gif.n_frames <= 13
     with pytest.raises(ValueError):

@@ -1,5 +1,6 @@
 """The Roboscoop library (stdlib/roboscoop/): Eiffel programs run in-process with
 `scoopc run --virtual-clock`, meeting Python publishers/subscribers on transport.current()."""
+
 import math
 import threading
 from pathlib import Path
@@ -29,16 +30,23 @@ def odometry(x, y=0.0, theta=0.0, vx=0.0, vtheta=0.0, stamp=0):
     def vec(a=0.0, b=0.0, c=0.0):
         return new("geometry_msgs/msg/Vector3", x=a, y=b, z=c)
 
-    header = new("std_msgs/msg/Header", stamp=new("builtin_interfaces/msg/Time", sec=stamp, nanosec=0),
-                 frame_id="odom")
-    pose = new("geometry_msgs/msg/Pose", position=new("geometry_msgs/msg/Point", x=x, y=y, z=0.0),
-               orientation=new("geometry_msgs/msg/Quaternion", x=0.0, y=0.0,
-                               z=math.sin(theta / 2), w=math.cos(theta / 2)))
-    return new("nav_msgs/msg/Odometry", header=header, child_frame_id="base_link",
-               pose=new("geometry_msgs/msg/PoseWithCovariance", pose=pose, covariance=np.zeros(36)),
-               twist=new("geometry_msgs/msg/TwistWithCovariance",
-                         twist=new("geometry_msgs/msg/Twist", linear=vec(vx), angular=vec(c=vtheta)),
-                         covariance=np.zeros(36)))
+    header = new("std_msgs/msg/Header", stamp=new("builtin_interfaces/msg/Time", sec=stamp, nanosec=0), frame_id="odom")
+    pose = new(
+        "geometry_msgs/msg/Pose",
+        position=new("geometry_msgs/msg/Point", x=x, y=y, z=0.0),
+        orientation=new("geometry_msgs/msg/Quaternion", x=0.0, y=0.0, z=math.sin(theta / 2), w=math.cos(theta / 2)),
+    )
+    return new(
+        "nav_msgs/msg/Odometry",
+        header=header,
+        child_frame_id="base_link",
+        pose=new("geometry_msgs/msg/PoseWithCovariance", pose=pose, covariance=np.zeros(36)),
+        twist=new(
+            "geometry_msgs/msg/TwistWithCovariance",
+            twist=new("geometry_msgs/msg/Twist", linear=vec(vx), angular=vec(c=vtheta)),
+            covariance=np.zeros(36),
+        ),
+    )
 
 
 def test_bus_delivers_in_subscription_order_and_close_stops():
@@ -98,8 +106,8 @@ def test_odometry_signaler_follows_the_bus_and_coalesces(bus, capsys):
     words = last.split()
     assert words[:2] == ["last", "1000"] and abs(float(words[3]) - 0.5) < 1e-9
     updates = int(words[5])
-    assert 1 <= updates <= 500, updates          # 1002 messages, far fewer calls
-    assert bus.subscriber_count("/odom") == 0     # closed by the program / at shutdown
+    assert 1 <= updates <= 500, updates  # 1002 messages, far fewer calls
+    assert bus.subscriber_count("/odom") == 0  # closed by the program / at shutdown
 
 
 def test_stop_signaler_propagates_to_children(capsys):

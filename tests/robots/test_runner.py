@@ -1,6 +1,7 @@
 """`scoopc run` with a robot: the in-process simulator stepped on the runtime's clock, the run's
 end (the program's end or the world's duration), the safety stop, ROBOT_ENVIRONMENT, and the
 command line's robot options."""
+
 import os
 import signal
 import subprocess
@@ -25,7 +26,7 @@ def test_a_program_that_ends_ends_the_simulation(capsys):
     lines = out.splitlines()
     assert lines[0] == "robot /robot1 of 1 simulated True goal 4.2999999999999998,4.2999999999999998"
     stopped_at = float(lines[1].split()[-1])
-    assert 2.0 <= stopped_at < 2.05                   # 0.1 m/s, checked every 100 ms of simulated time
+    assert 2.0 <= stopped_at < 2.05  # 0.1 m/s, checked every 100 ms of simulated time
     assert abs(robot.x - stopped_at) < 0.02 and robot.cmd == (0.0, 0.0)
     # from 0.6 m to 2.0 m at 0.1 m/s: 14 s; the run ends within a few steps of the program
     assert 14.0 <= result.sim.time <= 14.5
@@ -56,8 +57,8 @@ def test_a_failing_program_leaves_the_robot_stopped(capsys):
     assert "check violated: `never_here`" in err and "CRASH.make" in err
     assert result.stopped_topics == ["/robot1/cmd_vel"]
     robot = result.sim.robot()
-    assert robot.cmd == (0.0, 0.0)                   # the zero velocity came over the bus
-    assert robot.cmd_count == 2 and robot.x > 0.62     # it had moved (until the 0.5 s watchdog), then the stop
+    assert robot.cmd == (0.0, 0.0)  # the zero velocity came over the bus
+    assert robot.cmd_count == 2 and robot.x > 0.62  # it had moved (until the 0.5 s watchdog), then the stop
 
 
 def test_robot_environment_reads_the_world_beside_the_program(capsys):
@@ -95,10 +96,13 @@ def test_cli_writes_the_trajectory_png(tmp_path, capsys, monkeypatch):
     assert (tmp_path / "x.png").exists()
 
 
-@pytest.mark.parametrize("options, message", [
-    (["--world", "/nonexistent/world.yaml"], "no world file /nonexistent/world.yaml"),
-    (["--namespace", "gamma"], "the world has no robot with namespace '/gamma' (it has /alpha, /beta)"),
-])
+@pytest.mark.parametrize(
+    "options, message",
+    [
+        (["--world", "/nonexistent/world.yaml"], "no world file /nonexistent/world.yaml"),
+        (["--namespace", "gamma"], "the world has no robot with namespace '/gamma' (it has /alpha, /beta)"),
+    ],
+)
 def test_robot_usage_errors(options, message, capsys):
     assert cli.main(["run", str(PROGRAMS / "run_world"), "--no-png", *options]) == 2
     assert f"scoopc: error: {message}" in capsys.readouterr().err
@@ -125,11 +129,27 @@ def test_a_stop_signal_stops_the_robot_and_finishes_the_run(tmp_path, name):
 
     number = getattr(signal, name)
     env = dict(os.environ, PYTHONUNBUFFERED="1")
-    proc = subprocess.Popen([sys.executable, "-m", "scoopc", "run", str(PROGRAMS / "drive_until_stopped"),
-                             "--realtime", "--record", "run.mcap", "--png", "run.png"],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, cwd=tmp_path)
+    proc = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "scoopc",
+            "run",
+            str(PROGRAMS / "drive_until_stopped"),
+            "--realtime",
+            "--record",
+            "run.mcap",
+            "--png",
+            "run.png",
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+    )
     try:
-        assert proc.stdout.readline() == "moving\n"          # velocity commands have reached the robot
+        assert proc.stdout.readline() == "moving\n"  # velocity commands have reached the robot
         proc.send_signal(number)
         out, err = proc.communicate(timeout=60)
     finally:

@@ -1,6 +1,7 @@
 """The simulator node (scoopc.robots.simnode) in-process on the in-process Bus: commands applied
 between steps, pacing to a (fake) wall clock, the end of a run (duration, stop), its PNG, GIF and
 MCAP outputs, and the command line. The node over DDS between processes: test_dds_e2e.py."""
+
 import io
 import math
 import threading
@@ -11,8 +12,12 @@ from PIL import Image
 from scoopc.robots import record, ros_messages, simnode
 from scoopc.robots.bus import Bus
 
-WORLD = {"name": "strip", "size": [3.0, 1.0], "duration": 60,
-         "robots": [{"name": "thymio", "namespace": "robot1", "kind": "thymio", "start": [0.5, 0.5, 0.0]}]}
+WORLD = {
+    "name": "strip",
+    "size": [3.0, 1.0],
+    "duration": 60,
+    "robots": [{"name": "thymio", "namespace": "robot1", "kind": "thymio", "start": [0.5, 0.5, 0.0]}],
+}
 
 
 def twist(v):
@@ -37,6 +42,7 @@ class GoTo:
 
 def load_world():
     from scoopc.robots.sim import World
+
     return World.from_dict(WORLD)
 
 
@@ -46,7 +52,7 @@ def test_node_bus_applies_commands_between_steps_and_taps_both_ways():
     got, tapped = [], []
     node.subscribe("/robot1/cmd_vel", got.append)
     tap = node.tap(lambda topic, msg: tapped.append(topic))
-    inner.publish("/robot1/cmd_vel", twist(0.1))            # arrives from the transport: queued
+    inner.publish("/robot1/cmd_vel", twist(0.1))  # arrives from the transport: queued
     assert got == [] and tapped == []
     node.publish("/robot1/odom", ros_messages.new("nav_msgs/msg/Odometry"))
     assert node.drain() == 1 and [m.linear.x for m in got] == [0.1]
@@ -61,8 +67,17 @@ def test_run_drives_the_robot_and_writes_png_gif_and_mcap(tmp_path):
     GoTo(bus, 1.0)
     err = io.StringIO()
     paths = {kind: tmp_path / f"run.{kind}" for kind in ("png", "gif", "mcap")}
-    status = simnode.run(load_world(), rate=0, duration=12.0, bus=bus, stderr=err, progress=0,
-                         png=paths["png"], gif=paths["gif"], record=paths["mcap"])
+    status = simnode.run(
+        load_world(),
+        rate=0,
+        duration=12.0,
+        bus=bus,
+        stderr=err,
+        progress=0,
+        png=paths["png"],
+        gif=paths["gif"],
+        record=paths["mcap"],
+    )
     text = err.getvalue()
     assert status == 0, text
     assert "world 'strip' (thymio on /robot1)" in text and "as fast as possible, for 12 s" in text
@@ -70,11 +85,11 @@ def test_run_drives_the_robot_and_writes_png_gif_and_mcap(tmp_path):
     recorded = record.read(paths["mcap"])
     odometry = [(t, msg.pose.pose.position.x) for topic, t, msg in recorded if topic == "/robot1/odom"]
     assert odometry[0] == (0, 0.5) and odometry[-1][0] == 12_000_000_000
-    assert odometry[-1][1] == pytest.approx(1.0, abs=0.005)     # drove 0.5 m, stopped at x = 1
+    assert odometry[-1][1] == pytest.approx(1.0, abs=0.005)  # drove 0.5 m, stopped at x = 1
     commands = [msg.linear.x for topic, _, msg in recorded if topic == "/robot1/cmd_vel"]
-    assert commands[0] == 0.1 and commands[-1] == 0.0 and len(commands) == len(odometry)   # one per odometry
+    assert commands[0] == 0.1 and commands[-1] == 0.0 and len(commands) == len(odometry)  # one per odometry
     with Image.open(paths["png"]) as png:
-        assert png.size[0] > png.size[1] > 0                     # a 3 x 1 m world
+        assert png.size[0] > png.size[1] > 0  # a 3 x 1 m world
     with Image.open(paths["gif"]) as gif:
         assert gif.n_frames > 10 and gif.info["loop"] == 0
     assert f"recorded {len(recorded)} messages" in text
@@ -84,8 +99,7 @@ def test_run_ends_on_a_stop_request():
     bus = Bus()
     controller = GoTo(bus, 9.0, stop_after=25)
     err = io.StringIO()
-    assert simnode.run(load_world(), rate=0, duration=0, bus=bus, stderr=err, progress=0,
-                       stop=controller.done) == 0
+    assert simnode.run(load_world(), rate=0, duration=0, bus=bus, stderr=err, progress=0, stop=controller.done) == 0
     # the 25th odometry (50 Hz, the first at t=0) sets the stop: the run ends before the next step
     assert "until interrupted" in err.getvalue() and "stopped at t=0.48 s" in err.getvalue()
 
@@ -101,7 +115,7 @@ def test_pacing_follows_the_wall_clock(monkeypatch):
         assert simnode.run(load_world(), rate=rate, duration=3.0, bus=Bus(), stderr=err, progress=1.0) == 0
         assert now[0] - start == pytest.approx(wall)
         progress_lines = [line for line in err.getvalue().splitlines() if "(wall" in line]
-        assert len(progress_lines) == max(1, math.ceil(wall))    # one a second, and the last
+        assert len(progress_lines) == max(1, math.ceil(wall))  # one a second, and the last
 
 
 def test_a_slow_node_lets_simulated_time_run_slower(monkeypatch):
@@ -110,8 +124,9 @@ def test_a_slow_node_lets_simulated_time_run_slower(monkeypatch):
     now = [0.0]
 
     def monotonic():
-        now[0] += 0.015                                         # two readings per step: 30 ms a step
+        now[0] += 0.015  # two readings per step: 30 ms a step
         return now[0]
+
     monkeypatch.setattr(simnode.time, "monotonic", monotonic)
     monkeypatch.setattr(simnode.time, "sleep", lambda s: now.__setitem__(0, now[0] + s))
     err = io.StringIO()
@@ -122,8 +137,9 @@ def test_a_slow_node_lets_simulated_time_run_slower(monkeypatch):
 
 def test_an_unwritable_picture_is_reported(tmp_path):
     err = io.StringIO()
-    status = simnode.run(load_world(), rate=0, duration=0.1, bus=Bus(), stderr=err, progress=0,
-                         png=tmp_path / "missing" / "run.png")
+    status = simnode.run(
+        load_world(), rate=0, duration=0.1, bus=Bus(), stderr=err, progress=0, png=tmp_path / "missing" / "run.png"
+    )
     assert status == 1 and "error: cannot write" in err.getvalue()
 
 

@@ -1,4 +1,5 @@
 """The simulator core: kinematics, collisions, holes, watchdog, sensors, battery, determinism, rendering."""
+
 import glob
 import math
 import os
@@ -14,8 +15,11 @@ WORLDS = os.path.join(os.path.dirname(__file__), "..", "..", "samples", "worlds"
 
 
 def twist(v, w):
-    return new("geometry_msgs/msg/Twist", linear=new("geometry_msgs/msg/Vector3", x=float(v)),
-               angular=new("geometry_msgs/msg/Vector3", z=float(w)))
+    return new(
+        "geometry_msgs/msg/Twist",
+        linear=new("geometry_msgs/msg/Vector3", x=float(v)),
+        angular=new("geometry_msgs/msg/Vector3", z=float(w)),
+    )
 
 
 def make(kind="thymio", start=(0.5, 0.5, 0.0), **world):
@@ -55,7 +59,7 @@ def test_turn_in_place_and_limits():
     r = sim.robot()
     assert (r.x, r.y) == (2.0, 2.0)
     assert r.theta == pytest.approx(math.pi / 2, abs=0.011)
-    drive(sim, bus, 5.0, 0.0, 1.0)           # clamped to the Thymio's 0.14 m/s
+    drive(sim, bus, 5.0, 0.0, 1.0)  # clamped to the Thymio's 0.14 m/s
     assert r.y == pytest.approx(2.0 + 0.14, abs=1e-3)
 
 
@@ -66,7 +70,7 @@ def test_collision_stops_and_is_recorded():
     assert len(r.collisions) >= 1
     assert r.x <= 1.0 - r.spec.radius + 1e-9 and r.x > 1.0 - r.spec.radius - 0.01
     assert not r.fallen
-    drive(sim, bus, -0.1, 0.0, 1.0)           # backing away is allowed
+    drive(sim, bus, -0.1, 0.0, 1.0)  # backing away is allowed
     assert r.x == pytest.approx(1.0 - r.spec.radius - 0.1, abs=0.01)
 
 
@@ -103,7 +107,7 @@ def test_proximity_sees_wall_at_right_distance():
     expected_left = (0.1 - r.spec.radius * math.cos(math.radians(40))) / math.cos(math.radians(40))
     assert left[-1].range == pytest.approx(expected_left, abs=1e-5)
     assert math.isinf(rear[-1].range)
-    assert len(center) == 2                 # at t = 0.05, 0.1 (20 Hz; t = 0 went out before subscribing)
+    assert len(center) == 2  # at t = 0.05, 0.1 (20 Hz; t = 0 went out before subscribing)
 
 
 def test_ground_sensors_see_a_hole():
@@ -111,27 +115,30 @@ def test_ground_sensors_see_a_hole():
     gl, gr = latest(bus, "/robot1/ground/left"), latest(bus, "/robot1/ground/right")
     sim.run_until(0.05)
     assert gl[-1].range == pytest.approx(0.01) and gr[-1].range == pytest.approx(0.01)
-    drive(sim, bus, 0.1, 0.0, 0.8)          # ground sensors 5 cm ahead of the centre cross x = 1.0
+    drive(sim, bus, 0.1, 0.0, 0.8)  # ground sensors 5 cm ahead of the centre cross x = 1.0
     assert math.isinf(gl[-1].range) and math.isinf(gr[-1].range)
     assert not sim.robot().fallen
 
 
 def test_laser_ranges_in_a_box_world():
-    sim, bus = make(kind="diff_drive", start=(1.0, 2.0, 0.0), robot={"laser": {"range": 2.0, "beams": 360}},
-                    size=[3.0, 4.0])
+    sim, bus = make(
+        kind="diff_drive", start=(1.0, 2.0, 0.0), robot={"laser": {"range": 2.0, "beams": 360}}, size=[3.0, 4.0]
+    )
     scans = latest(bus, "/robot1/scan")
     sim.run_until(0.1)
     s = scans[-1]
     assert s.__msgtype__ == "sensor_msgs/msg/LaserScan" and len(s.ranges) == 360 and s.range_max == 2.0
     angles = s.angle_min + s.angle_increment * np.arange(360)
+
     def at(a):
         return s.ranges[int(np.argmin(np.abs(np.angle(np.exp(1j * (angles - a))))))]
-    assert at(0.0) == pytest.approx(2.0, abs=1e-4) or math.isinf(at(0.0))   # east wall at exactly 2 m
-    assert at(math.pi) == pytest.approx(1.0, abs=1e-4)                         # west wall
-    assert at(math.pi / 2) == pytest.approx(2.0, abs=1e-4)                     # north wall at y = 4
+
+    assert at(0.0) == pytest.approx(2.0, abs=1e-4) or math.isinf(at(0.0))  # east wall at exactly 2 m
+    assert at(math.pi) == pytest.approx(1.0, abs=1e-4)  # west wall
+    assert at(math.pi / 2) == pytest.approx(2.0, abs=1e-4)  # north wall at y = 4
     assert at(-math.pi / 4) == pytest.approx(math.sqrt(2) * 1.0 + 0.0, abs=1e-3) or math.isinf(at(-math.pi / 4))
-    assert at(-math.pi / 2) == pytest.approx(2.0, abs=1e-4)                    # south wall at y = 0
-    assert math.isinf(at(math.radians(30)))                                    # beyond the 2 m range
+    assert at(-math.pi / 2) == pytest.approx(2.0, abs=1e-4)  # south wall at y = 0
+    assert math.isinf(at(math.radians(30)))  # beyond the 2 m range
 
 
 def test_odometry_and_clock_messages():
@@ -142,24 +149,26 @@ def test_odometry_and_clock_messages():
     assert o.__msgtype__ == "nav_msgs/msg/Odometry"
     assert o.pose.pose.position.x == pytest.approx(0.6, abs=1e-6) and o.twist.twist.linear.x == pytest.approx(0.1)
     assert (o.header.stamp.sec, o.header.stamp.nanosec) == (1, 0)
-    assert len(odom) == 50 and len(clock) == 100      # 50 Hz and every 10 ms step
+    assert len(odom) == 50 and len(clock) == 100  # 50 Hz and every 10 ms step
     assert clock[-1].clock.sec == 1
 
 
 def test_battery_drains_and_recharges():
-    sim, bus = make(start=(0.5, 1.0, 0.0), charging_station={"position": [2.5, 1.0], "radius": 0.2},
-                    robot={"battery": {"initial": 0.5, "drain_idle": 0.001, "drain_motion": 0.01,
-                                       "charge_rate": 0.05}})
+    sim, bus = make(
+        start=(0.5, 1.0, 0.0),
+        charging_station={"position": [2.5, 1.0], "radius": 0.2},
+        robot={"battery": {"initial": 0.5, "drain_idle": 0.001, "drain_motion": 0.01, "charge_rate": 0.05}},
+    )
     states = latest(bus, "/robot1/battery_state")
     drive(sim, bus, 0.14, 0.0, 10.0)
     r = sim.robot()
     assert r.battery < 0.5 - 0.09
     assert states[-1].__msgtype__ == "sensor_msgs/msg/BatteryState" and states[-1].percentage < 0.42
-    drive(sim, bus, 0.14, 0.0, 4.0)          # reaches the station around x = 2.3 .. 2.7
+    drive(sim, bus, 0.14, 0.0, 4.0)  # reaches the station around x = 2.3 .. 2.7
     drive(sim, bus, 0.0, 0.0, 5.0)
     assert r.charging and r.battery > states[0].percentage
     sim.run_until(sim.time + 1.0)
-    assert states[-1].power_supply_status == 1   # CHARGING
+    assert states[-1].power_supply_status == 1  # CHARGING
 
 
 def test_empty_battery_stops_the_robot():
@@ -174,18 +183,24 @@ def test_determinism_same_trajectory():
         sim = Simulator(World.load(os.path.join(WORLDS, "cluttered.yaml")), Bus())
         bus = sim.bus
         scans = latest(bus, "/robot1/proximity/center")
-        for i in range(200):                    # a simple reactive wander, deterministic
+        for i in range(200):  # a simple reactive wander, deterministic
             near = scans and scans[-1].range < 0.1
             bus.publish("/robot1/cmd_vel", twist(0.0 if near else 0.12, 1.5 if near else 0.2 * math.sin(i / 7)))
             sim.run_until(sim.time + 0.1)
         return sim.trajectory()
+
     a, b = run(), run()
     assert a.shape == b.shape and np.array_equal(a, b)
 
 
 def test_coverage_and_png(tmp_path):
-    sim, bus = make(start=(0.5, 0.5, 0.0), size=[2.0, 2.0], holes=[{"min": [1.5, 1.5], "max": [2.0, 2.0]}],
-                    goal=[1.8, 0.2], charging_station=[0.2, 1.8])
+    sim, bus = make(
+        start=(0.5, 0.5, 0.0),
+        size=[2.0, 2.0],
+        holes=[{"min": [1.5, 1.5], "max": [2.0, 2.0]}],
+        goal=[1.8, 0.2],
+        charging_station=[0.2, 1.8],
+    )
     assert sim.coverage() < 0.05
     drive(sim, bus, 0.14, 0.0, 8.0)
     cov = sim.coverage()
@@ -193,6 +208,7 @@ def test_coverage_and_png(tmp_path):
     out = tmp_path / "run.png"
     assert sim.render_png(str(out)) == str(out)
     from PIL import Image
+
     with Image.open(out) as img:
         assert img.size[0] > 100 and img.format == "PNG"
 
@@ -221,7 +237,7 @@ def test_only_topics_someone_hears_are_built():
     heard = []
     bus.subscribe("/robot1/proximity/center", lambda msg: heard.append("center"))
     sim.run_until(0.1)
-    assert heard == ["center", "center"]           # 20 Hz: at 50 and 100 ms
+    assert heard == ["center", "center"]  # 20 Hz: at 50 and 100 ms
     assert bus.wants("/robot1/proximity/center") and not bus.wants("/robot1/odom")
     tapped = []
     tap = bus.tap(lambda topic, msg: tapped.append(topic))

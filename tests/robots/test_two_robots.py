@@ -7,6 +7,7 @@ passage at the same time, never touch each other or a wall, both cross several t
 turns (the crossings alternate). Without the coordination (the program's `uncoordinated` argument)
 they meet head-on in the passage, which shows that the property comes from the signaler.
 """
+
 import io
 import re
 from pathlib import Path
@@ -18,9 +19,9 @@ import yaml
 from harness import run_on_simulator
 
 SAMPLE = Path(__file__).resolve().parents[2] / "samples" / "two_robots"
-PASSAGE = (2.0, 1.5)          # centre of the passage (samples/worlds/two_robots.yaml)
-HALF_LENGTH = 0.2             # the walls are 0.4 m thick
-HALF_WIDTH = 0.12             # and 0.24 m apart
+PASSAGE = (2.0, 1.5)  # centre of the passage (samples/worlds/two_robots.yaml)
+HALF_LENGTH = 0.2  # the walls are 0.4 m thick
+HALF_WIDTH = 0.12  # and 0.24 m apart
 
 
 def in_passage(traj, radius):
@@ -53,7 +54,7 @@ def test_the_run_uses_both_robots_of_the_world(coordinated):
     assert result.status == 0, err
     assert result.sim.time >= 295.0
     assert [r.namespace for r in result.sim.robots] == ["robot1", "robot2"]
-    assert all(r.cmd_count > 1000 for r in result.sim.robots)     # both driven, at about 10 Hz
+    assert all(r.cmd_count > 1000 for r in result.sim.robots)  # both driven, at about 10 Hz
     assert "Mission: two robots, one passage, taking turns" in out
 
 
@@ -84,7 +85,7 @@ def test_both_cross_and_take_turns(coordinated):
     times = {name: crossings(sim.trajectory(name)) for name in ("robot1", "robot2")}
     assert all(len(t) >= 4 for t in times.values()), times
     order = [name for _, name in sorted((t, name) for name, ts in times.items() for t in ts)]
-    assert all(a != b for a, b in zip(order, order[1:])), order          # they alternate
+    assert all(a != b for a, b in zip(order, order[1:])), order  # they alternate
     # The program's account agrees with the trajectories (the mission may end between a robot's
     # leaving the passage and its reaching the point where it reports the crossing).
     for n in (1, 2):
@@ -92,7 +93,7 @@ def test_both_cross_and_take_turns(coordinated):
         assert len(times[f"robot{n}"]) - 1 <= reported <= len(times[f"robot{n}"])
     (granted,) = re.findall(r"Mission: over, (\d+) crossing\(s\) granted", out)
     assert int(granted) == len(re.findall(r"\]: crossing$", out, re.M))
-    assert len(re.findall(r"waiting for robot \d", out)) >= 4             # they did have to wait
+    assert len(re.findall(r"waiting for robot \d", out)) >= 4  # they did have to wait
 
 
 def test_without_the_passage_signaler_they_meet_in_the_passage():

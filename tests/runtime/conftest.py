@@ -1,5 +1,6 @@
 """Fixtures for the runtime tests: a fresh runtime per test, run by the test's thread as
 the root processor, finished (and checked for stray failures) at teardown."""
+
 import io
 
 import pytest

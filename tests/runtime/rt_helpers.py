@@ -1,9 +1,10 @@
 """Small classes written the way generated code uses the runtime, shared by the tests."""
+
 import threading
 
 import scoopc.runtime as rt
 
-GATE_TIMEOUT = 10      # a bound so a broken runtime fails a test instead of hanging it
+GATE_TIMEOUT = 10  # a bound so a broken runtime fails a test instead of hanging it
 
 
 class Cell:

@@ -1,6 +1,7 @@
 """Separate creation, passive regions, asynchronous commands, synchronous queries, and
 the private queues: calls of one client within one reservation run in order, never
 interleaved with another client's."""
+
 import threading
 
 import scoopc.runtime as rt
@@ -24,7 +25,7 @@ def test_non_separate_creation_stays_in_the_region(h):
     c = h.root.new(Cell)
     c.make(3)
     assert c._region_ is h.root
-    h.root.call(c, Cell.set, (4,))      # own region: a plain call
+    h.root.call(c, Cell.set, (4,))  # own region: a plain call
     assert c.value == 4
 
 
@@ -35,10 +36,10 @@ def test_command_is_asynchronous_and_query_waits(h):
     with root.reserve((c,)):
         root.call(c, Cell.gate, (gate, entered))
         root.call(c, Cell.set, (7,))
-        assert entered.wait(10)          # the supplier runs the gate on its own thread...
-        assert c.value == 0              # ...and has not reached `set` yet: we did not wait
+        assert entered.wait(10)  # the supplier runs the gate on its own thread...
+        assert c.value == 0  # ...and has not reached `set` yet: we did not wait
         gate.set()
-        assert root.query(c, Cell.get) == 7   # wait by necessity
+        assert root.query(c, Cell.get) == 7  # wait by necessity
 
 
 def test_passive_region_runs_calls_on_the_client_thread(h):
@@ -47,7 +48,7 @@ def test_passive_region_runs_calls_on_the_client_thread(h):
     assert p._region_.passive
     with root.reserve((p,)):
         root.call(p, Cell.set, (9,))
-        assert p.value == 9              # synchronous: done before call returned
+        assert p.value == 9  # synchronous: done before call returned
         assert root.query(p, Cell.thread) == threading.get_ident()
         assert root.query(p, Cell.region_of_caller) is p._region_
 
@@ -65,14 +66,14 @@ def _client_a(here, c, a_reserved, b_logged):
     with here.reserve((c,)):
         here.call(c, Cell.add, ("a1",))
         a_reserved.set()
-        assert b_logged.wait(10)         # B has logged its calls meanwhile
+        assert b_logged.wait(10)  # B has logged its calls meanwhile
         here.call(c, Cell.add, ("a2",))
         here.call(c, Cell.add, ("a3",))
 
 
 def _client_b(here, c, a_reserved, b_logged):
     assert a_reserved.wait(10)
-    with here.reserve((c,)):             # never blocks, though A holds c
+    with here.reserve((c,)):  # never blocks, though A holds c
         here.call(c, Cell.add, ("b1",))
         here.call(c, Cell.add, ("b2",))
         b_logged.set()
@@ -119,7 +120,7 @@ def test_client_serves_closed_leaf_sessions_ahead_in_order(h):
     hold = threading.Event()
     logged = threading.Event()
 
-    def holder(here):                       # keeps c reserved (open) until told
+    def holder(here):  # keeps c reserved (open) until told
         with here.reserve((c,)):
             here.call(c, Cell.add, ("h",))
             entered.set()
@@ -131,13 +132,13 @@ def test_client_serves_closed_leaf_sessions_ahead_in_order(h):
             here.call(c, cell_inc)
         if i == 4:
             logged.set()
+
     spawn(root, holder)
     assert entered.wait(10)
     seq = [threading.Event() for _ in range(5)]
     for i in range(5):
-        spawn(root, lambda here, i=i: (i == 0 or seq[i - 1].wait(10), leafer(here, i),
-                                       seq[i].set()))
-    assert logged.wait(10)                  # five closed sessions queued behind the holder
+        spawn(root, lambda here, i=i: (i == 0 or seq[i - 1].wait(10), leafer(here, i), seq[i].set()))
+    assert logged.wait(10)  # five closed sessions queued behind the holder
     with root.reserve((c,)):
         hold.set()
         assert root.query(c, Cell.get) == 10
@@ -163,13 +164,14 @@ def test_failure_in_another_clients_session_does_not_dirty_ours(h):
         with here.reserve((c,), where=("F", "f", "f.e", 3)):
             here.call(c, leaf_fail)
         logged.set()
+
     spawn(root, holder)
     assert entered.wait(10)
     spawn(root, failer)
     assert logged.wait(10)
     with root.reserve((c,)):
         hold.set()
-        assert root.query(c, Cell.items) == ["h"]     # no DirtyRegionError for us
+        assert root.query(c, Cell.items) == ["h"]  # no DirtyRegionError for us
     assert h.finish() == 0
     assert "theirs" in h.err.getvalue() and "f.e:3" in h.err.getvalue()
 
@@ -182,6 +184,7 @@ class Spinner:
         """A long computation with no runtime call: it ends only once another processor
         has run (it reads a plain attribute that another processor's command sets)."""
         import time
+
         started.set()
         deadline = time.monotonic() + 10
         while not flag_cell.value and time.monotonic() < deadline:
@@ -200,9 +203,9 @@ def test_long_computation_does_not_stop_other_processors(h):
     s = root.new_separate(Spinner, Spinner.make)
     started = threading.Event()
     with root.reserve((s,)):
-        root.call(s, Spinner.spin_until, (flag, started))   # flag not held: asynchronous
+        root.call(s, Spinner.spin_until, (flag, started))  # flag not held: asynchronous
     assert started.wait(10)
-    spawn(root, _set_flag, flag)       # runs on another processor while s computes
+    spawn(root, _set_flag, flag)  # runs on another processor while s computes
     assert h.finish() == 0
     assert h.err.getvalue() == "" and s.spins > 0
 
@@ -215,9 +218,10 @@ class Busy:
 
     def loop(self, flag, counter, started):
         import time
+
         here = self._region_
         started.set()
-        deadline = time.monotonic() + 3     # a bound: the flag comes within milliseconds
+        deadline = time.monotonic() + 3  # a bound: the flag comes within milliseconds
         while not flag.value:
             if time.monotonic() > deadline:
                 self.timed_out = True
@@ -247,7 +251,7 @@ def test_busy_processors_handing_the_permit_around_do_not_starve_a_runnable_one(
 
 
 def _block_outside(here, event):
-    event.wait(10)                 # a blocking external call (I/O, a transport) in user code
+    event.wait(10)  # a blocking external call (I/O, a transport) in user code
 
 
 def _open(here, event):
@@ -261,6 +265,6 @@ def test_processors_blocked_outside_the_runtime_do_not_keep_a_scheduled_one_wait
     a_may_go, b_ran = threading.Event(), threading.Event()
     spawn(root, _block_outside, a_may_go)
     spawn(root, _open, b_ran)
-    ran = b_ran.wait(5)            # the root blocks outside the runtime
+    ran = b_ran.wait(5)  # the root blocks outside the runtime
     a_may_go.set()
     assert ran, "the scheduled processor never ran"

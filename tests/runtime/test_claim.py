@@ -4,6 +4,7 @@ its leaf calls and queries itself, lock-free. These tests hold that it keeps eve
 guarantee: order within the reservation, no interleaving with other clients, dirty
 regions, lock passing, passive regions. Suppliers are made with a leaf creation procedure,
 which the creating client runs itself, so each is idle (and claimable) deterministically."""
+
 import threading
 
 import pytest
@@ -36,7 +37,7 @@ def leaf_fail(cell, message):
 
 def _other_client(here, c, a_reserved, b_logged):
     assert a_reserved.wait(10)
-    with here.reserve((c,)):             # never blocks, though the root holds c
+    with here.reserve((c,)):  # never blocks, though the root holds c
         here.call(c, leaf_add, ("b1",))
         here.call(c, leaf_add, ("b2",))
         b_logged.set()
@@ -49,11 +50,11 @@ def test_claimed_supplier_keeps_order_and_no_interleaving(h):
     spawn(root, _other_client, c, a_reserved, b_logged)
     with root.reserve((c,)):
         s = root.held[c._region_]
-        assert s.claimed                               # claimed at reservation
+        assert s.claimed  # claimed at reservation
         root.call(c, leaf_add, ("a1",))
-        assert c.log == ["a1"]                         # run by us, on our thread
+        assert c.log == ["a1"]  # run by us, on our thread
         a_reserved.set()
-        assert b_logged.wait(10)                       # B's calls are queued meanwhile
+        assert b_logged.wait(10)  # B's calls are queued meanwhile
         root.call(c, leaf_add, ("a2",))
         assert root.query(c, leaf_items) == ["a1", "a2"]
         assert s.claimed
@@ -66,9 +67,9 @@ def test_a_queued_call_drops_the_claim_and_keeps_order(h):
     c = root.new_separate(LCell, LCell.make)
     with root.reserve((c,)):
         root.call(c, leaf_add, (1,))
-        root.call(c, Cell.add, (2,))                   # not a leaf: for c's own thread
+        root.call(c, Cell.add, (2,))  # not a leaf: for c's own thread
         assert not root.held[c._region_].claimed
-        root.call(c, leaf_add, (3,))                   # queued behind it, never ahead
+        root.call(c, leaf_add, (3,))  # queued behind it, never ahead
         assert root.query(c, leaf_items) == [1, 2, 3]
         root.call(c, leaf_add, (4,))
         assert root.query(c, leaf_items) == [1, 2, 3, 4]
@@ -80,11 +81,11 @@ def test_failure_in_a_claimed_leaf_command_dirties_until_release(h):
     with root.reserve((c,)):
         assert root.held[c._region_].claimed
         root.call(c, leaf_fail, ("claimed",))
-        root.call(c, leaf_add, ("skipped",))           # a dirty region skips commands
+        root.call(c, leaf_add, ("skipped",))  # a dirty region skips commands
         with pytest.raises(rt.DirtyRegionError) as info:
             root.query(c, leaf_items)
         assert isinstance(info.value.__cause__, KeyError)
-    with root.reserve((c,)):                           # releasing cleaned it
+    with root.reserve((c,)):  # releasing cleaned it
         assert root.query(c, leaf_items) == []
     assert h.finish() == 0
     assert "exception lost" not in h.err.getvalue()
@@ -122,7 +123,7 @@ def test_lock_passing_hands_over_claimed_private_queues(h):
         root.call(other, leaf_add, ("client",))
         assert root.held[other._region_].claimed
         assert root.query(relay, Relay.touch, (mine, other)) == ["client", "relay"]
-        root.call(other, leaf_add, ("again",))         # still our private queue
+        root.call(other, leaf_add, ("again",))  # still our private queue
         assert root.query(other, leaf_items) == ["client", "relay", "again"]
 
 
@@ -131,11 +132,11 @@ def test_claimed_passive_region_runs_every_call_synchronously(h):
     pc = root.new_passive(Cell, Cell.make)
     with root.reserve((pc,)):
         assert root.held[pc._region_].claimed
-        root.call(pc, Cell.add, ("x",))                # not a leaf, still ours to run
+        root.call(pc, Cell.add, ("x",))  # not a leaf, still ours to run
         assert pc.log == ["x"]
-        with pytest.raises(ValueError):                # synchronous: re-raised here
+        with pytest.raises(ValueError):  # synchronous: re-raised here
             root.call(pc, Cell.fail, ("boom",))
-        assert root.query(pc, Cell.items) == ["x"]     # and the region is not dirty
+        assert root.query(pc, Cell.items) == ["x"]  # and the region is not dirty
 
 
 def test_nested_reservation_of_a_claimed_region_is_free(h):

@@ -1,4 +1,5 @@
 """`Processor.print_error` (CONSOLE's standard error) and `flush_output`."""
+
 import io
 
 from scoopc.runtime.main import finish, start
@@ -47,6 +48,6 @@ def test_print_error_flushes_and_is_not_tagged():
     assert err.getvalue() == "oops\n" and err.flushes == 1
     root.print("held")
     root.flush_output()
-    assert out.flushes >= 1 and out.getvalue() == ""      # unfinished traced line stays held
+    assert out.flushes >= 1 and out.getvalue() == ""  # unfinished traced line stays held
     assert finish(rt, root) == 0
     assert out.getvalue() == "[P1] held\n"

@@ -2,6 +2,7 @@
 for that client (later calls skipped; the next synchronous call is not executed, raises and
 cleans it; release cleans it too), as EiffelStudio's processor.c;
 a lost exception is reported on stderr, and strict mode makes it a run-time failure."""
+
 import pytest
 
 import scoopc.runtime as rt
@@ -15,7 +16,7 @@ def test_sync_call_reraises_the_suppliers_exception(h):
     with root.reserve((c,)):
         with pytest.raises(ValueError, match="bad query"):
             root.query(c, Cell.fail, ("bad query",))
-        assert root.query(c, Cell.get) == 0            # a sync failure is not dirt
+        assert root.query(c, Cell.get) == 0  # a sync failure is not dirt
 
 
 def test_async_failure_dirties_until_the_next_synchronous_call(h):
@@ -32,10 +33,10 @@ def test_async_failure_dirties_until_the_next_synchronous_call(h):
             root.query(c, Cell.add, ("not executed",))
         assert str(info.value.__cause__) == "async"
         assert "dirty processor exception" in str(info.value)
-        root.call(c, Cell.add, ("after the delivery",))        # clean again: executed
+        root.call(c, Cell.add, ("after the delivery",))  # clean again: executed
         assert root.query(c, Cell.items) == ["before", "after the delivery"]
     assert h.finish() == 0
-    assert h.err.getvalue() == ""                       # it was delivered: not lost
+    assert h.err.getvalue() == ""  # it was delivered: not lost
 
 
 def test_a_second_failure_after_a_delivery_is_delivered_again(h):
@@ -61,7 +62,7 @@ def test_release_cleans_a_dirty_region(h):
     with root.reserve((c,)):
         root.call(c, Cell.fail, ("async",))
         root.call(c, Cell.add, ("skipped",))
-    with root.reserve((c,)):                            # unlocking forgot the dirtiness
+    with root.reserve((c,)):  # unlocking forgot the dirtiness
         root.call(c, Cell.add, ("after",))
         assert root.query(c, Cell.items) == ["after"]
     assert h.finish() == 0
@@ -76,7 +77,7 @@ def test_rescue_and_retry_succeeds_on_the_second_attempt(h):
     c = root.new_separate(Cell, Cell.make)
     attempts = []
     with root.reserve((c,)):
-        while True:                                     # the shape of a retried routine body
+        while True:  # the shape of a retried routine body
             attempts.append(len(attempts) + 1)
             try:
                 if len(attempts) == 1:
@@ -117,19 +118,22 @@ def test_leaf_command_failure_also_dirties(h):
     @rt.leaf
     def bad(cell):
         raise KeyError("leaf")
+
     with root.reserve((c,)):
         root.call(c, bad)
         with pytest.raises(rt.DirtyRegionError):
             root.query(c, Cell.get)
-        assert root.query(c, Cell.get) == 0             # delivered: clean again
+        assert root.query(c, Cell.get) == 0  # delivered: clean again
 
 
 def test_uncaught_exception_in_root_is_a_failure():
     import io
+
     err = io.StringIO()
 
     class Root:
         def make(self):
             raise RuntimeError("root failed")
+
     assert rt.run_main(Root, Root.make, stderr=err, stdout=io.StringIO()) == 3
     assert "root failed" in err.getvalue()

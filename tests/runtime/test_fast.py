@@ -2,6 +2,7 @@
 clause tables with `pre_args`), `leaf_call` / `leaf_query` (leaf routine, arguments that
 cannot pass locks), and clause tables on the general `reserve`. Each must behave exactly
 as the general entry point: these tests repeat the general guarantees through them."""
+
 import threading
 
 import pytest
@@ -30,8 +31,7 @@ def _waiting(rt_):
 
 # A clause table as codegen emits it: module-level, predicates take `pre_args`.
 EVALS = []
-PRE_POSITIVE = ((lambda here, c: EVALS.append(1) or here.leaf_query(c, leaf_get) > 0,
-                 (0,), "positive", W),)
+PRE_POSITIVE = ((lambda here, c: EVALS.append(1) or here.leaf_query(c, leaf_get) > 0, (0,), "positive", W),)
 
 
 def _consumer(here, c, got):
@@ -47,15 +47,16 @@ def test_reserve1_claims_and_leaf_calls_run_in_order_without_interleaving(h):
 
     def other(here):
         assert a_reserved.wait(10)
-        with here.reserve1(c, W):                  # never blocks, though root holds c
+        with here.reserve1(c, W):  # never blocks, though root holds c
             here.leaf_call(c, leaf_add, ("b1",))
             here.leaf_call(c, leaf_add, ("b2",))
             b_logged.set()
+
     spawn(root, other)
     with root.reserve1(c, W) as r:
         assert root.held[c._region_] is r and r.claimed
         root.leaf_call(c, leaf_add, ("a1",))
-        assert c.log == ["a1"]                     # a plain call on our thread
+        assert c.log == ["a1"]  # a plain call on our thread
         a_reserved.set()
         assert b_logged.wait(10)
         root.leaf_call(c, leaf_add, ("a2",))
@@ -71,7 +72,7 @@ def test_reserve1_of_void_or_held_takes_nothing(h):
     with root.reserve1(None, W) as r:
         assert r.taken is None
     with root.reserve1(c, W) as outer:
-        with root.reserve1(c, W) as inner:         # nested: the outer queue is kept
+        with root.reserve1(c, W) as inner:  # nested: the outer queue is kept
             assert inner.taken is None and root.held[c._region_] is outer
             root.leaf_call(c, leaf_add, (1,))
         assert root.held[c._region_] is outer
@@ -86,7 +87,7 @@ def test_leaf_calls_fall_back_when_the_supplier_is_not_claimed(h):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
     with root.reserve1(c, W):
-        root.call(c, Cell.add, (1,))               # not a leaf: drops the claim
+        root.call(c, Cell.add, (1,))  # not a leaf: drops the claim
         assert not root.held[c._region_].claimed
         root.leaf_call(c, leaf_add, (2,))
         assert root.leaf_query(c, leaf_items, (), W) == [1, 2]
@@ -115,7 +116,7 @@ def test_leaf_call_on_a_passive_region_is_synchronous(h):
     with root.reserve1(pc, W):
         root.leaf_call(pc, leaf_add, (1,))
         assert pc.log == [1]
-        with pytest.raises(KeyError):              # failures reach the client at once
+        with pytest.raises(KeyError):  # failures reach the client at once
             root.leaf_call(pc, leaf_fail, ("passive",))
         assert root.leaf_query(pc, leaf_items) == [1]
 
@@ -127,15 +128,15 @@ def test_reserve1_waits_on_its_clause_table_until_it_holds(h):
     EVALS.clear()
     waiting = _waiting(h.rt)
     spawn(root, _consumer, c, got)
-    assert waiting.wait(10)                        # false, released, waiting
+    assert waiting.wait(10)  # false, released, waiting
     assert got == []
-    with root.reserve1(c, W):                      # c is free while it waits
-        assert root.leaf_query(c, leaf_get) == 0   # a query-only session wakes nobody
+    with root.reserve1(c, W):  # c is free while it waits
+        assert root.leaf_query(c, leaf_get) == 0  # a query-only session wakes nobody
     with root.reserve1(c, W):
         root.leaf_call(c, leaf_set, (5,))
     assert h.finish() == 0
     assert got == [5] and c.value == 0
-    assert len(EVALS) == 2                         # once false, once true: no polling
+    assert len(EVALS) == 2  # once false, once true: no polling
 
 
 def test_reserve1_clause_on_held_or_no_target_is_a_violation(h):
@@ -146,7 +147,7 @@ def test_reserve1_clause_on_held_or_no_target_is_a_violation(h):
             with root.reserve1(c, W, PRE_POSITIVE, (root, c)):
                 pass
         assert info.value.tag == "positive" and info.value.where == W
-        assert c._region_ in root.held             # the outer reservation is untouched
+        assert c._region_ in root.held  # the outer reservation is untouched
     no_target = ((lambda: True, (0,), "a", W), (lambda: False, (), "b", W))
     with pytest.raises(rt.PreconditionViolation) as info:
         with root.reserve1(c, W, no_target, ()):
@@ -161,7 +162,7 @@ def test_reserve1_clause_that_raises_releases(h):
         with root.reserve1(c, W, ((lambda: 1 // 0, (0,), "t", W),), ()):
             pass
     assert c._region_ not in root.held
-    with root.reserve1(c, W):                      # nothing left behind
+    with root.reserve1(c, W):  # nothing left behind
         root.leaf_call(c, leaf_add, (1,))
     assert h.finish() == 0 and c.log == [1]
 
@@ -175,6 +176,7 @@ def test_general_reserve_takes_a_clause_table_with_pre_args(h):
     def waiter(here):
         with here.reserve((c, d), pre=table, where=W, pre_args=(here, c, d)):
             here.leaf_call(d, leaf_add, ("w",))
+
     spawn(root, waiter)
     assert waiting.wait(10)
     with root.reserve((c,)):
@@ -188,7 +190,7 @@ def test_reserve1_wait_deadlock_is_reported(harness):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
     with pytest.raises(rt.Shutdown):
-        with root.reserve1(c, W, PRE_POSITIVE, (root, c)):   # nobody will ever set it
+        with root.reserve1(c, W, PRE_POSITIVE, (root, c)):  # nobody will ever set it
             pass
     assert h.finish() == 3
     assert "waits on wait condition positive" in h.err.getvalue()
@@ -202,7 +204,7 @@ def test_a_finished_private_queue_is_reused_only_when_nothing_refers_to_it(h):
     with root.reserve1(c, W) as first:
         root.leaf_call(c, leaf_add, (1,))
     assert root.spare is first
-    with root.reserve1(d, W) as second:            # re-targeted to another supplier
+    with root.reserve1(d, W) as second:  # re-targeted to another supplier
         assert second is first and second.proc is d._region_ and not second.closed
         root.leaf_call(d, leaf_add, (2,))
         assert root.held[d._region_] is second and root.spare is None
@@ -210,10 +212,10 @@ def test_a_finished_private_queue_is_reused_only_when_nothing_refers_to_it(h):
     holder = spawn(root, lambda here: _hold(here, c, gate, entered))
     assert entered.wait(10)
     root.spare = None
-    with root.reserve1(c, W) as queued:            # behind the holder: not claimed
+    with root.reserve1(c, W) as queued:  # behind the holder: not claimed
         assert not queued.claimed
-        root.leaf_call(c, leaf_add, (3,))          # queued for the supplier
-    assert root.spare is None                      # still in c's queue of queues
+        root.leaf_call(c, leaf_add, (3,))  # queued for the supplier
+    assert root.spare is None  # still in c's queue of queues
     gate.set()
     assert h.finish() == 0
     assert c.log == [1, "h", 3] and d.log == [2] and holder is not None
@@ -230,13 +232,13 @@ def test_command1_runs_an_idle_leaf_here_and_queues_behind_a_holder(h):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
     root.command1(c, leaf_add, (1,), W)
-    assert c.log == [1] and c._region_ not in root.held     # run here, released
+    assert c.log == [1] and c._region_ not in root.held  # run here, released
     assert root.spare is not None and root.spare.proc is c._region_
     gate, entered = threading.Event(), threading.Event()
     spawn(root, lambda here: _hold(here, c, gate, entered))
     assert entered.wait(10)
-    root.command1(c, leaf_add, (2,), W)            # never blocks; queued behind "h"
-    root.command1(c, Cell.add, (3,), W)            # non-leaf: for c's thread, in order
+    root.command1(c, leaf_add, (2,), W)  # never blocks; queued behind "h"
+    root.command1(c, Cell.add, (3,), W)  # non-leaf: for c's thread, in order
     assert c.log == [1, "h"]
     gate.set()
     with root.reserve1(c, W):
@@ -247,9 +249,9 @@ def test_command1_non_leaf_is_asynchronous_and_fifo(h):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
     gate, mark = threading.Event(), threading.Event()
-    root.command1(c, Cell.gate, (gate, mark), W)   # runs on c's thread, blocks there
+    root.command1(c, Cell.gate, (gate, mark), W)  # runs on c's thread, blocks there
     assert mark.wait(10)
-    root.command1(c, Cell.add, ("a",), W)          # logged, returns at once
+    root.command1(c, Cell.add, ("a",), W)  # logged, returns at once
     root.command1(c, leaf_add, ("b",), W)
     assert c.log == []
     gate.set()
@@ -261,12 +263,12 @@ def test_command1_on_a_held_or_passive_region_is_a_plain_synchronous_call(h):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
     with root.reserve1(c, W) as outer:
-        root.command1(c, leaf_add, (1,), W)        # nested: the outer queue is kept
+        root.command1(c, leaf_add, (1,), W)  # nested: the outer queue is kept
         assert root.held[c._region_] is outer and c.log == [1]
     pc = root.new_passive(LCell, LCell.make)
     root.command1(pc, Cell.add, (2,), W)
     assert pc.log == [2]
-    with pytest.raises(KeyError):                  # a passive failure reaches the client
+    with pytest.raises(KeyError):  # a passive failure reaches the client
         root.command1(pc, leaf_fail, ("passive",), W)
 
 
@@ -274,7 +276,7 @@ def test_command1_leaf_failure_is_reported_lost(h):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
     root.command1(c, leaf_fail, ("nobody looks",), ("APP", "run", "app.e", 9))
-    with root.reserve1(c, W):                      # the region is clean again
+    with root.reserve1(c, W):  # the region is clean again
         assert root.leaf_query(c, leaf_items) == []
     assert h.finish() == 0
     err = h.err.getvalue()

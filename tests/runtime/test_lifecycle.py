@@ -1,5 +1,6 @@
 """Termination, Ctrl-C shutdown with hooks, deadlock reports, the live dump, and
 structured ownership of threads."""
+
 import io
 import os
 import signal
@@ -70,10 +71,12 @@ def test_ctrl_c_runs_shutdown_hooks_and_stops_processors():
                 pre = [(lambda: h2.query(c, Cell.get) > 0, (0,), "never", None)]
                 with h2.reserve((c,), pre=pre):
                     events.append("should not run")
+
             spawn(here, waiter)
             assert ev.wait(10)
             blocked.set()
-            raise KeyboardInterrupt      # what the SIGINT handler raises in the main thread
+            raise KeyboardInterrupt  # what the SIGINT handler raises in the main thread
+
     assert rt.run_main(App, App.make, stderr=err, stdout=io.StringIO()) == 130
     assert blocked.is_set()
     assert events == ["second hook first", "motors stopped"]
@@ -82,7 +85,7 @@ def test_ctrl_c_runs_shutdown_hooks_and_stops_processors():
 class Node(Cell):
     def ping(self, other, barrier):
         here = self._region_
-        barrier.wait(10)                 # both are inside their routines
+        barrier.wait(10)  # both are inside their routines
         with here.reserve((other,)):
             return here.query(other, Cell.get, (), W_A)
 
@@ -93,7 +96,7 @@ def test_cycle_of_synchronous_calls_is_reported_quickly(harness):
     a = root.new_separate(Node, Node.make)
     b = root.new_separate(Node, Node.make)
     barrier = threading.Barrier(2)
-    with root.reserve((a,)):             # not (a, b): passing b would pass our locks
+    with root.reserve((a,)):  # not (a, b): passing b would pass our locks
         root.call(a, Node.ping, (b, barrier))
     with root.reserve((b,)):
         root.call(b, Node.ping, (a, barrier))
@@ -103,8 +106,7 @@ def test_cycle_of_synchronous_calls_is_reported_quickly(harness):
     err = h.err.getvalue()
     assert "deadlock: a cycle of synchronous calls" in err
     for x, y in ((a, b), (b, a)):
-        assert (f"{x._region_!r} in NODE.ping (ring.e:10) waits for the result of Cell.get "
-                f"on {y._region_!r}") in err
+        assert (f"{x._region_!r} in NODE.ping (ring.e:10) waits for the result of Cell.get on {y._region_!r}") in err
 
 
 def test_wait_condition_deadlock_is_reported_but_not_while_an_outside_client_is_open(harness):
@@ -118,10 +120,11 @@ def test_wait_condition_deadlock_is_reported_but_not_while_an_outside_client_is_
         pre = [(lambda: here.query(c, Cell.get) > 0, (0,), "has_message", W_B)]
         with here.reserve((c,), pre=pre):
             pass
+
     spawn(root, waiter)
     assert waiting.wait(10)
     monitor = h.rt.monitor
-    for _ in range(3):                   # run the detector by hand: no report while open
+    for _ in range(3):  # run the detector by hand: no report while open
         monitor.check()
     assert not h.rt.failures
     src.close()
@@ -142,6 +145,7 @@ def test_robot_waiting_for_its_first_message_is_not_deadlocked(h):
         pre = [(lambda: here.query(c, Cell.get) > 0, (0,), "has_message", W_B)]
         with here.reserve((c,), pre=pre):
             got.append(here.query(c, Cell.get))
+
     spawn(root, controller)
     assert waiting.wait(10)
     for _ in range(3):
@@ -164,6 +168,7 @@ def test_dump_names_blocked_processors(h):
         with here.reserve((c,), pre=pre):
             pass
         here.pop_frame()
+
     spawn(root, waiter)
     assert waiting.wait(10)
     text = rt.dump()
@@ -180,7 +185,8 @@ def test_sigusr1_prints_the_dump():
     class App:
         def make(self):
             os.kill(os.getpid(), signal.SIGUSR1)
-            self._region_.sleep(1_000_000)   # let the handler run in the main thread
+            self._region_.sleep(1_000_000)  # let the handler run in the main thread
+
     assert rt.run_main(App, App.make, stderr=err, stdout=io.StringIO()) == 0
     assert "scoop runtime dump" in err.getvalue()
 
@@ -207,9 +213,11 @@ def test_ctrl_c_stops_a_processor_that_keeps_calling():
                     with h2.reserve((c,)):
                         h2.call(c, Cell.set, (1,))
                     running.set()
+
             spawn(here, forever)
             assert running.wait(10)
             raise KeyboardInterrupt
+
     t0 = time.monotonic()
     err = io.StringIO()
     assert rt.run_main(App, App.make, stderr=err, stdout=io.StringIO()) == 130
@@ -231,6 +239,7 @@ def test_deadlock_on_passive_regions_is_reported(harness):
             barrier.wait(10)
             with here.reserve((second,), where=W_B):
                 here.query(second, Cell.get, (), W_B)
+
     spawn(root, client, p, q)
     spawn(root, client, q, p)
     assert h.finish() == 3
@@ -248,9 +257,10 @@ def test_sleepers_are_not_deadlocked(harness):
         pre = [(lambda: here.query(c, Cell.get) > 0, (0,), "set", W_B)]
         with here.reserve((c,), pre=pre):
             pass
+
     spawn(root, waiter)
     assert waiting.wait(10)
-    root.sleep(100_000_000)              # a sleeper: time may still change things
+    root.sleep(100_000_000)  # a sleeper: time may still change things
     assert not h.rt.failures
     with root.reserve((c,)):
         root.call(c, Cell.set, (1,))
@@ -278,11 +288,12 @@ def test_ctrl_c_inside_a_client_executed_leaf_command_stops_the_program(entry):
             rt.add_shutdown_hook(lambda: events.append("hook"))
             c = here.new_separate(Cell, Cell.make)
             with here.reserve((c,)):
-                here.query(c, Cell.get)     # waits until c is idle (created)
-            for _ in range(1000):           # so the root runs the leaf itself, at once
+                here.query(c, Cell.get)  # waits until c is idle (created)
+            for _ in range(1000):  # so the root runs the leaf itself, at once
                 with here.reserve((c,)):
                     getattr(here, entry)(c, _interrupted, ())
             events.append("never interrupted")
+
     err = io.StringIO()
     assert rt.run_main(App, App.make, stderr=err, stdout=io.StringIO()) == 130
     assert events == ["hook"] and "lost" not in err.getvalue()

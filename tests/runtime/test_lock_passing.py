@@ -1,6 +1,7 @@
 """Lock passing decided at run time: a separate call with a non-Void reference argument in
 a region the client holds is synchronous and hands all the client's locks to the supplier;
 callbacks into the client's region run while it waits; dirtiness survives."""
+
 import threading
 
 import pytest
@@ -39,8 +40,8 @@ def test_reference_argument_makes_the_call_synchronous_with_callbacks(h):
     mine = root.new(Cell)
     mine.make()
     with root.reserve((s,)):
-        root.call(s, Server.visit, (mine,))          # a command, yet synchronous
-        assert mine.log == ["visited"]                # the callback ran while we waited
+        root.call(s, Server.visit, (mine,))  # a command, yet synchronous
+        assert mine.log == ["visited"]  # the callback ran while we waited
         assert s.seen == [["visited"]]
 
 
@@ -62,11 +63,11 @@ def test_non_reference_and_void_arguments_do_not_pass_locks(h):
     s = root.new_separate(Server, Server.make)
     gate, entered = threading.Event(), threading.Event()
     with root.reserve((s,)):
-        root.call(s, Cell.gate, (gate, entered))      # any routine works on any object
+        root.call(s, Cell.gate, (gate, entered))  # any routine works on any object
         root.call(s, Server.note, (None,))
         root.call(s, Server.note, (3,))
-        assert entered.wait(10)                       # make has run, the gate holds s
-        assert s.seen == []                           # asynchronous: nothing ran yet
+        assert entered.wait(10)  # make has run, the gate holds s
+        assert s.seen == []  # asynchronous: nothing ran yet
         gate.set()
         root.query(s, Cell.thread)
     assert s.seen == [None, 3]
@@ -105,6 +106,7 @@ def test_callback_from_another_processor_client(h):
         with here.reserve((s,)):
             here.call(s, Server.visit, (mine,))
         done.append(mine.log)
+
     spawn(root, client)
     assert h.finish() == 0
     assert done == [["visited"]]
@@ -122,5 +124,5 @@ def test_separate_creation_with_a_reference_argument_passes_locks(h):
     mine = root.new(Cell)
     mine.make()
     g = root.new_separate(Greeter, Greeter.make_with, (mine,))
-    assert mine.log == ["created"]            # synchronous: done when creation returned
+    assert mine.log == ["created"]  # synchronous: done when creation returned
     assert g._region_ is not root

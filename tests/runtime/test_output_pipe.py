@@ -1,5 +1,6 @@
 """Output to a reader that has gone (`scoopc run app.e | head`): dropped, never an exception in
 the program's routines."""
+
 from scoopc.runtime.output import Output
 
 

@@ -1,6 +1,7 @@
 """Reservations: atomic, in processor-id order, never blocking, first-come first-served
 across clients; which regions to reserve is decided at run time (Void and held regions
 are skipped) and only this reservation's regions are released at its exit."""
+
 import random
 import threading
 
@@ -13,8 +14,8 @@ def test_reserving_a_busy_processor_does_not_block(h):
     gate, entered = threading.Event(), threading.Event()
     with root.reserve((c,)):
         root.call(c, Cell.gate, (gate, entered))
-    assert entered.wait(10)            # c is now busy on its own thread
-    with root.reserve((c,)):           # returns at once though c is busy
+    assert entered.wait(10)  # c is now busy on its own thread
+    with root.reserve((c,)):  # returns at once though c is busy
         root.call(c, Cell.add, ("after",))
         assert c.log == []
         gate.set()
@@ -32,7 +33,8 @@ def test_first_come_first_served_across_clients(h):
         with here.reserve((c,)):
             turns[i + 1].set() if i + 1 < len(turns) else None
             here.call(c, Cell.add, (i,))
-    for i in (3, 0, 5, 1, 4, 2):      # processors created in another order than they reserve
+
+    for i in (3, 0, 5, 1, 4, 2):  # processors created in another order than they reserve
         spawn(root, client, i)
     assert turns[-1].wait(10)
     gate.set()
@@ -93,6 +95,7 @@ def test_nested_reservation_keeps_the_outer_private_queue(h):
         with here.reserve((c,)):
             here.call(c, Cell.add, ("other",))
         other_logged.set()
+
     with root.reserve((c,)):
         root.call(c, Cell.add, ("outer1",))
         with root.reserve((c, d)):

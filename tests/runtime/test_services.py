@@ -1,4 +1,5 @@
 """once per region / process / object, untorn and tagged output, agents."""
+
 import threading
 
 import scoopc.runtime as rt
@@ -30,16 +31,17 @@ def test_once_is_per_region_not_per_thread(h):
     b = root.new_separate(Holder, Holder.make)
     mine = root.new(Holder)
     with root.reserve((a, b)):
-        va = root.query(a, Holder.my_once)     # run by us, on a's behalf
+        va = root.query(a, Holder.my_once)  # run by us, on a's behalf
         vb = root.query(b, Holder.my_once)
         assert root.query(a, Holder.my_once) == va
     assert va != vb
-    assert mine.my_once() not in (va, vb)      # the root region has its own
+    assert mine.my_once() not in (va, vb)  # the root region has its own
     seen = []
 
-    def other_client(here):                    # another thread, same region a
+    def other_client(here):  # another thread, same region a
         with here.reserve((a,)):
             seen.append(here.query(a, Holder.my_once))
+
     spawn(root, other_client)
     assert h.finish() == 0
     assert seen == [va]
@@ -59,6 +61,7 @@ def test_once_process_and_object(h):
 def test_once_failure_is_remembered(h):
     def boom():
         raise ValueError("once failed")
+
     for _ in range(2):
         try:
             h.root.once("boom", boom)
@@ -114,11 +117,11 @@ def test_agents_on_separate_targets(h):
     assert ag._region_ is c._region_
     with root.reserve((c,)):
         root.call(c, Cell.gate, (gate, entered))
-        root.call(ag, rt.Agent.call, (None,))        # asynchronous
+        root.call(ag, rt.Agent.call, (None,))  # asynchronous
         assert entered.wait(10)
         assert c.log == []
         gate.set()
         assert root.query(c, Cell.items) == ["closed"]
         setter = rt.Agent(c, Cell.set)
-        root.call(setter, rt.Agent.call, ((9,),))    # a tuple passes locks: synchronous
+        root.call(setter, rt.Agent.call, ((9,),))  # a tuple passes locks: synchronous
         assert c.value == 9

@@ -1,6 +1,7 @@
 """Stress: 1,000 processors and 1,000,000 separate calls in all: nothing lost, nothing
 reordered within a private queue, no false deadlock report (the detector runs at a short
 tick throughout)."""
+
 from rt_helpers import Cell, spawn
 
 W = ("STRESS", "consume", "stress.e", 1)
@@ -14,7 +15,7 @@ class Acc:
         self.last = {}
 
     def add(self, client, seq):
-        assert self.last.get(client, -1) < seq       # in order per client
+        assert self.last.get(client, -1) < seq  # in order per client
         self.last[client] = seq
         self.total += 1
 
@@ -34,7 +35,7 @@ def test_thousand_processors_million_calls(harness):
     root = h.root
     accs = [root.new_separate(Acc, Acc.make) for _ in range(1000)]
     clients = 20
-    rounds = 5                         # 20 clients x 5 rounds x 1000 accs x 10 = 1,000,000
+    rounds = 5  # 20 clients x 5 rounds x 1000 accs x 10 = 1,000,000
     for me in range(clients):
         spawn(root, _hammer, me, accs, rounds)
     assert h.finish() == 0, h.err.getvalue()
@@ -72,6 +73,7 @@ def test_wait_conditions_under_load_no_false_deadlock(harness):
 def test_many_idle_processors_cost_no_threads(h):
     """10,000 processors (each ran its creation call) share a small pool of threads."""
     import tracemalloc
+
     root = h.root
     tracemalloc.start()
     before = tracemalloc.get_traced_memory()[0]
@@ -79,5 +81,5 @@ def test_many_idle_processors_cost_no_threads(h):
     per_processor = (tracemalloc.get_traced_memory()[0] - before) / len(cells)
     tracemalloc.stop()
     assert h.finish() == 0
-    assert len(h.rt.workers) <= 64          # threads ever started, not one per processor
-    assert per_processor < 2_000            # bytes, including the object and its lock
+    assert len(h.rt.workers) <= 64  # threads ever started, not one per processor
+    assert per_processor < 2_000  # bytes, including the object and its lock

@@ -1,4 +1,5 @@
 """The runtime clock (virtual and real), timers, and outside clients logging commands."""
+
 import threading
 
 import scoopc.runtime as rt
@@ -65,6 +66,7 @@ def test_timers_fire_in_order_and_cancel(harness):
 
         def stop(self, timer):
             timer.cancel()
+
     st = root.new_separate(Stopper, Stopper.make)
     rt.call_later(7 * SECOND, st, Stopper.stop, (t,))
     assert h.finish() == 0
@@ -88,13 +90,14 @@ def test_outside_client_logs_in_order_without_blocking(h):
     src = rt.outside_client("transport")
     logged = threading.Event()
 
-    def transport():                     # e.g. a ROS callback thread
+    def transport():  # e.g. a ROS callback thread
         for i in range(1000):
             src.call(c, Cell.add, (i,))
         logged.set()
+
     t = threading.Thread(target=transport)
     t.start()
-    assert logged.wait(10)               # done while c is still busy: it never blocked
+    assert logged.wait(10)  # done while c is still busy: it never blocked
     t.join()
     assert c.log == []
     gate.set()
@@ -112,7 +115,8 @@ class Stepper:
 
     def step(self):
         import time
-        time.sleep(0.05)                   # real time: a sleeper woken too early would get ahead
+
+        time.sleep(0.05)  # real time: a sleeper woken too early would get ahead
         self.source.call(self.sink, Cell.add, ("data",))
 
 
@@ -139,7 +143,7 @@ def test_a_leaf_outside_call_runs_on_the_callers_thread_when_the_processor_is_id
     root = h.root
     c = root.new_separate(Cell, Cell.make)
     with root.reserve((c,)):
-        assert root.query(c, Cell.items) == []     # created, and idle once released
+        assert root.query(c, Cell.items) == []  # created, and idle once released
     src = rt.outside_client("transport")
     ran_on = []
 
@@ -149,10 +153,11 @@ def test_a_leaf_outside_call_runs_on_the_callers_thread_when_the_processor_is_id
 
     def transport():
         src.call(c, record, ("here",), leaf=True)
+
     t = threading.Thread(target=transport)
     t.start()
     t.join(10)
-    assert ran_on == [t.ident]             # no worker: the transport's thread ran it
+    assert ran_on == [t.ident]  # no worker: the transport's thread ran it
     with root.reserve((c,)):
         assert root.query(c, Cell.items) == ["here"]
     src.close()
@@ -166,7 +171,7 @@ def test_a_leaf_outside_call_to_a_busy_processor_is_queued(h):
     t = threading.Thread(target=lambda: [src.call(c, Cell.add, (i,), leaf=True) for i in range(3)])
     t.start()
     t.join(10)
-    assert not t.is_alive() and c.log == []    # logged behind the gate, never waited for it
+    assert not t.is_alive() and c.log == []  # logged behind the gate, never waited for it
     gate.set()
     src.close()
     assert h.finish() == 0
@@ -175,7 +180,8 @@ def test_a_leaf_outside_call_to_a_busy_processor_is_queued(h):
 
 def test_a_leaf_outside_call_run_by_the_transport_wakes_a_wait_condition(h):
     from test_wait import waiting_consumer
-    c, evals, got = waiting_consumer(h)        # a consumer waits for c's value > 0
+
+    c, evals, got = waiting_consumer(h)  # a consumer waits for c's value > 0
     src = rt.outside_client("transport")
     t = threading.Thread(target=lambda: src.call(c, Cell.set, (7,), leaf=True))
     t.start()

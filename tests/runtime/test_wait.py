@@ -16,6 +16,7 @@ def _consumer(here, c, evals, got):
     def positive():
         evals.append(1)
         return here.query(c, Cell.get) > 0
+
     with here.reserve((c,), pre=[(positive, (0,), "positive", W)], where=W):
         got.append(here.query(c, Cell.get))
         here.call(c, Cell.set, (0,))
@@ -33,7 +34,7 @@ def waiting_consumer(h):
     evals, got = [], []
     waiting = _waiting(h.rt)
     spawn(root, _consumer, c, evals, got)
-    assert waiting.wait(10)                       # it found the condition false and waits
+    assert waiting.wait(10)  # it found the condition false and waits
     return c, evals, got
 
 
@@ -45,7 +46,7 @@ def test_waits_until_the_condition_holds(h):
         root.call(c, Cell.set, (5,))
     assert h.finish() == 0
     assert got == [5] and c.value == 0
-    assert len(evals) == 2                        # once false, once true: no polling
+    assert len(evals) == 2  # once false, once true: no polling
 
 
 def test_wake_ups_are_targeted(h):
@@ -63,7 +64,7 @@ def test_wake_ups_are_targeted(h):
         with root.reserve((c,)):
             assert root.query(c, Cell.get) == 0
     with root.reserve((other,)):
-        root.query(other, Cell.get)               # all of the above were served
+        root.query(other, Cell.get)  # all of the above were served
     assert len(evals) == 1
     with root.reserve((c,)):
         root.call(c, Cell.set, (1,))
@@ -80,9 +81,10 @@ def test_waiting_releases_every_region_it_took(h):
         pre = [(lambda: here.query(c, Cell.get) > 0, (0,), "c_positive", W)]
         with here.reserve((c, d), pre=pre):
             here.call(d, Cell.add, "w")
+
     spawn(root, waiter)
     assert waiting.wait(10)
-    with root.reserve((d,)):                       # d is free while the waiter waits
+    with root.reserve((d,)):  # d is free while the waiter waits
         root.call(d, Cell.add, "r")
         assert root.query(d, Cell.items) == ["r"]
     with root.reserve((c,)):
@@ -96,11 +98,10 @@ def test_false_clause_on_a_held_target_is_a_violation(h):
     c = root.new_separate(Cell, Cell.make)
     with root.reserve((c,)):
         with pytest.raises(rt.PreconditionViolation) as info:
-            with root.reserve((c,), pre=[(lambda: root.query(c, Cell.get) > 0, (0,),
-                                          "positive", W)]):
+            with root.reserve((c,), pre=[(lambda: root.query(c, Cell.get) > 0, (0,), "positive", W)]):
                 pass
         assert info.value.tag == "positive" and info.value.where == W
-        assert c._region_ in root.held           # the outer reservation is untouched
+        assert c._region_ in root.held  # the outer reservation is untouched
 
 
 def test_false_clause_without_separate_target_is_a_violation(h):
@@ -127,14 +128,16 @@ def test_clauses_are_evaluated_in_order_and_all_re_evaluated(harness):
         def second():
             seen.append("d")
             return here.query(d, Cell.get) > 0
+
         with here.reserve((c, d), pre=[(first, (0,), "c", W), (second, (1,), "d", W)]):
             seen.append("body")
+
     spawn(root, waiter)
     assert waiting.wait(10)
     assert seen == ["c"]
     with root.reserve((c,)):
         root.call(c, Cell.set, (1,))
-    assert h.finish() == 3                         # d never becomes positive: deadlock
+    assert h.finish() == 3  # d never becomes positive: deadlock
     assert seen[:3] == ["c", "c", "d"] and "body" not in seen
     assert "wait condition d over P3(Cell)" in h.err.getvalue()
 
@@ -156,6 +159,7 @@ def test_producer_consumer_nothing_lost(h):
             pre = [(lambda: here.query(c, Cell.get) == 0, (0,), "empty", W)]
             with here.reserve((c,), pre=pre):
                 here.call(c, Cell.set, (item,))
+
     spawn(root, consumer, 100)
     spawn(root, consumer, 100)
     spawn(root, producer, range(1, 101))

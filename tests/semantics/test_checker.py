@@ -1,4 +1,5 @@
 """The checker's recorded tables and its finer rules, on small programs written here."""
+
 import textwrap
 from pathlib import Path
 
@@ -52,7 +53,11 @@ BUFFER = """\
 
 
 def test_wait_conditions_record_the_separate_arguments_used_as_targets(tmp_path):
-    checked = check(tmp_path, {"BUFFER": BUFFER, "APP": """\
+    checked = check(
+        tmp_path,
+        {
+            "BUFFER": BUFFER,
+            "APP": """\
         class APP
         create
             make
@@ -67,7 +72,9 @@ def test_wait_conditions_record_the_separate_arguments_used_as_targets(tmp_path)
                     a.put (n)
                 end
         end
-    """})
+    """,
+        },
+    )
     assert codes(checked) == []
     waits = checked.semantics.tables.wait_args
     clauses = nodes(checked, syntax.AssertionClause)
@@ -76,7 +83,11 @@ def test_wait_conditions_record_the_separate_arguments_used_as_targets(tmp_path)
 
 
 def test_separate_calls_lock_passing_and_adapted_results_are_recorded(tmp_path):
-    checked = check(tmp_path, {"BUFFER": BUFFER, "APP": """\
+    checked = check(
+        tmp_path,
+        {
+            "BUFFER": BUFFER,
+            "APP": """\
         class APP
         create
             make
@@ -92,27 +103,34 @@ def test_separate_calls_lock_passing_and_adapted_results_are_recorded(tmp_path):
                 end
             register (b: separate BUFFER) do end
         end
-    """})
+    """,
+        },
+    )
     assert codes(checked) == []
     tables = checked.semantics.tables
     calls = {c.name.text: c for c in nodes(checked, syntax.QualifiedCall) if c.span.file.endswith("app.e")}
     assert calls["put"] in tables.separate_calls and calls["label"] in tables.separate_calls
-    assert calls["count"] in tables.separate_calls        # on the adapted (separate) result
+    assert calls["count"] in tables.separate_calls  # on the adapted (separate) result
     assert str(tables.types[calls["label"]]) == "separate STRING_8"
     assert calls["label"] in tables.controlled
     assert tables.features[calls["put"]].written_in == "BUFFER"
-    assert calls["put"] not in tables.lock_passing            # an INTEGER argument passes no lock
+    assert calls["put"] not in tables.lock_passing  # an INTEGER argument passes no lock
     registered = next(c for c in nodes(checked, syntax.UnqualifiedCall) if c.name.text == "register")
-    assert registered not in tables.separate_calls             # a call on Current is not separate
+    assert registered not in tables.separate_calls  # a call on Current is not separate
 
 
 def test_arguments_that_can_pass_locks_are_recorded(tmp_path):
-    checked = check(tmp_path, {"BUFFER": BUFFER, "SINK": """\
+    checked = check(
+        tmp_path,
+        {
+            "BUFFER": BUFFER,
+            "SINK": """\
         class SINK
         feature
             take (b: separate BUFFER; n: INTEGER; note_: separate STRING) do end
         end
-    """, "APP": """\
+    """,
+            "APP": """\
         class APP
         create
             make
@@ -124,7 +142,9 @@ def test_arguments_that_can_pass_locks_are_recorded(tmp_path):
                     s.take (b, 4, "text")
                 end
         end
-    """})
+    """,
+        },
+    )
     assert codes(checked) == []
     tables = checked.semantics.tables
     takes = [c for c in nodes(checked, syntax.QualifiedCall) if c.name.text == "take"]
@@ -132,7 +152,11 @@ def test_arguments_that_can_pass_locks_are_recorded(tmp_path):
 
 
 def test_a_separate_query_result_cannot_become_non_separate(tmp_path):
-    checked = check(tmp_path, {"BUFFER": BUFFER, "APP": """\
+    checked = check(
+        tmp_path,
+        {
+            "BUFFER": BUFFER,
+            "APP": """\
         class APP
         create
             make
@@ -148,14 +172,19 @@ def test_a_separate_query_result_cannot_become_non_separate(tmp_path):
                     print (t.count)
                 end
         end
-    """})
+    """,
+        },
+    )
     assert codes(checked) == [("VJAR", 11), ("VUTA(3)", 13)]
     hint = next(d for d in checked.diagnostics if d.code == "VJAR").hint
     assert "make_from_separate" in hint
 
 
 def test_conversions_and_manifest_constants_take_their_type_from_the_context(tmp_path):
-    checked = check(tmp_path, {"APP": """\
+    checked = check(
+        tmp_path,
+        {
+            "APP": """\
         class APP
         create
             make
@@ -175,14 +204,17 @@ def test_conversions_and_manifest_constants_take_their_type_from_the_context(tmp
                     small := 300
                 end
         end
-    """})
+    """
+        },
+    )
     assert codes(checked) == [("VJAR", 17)]
     conversions = checked.semantics.tables.conversions
     assert sorted(str(target) for _, target in conversions.values()) == ["INTEGER_64", "REAL_64", "REAL_64"]
 
 
 def test_void_safety_follows_the_ecf_setting(tmp_path):
-    program = {"APP": """\
+    program = {
+        "APP": """\
         class APP
         create
             make
@@ -194,7 +226,8 @@ def test_void_safety_follows_the_ecf_setting(tmp_path):
                     print (s.count)
                 end
         end
-    """}
+    """
+    }
     ecf = """<?xml version="1.0"?>
 <system xmlns="http://www.eiffel.com/developers/xml/configuration-1-22-0" name="app">
   <target name="app">
@@ -208,7 +241,10 @@ def test_void_safety_follows_the_ecf_setting(tmp_path):
 
 
 def test_object_tests_and_void_comparisons_make_a_target_attached(tmp_path):
-    checked = check(tmp_path, {"APP": """\
+    checked = check(
+        tmp_path,
+        {
+            "APP": """\
         class APP
         create
             make
@@ -224,12 +260,17 @@ def test_object_tests_and_void_comparisons_make_a_target_attached(tmp_path):
                     n := s.count
                 end
         end
-    """})
+    """
+        },
+    )
     assert codes(checked) == [("VUTA(2)", 13)]
 
 
 def test_one_mistake_gives_one_diagnostic_and_a_failing_class_stops_there(tmp_path):
-    checked = check(tmp_path, {"APP": """\
+    checked = check(
+        tmp_path,
+        {
+            "APP": """\
         class APP
         create
             make
@@ -242,7 +283,9 @@ def test_one_mistake_gives_one_diagnostic_and_a_failing_class_stops_there(tmp_pa
                     x.stop
                 end
         end
-    """})
+    """
+        },
+    )
     assert [d.code for d in checked.diagnostics] == ["VTCT"]
 
 
@@ -254,7 +297,10 @@ def test_every_validity_diagnostic_carries_a_hint():
 
 
 def test_a_user_class_named_like_a_library_class_hides_it_from_the_user_only(tmp_path):
-    checked = check(tmp_path, {"CELL": """\
+    checked = check(
+        tmp_path,
+        {
+            "CELL": """\
         class CELL
         create
             make
@@ -262,7 +308,8 @@ def test_a_user_class_named_like_a_library_class_hides_it_from_the_user_only(tmp
             make (v: INTEGER) do value := v end
             value: INTEGER
         end
-    """, "APP": """\
+    """,
+            "APP": """\
         class APP
         create
             make
@@ -278,12 +325,17 @@ def test_a_user_class_named_like_a_library_class_hides_it_from_the_user_only(tmp
                     across ("a,b").split (',') as part loop print (part.item) end
                 end
         end
-    """})
+    """,
+        },
+    )
     assert [diagnostics.short(d) for d in checked.diagnostics] == []
 
 
 def test_incompatible_equality_is_a_warning_as_in_eiffelstudio(tmp_path):
-    checked = check(tmp_path, {"APP": """\
+    checked = check(
+        tmp_path,
+        {
+            "APP": """\
         class APP
         create
             make
@@ -300,19 +352,23 @@ def test_incompatible_equality_is_a_warning_as_in_eiffelstudio(tmp_path):
                     if ratio = count and count.out ~ answer then print ("fine") end
                 end
         end
-    """})
+    """
+        },
+    )
     assert codes(checked) == []
     assert [(d.code, d.severity, d.span.line) for d in checked.diagnostics] == [("VWEQ", "warning", 12)]
 
 
 ACCEPTED = {
-    "like_anchor_follows_a_redeclaration": {"A": """\
+    "like_anchor_follows_a_redeclaration": {
+        "A": """\
         class A
         feature
             attr: detachable ANY
             other: like attr
         end
-    """, "B": """\
+    """,
+        "B": """\
         class B
         inherit
             A
@@ -326,8 +382,10 @@ ACCEPTED = {
                     s := other
                 end
         end
-    """},
-    "like_current_on_a_formal_generic_target": {"BOX": """\
+    """,
+    },
+    "like_current_on_a_formal_generic_target": {
+        "BOX": """\
         class BOX [G -> COMPARABLE]
         feature
             value: detachable G
@@ -337,8 +395,10 @@ ACCEPTED = {
                     value := Result
                 end
         end
-    """},
-    "none_as_a_type": {"APP": """\
+    """
+    },
+    "none_as_a_type": {
+        "APP": """\
         class APP
         feature
             make
@@ -350,8 +410,10 @@ ACCEPTED = {
                     n := Void
                 end
         end
-    """},
-    "pre_17_05_agent_types_over_a_tuple_formal": {"EVENT": """\
+    """
+    },
+    "pre_17_05_agent_types_over_a_tuple_formal": {
+        "EVENT": """\
         class EVENT [ARGS -> TUPLE create default_create end]
         create
             make
@@ -361,7 +423,8 @@ ACCEPTED = {
             subscribe (p: PROCEDURE [ANY, ARGS]) do subscribers.extend (p) end
             publish (a: ARGS) do across subscribers as s loop s.item.call (a) end end
         end
-    """, "APP": """\
+    """,
+        "APP": """\
         class APP
         feature
             make
@@ -374,8 +437,10 @@ ACCEPTED = {
                 end
             show (i: INTEGER) do print (i) end
         end
-    """},
-    "agent_on_a_tuple_label_and_check_false": {"APP": """\
+    """,
+    },
+    "agent_on_a_tuple_label_and_check_false": {
+        "APP": """\
         class APP
         feature
             make
@@ -390,15 +455,18 @@ ACCEPTED = {
                     check False then end
                 end
         end
-    """},
-    "inherited_creation_procedure_of_a_library_class": {"FOOD_BOX": """\
+    """
+    },
+    "inherited_creation_procedure_of_a_library_class": {
+        "FOOD_BOX": """\
         class FOOD_BOX [G -> COMPARABLE]
         inherit
             ARRAYED_LIST [G]
         create
             make
         end
-    """, "TAGGED_BOX": """\
+    """,
+        "TAGGED_BOX": """\
         class TAGGED_BOX
         inherit
             ARRAYED_LIST [STRING]
@@ -413,32 +481,39 @@ ACCEPTED = {
                 end
             tag: STRING
         end
-    """},
-    "effective_version_joined_with_deferred_ones_needs_only_a_conforming_signature": {"BASE": """\
+    """,
+    },
+    "effective_version_joined_with_deferred_ones_needs_only_a_conforming_signature": {
+        "BASE": """\
         deferred class BASE
         feature
             put (x: separate ANY) deferred end
         end
-    """, "LEFT": """\
+    """,
+        "LEFT": """\
         deferred class LEFT
         inherit
             BASE
         feature
             put (x: STRING) do print (x) end
         end
-    """, "RIGHT": """\
+    """,
+        "RIGHT": """\
         deferred class RIGHT
         inherit
             BASE
         end
-    """, "BOTH": """\
+    """,
+        "BOTH": """\
         class BOTH
         inherit
             LEFT
             RIGHT
         end
-    """},
-    "static_anchors": {"APP": """\
+    """,
+    },
+    "static_anchors": {
+        "APP": """\
         class APP
         feature
             make
@@ -452,7 +527,8 @@ ACCEPTED = {
                     Result := "x"
                 end
         end
-    """},
+    """
+    },
 }
 
 
@@ -463,14 +539,18 @@ def test_forms_eiffelstudio_accepts_check_clean(tmp_path, case):
 
 
 def test_a_missing_parent_is_reported_once_not_in_its_heirs_and_clients(tmp_path):
-    checked = check(tmp_path, {"C": """\
+    checked = check(
+        tmp_path,
+        {
+            "C": """\
         class C
         inherit
             UNKNOWN_PARENT
         create
             make
         end
-    """, "APP": """\
+    """,
+            "APP": """\
         class APP
         create
             make
@@ -484,5 +564,7 @@ def test_a_missing_parent_is_reported_once_not_in_its_heirs_and_clients(tmp_path
                     across c as x loop print (x.item) end
                 end
         end
-    """})
+    """,
+        },
+    )
     assert codes(checked) == [("VTCT", 3)]

@@ -1,5 +1,6 @@
 """The checker never fails on a program that parses: mutants of the valid programs (lines
 deleted, swapped or with a name replaced) give diagnostics, never an exception."""
+
 import os
 import re
 from pathlib import Path
@@ -10,14 +11,46 @@ from scoopc import pipeline
 from scoopc.project import collect
 
 TESTS = Path(__file__).resolve().parents[1]
-PROGRAMS = sorted(p for p in (TESTS / "semantics" / "valid").iterdir() if p.is_dir()) + \
-    sorted((TESTS / "syntax" / "valid").glob("*.e"))
-WORDS = ["Current", "Result", "Void", "item", "count", "separate", "attached", "detachable", "STRING",
-         "INTEGER", "ANY", "NONE", "like Current", "42", '"s"', "old item", "agent make",
-         "create {STRING}.make_empty", "[1, 2]", "<<1>>", "(1 |..| 3)", "x.y.z", "not", "+"]
+PROGRAMS = sorted(p for p in (TESTS / "semantics" / "valid").iterdir() if p.is_dir()) + sorted(
+    (TESTS / "syntax" / "valid").glob("*.e")
+)
+WORDS = [
+    "Current",
+    "Result",
+    "Void",
+    "item",
+    "count",
+    "separate",
+    "attached",
+    "detachable",
+    "STRING",
+    "INTEGER",
+    "ANY",
+    "NONE",
+    "like Current",
+    "42",
+    '"s"',
+    "old item",
+    "agent make",
+    "create {STRING}.make_empty",
+    "[1, 2]",
+    "<<1>>",
+    "(1 |..| 3)",
+    "x.y.z",
+    "not",
+    "+",
+]
 
-edits = st.lists(st.tuples(st.sampled_from(["delete", "replace", "swap"]), st.integers(0, 10**6),
-                           st.integers(0, 10**6), st.sampled_from(WORDS)), min_size=1, max_size=3)
+edits = st.lists(
+    st.tuples(
+        st.sampled_from(["delete", "replace", "swap"]),
+        st.integers(0, 10**6),
+        st.integers(0, 10**6),
+        st.sampled_from(WORDS),
+    ),
+    min_size=1,
+    max_size=3,
+)
 
 
 def mutate(lines: list, edit) -> None:

@@ -1,5 +1,6 @@
 """The programs that cover every construct of the grammar (tests/syntax/valid/) are valid
 Eiffel: they check without a diagnostic."""
+
 from pathlib import Path
 
 import pytest

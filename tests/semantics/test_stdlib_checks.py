@@ -1,4 +1,5 @@
 """Every class of the standard library checks cleanly, bodies included (no cache)."""
+
 from pathlib import Path
 
 from scoopc import diagnostics, pipeline
@@ -13,10 +14,35 @@ def test_every_stdlib_class_checks_without_diagnostics():
 
 def test_stdlib_holds_the_kernel_classes_programs_name():
     names = {p.stem.upper() for p in stdlib_files()}
-    wanted = {"ANY", "INTEGER_32", "REAL_64", "BOOLEAN", "CHARACTER_8", "STRING_8", "STRING_32", "ARRAY",
-              "SPECIAL", "TUPLE", "CELL", "ARRAYED_LIST", "LINKED_LIST", "ARRAYED_QUEUE", "HASH_TABLE",
-              "PROCEDURE", "FUNCTION", "PREDICATE", "EXECUTION_ENVIRONMENT", "ARGUMENTS", "RANDOM",
-              "DOUBLE_MATH", "STD_FILES", "IMMUTABLE_STRING_8", "TYPE", "EXCEPTIONS", "PLAIN_TEXT_FILE"}
+    wanted = {
+        "ANY",
+        "INTEGER_32",
+        "REAL_64",
+        "BOOLEAN",
+        "CHARACTER_8",
+        "STRING_8",
+        "STRING_32",
+        "ARRAY",
+        "SPECIAL",
+        "TUPLE",
+        "CELL",
+        "ARRAYED_LIST",
+        "LINKED_LIST",
+        "ARRAYED_QUEUE",
+        "HASH_TABLE",
+        "PROCEDURE",
+        "FUNCTION",
+        "PREDICATE",
+        "EXECUTION_ENVIRONMENT",
+        "ARGUMENTS",
+        "RANDOM",
+        "DOUBLE_MATH",
+        "STD_FILES",
+        "IMMUTABLE_STRING_8",
+        "TYPE",
+        "EXCEPTIONS",
+        "PLAIN_TEXT_FILE",
+    }
     assert wanted <= names, sorted(wanted - names)
 
 

@@ -1,5 +1,6 @@
 """Whole SCOOP programs that must check without a single error: tests/semantics/valid/<program>/
 and the runnable samples/<program>/, each checked as one cluster with `scoopc check`'s pipeline."""
+
 from pathlib import Path
 
 import pytest
@@ -23,7 +24,8 @@ def test_program_checks_without_errors(program):
     checked = pipeline.check_project(collect([str(p) for p in program.glob("*.ecf")] or [str(program)]))
     errors = [d for d in checked.diagnostics if d.is_error]
     assert not errors, f"{program.relative_to(ROOT)} should be valid, but:\n" + "\n".join(
-        diagnostics.short(d) for d in errors)
+        diagnostics.short(d) for d in errors
+    )
 
 
 def test_every_program_is_there():

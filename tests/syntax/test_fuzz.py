@@ -3,6 +3,7 @@ from the front end, as diagnostics or a tree, never an internal error, within 2 
 
 The default profile runs 2,000 examples; SCOOPC_HYPOTHESIS_PROFILE=thorough runs ten times more.
 """
+
 import os
 import re
 
@@ -15,9 +16,45 @@ from scoopc.source import SourceFile
 from harness import ROOT
 
 TOKEN = re.compile(r'"(?:%.|[^"%\n])*"|\'(?:%.|[^\'%\n])*\'|--[^\n]*|\s+|\w+|[^\w\s]{1,3}')
-EXTRA_TOKENS = ["end", "do", "if", "then", "loop", "(", ")", "[", "]", ":=", ";", ",", ".", "\"", "'",
-                "%", "separate", "create", "class", "feature", "attached", "agent", "<<", ">>", "|..|",
-                "0x", "1_000", "\"[", "]\"", "?", "{", "}", "old", "Result", "across", "as", "@"]
+EXTRA_TOKENS = [
+    "end",
+    "do",
+    "if",
+    "then",
+    "loop",
+    "(",
+    ")",
+    "[",
+    "]",
+    ":=",
+    ";",
+    ",",
+    ".",
+    '"',
+    "'",
+    "%",
+    "separate",
+    "create",
+    "class",
+    "feature",
+    "attached",
+    "agent",
+    "<<",
+    ">>",
+    "|..|",
+    "0x",
+    "1_000",
+    '"[',
+    ']"',
+    "?",
+    "{",
+    "}",
+    "old",
+    "Result",
+    "across",
+    "as",
+    "@",
+]
 EXAMPLES = 20_000 if os.environ.get("SCOOPC_HYPOTHESIS_PROFILE") == "thorough" else 2_000
 
 
@@ -45,8 +82,12 @@ def mutated_programs(draw):
     return "".join(tokens)
 
 
-@settings(max_examples=EXAMPLES, deadline=2000, derandomize=True,
-          suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@settings(
+    max_examples=EXAMPLES,
+    deadline=2000,
+    derandomize=True,
+    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
+)
 @given(mutated_programs())
 def test_mutated_programs_get_located_diagnostics_or_a_tree(text):
     source = SourceFile("fuzz.e", text)

@@ -1,4 +1,5 @@
 """Syntax errors students make most carry a hint in plain words (shown by the pretty form)."""
+
 from pathlib import Path
 
 import pytest

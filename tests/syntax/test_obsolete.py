@@ -1,19 +1,23 @@
 """Pre-ECMA syntax is named with its modern spelling (SYNTAX-OBSOLETE), at the right place."""
+
 import pytest
 
 from scoopc.parse import parser
 from scoopc.source import SourceFile
 
 CASES = [
-    ("indexing\n\tdescription: \"x\"\nclass X end\n", (1, 1), "`indexing` is the obsolete spelling of `note`"),
+    ('indexing\n\tdescription: "x"\nclass X end\n', (1, 1), "`indexing` is the obsolete spelling of `note`"),
     ("class X\ncreation\n\tmake\nfeature\n\tmake do end\nend\n", (2, 1), "`creation`"),
     ("class X\nfeature\n\tf is do end\nend\n", (3, 4), "`is` before a routine body"),
     ("class X\nfeature\n\tc: INTEGER is 5\nend\n", (3, 13), "`is` before a routine body"),
-    ("class X\nfeature\n\tinfix \"+\" (o: X): X do end\nend\n", (3, 8), "`infix \"op\"`"),
-    ("class X\nfeature\n\tprefix \"-\": X do end\nend\n", (3, 9), "`prefix \"op\"`"),
+    ('class X\nfeature\n\tinfix "+" (o: X): X do end\nend\n', (3, 8), '`infix "op"`'),
+    ('class X\nfeature\n\tprefix "-": X do end\nend\n', (3, 9), '`prefix "op"`'),
     ("class X\nfeature\n\tx: ?STRING\nend\n", (3, 5), "`?T` is the obsolete spelling of `detachable T`"),
-    ("class X\nfeature\n\tf (a: ANY) do if {s: STRING} a then end end\nend\n", (3, 21),
-     "`{x: T} e` is the obsolete form of an object test"),
+    (
+        "class X\nfeature\n\tf (a: ANY) do if {s: STRING} a then end end\nend\n",
+        (3, 21),
+        "`{x: T} e` is the obsolete form of an object test",
+    ),
 ]
 
 

@@ -1,5 +1,6 @@
 """Unit tests of the parser: precedence, literals, names, reserved words, syntax errors with
 their exact positions, the AST dump, and the optional lark-cython accelerator."""
+
 from __future__ import annotations
 
 import pytest
@@ -53,34 +54,37 @@ def show(e: s.Expression) -> str:
 
 
 # ---- precedence and associativity -----------------------------------------------------------
-@pytest.mark.parametrize("text, tree", [
-    ("a + b * c", "(+ a (* b c))"),
-    ("a * b + c", "(+ (* a b) c)"),
-    ("a - b - c", "(- (- a b) c)"),
-    ("a ^ b ^ c", "(^ a (^ b c))"),
-    ("a * b ^ c", "(* a (^ b c))"),
-    ("-a ^ b", "(^ (- a) b)"),
-    ("a // b \\\\ c", "(\\\\ (// a b) c)"),
-    ("a / b * c", "(* (/ a b) c)"),
-    ("not a and b", "(and (not a) b)"),
-    ("a and b or c and d", "(or (and a b) (and c d))"),
-    ("a or b xor c", "(xor (or a b) c)"),
-    ("a and then b or else c", "(or else (and then a b) c)"),
-    ("a implies b implies c", "(implies (implies a b) c)"),
-    ("a or b implies c", "(implies (or a b) c)"),
-    ("a = b and c /= d", "(and (= a b) (/= c d))"),
-    ("a ~ b or a /~ c", "(or (~ a b) (/~ a c))"),
-    ("a < b = (c >= d)", "(= (< a b) (>= c d))"),
-    ("a |..| b + 1", "(|..| a (+ b 1))"),
-    ("a + 1 < b |..| c", "(< (+ a 1) (|..| b c))"),
-    ("a |>> 2 ^ 3", "(^ (|>> a 2) 3)"),
-    ("a * b @ c", "(* a (@ b c))"),
-    ("old a.b + 1", "(+ (old a.b) 1)"),
-    ("not a.b [i]", "(not a.b[i])"),
-    ("- - a", "(- (- a))"),
-    ("a & b /= 0", "(/= (& a b) 0)"),
-    ("attached a and b", "(and (attached a) b)"),
-])
+@pytest.mark.parametrize(
+    "text, tree",
+    [
+        ("a + b * c", "(+ a (* b c))"),
+        ("a * b + c", "(+ (* a b) c)"),
+        ("a - b - c", "(- (- a b) c)"),
+        ("a ^ b ^ c", "(^ a (^ b c))"),
+        ("a * b ^ c", "(* a (^ b c))"),
+        ("-a ^ b", "(^ (- a) b)"),
+        ("a // b \\\\ c", "(\\\\ (// a b) c)"),
+        ("a / b * c", "(* (/ a b) c)"),
+        ("not a and b", "(and (not a) b)"),
+        ("a and b or c and d", "(or (and a b) (and c d))"),
+        ("a or b xor c", "(xor (or a b) c)"),
+        ("a and then b or else c", "(or else (and then a b) c)"),
+        ("a implies b implies c", "(implies (implies a b) c)"),
+        ("a or b implies c", "(implies (or a b) c)"),
+        ("a = b and c /= d", "(and (= a b) (/= c d))"),
+        ("a ~ b or a /~ c", "(or (~ a b) (/~ a c))"),
+        ("a < b = (c >= d)", "(= (< a b) (>= c d))"),
+        ("a |..| b + 1", "(|..| a (+ b 1))"),
+        ("a + 1 < b |..| c", "(< (+ a 1) (|..| b c))"),
+        ("a |>> 2 ^ 3", "(^ (|>> a 2) 3)"),
+        ("a * b @ c", "(* a (@ b c))"),
+        ("old a.b + 1", "(+ (old a.b) 1)"),
+        ("not a.b [i]", "(not a.b[i])"),
+        ("- - a", "(- (- a))"),
+        ("a & b /= 0", "(/= (& a b) 0)"),
+        ("attached a and b", "(and (attached a) b)"),
+    ],
+)
 def test_operator_precedence_and_associativity(text, tree):
     assert show(expression(text)) == tree
 
@@ -92,19 +96,33 @@ def test_and_then_spans_both_words():
 
 
 # ---- literals -------------------------------------------------------------------------------
-@pytest.mark.parametrize("text, value", [
-    ("1_000_000", 1000000), ("0xFF", 255), ("0x7FFF_FFFF", 0x7FFFFFFF), ("0c17", 15),
-    ("0b1010", 10), ("0", 0),
-])
+@pytest.mark.parametrize(
+    "text, value",
+    [
+        ("1_000_000", 1000000),
+        ("0xFF", 255),
+        ("0x7FFF_FFFF", 0x7FFFFFFF),
+        ("0c17", 15),
+        ("0b1010", 10),
+        ("0", 0),
+    ],
+)
 def test_integer_literals(text, value):
     e = expression(text)
     assert isinstance(e, s.ManifestInteger) and e.value == value and e.text == text
 
 
-@pytest.mark.parametrize("text, value", [
-    ("1.5", 1.5), ("1.", 1.0), (".5", 0.5), ("1.5e10", 1.5e10), ("2.5E-3", 2.5e-3),
-    ("1_000.25", 1000.25),
-])
+@pytest.mark.parametrize(
+    "text, value",
+    [
+        ("1.5", 1.5),
+        ("1.", 1.0),
+        (".5", 0.5),
+        ("1.5e10", 1.5e10),
+        ("2.5E-3", 2.5e-3),
+        ("1_000.25", 1000.25),
+    ],
+)
 def test_real_literals(text, value):
     e = expression(text)
     assert isinstance(e, s.ManifestReal) and e.value == value
@@ -116,11 +134,19 @@ def test_interval_of_integers_is_not_a_real():
     assert (choice.lower.value, choice.upper.value) == (1, 5)
 
 
-@pytest.mark.parametrize("text, value", [
-    ('"abc"', "abc"), ('"a%Nb%Tc"', "a\nb\tc"), ('"say %"hi%""', 'say "hi"'),
-    ('"100%%"', "100%"), ('"%/65/%/0x42/"', "AB"), ('""', ""),
-    ('"%(x%)"', "[x]"), ('"one %\n\t\t%two"', "one two"),
-])
+@pytest.mark.parametrize(
+    "text, value",
+    [
+        ('"abc"', "abc"),
+        ('"a%Nb%Tc"', "a\nb\tc"),
+        ('"say %"hi%""', 'say "hi"'),
+        ('"100%%"', "100%"),
+        ('"%/65/%/0x42/"', "AB"),
+        ('""', ""),
+        ('"%(x%)"', "[x]"),
+        ('"one %\n\t\t%two"', "one two"),
+    ],
+)
 def test_string_escapes(text, value):
     e = expression(text)
     assert isinstance(e, s.ManifestString) and e.value == value and not e.verbatim
@@ -140,8 +166,7 @@ def test_verbatim_strings_do_not_interpret_percent():
     assert expression('"[\n100%N\n]"').value == "100%N"
 
 
-@pytest.mark.parametrize("text, value", [("'a'", "a"), ("'%N'", "\n"), ("'%''", "'"),
-                                         ("'%/65/'", "A"), ("'%%'", "%")])
+@pytest.mark.parametrize("text, value", [("'a'", "a"), ("'%N'", "\n"), ("'%''", "'"), ("'%/65/'", "A"), ("'%%'", "%")])
 def test_character_literals(text, value):
     e = expression(text)
     assert isinstance(e, s.ManifestCharacter) and e.value == value
@@ -173,13 +198,16 @@ def test_current_result_void_in_any_case():
     assert isinstance(instruction.source.left, s.Current) and isinstance(instruction.source.right, s.Void)
 
 
-@pytest.mark.parametrize("text, word, line, column", [
-    ("class A\nfeature\n\tloop: INTEGER\nend\n", "loop", 3, 2),
-    ("class A\nfeature\n\tf (a, END: INTEGER) do end\nend\n", "END", 3, 8),
-    ("class A\nfeature\n\tf\n\t\tlocal\n\t\t\tseparate: BOOLEAN\n\t\tdo\n\t\tend\nend\n", "separate", 5, 4),
-    ("class A\nfeature\n\tf do x := y.then end\nend\n", "then", 3, 14),
-    ("class A\nfeature\n\tf do Old := 3 end\nend\n", "Old", 3, 7),
-])
+@pytest.mark.parametrize(
+    "text, word, line, column",
+    [
+        ("class A\nfeature\n\tloop: INTEGER\nend\n", "loop", 3, 2),
+        ("class A\nfeature\n\tf (a, END: INTEGER) do end\nend\n", "END", 3, 8),
+        ("class A\nfeature\n\tf\n\t\tlocal\n\t\t\tseparate: BOOLEAN\n\t\tdo\n\t\tend\nend\n", "separate", 5, 4),
+        ("class A\nfeature\n\tf do x := y.then end\nend\n", "then", 3, 14),
+        ("class A\nfeature\n\tf do Old := 3 end\nend\n", "Old", 3, 7),
+    ],
+)
 def test_reserved_word_used_as_a_name(text, word, line, column):
     (d,) = parse_text(text).diagnostics
     assert d.code == "SYNTAX-RESERVED"
@@ -201,8 +229,9 @@ def test_missing_end_of_if_names_the_if():
 
 
 def test_missing_end_of_loop_names_the_from():
-    text = ("class A\nfeature\n\tf\n\t\tdo\n\t\t\tfrom i := 1 until i > 3 loop\n"
-            "\t\t\t\ti := i + 1\n\t\tend\nfeature\nend\n")
+    text = (
+        "class A\nfeature\n\tf\n\t\tdo\n\t\t\tfrom i := 1 until i > 3 loop\n\t\t\t\ti := i + 1\n\t\tend\nfeature\nend\n"
+    )
     assert only_error(text) == "t.e:8:1: error SYNTAX-END: missing `end` of the `from` opened at 5:4"
 
 
@@ -233,8 +262,9 @@ def test_missing_end_of_separate_block():
 
 def test_missing_then_says_what_was_expected():
     text = "class A\nfeature\n\tf do\n\t\tif x > 0\n\t\t\tprint (x)\n\t\tend\n\tend\nend\n"
-    assert only_error(text) == ("t.e:5:4: error SYNTAX: the name `print` is not allowed here; "
-                                "expected `then` or an operator")
+    assert only_error(text) == (
+        "t.e:5:4: error SYNTAX: the name `print` is not allowed here; expected `then` or an operator"
+    )
 
 
 def test_missing_expression():
@@ -249,7 +279,9 @@ def test_missing_type_after_colon():
 
 def test_feature_without_type_or_body():
     text = "class A\nfeature\n\tcount INTEGER\nend\n"
-    assert only_error(text).startswith("t.e:3:8: error SYNTAX: the name `INTEGER` is not allowed here; expected `(`, `,`, `:`")
+    assert only_error(text).startswith(
+        "t.e:3:8: error SYNTAX: the name `INTEGER` is not allowed here; expected `(`, `,`, `:`"
+    )
 
 
 def test_unterminated_string_at_its_quote():
@@ -265,8 +297,9 @@ def test_bad_character_at_its_position():
 def test_bad_escape_points_at_the_percent():
     result = parse_text('class A\nfeature\n\tf do print ("ab%kc") end\nend\n')
     (d,) = result.diagnostics
-    assert diagnostics.short(d) == ("t.e:3:17: error SYNTAX-LEXICAL: `%k` is not a special "
-                                    "character code (use `%%` for a percent sign)")
+    assert diagnostics.short(d) == (
+        "t.e:3:17: error SYNTAX-LEXICAL: `%k` is not a special character code (use `%%` for a percent sign)"
+    )
     assert (d.span.end_column - d.span.column) == 2
 
 
@@ -283,8 +316,7 @@ def test_open_operand_outside_an_agent():
 
 def test_two_classes_in_one_file():
     (d,) = parse_text("class A end\n\nclass B end\n").diagnostics
-    assert diagnostics.short(d) == ("t.e:3:1: error SYNTAX-CLASS: class `B` is a second class "
-                                    "in this file (after `A`)")
+    assert diagnostics.short(d) == ("t.e:3:1: error SYNTAX-CLASS: class `B` is a second class in this file (after `A`)")
 
 
 def test_empty_file():
@@ -293,9 +325,22 @@ def test_empty_file():
     assert [d.code for d in result.diagnostics] == ["SYNTAX-CLASS"]
 
 
-@pytest.mark.parametrize("text", ["", "end", "class", "class A feature f do", "))))", '"',
-                                  "class A feature f do x := ((((((((( end end", "\x00\x01",
-                                  "class A feature f do across end end", "note\n", "%%%"])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "",
+        "end",
+        "class",
+        "class A feature f do",
+        "))))",
+        '"',
+        "class A feature f do x := ((((((((( end end",
+        "\x00\x01",
+        "class A feature f do across end end",
+        "note\n",
+        "%%%",
+    ],
+)
 def test_garbage_gives_diagnostics_not_exceptions(text):
     result = parse_text(text)
     assert result.diagnostics and all(d.span is not None for d in result.diagnostics)
@@ -319,8 +364,10 @@ def test_creation_forms():
 
 
 def test_agents():
-    plain, open_target, inline = (expression(t) for t in (
-        "agent f (?, 1)", "agent {STRING}.count", "agent (i: INTEGER): BOOLEAN do Result := i > 0 end"))
+    plain, open_target, inline = (
+        expression(t)
+        for t in ("agent f (?, 1)", "agent {STRING}.count", "agent (i: INTEGER): BOOLEAN do Result := i > 0 end")
+    )
     assert plain.target is None and isinstance(plain.arguments[0], s.OpenOperand)
     assert isinstance(open_target.target, s.ManifestType) and open_target.arguments is None
     assert isinstance(inline, s.InlineAgent) and inline.arguments[0].name.text == "i"
@@ -333,8 +380,10 @@ def test_object_tests():
 
 
 def test_types_with_marks_anchors_and_tuples():
-    tree = parse_class("class A\nfeature\n\ta: detachable separate LIST [like Current]\n"
-                       "\tb: TUPLE [x, y: INTEGER; name: STRING]\n\tc: like a.item\nend\n")
+    tree = parse_class(
+        "class A\nfeature\n\ta: detachable separate LIST [like Current]\n"
+        "\tb: TUPLE [x, y: INTEGER; name: STRING]\n\tc: like a.item\nend\n"
+    )
     a, b, c = (f.type for f in tree.feature_clauses[0].features)
     assert a.attachment == "detachable" and a.separate and isinstance(a.generics[0], s.AnchoredType)
     assert [label.text for label in b.labels] == ["x", "y", "name"]
@@ -343,7 +392,7 @@ def test_types_with_marks_anchors_and_tuples():
 
 
 def test_trailing_class_note_after_an_attribute_belongs_to_the_class():
-    tree = parse_class("class A\nfeature\n\tx: INTEGER\nnote\n\tauthor: \"me\"\nend\n")
+    tree = parse_class('class A\nfeature\n\tx: INTEGER\nnote\n\tauthor: "me"\nend\n')
     assert [n.tag.text for n in tree.notes] == ["author"]
     assert tree.feature_clauses[0].features[0].notes == ()
 
@@ -367,7 +416,8 @@ def test_dump_is_stable_and_shows_spans():
         "            - FeatureName @3:2-3:3\n"
         "              name: 'x' @3:2-3:3\n"
         "          type: ClassType @3:5-3:12\n"
-        "            name: 'INTEGER' @3:5-3:12\n")
+        "            name: 'INTEGER' @3:5-3:12\n"
+    )
 
 
 # ---- the parser itself ------------------------------------------------------------------------
@@ -385,9 +435,11 @@ def test_every_grammar_rule_has_a_builder_method():
 
 def test_accelerated_and_pure_parsers_agree(monkeypatch):
     pytest.importorskip("lark_cython")
-    text = ("class A\ninherit B redefine f end\nfeature\n\tf (a: INTEGER): like a\n"
-            "\t\trequire a > 0\n\t\tdo Result := a ^ 2 + {B}.c (agent g (?))\n"
-            "\t\t\tacross l as c loop print (c.item) end\n\t\tensure Result > 0\n\t\tend\nend\n")
+    text = (
+        "class A\ninherit B redefine f end\nfeature\n\tf (a: INTEGER): like a\n"
+        "\t\trequire a > 0\n\t\tdo Result := a ^ 2 + {B}.c (agent g (?))\n"
+        "\t\t\tacross l as c loop print (c.item) end\n\t\tensure Result > 0\n\t\tend\nend\n"
+    )
     fast = s.dump(parse_text(text).tree)
     monkeypatch.setenv("SCOOPC_PURE_PARSER", "1")
     builder = parser.AstBuilder()

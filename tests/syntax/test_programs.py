@@ -1,5 +1,6 @@
 """Whole programs through the parser: valid ones match their AST dump goldens, invalid ones
 report exactly the diagnostics their `-- E:` markers name."""
+
 from pathlib import Path
 
 import pytest

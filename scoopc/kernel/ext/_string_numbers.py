@@ -10,6 +10,7 @@ Reals: the convertor's state machine, including its quirks ("1e" and "1e+" are v
 ".5" and "5." are, "." and "1.5e" are not; no range check for `is_real`), and its arithmetic
 (natural part accumulated in REAL_64, fraction / divider, times 10.0 ^ exponent).
 """
+
 from __future__ import annotations
 
 import re
@@ -20,8 +21,14 @@ _INT_RE = re.compile(r" *([+-]?)([0-9]+) *\Z")
 
 # kind -> (signed, bits)
 KINDS = {
-    "i8": (True, 8), "i16": (True, 16), "i32": (True, 32), "i64": (True, 64),
-    "n8": (False, 8), "n16": (False, 16), "n32": (False, 32), "n64": (False, 64),
+    "i8": (True, 8),
+    "i16": (True, 16),
+    "i32": (True, 32),
+    "i64": (True, 64),
+    "n8": (False, 8),
+    "n16": (False, 16),
+    "n32": (False, 32),
+    "n64": (False, 64),
 }
 
 
@@ -30,7 +37,7 @@ def _limits(signed, bits):
     and `\\\\` truncate toward zero)."""
     if signed:
         top = (1 << (bits - 1)) - 1
-        low = 1 << (bits - 1)           # -(min_value)
+        low = 1 << (bits - 1)  # -(min_value)
         return (top // 10, top % 10), (low // 10, low % 10)
     top = (1 << bits) - 1
     return (top // 10, top % 10), None
@@ -41,7 +48,7 @@ _LIMITS = {kind: _limits(*spec) for kind, spec in KINDS.items()}
 
 def _will_overflow(part1, part2, kind, sign):
     positive, negative = _LIMITS[kind]
-    if negative is None:                # natural
+    if negative is None:  # natural
         if sign == 1:
             return part1 > 0 or part2 > 0
         s1, s2 = positive
@@ -127,7 +134,7 @@ def to_int(s, kind):
     if m is not None:
         magnitude = int(m.group(2)) & _M64
         sign = 1 if m.group(1) == "-" else 0
-    else:                               # precondition violated: what ISE's machine leaves
+    else:  # precondition violated: what ISE's machine leaves
         _ok, sign, part1, part2 = _int_machine(s, None)
         magnitude = (part1 * 10 + part2) & _M64
     signed, bits = KINDS[kind]
@@ -142,6 +149,7 @@ def to_int(s, kind):
 
 # ---------------------------------------------------------------------------------------------
 # Reals
+
 
 def _real_machine(s):
     """STRING_TO_REAL_CONVERTOR.parse_string_with_type. Returns (is_integral_double, value)."""
@@ -239,7 +247,7 @@ def _real_machine(s):
     if has_fraction:
         natural = natural + fractional / divider
     try:
-        scale = 10.0 ** exponent
+        scale = 10.0**exponent
     except OverflowError:
         scale = float("inf")
     value = (-natural if negative else natural) * scale

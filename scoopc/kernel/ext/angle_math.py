@@ -1,4 +1,5 @@
 """ANGLE_MATH's `external "Python"` features (stdlib/roboscoop/util/angle_math.e)."""
+
 import math
 
 

@@ -1,5 +1,6 @@
 """ANY's `built_in` features for objects of generated classes (values of basic types are served
 by scoopc.kernel.basic): reflection, copying and comparison, `tagged_out`."""
+
 from __future__ import annotations
 
 from .. import types as T
@@ -7,6 +8,7 @@ from .. import types as T
 
 def _string(region, text):
     from ..strings import new_string_8
+
     return new_string_8(region, text)
 
 
@@ -16,6 +18,7 @@ def generator(current):
 
 def generating_type(current):
     from ..support import type_object
+
     return type_object(current._region_, T.of(current))
 
 
@@ -60,7 +63,7 @@ def _blank(current):
 def standard_copy(current, other):
     region = current._region_
     theirs = _fields(other)
-    for name in _fields(current):         # a field `other` never set holds its class default
+    for name in _fields(current):  # a field `other` never set holds its class default
         if name not in theirs and not name.startswith("_"):
             theirs[name] = getattr(type(other), name, None)
     current.__dict__.update({k: (list(v) if isinstance(v, list) else v) for k, v in theirs.items()})

@@ -4,6 +4,7 @@ The program's command line is `PROGRAM`: index 0 is the command name (EiffelBase
 `argument (0)`), then the arguments. The launcher (scoopc.kernel.launcher) sets it with `set_arguments`
 before the root creation procedure runs; ARGUMENTS_32 reads the same list.
 """
+
 from scoopc.kernel.launcher import PROGRAM, set_arguments  # noqa: F401 - set_arguments: tests and embedders
 
 
@@ -14,6 +15,7 @@ def argument_count(current):
 def i_th_argument(current, i):
     """A new STRING_8 holding the `i`-th argument (the command name for 0)."""
     from scoopc.kernel import strings
+
     if i < 0:
         raise IndexError(f"argument index {i} is negative")
     return strings.new_string_8(current._region_, PROGRAM[i])

@@ -6,11 +6,12 @@ read it plus the virtual time elapsed since, so virtual time moves C_DATE and TI
 `field` splits a timestamp in local time (the host's time zone, as EiffelTime's C code with
 `localtime`) or UTC; milliseconds are truncated, as EiffelTime's.
 """
+
 import math
 import time
 import weakref
 
-_BASES = weakref.WeakKeyDictionary()     # virtual-clock runtime -> wall time at its clock's 0
+_BASES = weakref.WeakKeyDictionary()  # virtual-clock runtime -> wall time at its clock's 0
 
 
 def wall_now(region):

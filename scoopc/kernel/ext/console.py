@@ -6,6 +6,7 @@ Output goes through the runtime (`Processor.print` for the standard output, `pri
 the standard error): one `put_...` call is written whole. Input reads `sys.stdin` at call
 time through `STDIN`, shared by every console object of every region, as C's `stdin`.
 """
+
 import sys
 import threading
 
@@ -23,7 +24,7 @@ class StdinChan:
         self.eof = False
 
     def sync(self):
-        if sys.stdin is not self.stream:     # replaced (tests): start afresh on the new one
+        if sys.stdin is not self.stream:  # replaced (tests): start afresh on the new one
             self.stream, self.pb, self.eof = sys.stdin, "", False
 
     def _read(self, n):
@@ -55,7 +56,7 @@ class StdinChan:
         if i < 0:
             self.eof = True
             return data, False
-        self.pb = data[i + 1:]
+        self.pb = data[i + 1 :]
         return data[:i], True
 
     def read(self, n):
@@ -72,7 +73,6 @@ class StdinChan:
 
 
 STDIN = StdinChan()
-
 
 
 def _attach(current, fn, which, mode, chan):

@@ -5,6 +5,7 @@ EiffelStudio's C externals bit for bit. Where C returns a special value instead 
 (outside the domain, overflow), so do these: NaN, or an infinity, never a Python exception
 (preconditions may be off).
 """
+
 import math
 
 _NAN = math.nan
@@ -14,9 +15,9 @@ _INF = math.inf
 def _c(fn, v, outside=_NAN):
     try:
         return fn(v)
-    except ValueError:       # domain error: C gives NaN (or the special value given)
+    except ValueError:  # domain error: C gives NaN (or the special value given)
         return outside
-    except OverflowError:    # range error: C gives HUGE_VAL
+    except OverflowError:  # range error: C gives HUGE_VAL
         return _INF
 
 
@@ -54,7 +55,7 @@ def exp(current, x):
 
 def _log(fn, v):
     if v == 0.0:
-        return -_INF         # pole error: C gives -HUGE_VAL
+        return -_INF  # pole error: C gives -HUGE_VAL
     return _c(fn, v)
 
 
@@ -74,7 +75,7 @@ def _integral(fn, v):
     if math.isinf(v) or math.isnan(v):
         return v
     r = float(fn(v))
-    return math.copysign(0.0, v) if r == 0.0 else r     # C keeps the sign of a zero result
+    return math.copysign(0.0, v) if r == 0.0 else r  # C keeps the sign of a zero result
 
 
 def floor(current, v):

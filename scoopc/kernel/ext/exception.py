@@ -3,6 +3,7 @@
 Also `failure`, used by the other externals to raise a predefined Eiffel exception (IO_FAILURE,
 OPERATING_SYSTEM_FAILURE, ...) with a message, as EiffelStudio's run-time does.
 """
+
 from scoopc import kernel
 from scoopc.kernel.errors import EiffelFailure
 
@@ -22,6 +23,7 @@ def new_exception(region, class_name, message=None):
     exc = region.new(pycls)
     if message is not None:
         from scoopc.kernel import strings
+
         text = strings.new_string_32(region, message)
         setter = getattr(exc, "set_description", None)
         if setter is not None:

@@ -11,12 +11,13 @@ For the runtime (rescue clauses, raising): `set_last_exception(region, exc)` rec
 exception a rescue clause handles (None when none), `exception_is_ignored(region, exc)` tells
 whether an exception object's dynamic type is ignored in that region.
 """
+
 import threading
 import weakref
 
 from scoopc.kernel.errors import EiffelFailure
 
-_STATES = weakref.WeakKeyDictionary()    # region (Processor) -> _State
+_STATES = weakref.WeakKeyDictionary()  # region (Processor) -> _State
 _LOCK = threading.Lock()
 
 
@@ -49,6 +50,7 @@ def type_key(a_type):
     """The key of the type a TYPE value denotes: a TypeDesc itself, or a TYPE [X] object
     (whose `_gen_[0]` is X)."""
     from scoopc.kernel.types import TypeDesc
+
     if isinstance(a_type, TypeDesc):
         return _desc_key(a_type)
     gen = getattr(a_type, "_gen_", None)
@@ -59,6 +61,7 @@ def type_key(a_type):
 
 # --- features ---------------------------------------------------------------------------
 
+
 def last_exception(current):
     """The exception recorded by `set_last_exception`, else the one the generated rescue
     clause recorded through `scoopc.kernel.support.caught` (an EiffelFailure gives its
@@ -68,6 +71,7 @@ def last_exception(current):
     if st is not None and st.last is not None:
         return st.last
     from scoopc.kernel import support
+
     last_caught = getattr(support, "last_caught", None)
     error = last_caught(region) if last_caught is not None else None
     if error is None:
@@ -91,6 +95,7 @@ def catch(current, a_exception):
 
 # --- for the runtime --------------------------------------------------------------------
 
+
 def set_last_exception(region, exc):
     """Record `exc` (an EXCEPTION object, or None) as the exception handled in `region`."""
     _state(region).last = exc
@@ -102,4 +107,5 @@ def exception_is_ignored(region, exc):
     if st is None or not st.ignored:
         return False
     from scoopc.kernel.types import of
+
     return _desc_key(of(exc)) in st.ignored

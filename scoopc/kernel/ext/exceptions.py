@@ -1,8 +1,9 @@
 """EXCEPTIONS' `external "Python"` feature (stdlib/base/exceptions/exceptions.e): `die`."""
+
 import os
 import sys
 
-_exit = os._exit        # replaced by tests
+_exit = os._exit  # replaced by tests
 
 
 def die(current, code):
@@ -14,7 +15,7 @@ def die(current, code):
         rt = getattr(region, "rt", None)
         out = getattr(rt, "out", None)
         if out is not None:
-            out.flush()              # unfinished traced lines too: the run ends here
+            out.flush()  # unfinished traced lines too: the run ends here
         if flush is not None:
             flush()
         for stream in (sys.stdout, sys.stderr):

@@ -7,6 +7,7 @@ standard streams (flushed first), and waits; `return_code` is then its exit stat
 negated signal number if a signal ended it). `change_working_directory` sets `return_code`
 to 0, or -1 on failure, as EiffelBase does.
 """
+
 import os
 import subprocess
 import sys
@@ -14,16 +15,19 @@ import sys
 
 def _s8(current, value):
     from scoopc.kernel import strings
+
     return strings.new_string_8(current._region_, value)
 
 
 def _s32(current, value):
     from scoopc.kernel import strings
+
     return strings.new_string_32(current._region_, value)
 
 
 def _text(obj):
     from scoopc.kernel import strings
+
     return strings.text(obj)
 
 

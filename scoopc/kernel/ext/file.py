@@ -7,6 +7,7 @@ cannot be opened, renamed, deleted, ...) raise OPERATING_SYSTEM_FAILURE, as Eiff
 Status queries on a file name (`exists`, `is_plain`, `date`, ...) follow symbolic links, except
 `path_exists` and `is_symlink`.
 """
+
 import os
 import stat as _stat
 
@@ -82,7 +83,7 @@ class FileChan:
         if i < 0:
             self.eof = True
             return decode(data), False
-        self.pb[:] = data[i + 1:]
+        self.pb[:] = data[i + 1 :]
         return decode(data[:i]), True
 
     def read(self, n):
@@ -120,6 +121,7 @@ class FileChan:
 
 # --- host helpers (also used by io_medium) -----------------------------------------------
 
+
 def _name(current):
     return getattr(current, "_name", "")
 
@@ -153,15 +155,14 @@ def _designate(current, fn):
     current._console = None
 
 
-_PYTHON_MODES = {M.READ: "rb", M.WRITE: "wb", M.APPEND: "ab", M.READ_WRITE: "r+b",
-                 M.APPEND_READ: "a+b"}
+_PYTHON_MODES = {M.READ: "rb", M.WRITE: "wb", M.APPEND: "ab", M.READ_WRITE: "r+b", M.APPEND_READ: "a+b"}
 
 
 def _open(current, mode, python_mode=None):
     try:
         fh = open(_name(current), python_mode or _PYTHON_MODES[mode])
         if mode == M.APPEND_READ:
-            fh.seek(0)                   # reading starts at the beginning; writes append
+            fh.seek(0)  # reading starts at the beginning; writes append
     except OSError as e:
         raise _os_fail(current, "unable to open", e) from e
     current._chan = FileChan(fh)
@@ -178,10 +179,11 @@ def _chan(current):
 
 
 def _wrap32(n):
-    return ((n + 2 ** 31) % 2 ** 32) - 2 ** 31
+    return ((n + 2**31) % 2**32) - 2**31
 
 
 # --- Initialization -----------------------------------------------------------------------
+
 
 def make_with_name(current, fn):
     _designate(current, fn)
@@ -222,6 +224,7 @@ def make_open_read_append(current, fn):
 
 # --- Access -------------------------------------------------------------------------------
 
+
 def name(current):
     return M.new_string_8(current, _name(current))
 
@@ -247,6 +250,7 @@ def change_date(current):
 
 # --- Measurement --------------------------------------------------------------------------
 
+
 def count(current):
     """Size in bytes (0 if there is no such file); 1 for the console, as EiffelBase's."""
     if M.is_console(current):
@@ -263,6 +267,7 @@ def count(current):
 
 
 # --- Status report ------------------------------------------------------------------------
+
 
 def is_open_append(current):
     return M.mode(current) in (M.APPEND, M.APPEND_READ)
@@ -308,6 +313,7 @@ def is_creatable(current):
 def _mode_is(test, follow=True):
     def query(current):
         return bool(test(_stat_of(current, follow).st_mode))
+
     return query
 
 
@@ -322,6 +328,7 @@ is_symlink = _mode_is(_stat.S_ISLNK, follow=False)
 
 
 # --- Status setting -----------------------------------------------------------------------
+
 
 def open_read(current):
     _open(current, M.READ)
@@ -348,6 +355,7 @@ def open_read_append(current):
 
 
 # --- Cursor movement ----------------------------------------------------------------------
+
 
 def _seek(current, offset, whence):
     chan = _chan(current)
@@ -378,6 +386,7 @@ def next_line(current):
 
 
 # --- Element change -----------------------------------------------------------------------
+
 
 def reset(current, fn):
     if M.mode(current) != M.CLOSED:
@@ -422,6 +431,8 @@ def wipe_out(current):
 
 # --- Implementation -----------------------------------------------------------------------
 
+
 def path_name(current):
     from scoopc.kernel import strings
+
     return strings.new_string_32(current._region_, _name(current))

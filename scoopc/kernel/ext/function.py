@@ -1,6 +1,7 @@
 """FUNCTION's `external "Python"` features (stdlib/base/agents/function.e); the representation
 and the EiffelBase facts followed are in routine.py. `call`, `apply` (which keep the result in
 `last_result`), `is_equal`, `copy` and `clear_last_result` are Eiffel. PREDICATE adds nothing."""
+
 from .routine import run
 
 

@@ -6,6 +6,6 @@ a string (`plus`, `substring`, `as_lower`, `mirrored`) give a new IMMUTABLE_STRI
 
 
 def item(current, i):
-    if i < 1:                             # refused (the caller reports `valid_index')
+    if i < 1:  # refused (the caller reports `valid_index')
         raise IndexError(i)
     return current._s[i - 1]

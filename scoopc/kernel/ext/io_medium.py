@@ -30,11 +30,12 @@ surrogate escapes (copying a file reproduces it byte for byte); `count`, `positi
 `sys.stdin` at call time, under a lock, with the standard output flushed first (a prompt
 shows before the program waits).
 """
+
 CLOSED, READ, WRITE, APPEND, READ_WRITE, APPEND_READ = range(6)
 _READ_MODES = (READ, READ_WRITE, APPEND_READ)
-_BLANKS = " \t\n\r\v\f"           # C's isspace
-_SEPARATORS = " \n\r\t"           # EiffelBase's leading separators of numbers
-_EOF_CHARACTER = "\xff"           # C's EOF cast to a character
+_BLANKS = " \t\n\r\v\f"  # C's isspace
+_SEPARATORS = " \n\r\t"  # EiffelBase's leading separators of numbers
+_EOF_CHARACTER = "\xff"  # C's EOF cast to a character
 
 
 class _NoLock:
@@ -50,19 +51,23 @@ _NO_LOCK = _NoLock()
 
 # --- helpers shared with file.py and console.py ---------------------------------------------
 
+
 def text_of(s):
     from scoopc.kernel import strings
+
     return strings.text(s)
 
 
 def new_string_8(current, text):
     from scoopc.kernel import strings
+
     return strings.new_string_8(current._region_, text)
 
 
 def fail(current, message, kind="IO_FAILURE", cause=None):
     """The exception to raise for a failed operation on the medium."""
     from scoopc.kernel.ext.exception import failure
+
     name = getattr(current, "_name", None)
     where = f"{name}: " if name else ""
     return failure(current._region_, kind, where + message, cause)
@@ -78,6 +83,7 @@ def is_console(current):
 
 def set_last_string(current, text):
     from scoopc.kernel import strings
+
     obj = getattr(current, "_last_string", None)
     setter = getattr(strings, "set_text", None)
     if obj is not None and setter is not None:
@@ -104,7 +110,7 @@ def _input(current):
         return chan, _NO_LOCK
     flush = getattr(current._region_, "flush_output", None)
     if flush is not None:
-        flush()                                  # a prompt shows before the program waits
+        flush()  # a prompt shows before the program waits
     lock.acquire()
     try:
         chan.sync()
@@ -161,10 +167,12 @@ def _wrap(value, bits, signed):
 def _real_out(value, single):
     """`r.out` / `d.out`: the string helpers' formats (rebound to the basic types' `out`)."""
     from scoopc.kernel import strings
+
     return strings.real_32_out(value) if single else strings.real_64_out(value)
 
 
 # --- Access ---------------------------------------------------------------------------------
+
 
 def last_character(current):
     return getattr(current, "_last_character", "\x00")
@@ -180,6 +188,7 @@ def last_string(current):
 def _last(attr, default=0):
     def query(current):
         return getattr(current, attr, default)
+
     query.__name__ = attr[1:]
     return query
 
@@ -198,10 +207,12 @@ last_natural_64 = _last("_last_natural_64")
 
 # --- Status report --------------------------------------------------------------------------
 
+
 def exists(current):
     if is_console(current) or mode(current) != CLOSED:
         return True
     from scoopc.kernel.ext import file
+
     return file.host_exists(current)
 
 
@@ -222,6 +233,7 @@ def _permission(current, what):
     if console is not None:
         return (console == "stdin") == (what == "r")
     from scoopc.kernel.ext import file
+
     return file.host_access(current, what)
 
 
@@ -249,6 +261,7 @@ def readable(current):
     if chan is None or chan.eof:
         return False
     from scoopc.kernel.ext import file
+
     return file.count(current) > 0
 
 
@@ -266,6 +279,7 @@ def bytes_read(current):
 
 # --- Status setting -------------------------------------------------------------------------
 
+
 def close(current):
     chan = getattr(current, "_chan", None)
     current._chan = None
@@ -279,6 +293,7 @@ def close(current):
 
 
 # --- Output ---------------------------------------------------------------------------------
+
 
 def put_new_line(current):
     write(current, "\n")
@@ -340,6 +355,7 @@ def flush(current):
 
 # --- Input ----------------------------------------------------------------------------------
 
+
 def _read_number_sequence(current, chan):
     """EiffelBase's integer reading (PLAIN_TEXT_FILE.read_integer_with_no_type and CONSOLE's):
     every character read becomes `last_character` (C's EOF character at the end)."""
@@ -358,17 +374,17 @@ def _read_number_sequence(current, chan):
             started = True
             value = value * 10 + (ord(c) - 48)
             continue
-        stop = c                                 # not part of a number
+        stop = c  # not part of a number
         break
     if stop is not None:
-        if is_console(current):                  # CONSOLE: consume the rest of the line
+        if is_console(current):  # CONSOLE: consume the rest of the line
             c = stop
             while c != "\n":
                 c = chan.getc()
                 current._last_character = c or _EOF_CHARACTER
                 if not c:
                     break
-        else:                                    # PLAIN_TEXT_FILE: leave it unread
+        else:  # PLAIN_TEXT_FILE: leave it unread
             chan.unget(stop)
     return sign * value
 
@@ -377,6 +393,7 @@ def _integer_reader(attr, bits, signed):
     def read(current):
         with _Reading(current) as chan:
             setattr(current, attr, _wrap(_read_number_sequence(current, chan), bits, signed))
+
     read.__name__ = "read" + attr[5:]
     return read
 
@@ -398,7 +415,7 @@ def _scan_double(current, chan, what):
         c = chan.getc()
     if not c:
         raise fail(current, f"unable to read {what} value")
-    text, digits, state = "", False, "sign"      # states: sign, int, frac, exp, expsign, expdigits
+    text, digits, state = "", False, "sign"  # states: sign, int, frac, exp, expsign, expdigits
     while c:
         if state == "sign" and c in "+-":
             state = "int"
@@ -417,14 +434,14 @@ def _scan_double(current, chan, what):
             break
         text += c
         c = chan.getc()
-    if state in ("exp", "expsign"):              # an exponent without digits is no part of it
-        text = text[:text.lower().rindex("e")]
+    if state in ("exp", "expsign"):  # an exponent without digits is no part of it
+        text = text[: text.lower().rindex("e")]
     value = float(text) if digits else 0.0
-    if is_console(current):                      # stdin: one new line
+    if is_console(current):  # stdin: one new line
         c = chan.getc()
         if c and c != "\n":
             chan.unget(c)
-    else:                                        # a file: fscanf (f, "\n") skips every blank
+    else:  # a file: fscanf (f, "\n") skips every blank
         c = chan.getc()
         while c and c in _BLANKS:
             c = chan.getc()
@@ -435,6 +452,7 @@ def _scan_double(current, chan, what):
 
 def read_real(current):
     from scoopc.kernel.ext.single_math import to_single
+
     with _Reading(current) as chan:
         current._last_real = to_single(_scan_double(current, chan, "REAL"))
 
@@ -471,7 +489,7 @@ def read_word(current):
             word += c
             c = chan.getc()
         if c:
-            chan.unget(c)                        # the blank after the word stays unread
+            chan.unget(c)  # the blank after the word stays unread
     set_last_string(current, word)
 
 

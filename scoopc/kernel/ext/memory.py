@@ -1,5 +1,6 @@
 """MEMORY's `external "Python"` features (stdlib/base/kernel/memory.e): Python's collector
 (`gc`) does the work. Reference counting always runs; these control the cycle collector."""
+
 import gc
 
 

@@ -1,5 +1,6 @@
 """OPERATING_ENVIRONMENT's `external "Python"` features
 (stdlib/base/kernel/operating_environment.e)."""
+
 import os
 
 

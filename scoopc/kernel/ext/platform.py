@@ -1,4 +1,5 @@
 """PLATFORM's `external "Python"` features (stdlib/base/kernel/platform.e): the host's."""
+
 import os
 import sys
 
@@ -21,4 +22,4 @@ def is_little_endian(current):
 
 
 def is_64_bits(current):
-    return sys.maxsize > 2 ** 32
+    return sys.maxsize > 2**32

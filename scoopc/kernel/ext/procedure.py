@@ -1,5 +1,6 @@
 """PROCEDURE's `external "Python"` feature (stdlib/base/agents/procedure.e); the representation
 and the EiffelBase facts followed are in routine.py."""
+
 from .routine import run
 
 

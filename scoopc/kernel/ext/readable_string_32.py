@@ -3,6 +3,7 @@
 Bound for STRING_32 and IMMUTABLE_STRING_32 (and descendants). Characters are CHARACTER_32
 (one-character Python strs). Storage: scoopc/kernel/strings.py.
 """
+
 from __future__ import annotations
 
 from scoopc.kernel import strings as K

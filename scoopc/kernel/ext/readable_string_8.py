@@ -3,6 +3,7 @@
 Bound for STRING_8 and IMMUTABLE_STRING_8 (and descendants). Characters are CHARACTER_8
 (one-character Python strs with code <= 255). Storage: scoopc/kernel/strings.py.
 """
+
 from __future__ import annotations
 
 from scoopc.kernel import strings as K

@@ -5,6 +5,7 @@ model is described in scoopc/kernel/strings.py. Characters are seen as CHARACTER
 8-bit classes rename `item`, `has`, `index_of`, ... and give their own versions.
 Indices are 1-based; preconditions are the Eiffel contracts' business.
 """
+
 from __future__ import annotations
 
 from scoopc.kernel import strings as K
@@ -25,7 +26,7 @@ def make(current, n):
 
 
 def code(current, i):
-    if i < 1:                             # refused (the caller reports `valid_index')
+    if i < 1:  # refused (the caller reports `valid_index')
         raise IndexError(i)
     return ord(current._s[i - 1])
 
@@ -299,7 +300,7 @@ def substring(current, start_index, end_index):
     unless 1 <= start_index <= end_index <= count."""
     s = current._s
     if 1 <= start_index <= end_index <= len(s):
-        return K.like(current, s[start_index - 1:end_index])
+        return K.like(current, s[start_index - 1 : end_index])
     return K.like(current, "")
 
 

@@ -1,5 +1,6 @@
 """ROBOT_ENVIRONMENT's `external "Python"` features (stdlib/roboscoop/util/robot_environment.e):
 the settings `scoopc run` gave this run (scoopc.robots.runner.settings_of the running runtime)."""
+
 from scoopc import runtime
 from scoopc.robots import runner
 
@@ -14,6 +15,7 @@ def _namespaces():
 
 def namespace_of(current, i):
     from scoopc.kernel import strings
+
     return strings.new_string_8(current._region_, _namespaces()[i - 1])
 
 

@@ -11,6 +11,7 @@ from scoopc.robots.velocity import new_message, twist, twist_stamped
 
 def _text(obj):
     from scoopc.kernel import strings
+
     return strings.text(obj)
 
 
@@ -29,4 +30,5 @@ def publish_float64(current, value):
 
 def publish_message(current, message):
     from scoopc.robots import eiffel_bridge
+
     transport.current().publish(_text(current.topic), eiffel_bridge.to_message(message))

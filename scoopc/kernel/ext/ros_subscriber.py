@@ -9,6 +9,7 @@ and no queue grows. The call converts the message to plain values on the listene
 and calls the listener's routine (`on_odometry`, `on_range`, `on_scan`, `on_battery`) with them.
 The subscriptions close when the runtime shuts down (a shutdown hook) or on `close`.
 """
+
 import math
 import threading
 
@@ -19,6 +20,7 @@ from scoopc.robots import transport
 
 def _text(obj):
     from scoopc.kernel import strings
+
     return strings.text(obj)
 
 
@@ -33,8 +35,14 @@ def yaw(q):
 
 def odometry_values(msg):
     pose, twist = msg.pose.pose, msg.twist.twist
-    return (float(pose.position.x), float(pose.position.y), yaw(pose.orientation),
-            float(twist.linear.x), float(twist.angular.z), _stamp(msg.header))
+    return (
+        float(pose.position.x),
+        float(pose.position.y),
+        yaw(pose.orientation),
+        float(twist.linear.x),
+        float(twist.angular.z),
+        _stamp(msg.header),
+    )
 
 
 def range_values(msg):
@@ -43,8 +51,14 @@ def range_values(msg):
 
 def scan_values(msg):
     """The scan's plain values; the ranges stay a host list until `deliver` makes the array."""
-    return (float(msg.angle_min), float(msg.angle_increment), float(msg.range_min),
-            float(msg.range_max), _stamp(msg.header), _RangeList(float(r) for r in msg.ranges))
+    return (
+        float(msg.angle_min),
+        float(msg.angle_increment),
+        float(msg.range_min),
+        float(msg.range_max),
+        _stamp(msg.header),
+        _RangeList(float(r) for r in msg.ranges),
+    )
 
 
 class _RangeList(list):
@@ -56,6 +70,7 @@ class _RangeList(list):
 
 class _Message:
     """A message to become an object of its Eiffel message class in the listener's region."""
+
     __slots__ = ("msg",)
 
     def __init__(self, msg):
@@ -63,6 +78,7 @@ class _Message:
 
     def eiffel(self, region):
         from scoopc.robots import eiffel_bridge
+
         return eiffel_bridge.from_message(self.msg, region)
 
 
@@ -74,6 +90,7 @@ def real_array(region, values):
     """A new ARRAY [REAL_64] (1-based) in `region` holding `values`."""
     from scoopc import kernel
     from scoopc.kernel import types
+
     generic = (types.t("REAL_64"),)
     items = list(values)
     special = region.new(kernel.cls("SPECIAL"))
@@ -98,15 +115,15 @@ class Link:
     def __init__(self, topic, listener, routine, convert, extra=(), msgtype=None):
         self.topic = topic
         self.listener = listener
-        self.routine = routine              # the listener's Python method name
-        self.convert = convert              # message -> tuple of plain values
-        self.extra = extra                  # leading plain arguments (a sensor index)
+        self.routine = routine  # the listener's Python method name
+        self.convert = convert  # message -> tuple of plain values
+        self.extra = extra  # leading plain arguments (a sensor index)
         self.lock = threading.Lock()
-        self.pending = None                 # [lock] newest message not yet delivered
-        self.scheduled = False              # [lock] a call is logged and has not taken it yet
-        self.closed = False                 # [lock]
-        self.received = 0                   # [lock] messages seen on the bus
-        self.logged = 0                     # [lock] calls logged on the listener's processor
+        self.pending = None  # [lock] newest message not yet delivered
+        self.scheduled = False  # [lock] a call is logged and has not taken it yet
+        self.closed = False  # [lock]
+        self.received = 0  # [lock] messages seen on the bus
+        self.logged = 0  # [lock] calls logged on the listener's processor
         self.source = rt.outside_client(f"subscription {topic}")
         rt.add_shutdown_hook(self.close)
         bus = transport.current()
@@ -115,7 +132,7 @@ class Link:
         self.leaf = getattr(bus, "own_thread_callbacks", False) and link.is_leaf_routine(type(listener), routine)
         if msgtype is None:
             self.subscription = bus.subscribe(topic, self.on_message)
-        else:                               # a transport that must know the type (DDS, rclpy)
+        else:  # a transport that must know the type (DDS, rclpy)
             self.subscription = bus.subscribe(topic, self.on_message, msgtype=msgtype)
 
     def on_message(self, msg):
@@ -131,7 +148,7 @@ class Link:
             self.logged += 1
         try:
             self.source.call(self.listener, deliver, (self,), leaf=self.leaf)
-        except Exception:                   # the runtime is shutting down: drop it
+        except Exception:  # the runtime is shutting down: drop it
             with self.lock:
                 self.scheduled = False
 
@@ -170,14 +187,19 @@ def _listen(current, listener, routine, convert, extra=(), msgtype=None):
 def listen(current, listener):
     """ROS_SUBSCRIBER [M].listen: messages as objects of M (its ROS type from M's class name)."""
     from scoopc.robots import eiffel_bridge
+
     name = current._gen_[0].key
     try:
         typename = eiffel_bridge.typename_of_class(name)
     except KeyError:
         from scoopc.kernel.ext.exception import failure
-        raise failure(current._region_, "DEVELOPER_EXCEPTION",
-                      f"ROS_SUBSCRIBER [{name.split('@')[0]}]: `listen' needs a message class "
-                      f"(from `scoopc msg' or communication/messages/) as its actual generic") from None
+
+        raise failure(
+            current._region_,
+            "DEVELOPER_EXCEPTION",
+            f"ROS_SUBSCRIBER [{name.split('@')[0]}]: `listen' needs a message class "
+            f"(from `scoopc msg' or communication/messages/) as its actual generic",
+        ) from None
     _listen(current, listener, "on_message", message_value, msgtype=typename)
 
 

@@ -24,6 +24,7 @@ EiffelBase facts followed (library/base/elks/kernel/routine.e, function.e):
 A call never writes into `_slots` (it fills a fresh list): an agent may be called again from inside
 its own call, or by several processors.
 """
+
 import os
 import zlib
 
@@ -34,6 +35,7 @@ _BASIC = (bool, int, float, str)
 
 
 # --- Calling ---
+
 
 def operand_list(current, args):
     """Every operand of a call of `current` with the tuple-like `args` as open operands."""
@@ -57,6 +59,7 @@ def run(current, args):
 
 # --- Access ---
 
+
 def operands(current):
     """Open operands set by `set_operands` (Void until then)."""
     return getattr(current, "_operands", None)
@@ -78,11 +81,13 @@ def hash_code(current):
 
 # --- Measurement ---
 
+
 def open_count(current):
     return len(current._open)
 
 
 # --- Status report ---
+
 
 def is_target_closed(current):
     return 0 not in current._open
@@ -111,6 +116,7 @@ def valid_operands(current, args):
 
 # --- Comparison ---
 
+
 def is_equal(current, other):
     """Same routine, same open positions, equal closed operands and equal `operands`."""
     if other is current:
@@ -130,12 +136,14 @@ def is_equal(current, other):
 
 # --- Element change ---
 
+
 def set_operands(current, args):
     """Make `args` (kept, not copied) the operands of the next `apply`."""
     current._operands = args
 
 
 # --- Basic operations ---
+
 
 def flexible_call(current, a):
     """Call the routine with the items of the tuple-like `a` as open operands, through the
@@ -144,6 +152,7 @@ def flexible_call(current, a):
 
 
 # --- Duplication ---
+
 
 def copy(current, other):
     """Stand for the same routine and operands as `other`: every field of `other` (EiffelBase's
@@ -169,6 +178,7 @@ def copy(current, other):
 
 
 # --- Helpers ---
+
 
 def _open_types(current):
     """TypeDescs of the open operands (OPEN_ARGS's generics), or () when not known."""
@@ -233,11 +243,11 @@ def _same_routine(f, g):
         return False
     if getattr(f0, "__defaults__", None) != getattr(g0, "__defaults__", None):
         return False
-    fc = getattr(f0, "__closure__", None) or ()         # one code object: as many cells
+    fc = getattr(f0, "__closure__", None) or ()  # one code object: as many cells
     gc = getattr(g0, "__closure__", None) or ()
     try:
         return all(_same(x.cell_contents, y.cell_contents) for x, y in zip(fc, gc))
-    except ValueError:                  # an empty cell
+    except ValueError:  # an empty cell
         return False
 
 

@@ -3,6 +3,7 @@
 As EiffelBase's C externals: the REAL_32 argument is widened to double, the C library function
 (Python's math calls libm) computes in double, and the result is rounded to single precision.
 """
+
 import math
 import struct
 

@@ -36,6 +36,7 @@ def _check_room(current, new_count):
 
 # --- Initialization ---
 
+
 def make_empty(current, n):
     """Make room for `n` items; none is in use yet."""
     if n < 0:
@@ -46,6 +47,7 @@ def make_empty(current, n):
 
 # --- Access ---
 
+
 def item(current, i):
     """Item at index `i` (0-based)."""
     if i < 0:
@@ -54,6 +56,7 @@ def item(current, i):
 
 
 # --- Measurement ---
+
 
 def count(current):
     return len(current._items)
@@ -64,6 +67,7 @@ def capacity(current):
 
 
 # --- Element change ---
+
 
 def put(current, v, i):
     """Replace the item at index `i` (< count) by `v`."""
@@ -90,7 +94,7 @@ def fill_with(current, v, start_index, end_index):
     if n == 0:
         return
     _check_room(current, max(len(items), end_index + 1))
-    items[start_index:end_index + 1] = [v] * n
+    items[start_index : end_index + 1] = [v] * n
 
 
 def fill_with_default(current, start_index, end_index):
@@ -112,7 +116,7 @@ def fill_with_default(current, start_index, end_index):
     else:
         values = [first]
         values.extend(desc.default(region) for _ in range(n - 1))
-    items[start_index:end_index + 1] = values
+    items[start_index : end_index + 1] = values
 
 
 def copy_data(current, other, source_index, destination_index, n):
@@ -123,10 +127,11 @@ def copy_data(current, other, source_index, destination_index, n):
     if destination_index < 0 or destination_index > len(items):
         _bad_index(current, destination_index)
     if n < 0 or source_index < 0 or source_index + n > len(other._items):
-        raise IndexError(f"SPECIAL.copy_data: {n} items from {source_index} "
-                         f"not in a source of count {len(other._items)}")
+        raise IndexError(
+            f"SPECIAL.copy_data: {n} items from {source_index} not in a source of count {len(other._items)}"
+        )
     _check_room(current, destination_index + n)
-    items[destination_index:destination_index + n] = other._items[source_index:source_index + n]
+    items[destination_index : destination_index + n] = other._items[source_index : source_index + n]
 
 
 def move_data(current, source_index, destination_index, n):
@@ -136,6 +141,7 @@ def move_data(current, source_index, destination_index, n):
 
 
 # --- Resizing ---
+
 
 def keep_head(current, n):
     """Keep only the first `n` items (0 <= `n` <= `count`)."""
@@ -150,7 +156,7 @@ def keep_tail(current, n):
         raise ValueError(f"SPECIAL.keep_tail: count {n} not in 0 .. {len(current._items)}")
     items = current._items
     if n < len(items):
-        del items[:len(items) - n]
+        del items[: len(items) - n]
 
 
 def resized_area(current, n):
@@ -172,12 +178,14 @@ def aliased_resized_area(current, n):
 
 # --- Removal ---
 
+
 def wipe_out(current):
     """Put no slot in use (capacity unchanged)."""
     current._items.clear()
 
 
 # --- Duplication ---
+
 
 def copy(current, other):
     """Take the capacity, items (shallow) and actual generic of `other`, in a list of its own."""

@@ -3,6 +3,7 @@
 The same as STRING_8's (scoopc/kernel/ext/string_8.py) but for the justifications, whose white
 space is CHARACTER_PROPERTY.is_space (Unicode White_Space) instead of CHARACTER_8.is_space.
 """
+
 from __future__ import annotations
 
 from scoopc.kernel import strings as K
@@ -36,11 +37,30 @@ from .string_8 import (
 
 # Bound by name from this module (codegen: `scoopc.kernel.ext.string_32.<feature>`).
 __all__ = [
-    "append", "append_character", "append_substring", "center_justify", "extend",
-    "fill_character", "fill_with", "insert_character", "insert_string", "item", "left_justify",
-    "precede", "prepend", "prepend_character", "prune", "prune_all", "prune_all_leading",
-    "prune_all_trailing", "put", "replace_substring", "replace_substring_all", "right_justify",
-    "set", "share",
+    "append",
+    "append_character",
+    "append_substring",
+    "center_justify",
+    "extend",
+    "fill_character",
+    "fill_with",
+    "insert_character",
+    "insert_string",
+    "item",
+    "left_justify",
+    "precede",
+    "prepend",
+    "prepend_character",
+    "prune",
+    "prune_all",
+    "prune_all_leading",
+    "prune_all_trailing",
+    "put",
+    "replace_substring",
+    "replace_substring_all",
+    "right_justify",
+    "set",
+    "share",
 ]
 
 

@@ -4,6 +4,7 @@ STRING_32 binds the same functions (scoopc/kernel/ext/string_32.py) except the j
 whose notion of white space differs. Storage and capacity rules: scoopc/kernel/strings.py,
 scoopc/kernel/ext/string_general.py.
 """
+
 from __future__ import annotations
 
 from scoopc.kernel import strings as K
@@ -12,7 +13,7 @@ from scoopc.kernel import strings as K
 
 
 def item(current, i):
-    if i < 1:                             # refused (the caller reports `valid_index')
+    if i < 1:  # refused (the caller reports `valid_index')
         raise IndexError(i)
     return current._s[i - 1]
 
@@ -29,7 +30,7 @@ def share(current, other):
 
 def put(current, c, i):
     s = current._s
-    K.set_text(current, s[:i - 1] + c + s[i:])
+    K.set_text(current, s[: i - 1] + c + s[i:])
 
 
 def append(current, s):
@@ -40,7 +41,7 @@ def append(current, s):
 
 def append_substring(current, s, start_index, end_index):
     if end_index - start_index + 1 > 0:
-        t = s._s[start_index - 1:end_index]
+        t = s._s[start_index - 1 : end_index]
         K.append_text(current, t, K.grown(K.cap_of(current), len(current._s) + len(t)))
 
 
@@ -86,19 +87,19 @@ def insert_string(current, s, i):
     if t:
         old = current._s
         cap = K.grown(K.cap_of(current), len(old) + len(t))
-        K.set_text_cap(current, old[:i - 1] + t + old[i - 1:], cap)
+        K.set_text_cap(current, old[: i - 1] + t + old[i - 1 :], cap)
 
 
 def insert_character(current, c, i):
     old = current._s
     cap = K.grown(K.cap_of(current), len(old) + 1)
-    K.set_text_cap(current, old[:i - 1] + c + old[i - 1:], cap)
+    K.set_text_cap(current, old[: i - 1] + c + old[i - 1 :], cap)
 
 
 def replace_substring(current, s, start_index, end_index):
     """Positions start_index..end_index replaced by `s` (ISE: grow (new count) when longer)."""
     old = current._s
-    new = old[:start_index - 1] + s._s + old[end_index:]
+    new = old[: start_index - 1] + s._s + old[end_index:]
     cap = K.cap_of(current)
     K.set_text_cap(current, new, len(new) if len(new) > cap else cap)
 
@@ -118,7 +119,7 @@ def replace_substring_all(current, original, new):
 def set(current, t, n1, n2):
     """Current's characters := t.substring (n1, n2) (an area of its own, capacity = count)."""
     s = t._s
-    sub = s[n1 - 1:n2] if 1 <= n1 <= n2 <= len(s) else ""
+    sub = s[n1 - 1 : n2] if 1 <= n1 <= n2 <= len(s) else ""
     K.leave_group(current)
     current._s = sub
     current._cap = len(sub)
@@ -163,11 +164,11 @@ def _center_justify(current, ws):
         return
     a = list(s)
     core = nb - left - right
-    a[left - offset:left - offset + core] = s[left:left + core]
+    a[left - offset : left - offset + core] = s[left : left + core]
     if offset < 0:
-        a[left:left - offset] = " " * (-offset)
+        a[left : left - offset] = " " * (-offset)
     else:
-        a[nb - right - offset:nb] = " " * (right + offset)
+        a[nb - right - offset : nb] = " " * (right + offset)
     K.set_text(current, "".join(a))
 
 
@@ -191,7 +192,7 @@ def prune(current, c):
     s = current._s
     i = s.find(c)
     if i >= 0:
-        K.set_text(current, s[:i] + s[i + 1:])
+        K.set_text(current, s[:i] + s[i + 1 :])
 
 
 def prune_all(current, c):

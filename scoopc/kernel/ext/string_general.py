@@ -7,6 +7,7 @@ new count + max (capacity // 2, 5); numbers are appended character by character 
 through scoopc/kernel/strings.py (`set_text`, `append_text`) so that strings that `share`
 see it.
 """
+
 from __future__ import annotations
 
 from scoopc.kernel import strings as K
@@ -42,7 +43,7 @@ def append_code(current, c):
 
 def put_code(current, v, i):
     s = current._s
-    K.set_text(current, s[:i - 1] + chr(v) + s[i:])
+    K.set_text(current, s[: i - 1] + chr(v) + s[i:])
 
 
 def _append_digits(current, t):
@@ -91,7 +92,7 @@ def keep_head(current, n):
 def keep_tail(current, n):
     s = current._s
     if n < len(s):
-        K.set_text(current, s[len(s) - n:])
+        K.set_text(current, s[len(s) - n :])
 
 
 def left_adjust(current):
@@ -141,7 +142,7 @@ def set_count(current, number):
 
 def remove(current, i):
     s = current._s
-    K.set_text(current, s[:i - 1] + s[i:])
+    K.set_text(current, s[: i - 1] + s[i:])
 
 
 def remove_head(current, n):
@@ -151,13 +152,13 @@ def remove_head(current, n):
 
 def remove_tail(current, n):
     s = current._s
-    K.set_text(current, s[:len(s) - n] if n < len(s) else "")
+    K.set_text(current, s[: len(s) - n] if n < len(s) else "")
 
 
 def remove_substring(current, start_index, end_index):
     if end_index - start_index + 1 > 0:
         s = current._s
-        K.set_text(current, s[:start_index - 1] + s[end_index:])
+        K.set_text(current, s[: start_index - 1] + s[end_index:])
 
 
 def wipe_out(current):

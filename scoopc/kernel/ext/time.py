@@ -1,6 +1,7 @@
 """TIME's `external "Python"` feature (stdlib/base/time/time.e): `fine_seconds_now`, on the same
 clock as C_DATE (scoopc.kernel.ext.c_date), with EiffelTime's millisecond precision (its
 `make_now` goes through C_DATE's `millisecond_now`)."""
+
 from scoopc.kernel.ext import c_date as _c_date
 
 

@@ -3,6 +3,7 @@
 of agents through the runtime's timers (`rt.call_later`): each call is a command logged on the
 agent's processor. The timer keeps its runtime Timer handles in `_pending` (Python-side state of
 the TIMER object, touched only by its own processor and by the calls it schedules)."""
+
 import scoopc.runtime as rt
 
 
@@ -20,6 +21,7 @@ def _pending(current):
 def _fire(action, timer, handle_box):
     """On the agent's processor: forget a one-shot call, then call the agent."""
     from .routine import run
+
     handle = handle_box[0]
     if handle is not None and not handle.period:
         pending = _pending(timer)

@@ -16,6 +16,7 @@ where the TypeDesc says `attached`, and a basic value or an object of a generate
 `_conforms_`) must satisfy `TypeDesc.accepts` (scoopc/kernel/types.py); any other host object is
 let through.
 """
+
 from ..tuples import items_of
 
 _BASIC = (bool, int, float, str)
@@ -38,29 +39,37 @@ CHARACTER_32_CODE = 14
 
 CODES = {
     "BOOLEAN": BOOLEAN_CODE,
-    "CHARACTER_8": CHARACTER_8_CODE, "CHARACTER": CHARACTER_8_CODE,
-    "REAL_64": REAL_64_CODE, "DOUBLE": REAL_64_CODE,
-    "REAL_32": REAL_32_CODE, "REAL": REAL_32_CODE,
+    "CHARACTER_8": CHARACTER_8_CODE,
+    "CHARACTER": CHARACTER_8_CODE,
+    "REAL_64": REAL_64_CODE,
+    "DOUBLE": REAL_64_CODE,
+    "REAL_32": REAL_32_CODE,
+    "REAL": REAL_32_CODE,
     "POINTER": POINTER_CODE,
-    "INTEGER_8": INTEGER_8_CODE, "INTEGER_16": INTEGER_16_CODE,
-    "INTEGER_32": INTEGER_32_CODE, "INTEGER": INTEGER_32_CODE,
+    "INTEGER_8": INTEGER_8_CODE,
+    "INTEGER_16": INTEGER_16_CODE,
+    "INTEGER_32": INTEGER_32_CODE,
+    "INTEGER": INTEGER_32_CODE,
     "INTEGER_64": INTEGER_64_CODE,
-    "NATURAL_8": NATURAL_8_CODE, "NATURAL_16": NATURAL_16_CODE,
-    "NATURAL_32": NATURAL_32_CODE, "NATURAL": NATURAL_32_CODE,
+    "NATURAL_8": NATURAL_8_CODE,
+    "NATURAL_16": NATURAL_16_CODE,
+    "NATURAL_32": NATURAL_32_CODE,
+    "NATURAL": NATURAL_32_CODE,
     "NATURAL_64": NATURAL_64_CODE,
-    "CHARACTER_32": CHARACTER_32_CODE, "WIDE_CHARACTER": CHARACTER_32_CODE,
+    "CHARACTER_32": CHARACTER_32_CODE,
+    "WIDE_CHARACTER": CHARACTER_32_CODE,
 }
 
 # Value ranges of the integer codes.
 RANGES = {
-    INTEGER_8_CODE: (-2 ** 7, 2 ** 7 - 1),
-    INTEGER_16_CODE: (-2 ** 15, 2 ** 15 - 1),
-    INTEGER_32_CODE: (-2 ** 31, 2 ** 31 - 1),
-    INTEGER_64_CODE: (-2 ** 63, 2 ** 63 - 1),
-    NATURAL_8_CODE: (0, 2 ** 8 - 1),
-    NATURAL_16_CODE: (0, 2 ** 16 - 1),
-    NATURAL_32_CODE: (0, 2 ** 32 - 1),
-    NATURAL_64_CODE: (0, 2 ** 64 - 1),
+    INTEGER_8_CODE: (-(2**7), 2**7 - 1),
+    INTEGER_16_CODE: (-(2**15), 2**15 - 1),
+    INTEGER_32_CODE: (-(2**31), 2**31 - 1),
+    INTEGER_64_CODE: (-(2**63), 2**63 - 1),
+    NATURAL_8_CODE: (0, 2**8 - 1),
+    NATURAL_16_CODE: (0, 2**16 - 1),
+    NATURAL_32_CODE: (0, 2**32 - 1),
+    NATURAL_64_CODE: (0, 2**64 - 1),
 }
 
 
@@ -121,7 +130,7 @@ def value_fits(desc, v):
         return isinstance(v, int)
     if code == CHARACTER_8_CODE:
         return isinstance(v, str) and len(v) == 1 and ord(v) < 256
-    return isinstance(v, str) and len(v) == 1          # CHARACTER_32
+    return isinstance(v, str) and len(v) == 1  # CHARACTER_32
 
 
 def _declared(current, index):
@@ -138,6 +147,7 @@ def _check_index(current, index, items):
 
 
 # --- Access ---
+
 
 def item(current, index):
     """Item at `index` (1-based)."""
@@ -159,12 +169,14 @@ def item_code(current, index):
 
 # --- Measurement ---
 
+
 def count(current):
     """Number of items."""
     return len(items_of(current))
 
 
 # --- Comparison ---
+
 
 def object_comparison(current):
     """Does `is_equal` compare reference items with `~`?"""
@@ -181,6 +193,7 @@ def compare_references(current):
 
 # --- Status report ---
 
+
 def valid_type_for_index(current, v, index):
     """May `v` be put at `index`? As EiffelBase: Void only where the declared type is a detachable
     reference type; otherwise `v` must be a value of the declared type (checked loosely)."""
@@ -191,6 +204,7 @@ def valid_type_for_index(current, v, index):
 
 
 # --- Element change ---
+
 
 def put(current, v, index):
     """Put `v` at `index` (1-based)."""

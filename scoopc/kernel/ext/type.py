@@ -1,5 +1,6 @@
 """TYPE's `built_in` features: a TYPE object's `_gen_[0]` is the type it describes
 (scoopc.kernel.types.TypeDesc)."""
+
 from __future__ import annotations
 
 from .. import types as T
@@ -11,11 +12,13 @@ def _desc(current):
 
 def name(current):
     from ..strings import new_immutable_8
+
     return new_immutable_8(current._region_, _desc(current).name)
 
 
 def name_32(current):
     from ..strings import new_immutable_32
+
     return new_immutable_32(current._region_, _desc(current).name)
 
 
@@ -28,6 +31,7 @@ def type_id(current):
 
 def generic_parameter_type(current, i):
     from ..support import type_object
+
     return type_object(current._region_, _desc(current).generics[i - 1])
 
 

@@ -3,6 +3,7 @@
 Input: the children of each reduced rule (tokens and nodes). Output: scoopc.syntax nodes;
 problems found while building (bad escapes, misplaced constructs) go to `problems`.
 """
+
 from __future__ import annotations
 
 from .classes import ClassBuilder

@@ -3,6 +3,7 @@
 Input: lark tokens and built nodes handed to the reduction callbacks. Output: Spans,
 Identifiers and Diagnostics collected for the file being parsed.
 """
+
 from __future__ import annotations
 
 from typing import Any
@@ -19,8 +20,7 @@ _new = object.__new__
 def make_span(file: str, line: int, column: int, end_line: int, end_column: int) -> Span:
     """A Span built without the frozen-dataclass __init__ (the parser makes one per node)."""
     span = _new(Span)
-    span.__dict__.update(file=file, line=line, column=column, end_line=end_line,
-                         end_column=end_column)
+    span.__dict__.update(file=file, line=line, column=column, end_line=end_line, end_column=end_column)
     return span
 
 
@@ -78,5 +78,4 @@ class BuilderBase:
         before = token.value[:offset]
         line = token.line + before.count("\n")
         column = (offset - before.rfind("\n")) if "\n" in before else token.column + offset
-        self.report("SYNTAX-LEXICAL", make_span(self.file, line, column, line, column + length),
-                    reason=reason)
+        self.report("SYNTAX-LEXICAL", make_span(self.file, line, column, line, column + length), reason=reason)

@@ -3,6 +3,7 @@ clauses, converters and feature clauses.
 
 Input: the children of one rule. Output: ClassDeclaration and its parts.
 """
+
 from __future__ import annotations
 
 import dataclasses
@@ -21,29 +22,40 @@ class ClassBuilder(BuilderBase):
         while c[i].type != "CLASS":
             i += 1
         marks = tuple(mark.value.lower() for mark in c[1:i])
-        name, generics, obsolete, inherits, creators, converters = c[i + 1:i + 7]
-        clauses, invariant, trailing = list(c[i + 7:-3]), c[-3], c[-2]
+        name, generics, obsolete, inherits, creators, converters = c[i + 1 : i + 7]
+        clauses, invariant, trailing = list(c[i + 7 : -3]), c[-3], c[-2]
         if trailing is None and clauses:
             trailing = self._trailing_notes(clauses)
         notes = tuple(c[0] or ()) + tuple(trailing or ())
         start = c[0].keyword if c[0] is not None else c[1]
         return s.ClassDeclaration(
-            self.ident(name), marks, generics or (), obsolete.value if obsolete else None,
-            inherits, creators, converters or (), tuple(clauses), invariant or (), notes,
-            self.span(start, c[-1]))
+            self.ident(name),
+            marks,
+            generics or (),
+            obsolete.value if obsolete else None,
+            inherits,
+            creators,
+            converters or (),
+            tuple(clauses),
+            invariant or (),
+            notes,
+            self.span(start, c[-1]),
+        )
 
     def _trailing_notes(self, clauses: list) -> tuple | None:
         """A `note` clause at the end of a class whose last feature is an attribute is first
         read as that attribute's note (the grammar shifts); give it back to the class."""
         last = clauses[-1]
         feature = last.features[-1] if last.features else None
-        if not isinstance(feature, (s.Attribute, s.Constant)) or not feature.notes \
-                or getattr(feature, "body", None) is not None:
+        if (
+            not isinstance(feature, (s.Attribute, s.Constant))
+            or not feature.notes
+            or getattr(feature, "body", None) is not None
+        ):
             return None
         end = feature.value if isinstance(feature, s.Constant) else feature.type
         kept = dataclasses.replace(feature, notes=(), span=self.span(feature.names[0], end))
-        clauses[-1] = dataclasses.replace(last, features=last.features[:-1] + (kept,),
-                                          span=self.span(last, kept))
+        clauses[-1] = dataclasses.replace(last, features=last.features[:-1] + (kept,), span=self.span(last, kept))
         return feature.notes
 
     def header_mark(self, c: list) -> Any:
@@ -76,8 +88,13 @@ class ClassBuilder(BuilderBase):
     def formal_generic(self, c: list) -> s.FormalGeneric:
         mark, name, constraints, creators = c
         last = creators[-1] if creators else (constraints[-1] if constraints else name)
-        return s.FormalGeneric(self.ident(name), mark.value.lower() if mark else None,
-                               constraints or (), creators, self.span(mark or name, last))
+        return s.FormalGeneric(
+            self.ident(name),
+            mark.value.lower() if mark else None,
+            constraints or (),
+            creators,
+            self.span(mark or name, last),
+        )
 
     def generic_mark(self, c: list) -> Any:
         return c[0]
@@ -107,9 +124,15 @@ class ClassBuilder(BuilderBase):
         if adaptation is None:
             return s.Parent(type_, (), (), (), (), (), type_.span)
         parts, end = adaptation
-        return s.Parent(type_, parts.get("rename", ()), parts.get("export", ()),
-                        parts.get("undefine", ()), parts.get("redefine", ()),
-                        parts.get("select", ()), self.span(type_, end))
+        return s.Parent(
+            type_,
+            parts.get("rename", ()),
+            parts.get("export", ()),
+            parts.get("undefine", ()),
+            parts.get("redefine", ()),
+            parts.get("select", ()),
+            self.span(type_, end),
+        )
 
     def feature_adaptation(self, c: list) -> tuple:
         parts: dict[str, tuple] = {}
@@ -159,8 +182,7 @@ class ClassBuilder(BuilderBase):
         keyword, clients, procedures = c
         procedures = procedures or ()
         last = procedures[-1] if procedures else (clients[2] if clients else keyword)
-        return s.CreationClause(clients[0] if clients else None, procedures,
-                                self.span(keyword, last))
+        return s.CreationClause(clients[0] if clients else None, procedures, self.span(keyword, last))
 
     def converters(self, c: list) -> tuple:
         return tuple(c)

@@ -2,6 +2,7 @@
 
 Input: the children of one grammar rule (tokens and built nodes). Output: an Expression node.
 """
+
 from __future__ import annotations
 
 from typing import Any
@@ -65,8 +66,7 @@ class ExpressionBuilder(BuilderBase):
     # ---- operators -------------------------------------------------------------------
     def binary(self, c: list) -> s.BinaryExpression:
         left, operator, right = c
-        return s.BinaryExpression(operator.value.lower(), left, right, self.tspan(operator),
-                                  self.span(left, right))
+        return s.BinaryExpression(operator.value.lower(), left, right, self.tspan(operator), self.span(left, right))
 
     def or_operator(self, c: list) -> Token:
         return self._operator_words(c)
@@ -80,8 +80,9 @@ class ExpressionBuilder(BuilderBase):
             return c[0]
         first, last = c
         text = f"{first.value.lower()} {last.value.lower()}"
-        return Token("OPERATOR", text, first.start_pos, first.line, first.column,
-                     last.end_line, last.end_column, last.end_pos)
+        return Token(
+            "OPERATOR", text, first.start_pos, first.line, first.column, last.end_line, last.end_column, last.end_pos
+        )
 
     def unary(self, c: list) -> s.UnaryExpression:
         operator, operand = c
@@ -194,5 +195,6 @@ class ExpressionBuilder(BuilderBase):
 
     def across_expression(self, c: list) -> s.AcrossExpression:
         keyword, iteration, invariant, until, quantifier, body, variant, end = c
-        return s.AcrossExpression(iteration, invariant or (), until, quantifier.value.lower(),
-                                  body, variant, self.span(keyword, end))
+        return s.AcrossExpression(
+            iteration, invariant or (), until, quantifier.value.lower(), body, variant, self.span(keyword, end)
+        )

@@ -3,6 +3,7 @@
 Input: the children of one rule. Output: Routine, Attribute, Constant, RoutineBody,
 assertion and agent nodes.
 """
+
 from __future__ import annotations
 
 from typing import Any
@@ -35,8 +36,7 @@ class FeatureBuilder(BuilderBase):
         arguments, notes, body = c[-3:]
         if isinstance(body.body, s.AttributeBody):
             self.report("SYNTAX-FEATURE", names[0], name=names[0].name.text)
-        return s.Routine(names, arguments or (), None, None, tuple(notes or ()), body,
-                         self.span(names[0], body))
+        return s.Routine(names, arguments or (), None, None, tuple(notes or ()), body, self.span(names[0], body))
 
     def feature_name(self, c: list) -> s.FeatureName:
         frozen, name = c[0], c[1]
@@ -49,9 +49,13 @@ class FeatureBuilder(BuilderBase):
         keyword, name, convert = c
         text = self.manifest_string([name]).value
         if not is_alias_name(text):
-            self.report("SYNTAX", name, found=f"the alias name `{text}`",
-                        expected="an operator (`+`, `<`, `and then`, a free operator such as `|>` or `⊕`), `[]` or `()`"
-                        " (`=`, `/=`, `~` and `/~` cannot be redefined)")
+            self.report(
+                "SYNTAX",
+                name,
+                found=f"the alias name `{text}`",
+                expected="an operator (`+`, `<`, `and then`, a free operator such as `|>` or `⊕`), `[]` or `()`"
+                " (`=`, `/=`, `~` and `/~` cannot be redefined)",
+            )
         return s.Alias(text, convert is not None, self.span(keyword, convert or name))
 
     def query_mark(self, c: list) -> tuple:
@@ -74,8 +78,7 @@ class FeatureBuilder(BuilderBase):
         start = _first(obsolete, precondition, locals_ and locals_[0], body)
         entities = locals_[1] if locals_ is not None else ()
         message = obsolete.value if obsolete is not None else None
-        return s.RoutineBody(message, precondition, entities, body, postcondition, rescue,
-                             self.span(start, end))
+        return s.RoutineBody(message, precondition, entities, body, postcondition, rescue, self.span(start, end))
 
     def do_body(self, c: list) -> s.InternalBody:
         keyword, compound = c
@@ -95,8 +98,7 @@ class FeatureBuilder(BuilderBase):
     def external_body(self, c: list) -> s.ExternalBody:
         keyword, language, _, alias = c
         name = self.manifest_string([alias]).value if alias is not None else None
-        return s.ExternalBody(self.manifest_string([language]).value, name,
-                              self.span(keyword, alias or language))
+        return s.ExternalBody(self.manifest_string([language]).value, name, self.span(keyword, alias or language))
 
     def attribute_body(self, c: list) -> s.AttributeBody:
         keyword, compound = c
@@ -163,15 +165,15 @@ class FeatureBuilder(BuilderBase):
         elif isinstance(call, s.StaticCall):
             target = s.ManifestType(call.type, self.span(call, call.type))
         else:
-            self.report("SYNTAX", call, found="this expression",
-                        expected="a feature name or `target.feature` after `agent`")
+            self.report(
+                "SYNTAX", call, found="this expression", expected="a feature name or `target.feature` after `agent`"
+            )
             return call
         arguments = self._agent_operands(call)
         return s.Agent(target, call.name, arguments, self.span(keyword, call))
 
     def _agent_operands(self, call: Any) -> tuple | None:
-        if call.span.end_line == call.name.span.end_line \
-                and call.span.end_column == call.name.span.end_column:
+        if call.span.end_line == call.name.span.end_line and call.span.end_column == call.name.span.end_column:
             return None
         return self._open(call.arguments)
 
@@ -199,8 +201,12 @@ class FeatureBuilder(BuilderBase):
 # Operators a feature may take as its alias (EiffelStudio's OPERATOR_SYNTAX_CHECKER, ECMA-367
 # 8.32.20): the standard unary and binary operators, brackets, parentheses and free operators;
 # never the equality and conformance operators `=`, `/=`, `~`, `/~`.
-STANDARD_ALIASES = (frozenset("""not + - * / // \\\\ ^ < > <= >= and or xor implies .. |..|""".split())
-                    | {"and then", "or else", "[]", "()"})
+STANDARD_ALIASES = frozenset("""not + - * / // \\\\ ^ < > <= >= and or xor implies .. |..|""".split()) | {
+    "and then",
+    "or else",
+    "[]",
+    "()",
+}
 _FREE_START = "@#|&"
 _FREE_CHARS = ":\\?=~/!#$%&*+-<>@^`|"
 

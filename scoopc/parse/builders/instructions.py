@@ -2,6 +2,7 @@
 
 Input: the children of one instruction rule. Output: Instruction nodes (tuples for compounds).
 """
+
 from __future__ import annotations
 
 from typing import Any
@@ -20,9 +21,12 @@ def _last(compound: tuple, default: Any) -> Any:
 def _is_variable(target: Any) -> bool:
     if isinstance(target, s.Result):
         return True
-    return isinstance(target, s.UnqualifiedCall) and not target.arguments \
-        and target.span.end_column == target.name.span.end_column \
+    return (
+        isinstance(target, s.UnqualifiedCall)
+        and not target.arguments
+        and target.span.end_column == target.name.span.end_column
         and target.span.end_line == target.name.span.end_line
+    )
 
 
 class InstructionBuilder(BuilderBase):
@@ -41,32 +45,35 @@ class InstructionBuilder(BuilderBase):
         if _is_variable(target):
             return s.Assignment(target, source, span)
         if not isinstance(target, _ASSIGNER_TARGETS):
-            self.report("SYNTAX", target, found=f"`{_describe(target)}`",
-                        expected="a variable or a query call before `:=`")
+            self.report(
+                "SYNTAX", target, found=f"`{_describe(target)}`", expected="a variable or a query call before `:=`"
+            )
         return s.AssignerCall(target, source, span)
 
     def assignment_attempt(self, c: list) -> s.AssignmentAttempt:
         target, source = c
         if not _is_variable(target):
-            self.report("SYNTAX", target, found=f"`{_describe(target)}`",
-                        expected="a variable before `?=`")
+            self.report("SYNTAX", target, found=f"`{_describe(target)}`", expected="a variable before `?=`")
         return s.AssignmentAttempt(target, source, self.span(target, source))
 
     # ---- creation --------------------------------------------------------------------
     def creation_instruction(self, c: list) -> s.CreationInstruction:
         keyword, processor, type_, target, call = c
         name, arguments, last = call if call is not None else (None, (), target)
-        return s.CreationInstruction(processor, type_, target, name, arguments,
-                                     self.span(keyword, last))
+        return s.CreationInstruction(processor, type_, target, name, arguments, self.span(keyword, last))
 
     def processor_tag(self, c: list) -> s.Identifier:
         """`<NONE>` (a passive region) is the one processor tag there is, as in EiffelStudio,
         whose parser rejects any other name between `<` and `>`."""
         tag = self.ident(c[0])
         if tag.key != "none":
-            self.report("SYNTAX", tag.span, found=f"`{tag.text}`", expected="`NONE` in `create <NONE>`",
-                        hint="write `create <NONE> x.make` for a passive region, "
-                             "or `create x.make` for a new processor")
+            self.report(
+                "SYNTAX",
+                tag.span,
+                found=f"`{tag.text}`",
+                expected="`NONE` in `create <NONE>`",
+                hint="write `create <NONE> x.make` for a passive region, or `create x.make` for a new processor",
+            )
         return tag
 
     def explicit_creation_type(self, c: list) -> s.Type:
@@ -105,16 +112,14 @@ class InstructionBuilder(BuilderBase):
 
     def loop(self, c: list) -> s.Loop:
         keyword, initialization, invariant, variant, _, until, _, body, late_variant, end = c
-        return s.Loop(initialization, invariant or (), until, body, variant or late_variant,
-                      self.span(keyword, end))
+        return s.Loop(initialization, invariant or (), until, body, variant or late_variant, self.span(keyword, end))
 
     def loop_invariant(self, c: list) -> tuple:
         return c[1]
 
     def across(self, c: list) -> s.Across:
         keyword, iteration, initialization, invariant, until, _, body, variant, end = c
-        return s.Across(iteration, initialization or (), invariant or (), until, body, variant,
-                        self.span(keyword, end))
+        return s.Across(iteration, initialization or (), invariant or (), until, body, variant, self.span(keyword, end))
 
     def symbolic_loop(self, c: list) -> s.Across:
         """`⟳ x: s ¦ compound ⟲` is `across s is x loop compound end`."""
@@ -133,8 +138,7 @@ class InstructionBuilder(BuilderBase):
 
     def iteration(self, c: list) -> s.Iteration:
         expression, mode, name = c
-        return s.Iteration(expression, self.ident(name), mode.type == "AS",
-                           self.span(expression, name))
+        return s.Iteration(expression, self.ident(name), mode.type == "AS", self.span(expression, name))
 
     def check(self, c: list) -> s.Check:
         keyword, assertions, then_part, end = c

@@ -3,15 +3,34 @@
 Input: the text of an INTEGER, REAL, STRING or CHARACTER token. Output: the value and a list
 of problems (offset in the text, length, reason) for the caller to report.
 """
+
 from __future__ import annotations
 
 import re
 
 # ECMA-367 special character codes (`%N` and so on); letters are accepted in either case.
 ESCAPES = {
-    "A": "@", "B": "\b", "C": "^", "D": "$", "F": "\f", "H": "\\", "L": "~", "N": "\n",
-    "Q": "`", "R": "\r", "S": "#", "T": "\t", "U": "\0", "V": "|", "%": "%", "'": "'",
-    '"': '"', "(": "[", ")": "]", "<": "{", ">": "}",
+    "A": "@",
+    "B": "\b",
+    "C": "^",
+    "D": "$",
+    "F": "\f",
+    "H": "\\",
+    "L": "~",
+    "N": "\n",
+    "Q": "`",
+    "R": "\r",
+    "S": "#",
+    "T": "\t",
+    "U": "\0",
+    "V": "|",
+    "%": "%",
+    "'": "'",
+    '"': '"',
+    "(": "[",
+    ")": "]",
+    "<": "{",
+    ">": "}",
 }
 _CODE = re.compile(r"/([0-9A-Za-z_]+)/")
 _CONTINUATION = re.compile(r"%[ \t]*\n[ \t]*%")
@@ -41,7 +60,7 @@ def _code_value(code: str) -> int | None:
 
 def _escape(text: str, i: int, problems: list[Problem]) -> tuple[str, int]:
     """Decode the escape whose `%` is at text[i]; return the character and the next index."""
-    letter = text[i + 1:i + 2]
+    letter = text[i + 1 : i + 2]
     if letter == "/":
         match = _CODE.match(text, i + 1)
         value = _code_value(match.group(1)) if match else None
@@ -51,8 +70,7 @@ def _escape(text: str, i: int, problems: list[Problem]) -> tuple[str, int]:
         return chr(value), match.end()
     char = ESCAPES.get(letter.upper())
     if char is None:
-        problems.append((i, 2, f"`%{letter}` is not a special character code "
-                               "(use `%%` for a percent sign)"))
+        problems.append((i, 2, f"`%{letter}` is not a special character code (use `%%` for a percent sign)"))
         return "", i + 2
     return char, i + 2
 
@@ -92,14 +110,13 @@ def _verbatim(text: str) -> str:
     last = text.rindex("\n")
     if last <= first:
         return ""
-    lines = text[first + 1:last].split("\n")
+    lines = text[first + 1 : last].split("\n")
     if text[1] == "{":
         return "\n".join(lines)
     margins = [len(line) - len(line.lstrip(" \t")) for line in lines if line.strip()]
     cut = min(margins) if margins else 0
     prefix = _common_prefix([line[:cut] for line in lines if line.strip()])
-    return "\n".join(line[len(prefix):] if line.startswith(prefix) else line.lstrip(" \t")
-                     for line in lines)
+    return "\n".join(line[len(prefix) :] if line.startswith(prefix) else line.lstrip(" \t") for line in lines)
 
 
 def _common_prefix(items: list[str]) -> str:

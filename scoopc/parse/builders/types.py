@@ -2,6 +2,7 @@
 
 Input: the children of one type rule. Output: ClassType, TupleType or AnchoredType nodes.
 """
+
 from __future__ import annotations
 
 import dataclasses
@@ -21,8 +22,9 @@ class TypeBuilder(BuilderBase):
         words = [mark.value.lower() for mark in c[:-1]]
         attachment = next((w for w in words if w in _ATTACHMENT), None)
         variance = next((w for w in words if w in _VARIANCE), None)
-        return dataclasses.replace(base, attachment=attachment, separate="separate" in words,
-                                   variance=variance, span=self.span(c[0], base))
+        return dataclasses.replace(
+            base, attachment=attachment, separate="separate" in words, variance=variance, span=self.span(c[0], base)
+        )
 
     def type_mark(self, c: list):
         return c[0]
@@ -39,8 +41,12 @@ class TypeBuilder(BuilderBase):
             # Groups (each optionally ended by `;`) are only TUPLE's labelled declarations.
             for group_types, label_type in groups:
                 if label_type is None:
-                    self.report("SYNTAX", group_types[-1], found="a type without a label",
-                                expected="`,` between actual generic parameters")
+                    self.report(
+                        "SYNTAX",
+                        group_types[-1],
+                        found="a type without a label",
+                        expected="`,` between actual generic parameters",
+                    )
                     break
         if name.value.lower() == "tuple":
             return self._tuple_type(groups, span)
@@ -49,8 +55,7 @@ class TypeBuilder(BuilderBase):
         types = []
         for group_types, label_type in groups:
             if label_type is not None:
-                self.report("SYNTAX", label_type, found="`:`",
-                            expected="a type (only TUPLE types have labels)")
+                self.report("SYNTAX", label_type, found="`:`", expected="a type (only TUPLE types have labels)")
             types.extend(group_types)
         return s.ClassType(self.ident(name), tuple(types), None, False, None, span)
 
@@ -67,8 +72,7 @@ class TypeBuilder(BuilderBase):
         return s.TupleType(tuple(types), tuple(labels), None, False, None, span)
 
     def _label(self, label: s.Type) -> s.Identifier:
-        if isinstance(label, s.ClassType) and not label.generics and label.attachment is None \
-                and not label.separate:
+        if isinstance(label, s.ClassType) and not label.generics and label.attachment is None and not label.separate:
             return label.name
         self.report("SYNTAX", label, found="a type", expected="a label name before `:`")
         return s.Identifier("?", "?", label.span)

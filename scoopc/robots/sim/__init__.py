@@ -1,4 +1,5 @@
 """Deterministic 2D differential-drive simulator: worlds, robots, sensors, a Bus-facing Simulator, rendering."""
+
 from .robot import WATCHDOG, SimRobot
 from .simulator import Simulator
 from .world import World, WorldError

@@ -1,4 +1,5 @@
 """Pictures of a run (pillow): a PNG of the world and the robots' trajectories, and an animated GIF."""
+
 import math
 
 from PIL import Image, ImageDraw
@@ -97,7 +98,7 @@ def render_gif(sim, path, fps=10.0, speed=None, max_frames=300, pixels_per_metre
     # the trails are drawn incrementally on one layer; each frame copies it and adds the bodies
     layer = canvas.image.copy()
     trails = ImageDraw.Draw(layer)
-    drawn = [1] * len(sim.robots)                  # trajectory points already on the layer, per robot
+    drawn = [1] * len(sim.robots)  # trajectory points already on the layer, per robot
     stamps = [[p[0] for p in robot.trajectory] for robot in sim.robots]
     palette = _palette(sim)
     frames = []
@@ -106,7 +107,7 @@ def render_gif(sim, path, fps=10.0, speed=None, max_frames=300, pixels_per_metre
             n = _count_until(stamps[i], t)
             if n > drawn[i]:
                 step = max(1, (n - drawn[i]) // 400)
-                pts = [canvas.px(p[1], p[2]) for p in robot.trajectory[drawn[i] - 1:n:step]]
+                pts = [canvas.px(p[1], p[2]) for p in robot.trajectory[drawn[i] - 1 : n : step]]
                 pts.append(canvas.px(*robot.trajectory[n - 1][1:3]))
                 trails.line(pts, fill=COLORS[i % len(COLORS)], width=2)
                 drawn[i] = n
@@ -127,8 +128,17 @@ def render_gif(sim, path, fps=10.0, speed=None, max_frames=300, pixels_per_metre
 
 def _palette(sim):
     """A fixed palette holding every colour the pictures use (quantizing to it is fast and exact)."""
-    colors = [(255, 255, 255), (0, 0, 0), (40, 40, 40), (150, 150, 150), (0, 170, 0), (210, 255, 210),
-              (220, 0, 0), (255, 0, 0), (255, 0, 255)] + COLORS
+    colors = [
+        (255, 255, 255),
+        (0, 0, 0),
+        (40, 40, 40),
+        (150, 150, 150),
+        (0, 170, 0),
+        (210, 255, 210),
+        (220, 0, 0),
+        (255, 0, 0),
+        (255, 0, 255),
+    ] + COLORS
     flat = [c for color in colors for c in color]
     palette = Image.new("P", (1, 1))
     palette.putpalette(flat + flat[-3:] * (256 - len(colors)))

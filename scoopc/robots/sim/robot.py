@@ -1,10 +1,11 @@
 """One simulated differential-drive robot: kinematics, cmd_vel watchdog, collisions, falls, battery."""
+
 import math
 import threading
 
 import numpy as np
 
-WATCHDOG = 0.5          # seconds without cmd_vel before the robot stops
+WATCHDOG = 0.5  # seconds without cmd_vel before the robot stops
 
 
 class SimRobot:
@@ -15,10 +16,10 @@ class SimRobot:
         self.name = spec.name
         self.namespace = spec.namespace
         self.x, self.y, self.theta = spec.start
-        self.v = 0.0                  # actual velocities (after limits, watchdog, collisions)
+        self.v = 0.0  # actual velocities (after limits, watchdog, collisions)
         self.w = 0.0
-        self.cmd = (0.0, 0.0)         # last commanded (linear.x, angular.z), clamped
-        self.last_cmd_time = None     # simulated time of the last cmd_vel
+        self.cmd = (0.0, 0.0)  # last commanded (linear.x, angular.z), clamped
+        self.last_cmd_time = None  # simulated time of the last cmd_vel
         self.cmd_count = 0
         self.battery = spec.battery.initial
         self.charging = False
@@ -26,8 +27,8 @@ class SimRobot:
         self.fell_at = None
         self.in_contact = False
         self.empty = False
-        self.collisions = []          # (time, x, y)
-        self.watchdog_stops = []      # times at which the watchdog zeroed the command
+        self.collisions = []  # (time, x, y)
+        self.watchdog_stops = []  # times at which the watchdog zeroed the command
         self.distance = 0.0
         self.trajectory = [(0.0, self.x, self.y, self.theta)]
         self._lock = threading.Lock()

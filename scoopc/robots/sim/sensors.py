@@ -4,6 +4,7 @@ Proximity (Thymio II-like, 7 horizontal IR), ground (2 downward IR), laser scann
 Range conventions (REP 117): a sensor that detects nothing reports +inf.
 Ground sensors: 0.01 m over the floor, +inf over a hole (nothing reflects).
 """
+
 import math
 
 import numpy as np
@@ -38,7 +39,7 @@ PROXIMITY = {  # name: (mount angle on the body, beam direction), radians in the
 PROXIMITY_RANGE = 0.12
 PROXIMITY_MIN = 0.0
 PROXIMITY_FOV = 0.3
-GROUND = {"left": (0.05, 0.02), "right": (0.05, -0.02)}   # mount points (forward, left) in the robot frame
+GROUND = {"left": (0.05, 0.02), "right": (0.05, -0.02)}  # mount points (forward, left) in the robot frame
 GROUND_FLOOR = 0.01
 GROUND_MAX = 0.03
 
@@ -64,22 +65,39 @@ def proximity_ranges(robot, world, robots):
 
 def proximity_msg(robot, name, value, t_ns):
     ns = robot.namespace
-    return new("sensor_msgs/msg/Range", header=header(t_ns, f"{ns}/proximity_{name}_link"), radiation_type=1,
-               field_of_view=PROXIMITY_FOV, min_range=PROXIMITY_MIN, max_range=PROXIMITY_RANGE, range=float(value))
+    return new(
+        "sensor_msgs/msg/Range",
+        header=header(t_ns, f"{ns}/proximity_{name}_link"),
+        radiation_type=1,
+        field_of_view=PROXIMITY_FOV,
+        min_range=PROXIMITY_MIN,
+        max_range=PROXIMITY_RANGE,
+        range=float(value),
+    )
 
 
 def ground_ranges(robot, world):
     pts = np.array([robot.to_world(*GROUND[n]) for n in GROUND])
-    holes = world.in_hole(pts) | (pts[:, 0] < 0) | (pts[:, 1] < 0) | (pts[:, 0] > world.width) | (pts[:, 1] > world.height)
+    holes = (
+        world.in_hole(pts) | (pts[:, 0] < 0) | (pts[:, 1] < 0) | (pts[:, 0] > world.width) | (pts[:, 1] > world.height)
+    )
     return {n: (math.inf if h else GROUND_FLOOR) for n, h in zip(GROUND, holes.tolist())}
 
 
 def ground_msg(robot, name, value, t_ns):
-    return new("sensor_msgs/msg/Range", header=header(t_ns, f"{robot.namespace}/ground_{name}_link"), radiation_type=1,
-               field_of_view=0.1, min_range=0.0, max_range=GROUND_MAX, range=float(value))
+    return new(
+        "sensor_msgs/msg/Range",
+        header=header(t_ns, f"{robot.namespace}/ground_{name}_link"),
+        radiation_type=1,
+        field_of_view=0.1,
+        min_range=0.0,
+        max_range=GROUND_MAX,
+        range=float(value),
+    )
 
 
 # ---- laser -----------------------------------------------------------------------------------------
+
 
 def laser_angles(spec):
     full = abs(spec.fov - 2 * math.pi) < 1e-9
@@ -100,35 +118,65 @@ def laser_ranges(robot, world, robots):
 def scan_msg(robot, ranges, t_ns):
     spec = robot.spec.laser
     start, inc, angles = laser_angles(spec)
-    return new("sensor_msgs/msg/LaserScan", header=header(t_ns, f"{robot.namespace}/laser_link"),
-               angle_min=float(start), angle_max=float(angles[-1]), angle_increment=float(inc), time_increment=0.0,
-               scan_time=1.0 / spec.rate, range_min=0.0, range_max=float(spec.range),
-               ranges=np.asarray(ranges, dtype=np.float32), intensities=np.zeros(0, dtype=np.float32))
+    return new(
+        "sensor_msgs/msg/LaserScan",
+        header=header(t_ns, f"{robot.namespace}/laser_link"),
+        angle_min=float(start),
+        angle_max=float(angles[-1]),
+        angle_increment=float(inc),
+        time_increment=0.0,
+        scan_time=1.0 / spec.rate,
+        range_min=0.0,
+        range_max=float(spec.range),
+        ranges=np.asarray(ranges, dtype=np.float32),
+        intensities=np.zeros(0, dtype=np.float32),
+    )
 
 
 # ---- odometry, battery, clock ----------------------------------------------------------------------
 
+
 def odom_msg(robot, t_ns):
     ns = robot.namespace
-    pose = new("geometry_msgs/msg/Pose", position=new("geometry_msgs/msg/Point", x=robot.x, y=robot.y, z=0.0),
-               orientation=quaternion_yaw(robot.theta))
-    twist = new("geometry_msgs/msg/Twist", linear=new("geometry_msgs/msg/Vector3", x=robot.v, y=0.0, z=0.0),
-                angular=new("geometry_msgs/msg/Vector3", x=0.0, y=0.0, z=robot.w))
-    return new("nav_msgs/msg/Odometry", header=header(t_ns, f"{ns}/odom"), child_frame_id=f"{ns}/base_link",
-               pose=new("geometry_msgs/msg/PoseWithCovariance", pose=pose),
-               twist=new("geometry_msgs/msg/TwistWithCovariance", twist=twist))
+    pose = new(
+        "geometry_msgs/msg/Pose",
+        position=new("geometry_msgs/msg/Point", x=robot.x, y=robot.y, z=0.0),
+        orientation=quaternion_yaw(robot.theta),
+    )
+    twist = new(
+        "geometry_msgs/msg/Twist",
+        linear=new("geometry_msgs/msg/Vector3", x=robot.v, y=0.0, z=0.0),
+        angular=new("geometry_msgs/msg/Vector3", x=0.0, y=0.0, z=robot.w),
+    )
+    return new(
+        "nav_msgs/msg/Odometry",
+        header=header(t_ns, f"{ns}/odom"),
+        child_frame_id=f"{ns}/base_link",
+        pose=new("geometry_msgs/msg/PoseWithCovariance", pose=pose),
+        twist=new("geometry_msgs/msg/TwistWithCovariance", twist=twist),
+    )
 
 
 def battery_msg(robot, t_ns):
     b = robot.spec.battery
-    status = 1 if robot.charging else 2          # CHARGING / DISCHARGING
+    status = 1 if robot.charging else 2  # CHARGING / DISCHARGING
     if robot.charging and robot.battery >= 1.0:
-        status = 4                               # FULL
-    return new("sensor_msgs/msg/BatteryState", header=header(t_ns, f"{robot.namespace}/base_link"),
-               voltage=float(3.3 + 0.9 * robot.battery), temperature=math.nan, current=math.nan,
-               charge=float(b.capacity * robot.battery), capacity=float(b.capacity), design_capacity=float(b.capacity),
-               percentage=float(robot.battery), power_supply_status=status,
-               power_supply_health=3 if robot.empty else 1, power_supply_technology=2, present=True)
+        status = 4  # FULL
+    return new(
+        "sensor_msgs/msg/BatteryState",
+        header=header(t_ns, f"{robot.namespace}/base_link"),
+        voltage=float(3.3 + 0.9 * robot.battery),
+        temperature=math.nan,
+        current=math.nan,
+        charge=float(b.capacity * robot.battery),
+        capacity=float(b.capacity),
+        design_capacity=float(b.capacity),
+        percentage=float(robot.battery),
+        power_supply_status=status,
+        power_supply_health=3 if robot.empty else 1,
+        power_supply_technology=2,
+        present=True,
+    )
 
 
 def clock_msg(t_ns):

@@ -5,6 +5,7 @@ the robot says `cmd_vel_stamped: true`); publishes /NS/odom (50 Hz), /NS/proximi
 /NS/ground/<left,right> (Thymio, 20 Hz), /NS/scan (10 Hz, when the robot has a laser), /NS/battery_state
 (1 Hz); and /clock (every step). Time is simulated: integer nanoseconds, one step = world.step seconds.
 """
+
 import math
 
 import numpy as np
@@ -21,12 +22,22 @@ def _period(rate, dt_ns):
 class Simulator:
     """`step()` advances one fixed step; `run_until(t)` steps up to simulated time t (seconds)."""
 
-    def __init__(self, world, bus=None, *, odom_rate=50.0, proximity_rate=20.0, ground_rate=20.0,
-                 battery_rate=1.0, clock_rate=None):
+    def __init__(
+        self,
+        world,
+        bus=None,
+        *,
+        odom_rate=50.0,
+        proximity_rate=20.0,
+        ground_rate=20.0,
+        battery_rate=1.0,
+        clock_rate=None,
+    ):
         if not isinstance(world, World):
             world = World.load(world) if isinstance(world, str) else World.from_dict(world)
         if bus is None:
             from scoopc.robots.bus import Bus
+
             bus = Bus()
         self.world = world
         self.bus = bus
@@ -34,11 +45,15 @@ class Simulator:
         self.steps = 0
         self.robots = [SimRobot(spec) for spec in world.robots]
         self.rng = np.random.default_rng(world.seed)
-        self._periods = {"odom": _period(odom_rate, self.dt_ns), "proximity": _period(proximity_rate, self.dt_ns),
-                         "ground": _period(ground_rate, self.dt_ns), "battery": _period(battery_rate, self.dt_ns),
-                         "clock": 1 if clock_rate is None else _period(clock_rate, self.dt_ns)}
+        self._periods = {
+            "odom": _period(odom_rate, self.dt_ns),
+            "proximity": _period(proximity_rate, self.dt_ns),
+            "ground": _period(ground_rate, self.dt_ns),
+            "battery": _period(battery_rate, self.dt_ns),
+            "clock": 1 if clock_rate is None else _period(clock_rate, self.dt_ns),
+        }
         self._subs = []
-        self._names = {}                  # robot name -> {short topic name: full name}
+        self._names = {}  # robot name -> {short topic name: full name}
         for robot in self.robots:
             topic = self.topic(robot, "cmd_vel")
             self._subs.append(bus.subscribe(topic, self._cmd_callback(robot)))
@@ -71,8 +86,9 @@ class Simulator:
 
     def _cmd_callback(self, robot):
         def on_cmd(msg):
-            twist = getattr(msg, "twist", msg)   # TwistStamped or Twist
+            twist = getattr(msg, "twist", msg)  # TwistStamped or Twist
             robot.command(twist.linear.x, twist.angular.z, self.time)
+
         return on_cmd
 
     # ---- stepping ---------------------------------------------------------------------------------
@@ -132,8 +148,11 @@ class Simulator:
                     for name in heard:
                         pub(topic[f"ground/{name}"], sensors.ground_msg(robot, name, values[name], t_ns))
             laser = robot.spec.laser
-            if laser is not None and (initial or self._due("scan", _period(laser.rate, self.dt_ns))) \
-                    and wants(topic["scan"]):
+            if (
+                laser is not None
+                and (initial or self._due("scan", _period(laser.rate, self.dt_ns)))
+                and wants(topic["scan"])
+            ):
                 ranges = sensors.laser_ranges(robot, self.world, self.robots)
                 pub(topic["scan"], sensors.scan_msg(robot, ranges, t_ns))
             if (initial or self._due("battery")) and wants(topic["battery_state"]):
@@ -178,7 +197,7 @@ class Simulator:
         if not free[start]:
             return reach
         reach[start] = True
-        while True:   # flood fill, 4-connected, vectorised
+        while True:  # flood fill, 4-connected, vectorised
             grown = reach.copy()
             grown[1:, :] |= reach[:-1, :]
             grown[:-1, :] |= reach[1:, :]
@@ -201,8 +220,14 @@ class Simulator:
         traj = self.trajectory(name)[:, 1:3]
         cells = np.unique(np.floor(traj / resolution).astype(int), axis=0)
         k = int(math.ceil(radius / resolution))
-        offs = np.array([(dx, dy) for dx in range(-k, k + 1) for dy in range(-k, k + 1)
-                         if math.hypot(dx, dy) * resolution <= radius])
+        offs = np.array(
+            [
+                (dx, dy)
+                for dx in range(-k, k + 1)
+                for dy in range(-k, k + 1)
+                if math.hypot(dx, dy) * resolution <= radius
+            ]
+        )
         stamped = (cells[:, None, :] + offs[None, :, :]).reshape(-1, 2)
         ny, nx = reach.shape
         ok = (stamped[:, 0] >= 0) & (stamped[:, 0] < nx) & (stamped[:, 1] >= 0) & (stamped[:, 1] < ny)
@@ -211,10 +236,21 @@ class Simulator:
         return float((seen & reach).sum() / total)
 
     def summary(self):
-        return {r.name: {"x": r.x, "y": r.y, "theta": r.theta, "distance": r.distance, "battery": r.battery,
-                         "collisions": len(r.collisions), "fallen": r.fallen, "cmd_vel": r.cmd_count}
-                for r in self.robots}
+        return {
+            r.name: {
+                "x": r.x,
+                "y": r.y,
+                "theta": r.theta,
+                "distance": r.distance,
+                "battery": r.battery,
+                "collisions": len(r.collisions),
+                "fallen": r.fallen,
+                "cmd_vel": r.cmd_count,
+            }
+            for r in self.robots
+        }
 
     def render_png(self, path, **kw):
         from .render import render_png
+
         return render_png(self, path, **kw)

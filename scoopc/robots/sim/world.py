@@ -3,6 +3,7 @@
 Coordinates are metres, x right, y up, origin at the world's lower-left corner; angles in radians,
 counter-clockwise, 0 along +x. The format is documented in docs/ROBOTS.md, section "Simulator worlds".
 """
+
 import math
 from dataclasses import dataclass, field
 
@@ -24,17 +25,17 @@ class WorldError(ValueError):
 class LaserSpec:
     range: float = 2.0
     beams: int = 360
-    fov: float = 2 * math.pi          # centred on the robot's heading
+    fov: float = 2 * math.pi  # centred on the robot's heading
     rate: float = 10.0
 
 
 @dataclass
 class BatterySpec:
-    capacity: float = 1.0             # Ah, reported in BatteryState.capacity
-    initial: float = 1.0              # fraction 0..1
-    drain_idle: float = 0.0005        # fraction per second, always
-    drain_motion: float = 0.002       # fraction per second at full linear (or angular) speed
-    charge_rate: float = 0.02         # fraction per second at the charging station
+    capacity: float = 1.0  # Ah, reported in BatteryState.capacity
+    initial: float = 1.0  # fraction 0..1
+    drain_idle: float = 0.0005  # fraction per second, always
+    drain_motion: float = 0.002  # fraction per second at full linear (or angular) speed
+    charge_rate: float = 0.02  # fraction per second at the charging station
 
 
 @dataclass
@@ -42,11 +43,11 @@ class RobotSpec:
     name: str
     namespace: str
     kind: str
-    start: tuple                      # (x, y, theta)
+    start: tuple  # (x, y, theta)
     radius: float
     max_linear: float
     max_angular: float
-    laser: object                     # LaserSpec or None
+    laser: object  # LaserSpec or None
     battery: BatterySpec
     cmd_vel_stamped: bool = False
 
@@ -56,11 +57,11 @@ class World:
     name: str
     width: float
     height: float
-    segments: np.ndarray              # (M, 4): x1 y1 x2 y2, every wall and box edge
-    boxes: np.ndarray                 # (B, 4): xmin ymin xmax ymax (solid)
-    holes: list                       # list of (K, 2) polygons
-    goal: object                      # (x, y) or None
-    station: object                   # (x, y) or None
+    segments: np.ndarray  # (M, 4): x1 y1 x2 y2, every wall and box edge
+    boxes: np.ndarray  # (B, 4): xmin ymin xmax ymax (solid)
+    holes: list  # list of (K, 2) polygons
+    goal: object  # (x, y) or None
+    station: object  # (x, y) or None
     station_radius: float
     duration: float
     seed: int
@@ -108,13 +109,20 @@ class World:
             else:
                 st_pos, st_r = tuple(map(float, station)), 0.2
         goal = data.get("goal")
-        world = cls(name=str(data.get("name", default_name)), width=width, height=height,
-                    segments=np.asarray(segs, dtype=float).reshape(-1, 4),
-                    boxes=np.asarray(boxes, dtype=float).reshape(-1, 4), holes=holes,
-                    goal=tuple(map(float, goal)) if goal is not None else None,
-                    station=st_pos, station_radius=st_r,
-                    duration=float(data.get("duration", 60.0)), seed=int(data.get("seed", 0)),
-                    step=float(data.get("step", 0.01)))
+        world = cls(
+            name=str(data.get("name", default_name)),
+            width=width,
+            height=height,
+            segments=np.asarray(segs, dtype=float).reshape(-1, 4),
+            boxes=np.asarray(boxes, dtype=float).reshape(-1, 4),
+            holes=holes,
+            goal=tuple(map(float, goal)) if goal is not None else None,
+            station=st_pos,
+            station_radius=st_r,
+            duration=float(data.get("duration", 60.0)),
+            seed=int(data.get("seed", 0)),
+            step=float(data.get("step", 0.01)),
+        )
         robots = data.get("robots") or [{"name": "robot1"}]
         for i, r in enumerate(robots):
             world.robots.append(_robot_spec(r, i))
@@ -176,20 +184,32 @@ def _robot_spec(r, i):
     if laser is True:
         laser = LaserSpec()
     elif isinstance(laser, dict):
-        laser = LaserSpec(range=float(laser.get("range", 2.0)), beams=int(laser.get("beams", 360)),
-                          fov=math.radians(float(laser.get("fov_deg", 360.0))), rate=float(laser.get("rate", 10.0)))
+        laser = LaserSpec(
+            range=float(laser.get("range", 2.0)),
+            beams=int(laser.get("beams", 360)),
+            fov=math.radians(float(laser.get("fov_deg", 360.0))),
+            rate=float(laser.get("rate", 10.0)),
+        )
     else:
         laser = None
     bat = r.get("battery", {}) or {}
     battery = BatterySpec(**{key: float(v) for key, v in bat.items() if key in BatterySpec.__dataclass_fields__})
-    return RobotSpec(name=name, namespace=ns, kind=kind, start=(float(start[0]), float(start[1]), float(start[2])),
-                     radius=float(r.get("radius", k["radius"])),
-                     max_linear=float(r.get("max_linear", k["max_linear"])),
-                     max_angular=float(r.get("max_angular", k["max_angular"])),
-                     laser=laser, battery=battery, cmd_vel_stamped=bool(r.get("cmd_vel_stamped", False)))
+    return RobotSpec(
+        name=name,
+        namespace=ns,
+        kind=kind,
+        start=(float(start[0]), float(start[1]), float(start[2])),
+        radius=float(r.get("radius", k["radius"])),
+        max_linear=float(r.get("max_linear", k["max_linear"])),
+        max_angular=float(r.get("max_angular", k["max_angular"])),
+        laser=laser,
+        battery=battery,
+        cmd_vel_stamped=bool(r.get("cmd_vel_stamped", False)),
+    )
 
 
 # ---- vectorised geometry ---------------------------------------------------------------------------
+
 
 def segment_distances(points, segs):
     """(N, M) distances from N points to M segments."""
