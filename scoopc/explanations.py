@@ -898,7 +898,7 @@ EXPLANATIONS: dict[str, Explanation] = {
         """Void safety: a variable of an attached type must hold an object before it is read. An
         attached local or `Result` must be set on every path before its first use (and `Result`
         before the function returns), and each creation procedure must set every attached
-        attribute.""",
+        attribute, before it reads it.""",
         """
         name: STRING
             do
@@ -1115,6 +1115,41 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Put the bracket alias on a query that takes the index (or key) as an argument.",
     ),
+    "VFAV(3)": _x(
+        """A parenthesis alias (`alias "()"`) lets `x (a)` call a routine with the parenthesized values
+        as its arguments, so it names a routine with at least one argument, and a class has at
+        most one feature with a parenthesis alias.""",
+        """
+        value alias "()": INTEGER
+        """,
+        """
+        item alias "()" (i: INTEGER): INTEGER
+        """,
+        "Put the parenthesis alias on one routine that takes the values as arguments.",
+    ),
+    "VFAV(4)": _x(
+        """A `convert` mark on an operator alias lets the operator apply when the left operand only
+        converts to the class (`1 + money`): the operator must then be binary, so the feature
+        takes exactly one argument.""",
+        """
+        negated alias "-" convert: MONEY
+        """,
+        """
+        negated alias "-": MONEY
+        """,
+        "The unary operator loses its `convert` mark: there is no other operand to convert from.",
+    ),
+    "VFAV(5)": _x(
+        """Only an operator alias can carry a `convert` mark (it converts the left operand of a
+        binary operator); a bracket or parenthesis alias cannot.""",
+        """
+        item alias "[]" convert (i: INTEGER): G
+        """,
+        """
+        item alias "[]" (i: INTEGER): G
+        """,
+        "The bracket alias loses its `convert` mark.",
+    ),
     "VDJR": _x(
         """When a class inherits several features with one name, at most one of them effective, they
         are joined into one feature: their signatures (argument and result types) must then be the
@@ -1260,18 +1295,66 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Declare the result `separate`; callers then use it through separate arguments or blocks.",
     ),
-    "PROCESSOR-TAG": _x(
-        """A creation may say where the new object lives with a tag in angle brackets. scoopc accepts
-        only `<NONE>`, which puts the object in a passive region whose calls run on the client's
-        thread under a lock; other processor tags are not supported.""",
+    "VAPE": _x(
+        """A precondition is what a client must make true before a call, so every client that may
+        call the routine must be able to test it: a feature called (unqualified) in the
+        precondition must be exported to every class the routine is exported to.""",
         """
-        create <p> worker.make
+        feature withdraw (n: INTEGER) require n <= balance do balance := balance - n end
+        feature {NONE} balance: INTEGER
         """,
         """
-        create <NONE> worker.make      -- passive region
-        create worker.make             -- or: a new processor (worker: separate WORKER)
+        feature withdraw (n: INTEGER) require n <= balance do balance := balance - n end
+        feature balance: INTEGER
         """,
-        "Use `<NONE>` for a passive region, or no tag at all for an object with its own processor.",
+        "`balance` is exported as widely as `withdraw`, so a client can check `n <= balance` first.",
+    ),
+    "VSRT": _x(
+        """The root class is the type of the object the program starts with: the system creates it
+        before any code runs, so it must be an effective (not deferred) class without generic
+        parameters.""",
+        """
+        deferred class APPLICATION create make feature make do end end
+        """,
+        """
+        class APPLICATION create make feature make do end end
+        """,
+        "The root class is effective now; for a generic class, make a non-generic heir the root.",
+    ),
+    "VSRP(1)": _x(
+        """The root procedure (the .ecf's `feature` of `<root>`, or `--root CLASS.feature`) is how the
+        system creates the root object, so it must be one of the root class's creation
+        procedures.""",
+        """
+        class APPLICATION create make feature start do end make do end end
+        -- root: APPLICATION.start
+        """,
+        """
+        class APPLICATION create make, start feature start do end make do end end
+        """,
+        "`start` is listed in the `create` clause, so it can create the root object.",
+    ),
+    "VSRP(2)": _x(
+        """Nothing calls the root procedure but the system when the program starts, and it has no
+        values to pass: the root procedure takes no arguments.""",
+        """
+        make (n: INTEGER) do print (n) end
+        """,
+        """
+        make do print ((create {ARGUMENTS_32}).argument_count) end
+        """,
+        "The root procedure takes no argument; command-line arguments come from ARGUMENTS_32.",
+    ),
+    "VSRP(3)": _x(
+        """Nothing could establish a precondition of the root procedure before the program starts,
+        so the root procedure has none.""",
+        """
+        make require ready: is_ready do run end
+        """,
+        """
+        make do if is_ready then run end end
+        """,
+        "The condition is tested in the body instead of being required of a caller that does not exist.",
     ),
 }
 # VUAR(2) and VJAR also cover their SCOOP conditions (separate to non-separate); see their rule text.

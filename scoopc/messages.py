@@ -21,8 +21,6 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
   non-separate formal in a call on a separate target, or a `G` result of such a call used as
   non-separate. EiffelStudio accepts both (it applies VUAR(3) and result adaptation to
   `reference G` only); if an actual generic is a reference type, the value is a traitor.
-- PROCESSOR-TAG: `create <X>` with a processor tag other than NONE (explicit processor tags
-  are not supported; `<NONE>` makes a passive region).
 
 The validity codes are ECMA-367's as EiffelStudio prints them; for SCOOP, EiffelStudio's
 spelling, Gobo's finer conditions being accepted by `scoopc check --explain` as aliases.
@@ -143,13 +141,21 @@ MESSAGES: dict[str, Message] = {
         "make the signatures equal, or rename one of the inherited features",
     ),
     "VFAV(1)": Message(
-        "operator `{operator}` on `{name}`: an operator alias needs a query with one argument "
-        "(binary operator) or none (unary operator)",
-        "remove the alias, or give the feature the right number of arguments",
+        "operator `{operator}` on `{name}`: {problem}",
+        "remove the alias, give the feature the right number of arguments, or use another operator",
     ),
     "VFAV(2)": Message(
-        "bracket alias on `{name}`: it needs a query with at least one argument",
-        'declare it like `item alias "[]" (i: INTEGER): G`',
+        "bracket alias on `{name}`: {problem}", 'declare one feature like `item alias "[]" (i: INTEGER): G`'
+    ),
+    "VFAV(3)": Message("parenthesis alias on `{name}`: {problem}", 'declare one routine like `call alias "()" (a: A)`'),
+    "VFAV(4)": Message(
+        "`convert` mark on alias `{operator}` of `{name}`, which has {count} arguments: "
+        "a converting operator takes exactly one",
+        "remove `convert`, or give `{name}` one argument",
+    ),
+    "VFAV(5)": Message(
+        "`convert` mark on alias `{operator}` of `{name}`: only an operator alias can convert its target",
+        "remove `convert`",
     ),
     "VDPR(1)": Message(
         "`Precursor` in `{name}`, which does not redefine an effective inherited feature",
@@ -320,9 +326,26 @@ MESSAGES: dict[str, Message] = {
         "all processors would share an object of one processor",
         "declare the result `separate {type}`",
     ),
-    "PROCESSOR-TAG": Message(
-        "processor tag `<{tag}>`: only `create <NONE> x` (a passive region) is supported",
-        "write `create <NONE> x.make` for a passive region, or `create x.make` for a new processor",
+    "VAPE": Message(
+        "`{name}` in the precondition of `{routine}` is exported to {exports} only, but `{routine}` is "
+        "available to {client}: that client could not test what it must ensure",
+        "export `{name}` at least as widely as `{routine}` (e.g. move it to the `feature` clause of `{routine}`)",
+    ),
+    "VSRT": Message(
+        "root class {name} is {what}",
+        "choose an effective, non-generic class as the root (an heir that fixes the generics, if need be)",
+    ),
+    "VSRP(1)": Message(
+        "root procedure `{creator}` is not a creation procedure of {name} (it has: {listed})",
+        "list `{creator}` in {name}'s `create` clause, or name one of its creation procedures as the root",
+    ),
+    "VSRP(2)": Message(
+        "root procedure {name}.{creator} has arguments: nothing could pass them when the program starts",
+        "remove the arguments (read command-line arguments with ARGUMENTS_32), or use another creation procedure",
+    ),
+    "VSRP(3)": Message(
+        "root procedure {name}.{creator} has a precondition: nothing could establish it when the program starts",
+        "remove the `require` clause and check the condition in the body instead",
     ),
     "ONCE-KEY": Message(
         'unknown once key "{key}"', 'use "PROCESS", "THREAD" or "OBJECT" (or none: once per processor)'

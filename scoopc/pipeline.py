@@ -134,7 +134,8 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
         trees += [(tree, True) for _, tree, _ in library_units if tree is not None]
     if library_bodies is None:
         library_bodies = not use_cache
-    result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base)
+    root = (project.root.class_name, project.root.creation) if project.root is not None else None
+    result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base, root=root)
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)
     checked.diagnostics.sort(key=diagnostics.sort_key)

@@ -21,7 +21,6 @@ PLAN_SCOOP_CODES = [
     "V1SE",
     "V1SE(3)",
     "VFFD(8)",
-    "PROCESSOR-TAG",
 ]
 
 

@@ -39,9 +39,15 @@ feature -- Access
 	line_revision (i: INTEGER): INTEGER
 			-- Revision that wrote line `i'.
 		require
-			valid_line: 1 <= i and i <= stamps.count
+			valid_line: 1 <= i and i <= written_count
 		do
 			Result := stamps.i_th (i)
+		end
+
+	written_count: INTEGER
+			-- Number of lines written so far (exported: the precondition of `line_revision' uses it).
+		do
+			Result := stamps.count
 		end
 
 feature -- Status report

@@ -230,14 +230,13 @@ class Expressions:
             result = P.call("S.bad_inspect", [P.name(subject), self.where(node)])
         first = True
         tests = []
+        subject_value, text = self.inspect_subject(node)
         for part in node.when_parts:
             part_tests = []
             for choice in part.choices:
-                value = (
-                    ast.NamedExpr(P.name(subject, store=True), self.x(node.expression)) if first else P.name(subject)
-                )
+                value = ast.NamedExpr(P.name(subject, store=True), subject_value) if first else P.name(subject)
                 first = False
-                part_tests.append(self.choice(value, choice))
+                part_tests.append(self.choice(value, choice, text))
             tests.append(P.boolop(ast.Or(), part_tests) if len(part_tests) > 1 else part_tests[0])
         for part, test in reversed(list(zip(node.when_parts, tests))):
             result = ast.IfExp(test, self.x(part.then_part), result)

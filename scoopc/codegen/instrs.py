@@ -161,21 +161,39 @@ class Instructions:
 
     def s_MultiBranch(self, node):
         subject = self.temp("inspect")
-        out = [P.assign(P.name(subject), self.x(node.expression))]
+        value, text = self.inspect_subject(node)
+        out = [P.assign(P.name(subject), value)]
         if node.else_part is not None:
             orelse = self.block(node.else_part)
         else:
             orelse = [P.expr_stmt(P.call("S.bad_inspect", [P.name(subject), self.where(node)]))]
         for part in reversed(node.when_parts):
-            tests = [self.choice(P.name(subject), c) for c in part.choices]
+            tests = [self.choice(P.name(subject), c, text) for c in part.choices]
             orelse = [P.at(P.if_(P.boolop(ast.Or(), tests), self.block(part.then_part), orelse), part.span)]
         return out + orelse
 
-    def choice(self, subject, choice):
-        lower = self.x(choice.lower)
+    def inspect_subject(self, node) -> tuple[ast.expr, bool]:
+        """The value an inspect compares, and whether it is a string's text: strings are
+        inspected by value (their characters), as EiffelStudio does, never by identity."""
+        value = self.x(node.expression)
+        ty = self.tables.types.get(node.expression)
+        if ty is not None and not ty.is_formal and "STRING" in ty.name:
+            return P.call("S.inspect_text", [value, self.where(node)]), True
+        return value, False
+
+    def choice(self, subject, choice, text: bool = False):
+        lower = self.choice_value(choice.lower, text)
         if choice.upper is None:
             return P.compare(subject, ast.Eq(), lower)
-        return ast.Compare(lower, [ast.LtE(), ast.LtE()], [subject, self.x(choice.upper)])
+        return ast.Compare(lower, [ast.LtE(), ast.LtE()], [subject, self.choice_value(choice.upper, text)])
+
+    def choice_value(self, node, text: bool):
+        """A `when` value; for a string subject, the characters of the string it denotes."""
+        if not text:
+            return self.x(node)
+        if isinstance(node, syntax.ManifestString):
+            return P.const(node.value)
+        return P.attr(self.x(node), "_s")
 
     def s_Loop(self, node):
         out = self.block(node.initialization)

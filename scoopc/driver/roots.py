@@ -9,8 +9,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from .. import diagnostics
+from ..diagnostics import Diagnostic
 from ..exits import UsageError
 from ..project import Project
+from ..semantics.roots import check_root
 from ..semantics.universe import ClassInfo, Universe
 
 
@@ -44,14 +47,12 @@ def choose_root(project: Project, universe: Universe, option: str | None, paths:
     info = user.get(name)
     if info is None:
         raise UsageError(f"root class {name} is not among the given classes")
-    creators = info.creators
-    allowed = (creators is None and creator == "default_create") or (creators is not None and creator in creators)
-    if not allowed:
-        listed = ", ".join(sorted(creators)) if creators is not None else "default_create"
-        raise UsageError(f"`{creator}` is not a creation procedure of {name} (it has: {listed})")
-    feature = info.features.get(creator)
-    if feature is not None and feature.arguments:
-        raise UsageError(f"the root creation procedure {name}.{creator} must take no arguments")
+    found: list[Diagnostic] = []
+    check_root(
+        universe, name, creator, lambda code, span, **arguments: found.append(diagnostics.make(code, span, **arguments))
+    )
+    if found:  # the checker's root rules (VSRT, VSRP), for a root it was not told of
+        raise UsageError("; ".join(f"{d.code}: {d.message}" for d in found))
     return Root(name, creator)
 
 

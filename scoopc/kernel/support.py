@@ -41,6 +41,14 @@ def bad_inspect(value, where):
     raise EiffelRuntimeError("bad_inspect_value", f"no `when` branch matches the value {value!r}", where)
 
 
+def inspect_text(value, where):
+    """The characters of a string inspected (`inspect s when "a" then`): strings are matched by
+    value; a Void string is a call on a Void target."""
+    if value is None:
+        raise EiffelRuntimeError("void_target", "`inspect` on a Void string", where)
+    return value._s
+
+
 def variant_start(value, where, tag=None):
     if value < 0:
         raise ContractViolation("variant", tag, where)

@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .. import diagnostics
-from . import ancestors, body, flatten, signatures, universe as universe_module
+from . import ancestors, body, flatten, roots, signatures, universe as universe_module
 from .tables import Tables
 
 VOID_LEVELS = {"none": 0, "conformance": 1, "initialization": 2, "transitional": 3, "complete": 3, "all": 3}
@@ -43,10 +43,13 @@ def prepare(trees, found: list, base=None):
     return universe, order
 
 
-def check(trees, void_safety=None, library_bodies: bool = True, base=None) -> Checked:
+def check(
+    trees, void_safety=None, library_bodies: bool = True, base=None, root: tuple[str, str] | None = None
+) -> Checked:
     """`trees`: [(ClassDeclaration, from_library)]. library_bodies False skips the routine
     bodies of library classes (already known clean, e.g. from the cache). `base`: the library's
-    prepared universe (its classes are then not in `trees`)."""
+    prepared universe (its classes are then not in `trees`). `root`: (class, creation procedure)
+    when the project names its root, checked against VSRT and VSRP."""
     found: list = []
     level = VOID_LEVELS.get((void_safety or "complete").lower(), 3)
     if base is not None and any(base.get(tree.name.text) is not None for tree, _ in trees):
@@ -59,6 +62,8 @@ def check(trees, void_safety=None, library_bodies: bool = True, base=None) -> Ch
         if info.failed or (info.from_library and not library_bodies):
             continue
         body.check_class(universe, info, tables, found, level)
+    if root is not None:
+        roots.check_root(universe, root[0], root[1], _reporter(universe, found, None))
     unique = list({(d.code, d.span, d.message): d for d in found}.values())
     unique.sort(key=diagnostics.sort_key)
     return Checked(universe, tables, unique)

@@ -34,6 +34,8 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.result_type = None
         self.result_context = "a procedure"
         self.in_postcondition = False
+        self.in_precondition = False  # the routine's own precondition: VAPE
+        self.in_agent = False  # inside an inline agent: not the feature's own body
         self.in_rescue = False
         self.object_tests: dict = {}
         self.reported_unset: set = set()
@@ -135,9 +137,12 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             self.result_context,
             self.in_rescue,
             self.in_postcondition,
+            self.in_precondition,
+            self.in_agent,
             self.reported_unset,
         )
         self.scopes, self.facts, self.in_rescue, self.in_postcondition = Scopes(), Facts(), False, False
+        self.in_precondition, self.in_agent = False, True
         self.reported_unset = set()
         return saved
 
@@ -149,6 +154,8 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             self.result_context,
             self.in_rescue,
             self.in_postcondition,
+            self.in_precondition,
+            self.in_agent,
             self.reported_unset,
         ) = saved
 
@@ -206,12 +213,28 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             self.instructions(body.rescue)
             self.in_rescue = False
 
+    def _creating(self) -> bool:
+        """Is the routine being checked a creation procedure of this class, written in it? Its
+        attached attributes are then unset at its start (VEVI at a read before they are set)."""
+        feature, creators = self.feature, self.info.creators
+        if (
+            feature is None
+            or self.in_agent
+            or feature.written_in != self.info.name
+            or self.info.is_deferred
+            or self.info.is_expanded
+        ):
+            return False
+        return feature.name in creators if creators is not None else feature.name == "default_create"
+
     def _unset_at_start(self, locals_, result) -> frozenset:
         names = set()
         for decl in locals_:
             entity = self.scopes.lookup(decl.name.key)
             if entity is not None and entity.kind == "local" and self._needs_value(entity.ty):
                 names.add(entity.name)
+        if self.void_level >= 2 and self._creating():
+            names.update(_required_attributes(self.universe, self.info))
         if result is not None and self._needs_value(result):
             names.add("result")
         return frozenset(names)

@@ -5,6 +5,8 @@ VDPR(1), VDPR(2), and the SCOOP rules through scoop.py. Records the feature of e
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from . import scoop, walk
 from .conformance import base_type
 from .features import member_signature
@@ -25,6 +27,10 @@ class CallChecks:
                 self.report("VKCN(1)", node.span, name=node.name.text)
             return self.entity_value(node, entity)
         feature = self.info.features.get(name)
+        if feature is not None and self.in_precondition:
+            self.precondition_export(feature, node.name.span)
+        if feature is not None and self.facts and self.facts.unset:
+            self.attribute_use(node, feature)
         if feature is not None and node.arguments and not feature.arguments and feature.is_query:
             value = self.call_feature(node, None, Value(self.current), feature, (), node.name.span)
             return None if value is None else self.agent_call(node, value, as_instruction)
@@ -94,7 +100,9 @@ class CallChecks:
             return None  # the class's own errors are reported there
         if base.name == "TUPLE" and name is not None and name.key in base.labels and not arguments:
             item = base.generics[base.labels.index(name.key)]
-            return scoop.adapt_result(self, node, item, target) if ty.separate else Value(item)
+            if ty.separate:
+                return scoop.adapt_result(self, node, item, target)
+            return Value(item, UNCONTROLLED if item.separate or scoop.separate_by_constraint(self, item) else None)
         if feature is None:
             self.report("VEEN", name.span, name=name.text, where=f"among the features of {base.name}")
             self.evaluate(arguments)
@@ -102,6 +110,10 @@ class CallChecks:
         if ty.separate and not scoop.check_target(self, target_node, target):
             self.evaluate(arguments)
             return None  # reported: the enclosing expression stays silent
+        if target.handler == UNCONTROLLED and scoop.separate_by_constraint(self, ty):
+            self.report("VUTA(3)", target_node.span, target=walk.describe(target_node), type=str(ty))
+            self.evaluate(arguments)
+            return None
         current = ty.with_marks(attached=True) if ty.is_formal else None  # `like Current` is G, not its constraint
         return self.call_feature(
             node,
@@ -166,7 +178,9 @@ class CallChecks:
                 return None
             if separate:
                 return scoop.adapt_result(self, node, result, target)
-            return Value(result, UNCONTROLLED if result.separate else None)
+            return Value(
+                result, UNCONTROLLED if result.separate or scoop.separate_by_constraint(self, result) else None
+            )
         if not as_instruction:
             self.report("VKCN(2)", node.span, name=feature.text)
             return None
@@ -250,6 +264,35 @@ class CallChecks:
             )
         return False
 
+    def attribute_use(self, node, feature) -> None:
+        """VEVI in a creation procedure: an attached attribute read before the procedure sets it
+        (reported at the read); a routine it calls sets the attributes that routine assigns."""
+        from .body import _set_by  # deferred: a cycle (scoopc.semantics.body imports this module)
+
+        if feature.kind == "attribute":
+            self.use_entity(node.name, feature.name)
+        elif feature.is_routine:
+            done = _set_by(self.universe, self.info, feature, set())
+            if done & self.facts.unset:
+                self.facts = replace(self.facts, unset=self.facts.unset - done)
+
+    def precondition_export(self, feature, span) -> None:
+        """VAPE (ECMA-367's Precondition Export rule): a feature called unqualified in the
+        precondition of the routine being checked is available to every class the routine is
+        available to (a client must be able to test the precondition it has to meet)."""
+        routine = self.feature
+        if routine is None or self.in_agent or feature.exports is None:
+            return
+        clients = routine.exports if routine.exports is not None else frozenset({"ANY"})
+        for client in sorted(clients):
+            info = self.universe.get(client)
+            if client == "NONE" or info is None:
+                continue
+            if not any(name == client or name in info.ancestors for name in feature.exports):
+                listed = ", ".join(sorted(feature.exports)) or "NONE"
+                self.report("VAPE", span, name=feature.text, routine=routine.text, client=client, exports=listed)
+                return
+
     def available(self, feature) -> bool:
         if feature.exports is None:
             return True
@@ -307,6 +350,8 @@ class CallChecks:
             self.report("VDPR(1)", node.span, name=self.feature.text if self.feature else "?")
             self.evaluate(node.arguments)
             return None
+        if self.facts and self.facts.unset:
+            self.attribute_use(node, effective[0][1])
         return self.call_feature(
             node, None, Value(self.current), effective[0][1], node.arguments, node.span, as_instruction
         )

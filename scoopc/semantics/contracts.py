@@ -25,7 +25,11 @@ def assertions(ctx, clauses):
 def check_precondition(ctx, precondition) -> None:
     if precondition is None:
         return
-    assertions(ctx, precondition.clauses)
+    ctx.in_precondition = True
+    try:
+        assertions(ctx, precondition.clauses)
+    finally:
+        ctx.in_precondition = False
     for clause in precondition.clauses:
         waits = scoop.wait_arguments(ctx, clause)
         if waits:

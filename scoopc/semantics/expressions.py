@@ -349,7 +349,6 @@ class ExpressionChecks:
         return self.agent(node, expected)
 
     def e_CreationExpression(self, node, expected=None):
-        scoop.check_processor_tag(self, node.processor)
         ty = self.resolve_type(node.type)
         if ty is None:
             return None

@@ -38,6 +38,7 @@ def flatten(universe, info, report) -> None:
             if chosen is not None:
                 table[name] = chosen
     table.update(own)
+    _check_alias_clashes(own, table, report)
     _check_selection(info, table, report)
     info.features = table
     info.aliases = _aliases(table)
@@ -234,22 +235,78 @@ BINARY_ONLY = {
 
 def _check_aliases(own: dict, report) -> None:
     """VFAV(1): an operator alias names a query with one argument (binary) or none (unary);
-    VFAV(2): a bracket alias names a query with at least one argument."""
+    VFAV(2): a bracket alias names a query with at least one argument; VFAV(3): a parenthesis
+    alias names a routine with at least one argument; a `convert` mark needs an operator alias
+    (VFAV(5)) on a feature with one argument (VFAV(4))."""
     for feature in own.values():
         arity = len(feature.arguments)
         for alias in feature.fname.aliases:
             name = alias.name.lower()
+            if name in ("()", "[]") and alias.convert:
+                report("VFAV(5)", alias.span, name=feature.text, operator=alias.name)
+            elif alias.convert and arity != 1:
+                report("VFAV(4)", alias.span, name=feature.text, operator=alias.name, count=arity)
             if name == "()":
+                if feature.kind not in ("procedure", "function") or arity == 0:
+                    report(
+                        "VFAV(3)",
+                        alias.span,
+                        name=feature.text,
+                        operator=alias.name,
+                        problem="it needs a routine with at least one argument",
+                    )
                 continue
             if name == "[]":
                 if not feature.is_query or arity == 0:
-                    report("VFAV(2)", alias.span, name=feature.text)
+                    report(
+                        "VFAV(2)",
+                        alias.span,
+                        name=feature.text,
+                        operator=alias.name,
+                        problem="it needs a query with at least one argument",
+                    )
                 continue
             fits = feature.is_query and (
                 arity == 0 and name not in BINARY_ONLY or arity == 1 and name not in UNARY_ONLY
             )
             if not fits:
-                report("VFAV(1)", alias.span, name=feature.text, operator=alias.name)
+                report(
+                    "VFAV(1)",
+                    alias.span,
+                    name=feature.text,
+                    operator=alias.name,
+                    problem="an operator alias needs a query with one argument (binary operator) "
+                    "or none (unary operator)",
+                )
+
+
+def _check_alias_clashes(own: dict, table: dict, report) -> None:
+    """The uniqueness conditions of VFAV(1)..(3): no two queries of a class have one operator
+    alias with one number of arguments, no two features a bracket alias, nor a parenthesis alias.
+    Reported at the alias of the class's own feature (two inherited ones are the parents' matter)."""
+    for feature in own.values():
+        for alias in feature.fname.aliases:
+            name = alias.name.lower()
+            code = {"[]": "VFAV(2)", "()": "VFAV(3)"}.get(name, "VFAV(1)")
+            for other in table.values():
+                if other.name == feature.name or name not in (a.lower() for a in other.aliases):
+                    continue
+                if code == "VFAV(1)" and (
+                    not other.is_query or not feature.is_query or len(other.arguments) != len(feature.arguments)
+                ):
+                    continue
+                here, there = feature.fname.span, other.fname.span
+                if other.name in own and (there.line, there.column) > (here.line, here.column):
+                    continue  # two own features: reported once, at the later one
+                report(
+                    code,
+                    alias.span,
+                    name=feature.text,
+                    operator=alias.name,
+                    problem=f"`{other.text}` has this alias too"
+                    + (" with as many arguments" if code == "VFAV(1)" else ""),
+                )
+                break
 
 
 def _check_creators(info, report) -> None:

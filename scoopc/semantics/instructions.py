@@ -134,7 +134,6 @@ class InstructionChecks:
             self.report("VKCN(1)", call.span, name="this expression")
 
     def i_CreationInstruction(self, node) -> None:
-        scoop.check_processor_tag(self, node.processor)
         target = self.writable(node.target)
         if target is None or target.ty is None:
             self.evaluate(node.arguments)

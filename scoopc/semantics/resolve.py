@@ -5,6 +5,7 @@ declaring names: VRFA, VRLE(1), VRLE(2), VREG, and the clash test used by VUOT(1
 
 from __future__ import annotations
 
+from .scoop import separate_by_constraint
 from .tables import Entity
 
 
@@ -43,7 +44,13 @@ def declare_routine_entities(ctx, arguments, locals_, signature_args, resolve_lo
             ctx.report("VRFA", decl.name.span, name=decl.name.text, cls=ctx.info.name)
         seen[name] = "argument"
         ctx.scopes.add(
-            Entity(name, "argument", ty, decl.name.span, handler=name if ty is not None and ty.separate else None)
+            Entity(
+                name,
+                "argument",
+                ty,
+                decl.name.span,
+                handler=name if ty is not None and (ty.separate or separate_by_constraint(ctx, ty)) else None,
+            )
         )
     for decl in locals_:
         name = decl.name.key
@@ -58,7 +65,13 @@ def declare_routine_entities(ctx, arguments, locals_, signature_args, resolve_lo
             ctx.report("VRLE(1)", decl.name.span, name=decl.name.text, cls=ctx.info.name)
         seen[name] = "local"
         ctx.scopes.add(
-            Entity(name, "local", ty, decl.name.span, handler="?" if ty is not None and ty.separate else None)
+            Entity(
+                name,
+                "local",
+                ty,
+                decl.name.span,
+                handler="?" if ty is not None and (ty.separate or separate_by_constraint(ctx, ty)) else None,
+            )
         )
 
 

@@ -22,6 +22,17 @@ def check_target(ctx, target_node, value: Value) -> bool:
     return False
 
 
+def separate_by_constraint(ctx, ty: Ty | None) -> bool:
+    """A formal generic type whose constraints are all separate (`G -> separate CELL`): its values
+    may live on another processor, so a call on one needs it controlled, as a separate target."""
+    if ty is None or not ty.is_formal or ty.separate:
+        return False
+    from .conformance import constraint_types  # deferred: a cycle (scoopc.semantics.conformance imports this module)
+
+    bounds = constraint_types(ctx.universe, ty, ctx.info)
+    return bool(bounds) and all(bound.separate for bound in bounds)
+
+
 def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> bool:
     """The separate-argument rules at a call on a separate target (Gobo VUAR-3G/4G):
     VUAR(4) expanded actual with non-separate references; VUAR(3) a non-separate reference
@@ -143,7 +154,9 @@ def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Value
     if clashes:
         ctx.report("FRESH_IDENTIFIER", argument.name.span, name=argument.name.text)
         return False
-    if value is not None and (is_expanded(ctx.universe, value.ty) or not value.ty.separate):
+    if value is not None and (
+        is_expanded(ctx.universe, value.ty) or not (value.ty.separate or separate_by_constraint(ctx, value.ty))
+    ):
         expanded = is_expanded(ctx.universe, value.ty)
         ctx.report(
             "V1SE",
@@ -169,12 +182,6 @@ def check_process_once(ctx, feature, result: Ty | None) -> None:
         return
     if not result.separate and not is_expanded(ctx.universe, result):
         ctx.report("VFFD(8)", feature.fname.name.span, name=feature.text, type=str(result))
-
-
-def check_processor_tag(ctx, processor: syntax.Identifier | None) -> None:
-    """`create <NONE> x` makes a passive region; no other processor tag is supported."""
-    if processor is not None and processor.key != "none":
-        ctx.report("PROCESSOR-TAG", processor.span, tag=processor.text)
 
 
 def wait_arguments(ctx, clause: syntax.AssertionClause) -> tuple[str, ...]:

@@ -21,7 +21,7 @@ PROGRAMS = _programs(HERE / "valid") + _programs(ROOT / "samples")
 
 @pytest.mark.parametrize("program", PROGRAMS, ids=lambda p: p.relative_to(ROOT).as_posix())
 def test_program_checks_without_errors(program):
-    checked = pipeline.check_project(collect([str(program)]))
+    checked = pipeline.check_project(collect([str(p) for p in program.glob("*.ecf")] or [str(program)]))
     errors = [d for d in checked.diagnostics if d.is_error]
     assert not errors, f"{program.relative_to(ROOT)} should be valid, but:\n" + "\n".join(
         diagnostics.short(d) for d in errors

@@ -63,7 +63,18 @@ class InstructionBuilder(BuilderBase):
         return s.CreationInstruction(processor, type_, target, name, arguments, self.span(keyword, last))
 
     def processor_tag(self, c: list) -> s.Identifier:
-        return self.ident(c[0])
+        """`<NONE>` (a passive region) is the one processor tag there is, as in EiffelStudio,
+        whose parser rejects any other name between `<` and `>`."""
+        tag = self.ident(c[0])
+        if tag.key != "none":
+            self.report(
+                "SYNTAX",
+                tag.span,
+                found=f"`{tag.text}`",
+                expected="`NONE` in `create <NONE>`",
+                hint="write `create <NONE> x.make` for a passive region, or `create x.make` for a new processor",
+            )
+        return tag
 
     def explicit_creation_type(self, c: list) -> s.Type:
         return c[0]

@@ -29,12 +29,18 @@ feature -- Access
 	partner_colour (an_id: INTEGER): INTEGER
 			-- Colour of the partner creature `an_id' met last, 0 if it has not met one yet.
 		require
-			valid_id: partner_colours.valid_index (an_id)
+			valid_id: is_valid_id (an_id)
 		do
 			Result := partner_colours.item (an_id)
 		end
 
 feature -- Status report
+
+	is_valid_id (an_id: INTEGER): BOOLEAN
+			-- Is `an_id' the number of a creature? (Exported: the preconditions use it, VAPE.)
+		do
+			Result := partner_colours.valid_index (an_id)
+		end
 
 	is_closed: BOOLEAN
 			-- Have all meetings taken place?
@@ -45,7 +51,7 @@ feature -- Status report
 	has_partner (an_id: INTEGER): BOOLEAN
 			-- Has creature `an_id' met a partner it has not left yet?
 		require
-			valid_id: partner_colours.valid_index (an_id)
+			valid_id: is_valid_id (an_id)
 		do
 			Result := partner_colour (an_id) /= 0
 		end
@@ -56,7 +62,7 @@ feature -- Element change
 			-- Let creature `an_id', of `a_colour', wait for a partner or meet the one waiting.
 		require
 			open: not is_closed
-			valid_id: partner_colours.valid_index (an_id)
+			valid_id: is_valid_id (an_id)
 			not_paired: not has_partner (an_id)
 		do
 			if waiting_id = 0 then
@@ -73,7 +79,7 @@ feature -- Element change
 	leave (an_id: INTEGER)
 			-- Let creature `an_id' leave after its meeting.
 		require
-			valid_id: partner_colours.valid_index (an_id)
+			valid_id: is_valid_id (an_id)
 		do
 			partner_colours.put (0, an_id)
 		ensure

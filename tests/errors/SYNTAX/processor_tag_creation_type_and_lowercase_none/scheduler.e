@@ -16,8 +16,8 @@ feature {NONE} -- Initialization
 			l_third: separate ANY
 		do
 			create <none> l_first.make (1)
-			create <here> l_second.make (2) -- E: PROCESSOR-TAG
-			create <SYSTEM> {separate TASK} l_third.make (3) -- E: PROCESSOR-TAG
+			create <here> l_second.make (2) -- E: SYNTAX
+			create <SYSTEM> {separate TASK} l_third.make (3) -- E: SYNTAX
 			run (l_first)
 			run (l_second)
 		end

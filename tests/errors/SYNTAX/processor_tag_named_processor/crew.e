@@ -15,7 +15,7 @@ feature {NONE} -- Initialization
 			l_worker: separate WORKER
 			l_helper: separate WORKER
 		do
-			create <p> l_worker.make (1) -- E: PROCESSOR-TAG
+			create <p> l_worker.make (1) -- E: SYNTAX
 			create <NONE> l_helper.make (2)
 			start (l_worker)
 			start (l_helper)

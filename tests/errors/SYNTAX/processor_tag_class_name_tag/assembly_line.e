@@ -14,8 +14,8 @@ feature {NONE} -- Initialization
 		local
 			l_arm: separate ARM
 		do
-			create <ARM> l_arm.make -- E: PROCESSOR-TAG
-			operate (create <ROBOT> {separate ARM}.make) -- E: PROCESSOR-TAG
+			create <ARM> l_arm.make -- E: SYNTAX
+			operate (create <ROBOT> {separate ARM}.make) -- E: SYNTAX
 			operate (create <NONE> {separate ARM}.make)
 			operate (l_arm)
 		end
