@@ -10,6 +10,7 @@ import sys
 import pytest
 
 import scoopc
+from scoopc import cli
 from scoopc.exits import Exit
 
 from harness import ROOT
@@ -35,7 +36,7 @@ end
 """
 
 
-def cli(*argv, cwd=None):
+def python_m(*argv, cwd=None):
     """`python -m scoopc ARGV` in a fresh interpreter: (status, stdout, stderr)."""
     done = subprocess.run(
         [sys.executable, "-m", "scoopc", *map(str, argv)],
@@ -48,23 +49,34 @@ def cli(*argv, cwd=None):
     return done.returncode, done.stdout, done.stderr
 
 
-@pytest.mark.slow
+def cli_main(capsys, *argv):
+    """The command line (what `python -m scoopc` runs), in this process: (status, stdout, stderr)."""
+    status = cli.main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return status, out, err
+
+
 @pytest.mark.parametrize("sample", PLAIN + ROBOT, ids=lambda p: p.name)
-def test_check_agrees_with_the_command_line(sample):
+def test_check_agrees_with_the_command_line(sample, capsys):
     result = scoopc.check([sample])
-    status, out, err = cli("check", sample, "--format", "short")
+    assert capsys.readouterr() == ("", "")  # the API prints nothing
+    status, out, err = cli_main(capsys, "check", sample, "--format", "short")
     assert (result.status, out) == (status, "")
     assert [str(d) for d in result.diagnostics] == err.splitlines()
 
 
-@pytest.mark.slow
 @pytest.mark.parametrize("sample", PLAIN, ids=lambda p: p.name)
-def test_run_agrees_with_the_command_line(sample):
+def test_run_agrees_with_the_command_line(sample, capsys):
     out, err = io.StringIO(), io.StringIO()
     result = scoopc.run([sample], virtual_clock=True, stdout=out, stderr=err)
-    status, cli_out, _ = cli("run", sample, "--virtual-clock")
+    status, cli_out, _ = cli_main(capsys, "run", sample, "--virtual-clock")
     assert result.status == status == Exit.OK, err.getvalue()
     assert sorted(out.getvalue().splitlines()) == sorted(cli_out.splitlines())  # concurrent: order may vary
+
+
+def test_python_m_scoopc_is_the_command_line():
+    status, out, err = python_m("check", SAMPLES / "producer_consumer", "--format", "short")
+    assert (status, out, err) == (Exit.OK, "", "")
 
 
 def test_a_robot_sample_runs_on_the_simulator_through_the_api():
