@@ -25,17 +25,18 @@ PROGRAM = os.path.join(HERE, "programs", "busy_exit")
 TIMEOUT = 120.0
 
 BASELINE = """
-import sys, threading
+import signal, sys, threading, time
+signal.signal(signal.SIGINT, signal.default_int_handler)   # a background job starts with SIGINT ignored
 def spin():
     n = 0
     while n >= 0:
         n += 1
-count = int(sys.argv[1])
-for _ in range(count):
-    threading.Thread(target=spin, daemon=True).start()
-print("busy", flush=True)
-try:
-    threading.Event().wait()
+try:   # the signal may come as soon as `busy` is out: everything after it is inside the `try`
+    for _ in range(int(sys.argv[1])):
+        threading.Thread(target=spin, daemon=True).start()
+    print("busy", flush=True)
+    while True:
+        time.sleep(1)
 except KeyboardInterrupt:
     sys.exit(130)
 """

@@ -59,7 +59,9 @@ def _externals(cluster):
     """(class file, feature) of every `external "Python"` feature of a stdlib cluster."""
     import re
 
-    root = Path(scoopc.__file__).parent.parent / "stdlib" / cluster
+    from scoopc.semantics.universe import stdlib_root
+
+    root = stdlib_root() / cluster  # the installed library (a checkout's stdlib/ when editable)
     for path in sorted(root.rglob("*.e")):
         external = r"\n\t(\w+)[^\n]*\n(?:\t\t\t--[^\n]*\n)*\t\texternal\n\t\t\t\"Python\""
         for match in re.finditer(external, path.read_text()):

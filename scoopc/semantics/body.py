@@ -129,35 +129,29 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             self.scopes.pop()
             self.facts = saved
 
+    # the state an inline agent's body replaces, and gives back when it is checked
+    _NESTED_STATE = (
+        "scopes",
+        "facts",
+        "result_type",
+        "result_context",
+        "in_rescue",
+        "in_postcondition",
+        "in_precondition",
+        "in_agent",
+        "reported_unset",
+    )
+
     def enter_nested(self):
-        saved = (
-            self.scopes,
-            self.facts,
-            self.result_type,
-            self.result_context,
-            self.in_rescue,
-            self.in_postcondition,
-            self.in_precondition,
-            self.in_agent,
-            self.reported_unset,
-        )
+        saved = tuple(getattr(self, name) for name in self._NESTED_STATE)
         self.scopes, self.facts, self.in_rescue, self.in_postcondition = Scopes(), Facts(), False, False
         self.in_precondition, self.in_agent = False, True
         self.reported_unset = set()
         return saved
 
     def leave_nested(self, saved) -> None:
-        (
-            self.scopes,
-            self.facts,
-            self.result_type,
-            self.result_context,
-            self.in_rescue,
-            self.in_postcondition,
-            self.in_precondition,
-            self.in_agent,
-            self.reported_unset,
-        ) = saved
+        for name, value in zip(self._NESTED_STATE, saved):
+            setattr(self, name, value)
 
     # --- routines ---------------------------------------------------------------------------
     def check_feature(self, feature) -> None:
