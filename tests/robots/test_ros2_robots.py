@@ -241,7 +241,7 @@ def test_a_twist_program_against_a_twist_stamped_robot_is_told_why_it_does_not_m
 
 
 def test_nothing_heard_names_the_namespace_mistake():
-    from scoopc.robots.runner import nearby
+    from scoopc.robots.silence import nearby
 
     graph = {"/odom": "", "/scan": "", "/proximity/left": "", "/robot2/odom": ""}
     assert nearby("/robot1/odom", graph) == ["/odom", "/robot2/odom"]
