@@ -4,11 +4,11 @@ module, and RclpyBus runs only against a stand-in of the rclpy calls it makes (i
 subscriptions, taps and shutdown), never against rclpy itself (see rclpy_bus.py's note)."""
 
 import os
-import random
 import sys
 import time
 import types
 
+import domains  # tests/robots/domains.py: a DDS domain per test, disjoint per worker
 import pytest
 
 from scoopc.robots import backends, rclpy_bus
@@ -21,7 +21,7 @@ def environment(monkeypatch, tmp_path):
     """Loopback DDS in a test domain; no backend chosen by the caller's environment."""
     from scoopc.robots import dds
 
-    for name, value in dds.loopback_environment(tmp_path, random.randint(100, 200)).items():
+    for name, value in dds.loopback_environment(tmp_path, domains.next_domain()).items():
         monkeypatch.setenv(name, value)
     monkeypatch.delenv(backends.ENV, raising=False)
 

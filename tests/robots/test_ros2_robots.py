@@ -8,12 +8,12 @@ missing battery topic, (7) silent topics are reported. Waits are on conditions; 
 bound a broken run (the one negative discovery check, OFF, is bounded by a positive control)."""
 
 import os
-import random
 import subprocess
 import sys
 import time
 from pathlib import Path
 
+import domains  # tests/robots/domains.py: a DDS domain per test, disjoint per worker
 import pytest
 
 pytest.importorskip("cyclonedds")
@@ -43,7 +43,7 @@ INTERFACE_ONLY = """<?xml version="1.0" encoding="UTF-8"?>
 def env(tmp_path_factory):
     folder = tmp_path_factory.mktemp("ros2_robots")
     (folder / "world.yaml").write_text(WORLD)
-    settings = dds.loopback_environment(folder, random.randint(100, 200))
+    settings = dds.loopback_environment(folder, domains.next_domain())
     saved = {name: os.environ.get(name) for name in [*settings, "ROS_DISTRO"]}
     os.environ.update(settings)
     os.environ.pop("ROS_DISTRO", None)
@@ -314,7 +314,7 @@ def _discovery(env, tmp_path, variables, wait):
     child = dict(
         env,
         CYCLONEDDS_URI=uri.resolve().as_uri(),
-        ROS_DOMAIN_ID=str(random.randint(100, 200)),
+        ROS_DOMAIN_ID=str(domains.next_domain()),
         ROS_DISTRO="jazzy",
         **variables,
     )
