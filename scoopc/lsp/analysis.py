@@ -1,0 +1,115 @@
+"""Language server, the programs behind open documents: which program a file belongs to (the
+.ecf beside it, else its folder as a cluster), checked through the driver with the editor's
+unsaved buffers and one standard library kept in memory for every check."""
+
+from __future__ import annotations
+
+import gc
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .. import pipeline
+from ..diagnostics import Diagnostic
+from ..driver import Compilation
+from ..exits import UsageError
+from ..semantics.universe import ClassInfo, stdlib_root
+from ..source import Span
+from .nodes import Texts
+
+
+@dataclass
+class Analysis:
+    """One check of one program: its diagnostics, syntax trees and, when it parsed, what the
+    checker proved (universe, tables)."""
+
+    paths: tuple[str, ...]
+    checked: pipeline.Checked | None
+    files: tuple[str, ...] = ()  # the program's own files (absolute)
+    problem: Diagnostic | None = None  # the program could not be read (a bad .ecf, ...)
+    trees: dict[str, object] = field(default_factory=dict)  # absolute path -> ClassDeclaration
+
+    @property
+    def semantics(self):
+        return self.checked.semantics if self.checked is not None else None
+
+    def class_info(self, path: str) -> ClassInfo | None:
+        tree = self.trees.get(path)
+        if tree is None or self.semantics is None:
+            return None
+        info = self.semantics.universe.get(tree.name.key)
+        return info if info is not None and info.decl is tree else None
+
+    def diagnostics_by_file(self) -> dict[str, list[Diagnostic]]:
+        """Every file of the program with its diagnostics (an empty list clears old ones)."""
+        found: dict[str, list[Diagnostic]] = {path: [] for path in self.files}
+        everything = ([self.problem] if self.problem else []) + (self.checked.diagnostics if self.checked else [])
+        for diagnostic in everything:
+            where = os.path.abspath(diagnostic.span.file) if diagnostic.span else self.paths[0]
+            found.setdefault(where, []).append(diagnostic)
+        return found
+
+
+def program_paths(path: str) -> tuple[str, ...]:
+    """What a file is checked as: the one .ecf in its folder, else the folder (every .e below it)."""
+    folder = Path(path).parent
+    ecfs = sorted(folder.glob("*.ecf"))
+    return (str(ecfs[0]),) if len(ecfs) == 1 else (str(folder),)
+
+
+def in_library(path: str) -> bool:
+    return Path(path).resolve().is_relative_to(stdlib_root().resolve())
+
+
+_STDLIB: list[tuple] = []  # the standard library, loaded once per process
+
+
+def stdlib() -> tuple:
+    """The standard library, loaded once; then frozen out of the cyclic collector's way (its full
+    passes over the library's objects would cost more than a check)."""
+    if not _STDLIB:
+        _STDLIB.append(pipeline.load_stdlib())
+        gc.collect()
+        gc.freeze()
+    return _STDLIB[0]
+
+
+class Programs:
+    """The programs of the open documents, each checked again when one of its files changes."""
+
+    def __init__(self) -> None:
+        self.texts = Texts()
+        self.latest: dict[tuple[str, ...], Analysis] = {}
+        self.good: dict[str, Analysis] = {}  # file -> the latest analysis in which it parsed and checked
+
+    @property
+    def stdlib(self) -> tuple:
+        return stdlib()
+
+    def check(self, path: str) -> Analysis:
+        """Check the program of file `path` with the current buffers."""
+        key = program_paths(path)
+        try:
+            compilation = Compilation(list(key), overlay=self.texts.buffers, stdlib=self.stdlib)
+            checked = compilation.checked
+        except UsageError as problem:
+            span = Span(key[0], 1, 1, 1, 1)
+            found = Analysis(key, None, (path,), Diagnostic("USAGE", span, str(problem)))
+            self.latest[key] = found
+            return found
+        files = tuple(os.path.abspath(f) for f in compilation.project.files)
+        trees = {os.path.abspath(u.source.path): u.tree for u in checked.units if u.tree is not None}
+        analysis = Analysis(key, checked, files, None, trees)
+        self.latest[key] = analysis
+        if checked.semantics is not None:
+            for name in trees:
+                self.good[name] = analysis
+        return analysis
+
+    def analysis(self, path: str) -> Analysis | None:
+        """The latest analysis in which `path` has a syntax tree and the program was checked."""
+        path = os.path.abspath(path)
+        found = self.good.get(path)
+        if found is None and path not in self.texts.buffers and not in_library(path):
+            found = self.check(path)
+        return found if found is not None and path in found.trees else None
