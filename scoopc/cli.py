@@ -360,7 +360,7 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
 def _command_lsp(args: argparse.Namespace) -> int:
     from .lsp import server  # deferred: pygls and the checker load only for the server (start-up)
 
-    return server.serve()
+    return server.main()
 
 
 def _command_msg(args: argparse.Namespace) -> int:

@@ -6,15 +6,17 @@ from __future__ import annotations
 
 import gc
 import os
+import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .. import pipeline
+from .. import diagnostics, pipeline
 from ..diagnostics import Diagnostic
 from ..driver import Compilation
 from ..exits import UsageError
+from ..parse import parser
 from ..semantics.universe import ClassInfo, stdlib_root
-from ..source import Span
+from ..source import SourceFile, Span
 from .nodes import Texts
 
 
@@ -61,17 +63,28 @@ def in_library(path: str) -> bool:
     return Path(path).resolve().is_relative_to(stdlib_root().resolve())
 
 
-_STDLIB: list[tuple] = []  # the standard library, loaded once per process
+_STDLIB: list[tuple] = []  # the standard library, loaded once per process (under _LOADING)
+_LOADING = threading.Lock()
+SERVER_PROCESS = {"freeze": False}  # set by server.serve: this process is the server's own
 
 
 def stdlib() -> tuple:
-    """The standard library, loaded once; then frozen out of the cyclic collector's way (its full
-    passes over the library's objects would cost more than a check)."""
-    if not _STDLIB:
-        _STDLIB.append(pipeline.load_stdlib())
-        gc.collect()
-        gc.freeze()
-    return _STDLIB[0]
+    """The standard library, loaded once. In the server's own process it is then frozen out of the
+    cyclic collector's way (its full passes over the library's objects would cost more than a
+    check); a process that only hosts a server (the tests) keeps its collector as it was."""
+    with _LOADING:
+        if not _STDLIB:
+            _STDLIB.append(pipeline.load_stdlib())
+            if SERVER_PROCESS["freeze"]:
+                gc.collect()
+                gc.freeze()
+        return _STDLIB[0]
+
+
+def warm_up() -> None:
+    """Load the standard library and build the parser before the first document needs them."""
+    stdlib()
+    parser.parse(SourceFile("warm_up.e", "class WARM_UP end"))
 
 
 class Programs:
@@ -93,8 +106,8 @@ class Programs:
             compilation = Compilation(list(key), overlay=self.texts.buffers, stdlib=self.stdlib)
             checked = compilation.checked
         except UsageError as problem:
-            span = Span(key[0], 1, 1, 1, 1)
-            found = Analysis(key, None, (path,), Diagnostic("USAGE", span, str(problem)))
+            problem_here = diagnostics.make("SOURCE", Span(path, 1, 1, 1, 1), path=key[0], reason=str(problem))
+            found = Analysis(key, None, (path,), problem_here)
             self.latest[key] = found
             return found
         files = tuple(os.path.abspath(f) for f in compilation.project.files)

@@ -35,6 +35,8 @@ def complete(programs: Programs, path: str, line: int, column: int) -> list[lsp.
         return []
     lines = text.split("\n")
     before = lines[line - 1][: column - 1] if line <= len(lines) else ""
+    if "--" in before.split('"')[-1] and before.count('"') % 2 == 0:
+        return []  # in a comment
     member = _MEMBER.search(before)
     if member is not None and not before[: member.start()].rstrip().endswith("."):
         return _members(programs, path, lines, line, member.start() + 1, column)

@@ -97,12 +97,13 @@ def _description(decl, texts: Texts) -> str:
     return ""
 
 
-def separateness(found: Found, tables) -> str:
+def separateness(found: Found, tables, texts: Texts) -> str:
     """On a call or an entity of separate type: is it separate, and controlled here?"""
     node = found.node
     target = getattr(node, "target", None) if isinstance(node, syntax.QualifiedCall) else None
-    if target is not None and node in tables.separate_calls:
-        return _control_line(_span_text(target), tables.types.get(target), target in tables.controlled)
+    ty = tables.types.get(target) if target is not None else None
+    if ty is not None and ty.separate:
+        return _control_line(texts.text(target.span), ty, target in tables.controlled)
     if found.entity is not None and found.entity.ty is not None and found.entity.ty.separate:
         controlled = node in tables.controlled or found.entity.handler not in (None, "?")
         return _control_line(found.entity.name, found.entity.ty, controlled)
@@ -124,10 +125,6 @@ def _control_line(target: str, ty, controlled: bool) -> str:
     )
 
 
-def _span_text(node) -> str:
-    return getattr(getattr(node, "name", None), "text", None) or "target"
-
-
 def hover_text(found: Found, declaring: ClassInfo | None, sem, texts: Texts) -> tuple[str, Span | None]:
     """Markdown for what `found` names, and the span it covers ('' when nothing is known)."""
     if found.feature is not None:
@@ -138,6 +135,6 @@ def hover_text(found: Found, declaring: ClassInfo | None, sem, texts: Texts) -> 
         text = class_text(found.class_info, texts)
     else:
         return "", None
-    extra = separateness(found, sem.tables)
+    extra = separateness(found, sem.tables, texts)
     span = getattr(found.chain[-1], "span", None) if found.chain else None
     return (text + ("\n\n" + extra if extra else "")), span

@@ -29,7 +29,7 @@ def references(found: Found, analysis: Analysis, declaration: bool) -> list[Span
         spans = _feature_uses(found, sem)
     elif found.entity is not None:
         key = found.entity.span
-        spans = [_name_span(node) for node, e in sem.tables.entities.items() if e.span == key and e is not None]
+        spans = [_name_span(node) for node, entity in sem.tables.entities.items() if entity.span == key]
     else:
         spans = _class_uses(found, analysis)
     own = definition(found, analysis)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import asyncio
 import os
+import threading
 from pathlib import Path
 from typing import BinaryIO
 
@@ -21,7 +22,7 @@ from ..semantics.library import cache_dir
 from ..source import SourceFile
 from ..version import __version__
 from . import completion, fixes, hover, lookup, navigation, outline
-from .analysis import Analysis, Programs, in_library, program_paths
+from .analysis import SERVER_PROCESS, Analysis, Programs, in_library, program_paths, warm_up
 from .nodes import from_position, library_file, to_location, to_range
 
 QUICK_FIX = lsp.CodeActionKind.QuickFix
@@ -34,6 +35,7 @@ class ScoopServer(LanguageServer):
         self.programs = Programs()
         self.pending: set[tuple[str, ...]] = set()
         self.published: dict[tuple[str, ...], set[str]] = {}
+        self.warming = threading.Thread(target=warm_up, name="scoopc-lsp-warm-up", daemon=True)
 
     # ---- checking ------------------------------------------------------------------------------
     def buffer_changed(self, uri: str) -> str:
@@ -112,6 +114,15 @@ def explanation_link(code: str) -> lsp.CodeDescription | None:
     except OSError:
         return None
     return lsp.CodeDescription(target.as_uri())
+
+
+def on_initialized(ls: ScoopServer, params: lsp.InitializedParams) -> None:
+    ls.warming.start()  # the library loads while the editor opens its first file
+
+
+def on_shutdown(ls: ScoopServer, params: None) -> None:
+    if ls.warming.is_alive():
+        ls.warming.join()
 
 
 def did_open(ls: ScoopServer, params: lsp.DidOpenTextDocumentParams) -> None:
@@ -211,6 +222,8 @@ def on_code_action(ls: ScoopServer, params: lsp.CodeActionParams) -> list[lsp.Co
 
 
 _FEATURES = [
+    ((lsp.INITIALIZED,), on_initialized),
+    ((lsp.SHUTDOWN,), on_shutdown),
     ((lsp.TEXT_DOCUMENT_DID_OPEN,), did_open),
     ((lsp.TEXT_DOCUMENT_DID_CHANGE,), did_change),
     ((lsp.TEXT_DOCUMENT_DID_SAVE,), did_save),
@@ -243,3 +256,9 @@ def serve(stdin: BinaryIO | None = None, stdout: BinaryIO | None = None) -> int:
     """Run a server on stdin and stdout (or the given binary streams) until the client exits."""
     build().start_io(stdin, stdout)
     return 0
+
+
+def main() -> int:
+    """`scoopc lsp`: this process is the server's."""
+    SERVER_PROCESS["freeze"] = True
+    return serve()
