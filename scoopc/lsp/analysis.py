@@ -53,10 +53,17 @@ class Analysis:
 
 
 def program_paths(path: str) -> tuple[str, ...]:
-    """What a file is checked as: the one .ecf in its folder, else the folder (every .e below it)."""
+    """What a file is checked as: the nearest .ecf project above it (the only one in its folder or
+    in a folder above, up to the repository's top, a folder with .git), else its own folder as a
+    cluster (every .e file below it), as `scoopc check FOLDER` sees it."""
     folder = Path(path).parent
-    ecfs = sorted(folder.glob("*.ecf"))
-    return (str(ecfs[0]),) if len(ecfs) == 1 else (str(folder),)
+    for candidate in (folder, *folder.parents):
+        ecfs = sorted(candidate.glob("*.ecf"))
+        if len(ecfs) == 1:
+            return (str(ecfs[0]),)
+        if (candidate / ".git").exists() or candidate == Path.home():
+            break
+    return (str(folder),)
 
 
 def in_library(path: str) -> bool:
@@ -101,7 +108,9 @@ class Programs:
 
     def check(self, path: str) -> Analysis:
         """Check the program of file `path` with the current buffers."""
-        key = program_paths(path)
+        return self.check_program(program_paths(path), path)
+
+    def check_program(self, key: tuple[str, ...], path: str) -> Analysis:
         try:
             compilation = Compilation(list(key), overlay=self.texts.buffers, stdlib=self.stdlib)
             checked = compilation.checked

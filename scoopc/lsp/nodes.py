@@ -90,18 +90,20 @@ class Texts:
 
     def __init__(self) -> None:
         self.buffers: dict[str, str] = {}
-        self._disk: dict[str, SourceFile | None] = {}
+        self._disk: dict[str, tuple[int, SourceFile]] = {}  # path -> (modification time, text)
 
     def source(self, path: str) -> SourceFile | None:
         path = os.path.abspath(path)
         if path in self.buffers:
             return SourceFile(path, self.buffers[path])
-        if path not in self._disk:
-            try:
-                self._disk[path] = SourceFile.read(path)
-            except (OSError, UnicodeDecodeError):
-                self._disk[path] = None
-        return self._disk[path]
+        try:
+            stamp = os.stat(path).st_mtime_ns
+            known = self._disk.get(path)
+            if known is None or known[0] != stamp:
+                known = self._disk[path] = (stamp, SourceFile.read(path))
+        except (OSError, UnicodeDecodeError):
+            return None
+        return known[1]
 
     def text(self, span: Span) -> str:
         source = self.source(library_file(span.file))

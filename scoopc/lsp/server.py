@@ -144,6 +144,14 @@ def did_close(ls: ScoopServer, params: lsp.DidCloseTextDocumentParams) -> None:
         ls.check_now(path)  # the file on disk counts again
 
 
+def on_watched_files(ls: ScoopServer, params: lsp.DidChangeWatchedFilesParams) -> None:
+    """Files changed on disk (a `git checkout`, another editor): their programs are checked again."""
+    changed = {program_paths(_path(change.uri)): _path(change.uri) for change in params.changes}
+    for key, path in changed.items():
+        if key in ls.programs.latest and key not in ls.pending:
+            ls.publish(ls.programs.check_program(key, path))
+
+
 def on_hover(ls: ScoopServer, params: lsp.HoverParams) -> lsp.Hover | None:
     path, analysis, found = _lookup(ls, params)
     if found is None:
@@ -228,6 +236,7 @@ _FEATURES = [
     ((lsp.TEXT_DOCUMENT_DID_CHANGE,), did_change),
     ((lsp.TEXT_DOCUMENT_DID_SAVE,), did_save),
     ((lsp.TEXT_DOCUMENT_DID_CLOSE,), did_close),
+    ((lsp.WORKSPACE_DID_CHANGE_WATCHED_FILES,), on_watched_files),
     ((lsp.TEXT_DOCUMENT_HOVER,), on_hover),
     ((lsp.TEXT_DOCUMENT_DEFINITION,), on_definition),
     ((lsp.TEXT_DOCUMENT_REFERENCES,), on_references),

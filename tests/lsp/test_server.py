@@ -162,3 +162,13 @@ def test_quick_fix_moves_the_call_into_a_routine_with_a_separate_argument(lsp, p
     assert "\t\t\tset_speed_on_motor (motor)\n" in text
     assert "\tset_speed_on_motor (a_motor: separate MOTOR)\n" in text and "\t\t\ta_motor.set_speed (40)\n" in text
     assert found == []
+
+
+def test_a_file_changed_on_disk_is_checked_again(lsp, program):
+    uri = lsp.open(program / "robot_app.e")
+    assert [code for code, _, _ in _codes(lsp.diagnostics(uri))] == ["VUTA(3)", "VEEN"]
+    motor = program / "motor.e"
+    motor.write_text(motor.read_text().replace("set_speed", "set_sped"))  # drive's call is right, make's not
+    changes = {"changes": [{"uri": motor.resolve().as_uri(), "type": 2}]}
+    lsp.notify("workspace/didChangeWatchedFiles", changes)
+    assert _codes(lsp.diagnostics(uri)) == [("VEEN", 18, 10)]
