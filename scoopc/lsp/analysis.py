@@ -15,9 +15,11 @@ from ..diagnostics import Diagnostic
 from ..driver import Compilation
 from ..exits import UsageError
 from ..parse import parser
+from ..semantics import Checked as SemanticsChecked
+from ..semantics.tables import Tables
 from ..semantics.universe import ClassInfo, stdlib_root
 from ..source import SourceFile, Span
-from .nodes import Texts
+from .nodes import Texts, library_file
 
 
 @dataclass
@@ -40,7 +42,9 @@ class Analysis:
         if tree is None or self.semantics is None:
             return None
         info = self.semantics.universe.get(tree.name.key)
-        return info if info is not None and info.decl is tree else None
+        if info is None or not (info.decl is tree or library_file(info.decl.span.file) == path):
+            return None
+        return info
 
     def diagnostics_by_file(self) -> dict[str, list[Diagnostic]]:
         """Every file of the program with its diagnostics (an empty list clears old ones)."""
@@ -128,10 +132,23 @@ class Programs:
                 self.good[name] = analysis
         return analysis
 
+    def library_analysis(self, path: str) -> Analysis | None:
+        """A standard library file: its syntax tree against the library's prepared classes (no
+        bodies are checked: names of classes and of the class's own features are known)."""
+        source = self.texts.source(path)
+        prepared = self.stdlib[1]
+        tree = parser.parse(SourceFile(path, source.text)).tree if source is not None else None
+        if tree is None or prepared is None:
+            return None
+        checked = pipeline.Checked(semantics=SemanticsChecked(prepared[0], Tables()))
+        return Analysis((path,), checked, (path,), None, {path: tree})
+
     def analysis(self, path: str) -> Analysis | None:
         """The latest analysis in which `path` has a syntax tree and the program was checked."""
         path = os.path.abspath(path)
+        if in_library(path):
+            return self.library_analysis(path)
         found = self.good.get(path)
-        if found is None and path not in self.texts.buffers and not in_library(path):
+        if found is None and path not in self.texts.buffers:
             found = self.check(path)
         return found if found is not None and path in found.trees else None

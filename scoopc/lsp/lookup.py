@@ -53,8 +53,10 @@ def _name(found: Found, chain: list[object], index: int, sem, current: ClassInfo
     tables, universe = sem.tables, sem.universe
     found.node = node
     if isinstance(node, _CALLS + _CREATIONS + (syntax.Precursor,)):
-        found.feature = tables.features.get(node) or _member(node, tables, universe)
         found.entity = tables.entities.get(node)
+        found.feature = tables.features.get(node) or _member(node, tables, universe)
+        if found.feature is None and found.entity is None and isinstance(node, syntax.UnqualifiedCall):
+            found.feature = current.features.get(node.name.key) if current is not None else None
     elif isinstance(node, syntax.ClassType):
         found.class_info = universe.get(node.name.text)
     elif isinstance(node, syntax.Identifier) and isinstance(parent, syntax.ClassDeclaration):

@@ -172,3 +172,18 @@ def test_a_file_changed_on_disk_is_checked_again(lsp, program):
     changes = {"changes": [{"uri": motor.resolve().as_uri(), "type": 2}]}
     lsp.notify("workspace/didChangeWatchedFiles", changes)
     assert _codes(lsp.diagnostics(uri)) == [("VEEN", 18, 10)]
+
+
+def test_in_a_library_file_names_of_classes_and_own_features_are_known(lsp, program):
+    uri = lsp.open(program / "robot_app.e")
+    lsp.diagnostics(uri)
+    any_e = lsp.at("textDocument/definition", uri, 20, 4)["uri"]  # print, in ANY
+    path = _file(any_e)
+    lsp.open(path)
+    lines = path.read_text().split("\n")
+    line = next(i for i, text in enumerate(lines) if "io.put_string (o.out)" in text or "print (o:" in text)
+    column = lines[line].index("print") if "print (o:" in lines[line] else lines[line].index("io")
+    hover = lsp.at("textDocument/hover", any_e, line, column + 1)["contents"]["value"]
+    assert "*feature of class* `ANY`" in hover
+    outline = lsp.request("textDocument/documentSymbol", {"textDocument": {"uri": any_e}})
+    assert outline[0]["name"] == "ANY"
