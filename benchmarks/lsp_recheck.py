@@ -161,7 +161,7 @@ def main() -> None:
         folder.mkdir()
         path = generate(folder, args.lines)
         text = path.read_text()
-        baseline = cli_check(folder, 3)
+        baseline = cli_check(folder, min(3, args.repeat))
         server = subprocess.Popen(
             [sys.executable, "-m", "scoopc", "lsp"], stdin=subprocess.PIPE, stdout=subprocess.PIPE, cwd=work
         )
