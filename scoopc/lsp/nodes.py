@@ -122,7 +122,7 @@ def to_range(span: Span) -> lsp.Range:
 
 
 def to_location(span: Span) -> lsp.Location:
-    return lsp.Location(Path(library_file(span.file)).resolve().as_uri(), to_range(span))
+    return lsp.Location(Path(os.path.abspath(library_file(span.file))).as_uri(), to_range(span))
 
 
 def from_position(position: lsp.Position) -> tuple[int, int]:

@@ -7,7 +7,7 @@ from __future__ import annotations
 from lsprotocol import types as lsp
 
 from .. import syntax
-from ..source import SourceFile
+from ..source import SourceFile, Span
 from .nodes import is_instruction, to_range, walk
 
 _KINDS = {syntax.Routine: lsp.SymbolKind.Method, syntax.Attribute: lsp.SymbolKind.Field}
@@ -33,8 +33,8 @@ def _clause(clause, source: SourceFile) -> lsp.DocumentSymbol:
     )
 
 
-def _first_line(span):
-    return type(span)(span.file, span.line, span.column, span.line, span.column + len("feature"))
+def _first_line(span: Span) -> Span:
+    return Span(span.file, span.line, span.column, span.line, span.column + len("feature"))
 
 
 def _feature(decl, source: SourceFile) -> list[lsp.DocumentSymbol]:
