@@ -187,3 +187,25 @@ def test_in_a_library_file_names_of_classes_and_own_features_are_known(lsp, prog
     assert "*feature of class* `ANY`" in hover
     outline = lsp.request("textDocument/documentSymbol", {"textDocument": {"uri": any_e}})
     assert outline[0]["name"] == "ANY"
+
+
+def test_wrapping_a_conditional_controls_its_condition_and_its_body(lsp, program):
+    path = program / "robot_app.e"
+    text = (
+        path.read_text()
+        .replace("set_sped", "set_speed")
+        .replace(
+            "\t\t\tmotor.set_speed (40)\n",
+            '\t\t\tif motor.speed > 50 then\n\t\t\t\tprint ("fast%N")\n\t\t\tend\n',
+        )
+    )
+    uri = lsp.open(path, text)
+    (uncontrolled,) = lsp.diagnostics(uri)
+    assert _codes([uncontrolled]) == [("VUTA(3)", 18, 7)]
+    params = {"textDocument": {"uri": uri}, "range": uncontrolled["range"], "context": {"diagnostics": [uncontrolled]}}
+    actions = lsp.request("textDocument/codeAction", params)
+    assert [a["title"] for a in actions] == ["Wrap in `separate motor as ... do ... end`"]  # no routine for a condition
+    fixed = _apply(text, actions[0]["edit"]["changes"][uri])
+    assert "\t\t\tseparate motor as l_motor do\n\t\t\t\tif l_motor.speed > 50 then\n\t\t\t\t\tprint" in fixed
+    lsp.change(uri, fixed, 2)
+    assert lsp.diagnostics(uri, version=2) == []
