@@ -209,3 +209,17 @@ def test_wrapping_a_conditional_controls_its_condition_and_its_body(lsp, program
     assert "\t\t\tseparate motor as l_motor do\n\t\t\t\tif l_motor.speed > 50 then\n\t\t\t\t\tprint" in fixed
     lsp.change(uri, fixed, 2)
     assert lsp.diagnostics(uri, version=2) == []
+
+
+def test_every_file_of_the_program_gets_its_diagnostics_and_a_save_checks_again(lsp, program):
+    motor = program / "motor.e"
+    motor.write_text(motor.read_text().replace("speed := 0", "speed := True"))
+    uri = lsp.open(program / "robot_app.e")
+    published = {}
+    while len(published) < 2:
+        message = lsp.notifications.get(timeout=60)
+        if message.get("method") == "textDocument/publishDiagnostics":
+            published[_file(message["params"]["uri"]).name] = [d["code"] for d in message["params"]["diagnostics"]]
+    assert published == {"robot_app.e": ["VUTA(3)", "VEEN"], "motor.e": ["VJAR"]}
+    lsp.notify("textDocument/didSave", {"textDocument": {"uri": uri}})
+    assert [d["code"] for d in lsp.diagnostics(uri)] == ["VUTA(3)", "VEEN"]
