@@ -234,6 +234,16 @@ def _add_robot_commands(commands) -> None:
     )
     msg.set_defaults(handler=_command_msg)
 
+    lsp = commands.add_parser(
+        "lsp",
+        help="run the language server for editors (LSP over stdio)",
+        description="Run the language server on stdin and stdout for an editor: the checker's "
+        "diagnostics as you type, hover, go to definition, references, completion, outline, folding "
+        "and quick fixes (docs/EDITOR.md).",
+    )
+    lsp.add_argument("--stdio", action="store_true", help="talk over stdin and stdout (the default and only way)")
+    lsp.set_defaults(handler=_command_lsp)
+
     sim = commands.add_parser(
         "sim",
         help="run the simulator as a ROS 2 (DDS) node",
@@ -345,6 +355,12 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
         if compilation.was_checked:  # checked now, not taken from the cache
             _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
     return run_compilation(compilation, program_args, options, robot).status
+
+
+def _command_lsp(args: argparse.Namespace) -> int:
+    from .lsp import server  # deferred: pygls and the checker load only for the server (start-up)
+
+    return server.main()
 
 
 def _command_msg(args: argparse.Namespace) -> int:
