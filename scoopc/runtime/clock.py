@@ -19,7 +19,7 @@ import time
 from typing import TYPE_CHECKING
 
 from .protocols import Args, Routine, Separate, Where
-from .sched import Block
+from .sched import BUSY_CALLS, Block
 
 if TYPE_CHECKING:
     from .outside import OutsideClient
@@ -87,6 +87,7 @@ class Clock:
 
     # -- sleeping ----------------------------------------------------------------------
     def sleep(self, proc: Processor, ns: int, where: Where | None = None) -> None:
+        proc.busy = BUSY_CALLS  # its run of separate calls without sleeping starts again
         lk = threading.Lock()
         lk.acquire()
         rt = self.rt
