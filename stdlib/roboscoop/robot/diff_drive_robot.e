@@ -115,9 +115,10 @@ feature -- Basic operations
 
 	apply_default_speed
 			-- <Precursor>
-			-- At `max_linear'.
+			-- At `max_linear'. The same command again within `Repeat_period' is not resent, so a
+			-- loop that calls it over and over does not flood cmd_vel.
 		do
-			send_velocity (drive, max_linear, 0.0)
+			command (max_linear, 0.0)
 		end
 
 	turn_left
@@ -136,8 +137,12 @@ feature -- Basic operations
 
 	stop
 			-- <Precursor>
+			-- Always sent.
 		do
 			send_velocity (drive, 0.0, 0.0)
+			last_linear := 0.0
+			last_angular := 0.0
+			last_sent_at := clock.now
 		end
 
 	go_to_charging_station
@@ -162,22 +167,48 @@ feature {NONE} -- Implementation
 	Turn_period: REAL_64 = 0.05
 			-- Seconds between two looks at the front while turning (and two turn commands).
 
+	Repeat_period: REAL_64 = 0.2
+			-- Seconds within which `command' does not repeat the last command.
+
+	last_linear, last_angular, last_sent_at: REAL_64
+			-- The last command of `command' or `stop', and when it was sent (runtime clock, s).
+
+	clock: TIMER
+			-- The runtime's clock.
+		once ("OBJECT")
+			create Result.make
+		end
+
+	command (a_linear, a_angular: REAL_64)
+			-- Send `a_linear' m/s and `a_angular' rad/s, unless that was the last command and it is
+			-- younger than `Repeat_period' (well inside the robots' 0.5 s command watchdogs).
+		do
+			if a_linear /= last_linear or a_angular /= last_angular or clock.now - last_sent_at >= Repeat_period
+				or last_sent_at = 0.0
+			then
+				send_velocity (drive, a_linear, a_angular)
+				last_linear := a_linear
+				last_angular := a_angular
+				last_sent_at := clock.now
+			end
+		end
+
 	turn_until_clear (a_rate: REAL_64)
 			-- Turn in place at `a_rate' rad/s until `range_signaler' sees the front clear, then stop;
 			-- nothing when it is clear already. Gives up after a full turn plus a second.
 		local
-			clock: TIMER
+			stopwatch: TIMER
 			turned: BOOLEAN
 		do
 			from
-				create clock.make
-				clock.start
+				create stopwatch.make
+				stopwatch.start
 			until
-				is_front_clear (range_signaler) or clock.has_elapsed (2.0 * {MATH_CONST}.Pi / a_rate.abs + 1.0)
+				is_front_clear (range_signaler) or stopwatch.has_elapsed (2.0 * {MATH_CONST}.Pi / a_rate.abs + 1.0)
 			loop
-				send_velocity (drive, 0.0, a_rate)
+				command (0.0, a_rate)
 				turned := True
-				clock.sleep (Turn_period)
+				stopwatch.sleep (Turn_period)
 			end
 			if turned then
 				stop
