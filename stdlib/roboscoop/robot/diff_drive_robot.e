@@ -13,6 +13,9 @@ note
 class
 	DIFF_DRIVE_ROBOT
 
+inherit
+	ROBOT
+
 create
 	make, make_stamped, make_with_limits
 
@@ -108,7 +111,123 @@ feature -- Status report
 	is_stamped: BOOLEAN
 			-- Are velocity commands TwistStamped?
 
+feature -- Basic operations
+
+	apply_default_speed
+			-- <Precursor>
+			-- At `max_linear'. The same command again within `Repeat_period' is not resent, so a
+			-- loop that calls it over and over does not flood cmd_vel.
+		do
+			command (max_linear, 0.0)
+		end
+
+	turn_left
+			-- <Precursor>
+			-- At `max_angular', looking at `range_signaler' every `Turn_period' (clear: `is_clear' and
+			-- nothing in front within 1.5 times its obstacle distance); at most a full turn.
+		do
+			turn_until_clear (max_angular)
+		end
+
+	turn_right
+			-- <Precursor>
+		do
+			turn_until_clear (- max_angular)
+		end
+
+	stop
+			-- <Precursor>
+			-- Always sent.
+		do
+			send_velocity (drive, 0.0, 0.0)
+			last_linear := 0.0
+			last_angular := 0.0
+			last_sent_at := clock.now
+		end
+
+	go_to_charging_station
+			-- <Precursor>
+			-- To the station of the run (ROBOT_ENVIRONMENT), with a GO_TO_GOAL_BEHAVIOR on `odometry'
+			-- and `drive'; returns once there.
+		local
+			env: ROBOT_ENVIRONMENT
+			trip: GO_TO_GOAL_BEHAVIOR
+		do
+			create env
+			if env.has_charging_station then
+				create trip.make (odometry, drive, env.station_x, env.station_y)
+				trip.set_tolerance ((env.station_radius / 2.0).max (0.02))
+				trip.start
+				trip.wait_until_finished
+			end
+		end
+
 feature {NONE} -- Implementation
+
+	Turn_period: REAL_64 = 0.05
+			-- Seconds between two looks at the front while turning (and two turn commands).
+
+	Repeat_period: REAL_64 = 0.2
+			-- Seconds within which `command' does not repeat the last command.
+
+	last_linear, last_angular, last_sent_at: REAL_64
+			-- The last command of `command' or `stop', and when it was sent (runtime clock, s).
+
+	clock: TIMER
+			-- The runtime's clock.
+		once ("OBJECT")
+			create Result.make
+		end
+
+	command (a_linear, a_angular: REAL_64)
+			-- Send `a_linear' m/s and `a_angular' rad/s, unless that was the last command and it is
+			-- younger than `Repeat_period' (well inside the robots' 0.5 s command watchdogs).
+		do
+			if a_linear /= last_linear or a_angular /= last_angular or clock.now - last_sent_at >= Repeat_period
+				or last_sent_at = 0.0
+			then
+				send_velocity (drive, a_linear, a_angular)
+				last_linear := a_linear
+				last_angular := a_angular
+				last_sent_at := clock.now
+			end
+		end
+
+	turn_until_clear (a_rate: REAL_64)
+			-- Turn in place at `a_rate' rad/s until `range_signaler' sees the front clear, then stop;
+			-- nothing when it is clear already. Gives up after a full turn plus a second.
+		local
+			stopwatch: TIMER
+			turned: BOOLEAN
+		do
+			from
+				create stopwatch.make
+				stopwatch.start
+			until
+				is_front_clear (range_signaler) or stopwatch.has_elapsed (2.0 * {MATH_CONST}.Pi / a_rate.abs + 1.0)
+			loop
+				command (0.0, a_rate)
+				turned := True
+				stopwatch.sleep (Turn_period)
+			end
+			if turned then
+				stop
+			end
+		end
+
+	is_front_clear (a_range: separate RANGE_SIGNALER): BOOLEAN
+			-- Floor under the robot and nothing in front within 1.5 times the obstacle distance (so
+			-- that the robot leaves an obstacle at a wide angle)?
+		do
+			Result := a_range.is_clear and
+				(a_range.nearest_front < 0.0 or a_range.nearest_front > 1.5 * a_range.obstacle_distance)
+		end
+
+	send_velocity (a_drive: separate DIFFERENTIAL_DRIVE; a_linear, a_angular: REAL_64)
+			-- Command `a_linear' m/s and `a_angular' rad/s.
+		do
+			a_drive.send (a_linear, a_angular)
+		end
 
 	make_range_signaler
 			-- Create `range_signaler' from the laser scans.
