@@ -201,6 +201,12 @@ def _add_run_options(command: argparse.ArgumentParser) -> None:
         action="store_true",
         help="ROS 2: fail (exit 3) when a subscribed topic is still silent after --wait-robot seconds",
     )
+    robot.add_argument(
+        "--profile",
+        metavar="FILE",
+        help="the robot profile of DIFF_DRIVE_ROBOT.make_from_profile: topic names, command type, QoS, limits "
+        "(default: robot.yaml beside the program, if any)",
+    )
 
 
 def _add_distro_option(group) -> None:
@@ -338,6 +344,7 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
         use_sim_time=args.use_sim_time,
         wait_robot=args.wait_robot,
         require_robot=args.require_robot,
+        profile=args.profile,
     )
     try:
         compilation.cached_program(use_cache=not args.no_cache)

@@ -69,11 +69,11 @@ def open_ros2_bus(
     report=None,
 ):
     """A ROS 2 bus on `domain` (None: ROS_DOMAIN_ID, default 0), through the chosen backend;
-    `writer_qos` ({topic: (reliability, depth)}) and `report` (QoS incompatibilities) are DdsBus's."""
+    `writer_qos` ({topic: (reliability, depth)}) and `report` (QoS incompatibilities) as DdsBus takes them."""
     if resolve(backend) == "rclpy":
         from .rclpy_bus import RclpyBus  # deferred: start-up (scoopc.robots.rclpy_bus loads only when this is used)
 
-        return RclpyBus(domain=domain, types=types)
+        return RclpyBus(domain=domain, types=types, writer_qos=writer_qos, report=report)
     from .dds import DdsBus  # deferred: start-up (scoopc.robots.dds loads only when this is used)
 
     return DdsBus(domain=domain, types=types, writer_qos=writer_qos, report=report)

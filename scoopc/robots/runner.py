@@ -69,6 +69,7 @@ class RobotOptions:
     use_sim_time: bool = False  # ROS 2: stamp commands with the latest /clock, not the system clock
     wait_robot: float = 3.0  # ROS 2: seconds before silent topics are reported
     require_robot: bool = False  # ROS 2: a topic still silent after `wait_robot` fails the run (exit 3)
+    profile: str | Path | None = None  # a robot.yaml profile; None: robot.yaml beside the program, if any
 
     def __post_init__(self):
         if self.robot not in (None, "sim", "ros2", "none"):
@@ -96,6 +97,8 @@ class RobotSettings:
     station: tuple | None = None  # (x, y, radius)
     duration: float = -1.0
     distro: str = "jazzy"  # the ROS 2 distribution (ROBOT_ENVIRONMENT.ros_distro)
+    stamped: list = field(default_factory=list)  # per robot: does its cmd_vel take TwistStamped?
+    profile: Any = None  # the robot profile (scoopc.robots.profile.Profile) of a ROS 2 run
 
 
 ROS2_LIMITS = (0.2, 1.0)  # speed limits reported for a ROS 2 robot (m/s, rad/s)
@@ -272,6 +275,7 @@ def sim_settings(world, namespace=None, goal=None, duration=None):
         namespaces=namespaces,
         main=main,
         limits=[(r.max_linear, r.max_angular) for r in world.robots],
+        stamped=[r.cmd_vel_stamped for r in world.robots],
         goal=tuple(goal) if goal is not None else world.goal,
         station=station,
         duration=world.duration if duration is None else duration,
@@ -424,7 +428,7 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
         if options.robot == "sim":
             result = _run_simulated(options, launch, program_paths, program_name, stderr, progress)
         else:
-            result = _run_ros2(options, launch, stderr)
+            result = _run_ros2(options, launch, program_paths, stderr)
     finally:
         velocity.use_clock(None)
     if progress is not None:
@@ -455,6 +459,7 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     )
 
     world, source = find_world(program_paths, options.world)
+    load_profile(program_paths, options.profile)  # checked here too: a mistake shows before the robot is real
     settings = sim_settings(world, options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
     bus = Bus()
@@ -479,15 +484,37 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     )
 
 
-def _run_ros2(options, launch, stderr) -> RunResult:
+def load_profile(program_paths, given=None):
+    """The run's robot profile (scoopc.robots.profile): `given`, else robot.yaml beside the
+    program, else None; RobotError (exit 2) naming the file, line, column and key when invalid."""
+    from . import profile  # deferred: start-up (scoopc.robots.profile loads only when this is used)
+
+    path = profile.find(program_paths, given)
+    if path is None:
+        return None
+    try:
+        return profile.load(path)
+    except profile.ProfileError as e:
+        raise RobotError(str(e)) from None
+
+
+def _run_ros2(options, launch, program_paths, stderr) -> RunResult:
     from . import ros_messages, velocity  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
 
     settings = ros2_settings(options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
+    settings.profile = profile = load_profile(program_paths, options.profile)
+    if profile is not None:
+        settings.limits = [(profile.max_linear or ROS2_LIMITS[0], profile.max_angular or ROS2_LIMITS[1])]
+        say(stderr, f"robot profile {profile.path}")
     try:
         bus = open_ros2_bus(report=lambda text: say(stderr, text))
     except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
         raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
+    if profile is not None:
+        writers, readers = profile.qos(settings.namespaces[0])
+        bus.writer_qos.update(writers)
+        bus.reader_qos.update(readers)
     for warning in getattr(bus, "discovery_warnings", ()):
         say(stderr, warning)
     if getattr(bus, "discovery", None):

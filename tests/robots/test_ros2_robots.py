@@ -11,6 +11,7 @@ import os
 import random
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -352,3 +353,64 @@ def test_discovery_off_keeps_two_processes_apart(env, tmp_path):
     assert control[-1] == "heard"
     lines = _discovery(env, tmp_path, {"ROS_AUTOMATIC_DISCOVERY_RANGE": "OFF"}, max(3.0, 3 * needed))
     assert lines[0].startswith("ready discovery OFF") and lines[-1] == "silent", lines
+
+
+# -- a robot.yaml profile, and the line of what was heard on Ctrl-C ----------------------------------------------
+
+
+def _reader_qos(participant, topic):
+    """The QoS of the DDS readers of `topic` (any participant), as discovery tells them."""
+    from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsSubscription
+
+    reader = BuiltinDataReader(participant, BuiltinTopicDcpsSubscription)
+    try:
+        return [s.qos for s in reader.read(N=256) or () if s.topic_name == "rt" + topic]
+    finally:
+        reader.__del__()
+
+
+@pytest.mark.slow
+def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_was_heard(env, tmp_path):
+    """DIFF_DRIVE_ROBOT.make_from_profile with tests/robots/programs/profile_ros2/robot.yaml: TwistStamped
+    on /wheels/cmd, odometry on /wheels/odom read reliably with depth 3; Ctrl-C ends the run (130) with
+    one line of what was heard."""
+    from cyclonedds.qos import Policy
+
+    twin = rmw_twin.Node("jazzy")
+    stop = threading.Event()
+    odom = twin.create_publisher("nav_msgs/msg/Odometry", "/wheels/odom")
+
+    def publish():
+        while not stop.wait(0.05):
+            odom.publish(odom.new())
+
+    talker = threading.Thread(target=publish)
+    talker.start()
+    run = None
+    try:
+        driver = twin.create_subscription("geometry_msgs/msg/TwistStamped", "/wheels/cmd")
+        run = scoopc(env, "run", str(PROGRAMS / "profile_ros2"), "--robot", "ros2", cwd=tmp_path)
+        assert driver.wait_for(lambda s: len(s.messages) >= 5, TIMEOUT)
+        qos = None
+        deadline = time.monotonic() + TIMEOUT
+        while not qos and time.monotonic() < deadline:
+            qos = _reader_qos(twin.participant, "/wheels/odom")
+            time.sleep(0.05)
+        assert qos and Policy.History.KeepLast(3) in qos[0]
+        assert isinstance(qos[0][Policy.Reliability], Policy.Reliability.Reliable)
+        time.sleep(0.3)  # some odometry heard
+        run.send_signal(2)
+        status, out, err = finish(run)
+        assert status == 130, err
+        said = "profile True stamped True max 0.29999999999999999 1.2 cmd /wheels/cmd odom /wheels/odom\n"
+        assert out.startswith(said)
+        assert "robot profile" in err and "robot.yaml" in err
+        heard = [line for line in err.splitlines() if line.startswith("scoopc: heard /wheels/odom (")]
+        assert len(heard) == 1 and int(heard[0].split("(")[1].split(")")[0]) > 0, err
+        assert {m.twist.linear.x for m in driver.messages} >= {0.1}
+    finally:
+        stop.set()
+        talker.join()
+        if run is not None and run.poll() is None:
+            run.kill()
+        twin.close()
