@@ -90,6 +90,7 @@ class RclpyBus(Tapped):
         domain: int | None = None,
         types: dict | None = None,
         node_name: str = "scoopc",
+        namespace: str | None = None,
         writer_qos=None,
         reader_qos=None,
         report=None,
@@ -106,7 +107,7 @@ class RclpyBus(Tapped):
         self.errors = []
         self.context = rclpy.Context()
         rclpy.init(context=self.context, domain_id=domain)  # None: ROS_DOMAIN_ID
-        self.node = rclpy.create_node(node_name, context=self.context)
+        self.node = rclpy.create_node(node_name, context=self.context, namespace=namespace or None)
         self.executor = SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         self._lock = threading.RLock()

@@ -15,6 +15,7 @@ every cmd_vel topic the program published on gets a zero velocity before the run
 from __future__ import annotations
 
 import math
+import re
 import signal
 import sys
 import threading
@@ -44,6 +45,7 @@ DEFAULT_WORLD = {
 }
 
 _SIGNAL_NAMES = {int(getattr(signal, name)): name for name in STOP_SIGNALS if hasattr(signal, name)}
+_NODE_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")  # rcl's node names (rmw_validate_node_name)
 _TWISTS = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
 
 
@@ -70,6 +72,7 @@ class RobotOptions:
     wait_robot: float = 3.0  # ROS 2: seconds before silent topics are reported
     require_robot: bool = False  # ROS 2: a topic still silent after `wait_robot` fails the run (exit 3)
     profile: str | Path | None = None  # a robot.yaml profile; None: robot.yaml beside the program, if any
+    node_name: str | None = None  # ROS 2: the program's node name (default: the root class in lower case)
 
     def __post_init__(self):
         if self.robot not in (None, "sim", "ros2", "none"):
@@ -81,6 +84,11 @@ class RobotOptions:
 
             if self.ros_distro.lower() not in DISTROS:
                 raise UsageError(f"ros_distro must be one of {', '.join(DISTROS)}, not {self.ros_distro!r}")
+        if self.node_name is not None and not _NODE_NAME.match(self.node_name):
+            raise UsageError(
+                f"node_name {self.node_name!r} is not a valid ROS 2 node name "
+                "(letters, digits and underscores, not starting with a digit)"
+            )
         if not (self.wait_robot >= 0):
             raise UsageError(f"wait_robot must be 0 seconds or more, not {self.wait_robot!r}")
 
@@ -405,13 +413,14 @@ def describe_end(result, wall) -> str:
     return line
 
 
-def open_ros2_bus(report=None):
-    """The ROS 2 transport: rclpy or DDS (see scoopc.robots.backends), else cyclonedds directly."""
+def open_ros2_bus(report=None, node=None):
+    """The ROS 2 transport: rclpy or DDS (see scoopc.robots.backends), as the node `node`
+    ((name, namespace)) of the ROS graph."""
     from .backends import (
         open_ros2_bus as choose,  # deferred: start-up (scoopc.robots.backends loads only when this is used)
     )
 
-    return choose(report=report)
+    return choose(report=report, node=node)
 
 
 def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=None) -> RunResult:
@@ -428,7 +437,7 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
         if options.robot == "sim":
             result = _run_simulated(options, launch, program_paths, program_name, stderr, progress)
         else:
-            result = _run_ros2(options, launch, program_paths, stderr)
+            result = _run_ros2(options, launch, program_paths, program_name, stderr)
     finally:
         velocity.use_clock(None)
     if progress is not None:
@@ -498,17 +507,18 @@ def load_profile(program_paths, given=None):
         raise RobotError(str(e)) from None
 
 
-def _run_ros2(options, launch, program_paths, stderr) -> RunResult:
+def _run_ros2(options, launch, program_paths, program_name, stderr) -> RunResult:
     from . import ros_messages, velocity  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
 
     settings = ros2_settings(options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
     settings.profile = profile = load_profile(program_paths, options.profile)
+    node_name = options.node_name or program_name.lower()
     if profile is not None:
         settings.limits = [(profile.max_linear or ROS2_LIMITS[0], profile.max_angular or ROS2_LIMITS[1])]
         say(stderr, f"robot profile {profile.path}")
     try:
-        bus = open_ros2_bus(report=lambda text: say(stderr, text))
+        bus = open_ros2_bus(report=lambda text: say(stderr, text), node=(node_name, options.namespace))
     except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
         raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
     if profile is not None:

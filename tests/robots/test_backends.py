@@ -38,7 +38,7 @@ def fake_rclpy(monkeypatch):
     monkeypatch.setitem(sys.modules, "rclpy", types.ModuleType("rclpy"))
 
     class StandIn:
-        def __init__(self, domain=None, types=None, writer_qos=None, report=None):
+        def __init__(self, domain=None, types=None, writer_qos=None, report=None, node_name=None, namespace=None):
             self.domain, self.types = domain, types
 
     monkeypatch.setattr(rclpy_bus, "RclpyBus", StandIn)
@@ -197,7 +197,7 @@ class FakeRclpy:
         rclpy = types.ModuleType("rclpy")
         rclpy.Context = Context
         rclpy.init = lambda context, domain_id=None: fake.inits.append(domain_id)
-        rclpy.create_node = lambda name, context: Node()
+        rclpy.create_node = lambda name, context, namespace=None: Node()
         executors = types.ModuleType("rclpy.executors")
         executors.SingleThreadedExecutor = Executor
         qos = types.ModuleType("rclpy.qos")

@@ -141,6 +141,12 @@ def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported
         assert center.messages[-1].range == -1.0  # the Thymio driver's "nothing seen"
         assert ground.messages[-1].range == 0.0  # floor
         assert scan.wait_for(lambda s: s.incompatible() > 0, TIMEOUT)
+        # issue 17: the simulator is the node /scoopc_sim of the ROS graph
+        graph = rmw_twin.GraphReader(twin)
+        assert graph.wait_for(lambda g: "/scoopc_sim" in g.nodes(), TIMEOUT)
+        assert ("writer", "nav_msgs/msg/Odometry", "/scoopc_sim") in graph.endpoints("/robot1/odom")
+        assert ("reader", "geometry_msgs/msg/TwistStamped", "/scoopc_sim") in graph.endpoints("/tb3/cmd_vel")
+        graph.close()
         sim.send_signal(2)
         status, _, err = finish(sim)
         assert status == 0, err
@@ -158,6 +164,7 @@ def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported
 @pytest.mark.slow
 def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp_path):
     twin = rmw_twin.Node("humble")
+    graph = rmw_twin.GraphReader(twin)
     try:
         driver = twin.create_subscription("geometry_msgs/msg/Twist", "/robot1/cmd_vel", depth=1)
         run = scoopc(
@@ -172,8 +179,18 @@ def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp
             "6",
             "--wait-robot",
             "1",
+            "--node-name",
+            "thymio_brain",
             cwd=tmp_path,
         )
+        assert driver.wait_for(lambda s: len(s.messages) >= 1, TIMEOUT)
+        # issue 17: the program is a node (--node-name; no --namespace: "/"), with Humble's 24-byte gids
+        assert graph.wait_for(lambda g: g.nodes() == ["/thymio_brain"], TIMEOUT), graph.nodes()
+        assert graph.endpoints("/robot1/cmd_vel") == [
+            ("reader", "geometry_msgs/msg/Twist", "_NODE_NAME_UNKNOWN_"),
+            ("writer", "geometry_msgs/msg/Twist", "/thymio_brain"),
+        ]
+        assert set(graph.gid_sizes) == {24}
         status, out, err = finish(run, 180)
         assert status == 0, err
         assert out.startswith("battery 1\n") and "sent" in out
@@ -186,6 +203,7 @@ def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp
         assert {m.linear.x for m in driver.messages} >= {0.05}
         assert all(m.__msgtype__ == "geometry_msgs/msg/Twist" for m in driver.messages)
     finally:
+        graph.close()
         twin.close()
 
 
@@ -398,6 +416,10 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
             time.sleep(0.05)
         assert qos and Policy.History.KeepLast(3) in qos[0]
         assert isinstance(qos[0][Policy.Reliability], Policy.Reliability.Reliable)
+        graph = rmw_twin.GraphReader(twin)  # issue 17: the node is named after the root class
+        assert graph.wait_for(lambda g: g.nodes() == ["/profile_ros2"], TIMEOUT), graph.nodes()
+        assert ("writer", "geometry_msgs/msg/TwistStamped", "/profile_ros2") in graph.endpoints("/wheels/cmd")
+        graph.close()
         time.sleep(0.3)  # some odometry heard
         run.send_signal(2)
         status, out, err = finish(run)
