@@ -488,7 +488,13 @@ class DdsBus(Tapped):
     def endpoint_guids(self) -> tuple[list, list]:
         """(GUIDs of this bus's readers, of its writers): the node's entities in the ROS graph."""
         with self._lock:
-            return [e.reader.guid for e in self._readers.values()], [w.guid for w in self._writers.values()]
+            readers = [e.reader.guid for e in self._readers.values()]
+            writers = [w.guid for w in self._writers.values()]
+            for child in self.owned:
+                theirs = child.guids() if hasattr(child, "guids") else ([], [])
+                readers += theirs[0]
+                writers += theirs[1]
+            return readers, writers
 
     def _entities_changed(self) -> None:
         for hook in list(self.entity_hooks):
@@ -775,7 +781,7 @@ class DdsBus(Tapped):
             self._topics.clear()
             for reader in self.__dict__.pop("_graph", {}).values():
                 reader.__del__()
-            for child in reversed(self.owned):
+            for child in reversed(list(self.owned)):
                 child.close()
             self.owned.clear()
             self.participant.__del__()

@@ -130,6 +130,12 @@ class Node:
     def create_publisher(self, typename: str, topic: str, depth: int = 10) -> Publisher:
         return Publisher(self, typename, topic, depth)
 
+    def create_service(self, srvtype: str, name: str, handler) -> ServiceEnd:
+        return ServiceEnd(self, srvtype, name, handler)
+
+    def create_client(self, srvtype: str, name: str) -> ServiceEnd:
+        return ServiceEnd(self, srvtype, name)
+
     def close(self):
         for entity in reversed(self.entities):
             entity.close()
@@ -335,6 +341,155 @@ class GraphReader:
             self.alive[kind].__del__()
             reader.__del__()
         self.reader.__del__()
+
+
+#: `.srv` definitions the twin knows (ros2/common_interfaces std_srvs, ros2/rcl_interfaces)
+SRVS = {
+    "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
+    "rcl_interfaces/srv/GetParameters": ("string[] names", "ParameterValue[] values"),
+    "rcl_interfaces/srv/SetParameters": ("Parameter[] parameters", "SetParametersResult[] results"),
+    "rcl_interfaces/srv/SetParametersAtomically": ("Parameter[] parameters", "SetParametersResult result"),
+    "rcl_interfaces/srv/ListParameters": ("string[] prefixes\nuint64 depth", "ListParametersResult result"),
+    "rcl_interfaces/srv/DescribeParameters": ("string[] names", "ParameterDescriptor[] descriptors"),
+    "rcl_interfaces/srv/GetParameterTypes": ("string[] names", "uint8[] types"),
+}
+
+
+class ServiceEnd:
+    """A service or a client as rmw_cyclonedds_cpp's rmw_create_service / rmw_create_client make
+    them (rmw_node.cpp, jazzy): topics `rq<name>Request` and `rr<name>Reply`, types
+    `pkg::srv::dds_::Name_Request_`/`_Response_`, each sample the cdds_request_header_t
+    {uint64 guid; int64 seq} then the message (serdata.hpp), the client's guid its request
+    writer's instance handle; QoS rmw_qos_profile_services_default with `clientid=`/`serviceid=`
+    user data (csid_to_string: 16 bytes in hexadecimal joined by dots)."""
+
+    count = 0
+
+    def __init__(self, node: Node, srvtype: str, name: str, handler=None):
+        from rosbags.typesys import get_types_from_msg
+
+        self.node, self.name, self.handler = node, name, handler
+        package, _, short = srvtype.split("/")
+        found = {}
+        for half, text in zip(("Request", "Response"), SRVS[srvtype]):
+            for key, value in get_types_from_msg(text, f"{package}/msg/{short}_{half}").items():
+                found[key.replace("/msg/", "/srv/") if key.endswith(f"_{half}") else key] = value
+        node.store.register(found)
+        self.request, self.response = f"{srvtype}_Request", f"{srvtype}_Response"
+        ServiceEnd.count += 1
+        raw = node.participant.guid.bytes[:12] + ServiceEnd.count.to_bytes(4, "big")
+        ident = f"{raw[0]:02x}" + "".join(f".{b:x}" for b in raw[1:])
+        server = handler is not None
+        kind = "serviceid" if server else "clientid"
+        rq = Topic(node.participant, f"rq{name}Request", self._wire(self.request))
+        rr = Topic(node.participant, f"rr{name}Reply", self._wire(self.response))
+        self.writer = DataWriter(node.participant, rr if server else rq, qos=self._qos(kind, ident))
+        self.reader = DataReader(node.participant, rq if server else rr, qos=self._qos(kind, ident))
+        self.guid = self.writer.get_instance_handle() & ((1 << 64) - 1)
+        self.replies, self.seq, self.cond = {}, 0, threading.Condition()
+        self._stop = False
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+        node.entities.append(self)
+
+    def _wire(self, typename):
+        fields = {"_request_guid": idl.uint64, "_request_seq": idl.int64}
+        fields.update({n: self.node._field(d) for n, d in self.node.store.fielddefs[typename][1]})
+        return make_idl_struct(typename.replace("/", "_") + "_twin", dds_type(typename), fields)
+
+    def _qos(self, kind, ident):
+        return Qos(
+            Policy.WriterDataLifecycle(autodispose=False),
+            Policy.History.KeepLast(10),
+            Policy.Reliability.Reliable(max_blocking_time=duration(infinite=True)),
+            Policy.Durability.Volatile,
+            Policy.Liveliness.Automatic(lease_duration=duration(infinite=True)),
+            Policy.Userdata(data=f"{kind}={ident};".encode()),
+        )
+
+    def _send(self, guid, seq, msg, typename):
+        body = bytes(self.node.store.serialize_cdr(msg, typename))
+        data = body[:4] + guid.to_bytes(8, "little") + seq.to_bytes(8, "little", signed=True) + body[4:]
+        pad = -len(data) % 4
+        data = data[:3] + bytes([data[3] | pad]) + data[4:] + bytes(pad)
+        ddspy_write(self.writer._ref, data)
+
+    def _run(self):
+        while not self._stop:
+            samples = ddspy_take(self.reader._ref, 0xFFFFFFFF, 16)
+            if isinstance(samples, int) or not samples:
+                time.sleep(0.005)
+                continue
+            for data, info in samples:
+                if not info.valid_data:
+                    continue
+                data = bytes(data)
+                guid, seq = int.from_bytes(data[4:12], "little"), int.from_bytes(data[12:20], "little", signed=True)
+                body = data[:4] + data[20:]
+                if self.handler is not None:
+                    reply = self.handler(self.node.store.deserialize_cdr(body, self.request))
+                    self._client_reader(info.publication_handle)
+                    self._send(guid, seq, reply, self.response)
+                elif guid == self.guid:
+                    with self.cond:
+                        self.replies[seq] = self.node.store.deserialize_cdr(body, self.response)
+                        self.cond.notify_all()
+
+    def _client_reader(self, handle, timeout=1.0):
+        """rmw_send_response's check_for_response_reader: until the reply writer matched the reader
+        whose `clientid` is the requesting writer's."""
+
+        def clientid(endpoint):
+            text = bytes(endpoint.qos[Policy.Userdata].data).decode() if Policy.Userdata in endpoint.qos else ""
+            return next((i for i in text.split(";") if i.startswith("clientid=")), None)
+
+        try:
+            wanted = clientid(self.reader.get_matched_publication_data(handle))
+        except Exception:
+            return
+        deadline = time.monotonic() + timeout
+        while wanted and time.monotonic() < deadline:
+            for h in self.writer.get_matched_subscriptions():
+                try:
+                    if clientid(self.writer.get_matched_subscription_data(h)) == wanted:
+                        return
+                except Exception:
+                    pass
+            time.sleep(0.005)
+
+    def new_request(self, **fields):
+        return new_message(self.node.store, self.request, **fields)
+
+    def new_response(self, **fields):
+        return new_message(self.node.store, self.response, **fields)
+
+    def ready(self) -> bool:
+        return bool(
+            self.writer.get_publication_matched_status().current_count
+            and self.reader.get_subscription_matched_status().current_count
+        )
+
+    def call(self, request, timeout: float = 30.0):
+        """rclpy's Client.call: send, then wait for the reply with this request's seq."""
+        deadline = time.monotonic() + timeout
+        while not self.ready():
+            if time.monotonic() >= deadline:
+                raise TimeoutError(f"no service {self.name}")
+            time.sleep(0.005)
+        with self.cond:
+            self.seq += 1
+            seq = self.seq
+        self._send(self.guid, seq, request, self.request)
+        with self.cond:
+            if not self.cond.wait_for(lambda: seq in self.replies, max(0.0, deadline - time.monotonic())):
+                raise TimeoutError(f"no reply from {self.name}")
+            return self.replies.pop(seq)
+
+    def close(self):
+        self._stop = True
+        self.thread.join(2.0)
+        self.reader.__del__()
+        self.writer.__del__()
 
 
 def new_message(store, typename: str, **fields):

@@ -420,6 +420,21 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
         assert graph.wait_for(lambda g: g.nodes() == ["/profile_ros2"], TIMEOUT), graph.nodes()
         assert ("writer", "geometry_msgs/msg/TwistStamped", "/profile_ros2") in graph.endpoints("/wheels/cmd")
         graph.close()
+        # issue 17: `ros2 param set /profile_ros2 use_sim_time true` switches the stamps to /clock
+        assert abs(driver.messages[-1].header.stamp.sec - time.time()) < 5
+        clock = twin.create_publisher("rosgraph_msgs/msg/Clock", "/clock")
+        at_1000 = clock.new(clock=rmw_twin.new_message(twin.store, "builtin_interfaces/msg/Time", sec=1000))
+        clock.publish(at_1000)
+        setting = twin.create_client("rcl_interfaces/srv/SetParameters", "/profile_ros2/set_parameters")
+        on = rmw_twin.new_message(twin.store, "rcl_interfaces/msg/ParameterValue", type=1, bool_value=True)
+        request = setting.new_request(
+            parameters=[rmw_twin.new_message(twin.store, "rcl_interfaces/msg/Parameter", name="use_sim_time", value=on)]
+        )
+        assert setting.call(request, TIMEOUT).results[0].successful
+        for _ in range(3):  # /clock is best effort for the program's reader: say it again while it subscribes
+            clock.publish(at_1000)
+            time.sleep(0.2)
+        assert driver.wait_for(lambda s: s.messages[-1].header.stamp.sec == 1000, TIMEOUT)
         time.sleep(0.3)  # some odometry heard
         run.send_signal(2)
         status, out, err = finish(run)
@@ -427,8 +442,9 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
         said = "profile True stamped True max 0.29999999999999999 1.2 cmd /wheels/cmd odom /wheels/odom\n"
         assert out.startswith(said)
         assert "robot profile" in err and "robot.yaml" in err
-        heard = [line for line in err.splitlines() if line.startswith("scoopc: heard /wheels/odom (")]
-        assert len(heard) == 1 and int(heard[0].split("(")[1].split(")")[0]) > 0, err
+        heard = [line for line in err.splitlines() if line.startswith("scoopc: heard ")]
+        assert len(heard) == 1 and "nothing on /scan" in heard[0], err  # the laser of the profile: none here
+        assert int(heard[0].split("/wheels/odom (")[1].split(")")[0]) > 0, err
         assert {m.twist.linear.x for m in driver.messages} >= {0.1}
     finally:
         stop.set()
