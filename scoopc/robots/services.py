@@ -20,8 +20,8 @@ The format, from rmw_cyclonedds_cpp/src/rmw_node.cpp (jazzy branch) and serdata.
 Services need rmw_cyclonedds_cpp on the other side: rmw_fastrtps_cpp carries the request id in
 its own way, and services do not work across DDS vendors.
 
-Service types are registered from their `.srv` definitions (`SRV_DEFINITIONS`, read from
-ros2/rcl_interfaces and ros2/common_interfaces) into a type store of the distribution.
+Service types are registered from their `.srv` definitions (`ros_messages.SRV_DEFINITIONS`) into a
+type store of the distribution (`ros_messages.service_store`).
 """
 
 from __future__ import annotations
@@ -31,7 +31,6 @@ import logging
 import struct
 import threading
 import time
-from functools import cache
 
 from cyclonedds._clayer import ddspy_take, ddspy_write
 from cyclonedds.core import GuardCondition, InstanceState, ReadCondition, SampleState, ViewState, WaitSet
@@ -41,27 +40,13 @@ from cyclonedds.qos import Policy, Qos
 from cyclonedds.sub import DataReader
 from cyclonedds.topic import Topic
 from cyclonedds.util import duration
-from rosbags.typesys import get_types_from_msg, get_typestore
 
 from . import cdr, ros_messages
 from .dds import _idl_field, dds_type_name, frame
+from .ros_messages import SRV_DEFINITIONS, service_store  # noqa: F401 - the service types, re-exported
 
 log = logging.getLogger(__name__)
 
-#: `.srv` definitions known to scoopc (comments left out): rcl_interfaces (parameters) and std_srvs
-SRV_DEFINITIONS = {
-    "rcl_interfaces/srv/GetParameters": "string[] names\n---\nParameterValue[] values\n",
-    "rcl_interfaces/srv/SetParameters": "Parameter[] parameters\n---\nSetParametersResult[] results\n",
-    "rcl_interfaces/srv/SetParametersAtomically": "Parameter[] parameters\n---\nSetParametersResult result\n",
-    "rcl_interfaces/srv/ListParameters": (
-        "uint64 DEPTH_RECURSIVE=0\nstring[] prefixes\nuint64 depth\n---\nListParametersResult result\n"
-    ),
-    "rcl_interfaces/srv/DescribeParameters": "string[] names\n---\nParameterDescriptor[] descriptors\n",
-    "rcl_interfaces/srv/GetParameterTypes": "string[] names\n---\nuint8[] types\n",
-    "std_srvs/srv/Trigger": "---\nbool success\nstring message\n",
-    "std_srvs/srv/Empty": "---\n",
-    "std_srvs/srv/SetBool": "bool data\n---\nbool success\nstring message\n",
-}
 _HEADER = struct.Struct("<Qq")  # cdds_request_header_t, little endian after `00 01 00 00`
 _counter = itertools.count(1)  # client/service ids of this process (get_unique_csid's counter)
 REPLY_WAIT = 1.0  # seconds a server waits for the client's reply reader before writing anyway
@@ -69,39 +54,6 @@ REPLY_WAIT = 1.0  # seconds a server waits for the client's reply reader before 
 
 class ServiceTimeout(TimeoutError):
     """No reply within the time allowed."""
-
-
-def split_srv(text: str) -> tuple[str, ...]:
-    """The parts of a `.srv` (request, response) or `.action` (goal, result, feedback) definition."""
-    parts, current = [], []
-    for line in text.splitlines():
-        if line.strip() == "---":
-            parts.append("\n".join(current) + "\n")
-            current = []
-        else:
-            current.append(line)
-    parts.append("\n".join(current) + "\n")
-    return tuple(parts)
-
-
-@cache
-def service_store(distro: str, extra: tuple = ()):
-    """A type store of `distro` with every service type of SRV_DEFINITIONS (and `extra`, pairs of
-    (srv type, definition)) registered as `<pkg>/srv/<Name>_Request` and `_Response`."""
-    store = get_typestore(ros_messages.DISTROS[distro])
-    found: dict = {}
-    for srvtype, text in (*SRV_DEFINITIONS.items(), *extra):
-        package, _, name = srvtype.split("/")
-        for half, part in zip(("Request", "Response"), split_srv(text)):
-            parsed = get_types_from_msg(part, f"{package}/msg/{name}_{half}")
-            found.update(
-                {
-                    key.replace("/msg/", "/srv/", 1) if key.endswith(f"{name}_{half}") else key: v
-                    for key, v in parsed.items()
-                }
-            )
-    store.register(found)
-    return store
 
 
 def request_bytes(guid: int, seq: int, body: bytes) -> bytes:

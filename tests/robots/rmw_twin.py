@@ -346,6 +346,7 @@ class GraphReader:
 #: `.srv` definitions the twin knows (ros2/common_interfaces std_srvs, ros2/rcl_interfaces)
 SRVS = {
     "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
+    "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
     "rcl_interfaces/srv/GetParameters": ("string[] names", "ParameterValue[] values"),
     "rcl_interfaces/srv/SetParameters": ("Parameter[] parameters", "SetParametersResult[] results"),
     "rcl_interfaces/srv/SetParametersAtomically": ("Parameter[] parameters", "SetParametersResult result"),

@@ -452,3 +452,27 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
         if run is not None and run.poll() is None:
             run.kill()
         twin.close()
+
+
+# -- issue 17: ROS_SERVICE_CLIENT and ROS_SERVICE_SERVER in a program, against a stock node ----------------
+
+
+@pytest.mark.slow
+def test_a_program_calls_a_stock_service_and_serves_one(env, tmp_path):
+    twin = rmw_twin.Node("jazzy")
+    run = None
+    try:
+        trigger = twin.create_service(
+            "std_srvs/srv/Trigger", "/twin/trigger", lambda request: trigger.new_response(success=True, message="hi")
+        )
+        run = scoopc(env, "run", str(PROGRAMS / "service_ros2"), "--robot", "ros2", cwd=tmp_path)
+        enable = twin.create_client("std_srvs/srv/SetBool", "/svc/enable")
+        reply = enable.call(enable.new_request(data=True), 120)
+        assert (reply.success, reply.message) == (True, "enabled True")
+        status, out, err = finish(run, 120)
+        assert status == 0, err
+        assert out == "trigger: hi\nserved data=True\n", err
+    finally:
+        if run is not None and run.poll() is None:
+            run.kill()
+        twin.close()
