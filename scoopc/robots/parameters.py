@@ -15,11 +15,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import ros_messages
-from .services import ServiceServer
+from .services import ServiceServer, service_store
 
 NOT_SET, BOOL, INTEGER, DOUBLE, STRING = 0, 1, 2, 3, 4  # rcl_interfaces/msg/ParameterType
 _FIELDS = {BOOL: "bool_value", INTEGER: "integer_value", DOUBLE: "double_value", STRING: "string_value"}
-_TYPE_NAMES = {BOOL: "bool", INTEGER: "integer", DOUBLE: "double", STRING: "string"}
+_TYPE_NAMES = {BOOL: "a bool", INTEGER: "an integer", DOUBLE: "a double", STRING: "a string"}
 SERVICES = {
     "list_parameters": "rcl_interfaces/srv/ListParameters",
     "get_parameters": "rcl_interfaces/srv/GetParameters",
@@ -49,6 +49,7 @@ class Parameter:
     value: object
     description: str = ""
     read_only: bool = False
+    check: object = None  # value -> None, or why it cannot be taken (a range)
 
 
 class ParameterNode:
@@ -59,6 +60,7 @@ class ParameterNode:
         self._lock = threading.Lock()
         self._params: dict[str, Parameter] = {}  # [_lock]
         self._callbacks = []  # on_set(name, value), called after a change, outside the lock
+        self.store = service_store(bus.distro)  # before the servers: a request may come at once
         prefix = "" if self.node == "/" else self.node
         self.servers = [
             ServiceServer(bus, f"{prefix}/{service}", srvtype, getattr(self, f"_{service}"))
@@ -66,19 +68,20 @@ class ParameterNode:
         ]
 
     # -- the program's side ----------------------------------------------------------------------
-    def declare(self, name: str, value, description: str = "", read_only: bool = False) -> None:
+    def declare(self, name: str, value, description: str = "", read_only: bool = False, check=None) -> None:
         with self._lock:
             if name in self._params:
                 raise ValueError(f"parameter {name} is already declared")
-            self._params[name] = Parameter(name, type_of(value), value, description, read_only)
+            self._params[name] = Parameter(name, type_of(value), value, description, read_only, check)
 
     def get(self, name: str):
         with self._lock:
             return self._params[name].value
 
-    def set(self, name: str, value) -> str | None:
-        """Set a declared parameter: None when done, else why not (the reason services report)."""
-        return self._set_all([(name, value)])
+    def set(self, name: str, value, notify: bool = True) -> str | None:
+        """Set a declared parameter: None when done, else why not (the reason services report);
+        `notify=False`: the `on_set` callbacks are not called (the program set it itself)."""
+        return self._set_all([(name, value)], notify)
 
     def on_set(self, callback) -> None:
         self._callbacks.append(callback)
@@ -94,10 +97,10 @@ class ParameterNode:
         except TypeError as e:
             return str(e)
         if kind != known.type:
-            return f"parameter {name} is a {_TYPE_NAMES[known.type]}, not a {_TYPE_NAMES.get(kind, 'value')}"
-        return None
+            return f"parameter {name} is {_TYPE_NAMES[known.type]}, not {_TYPE_NAMES.get(kind, 'a value')}"
+        return known.check(value) if known.check is not None else None
 
-    def _set_all(self, changes) -> str | None:
+    def _set_all(self, changes, notify: bool = True) -> str | None:
         with self._lock:
             for name, value in changes:
                 why = self._check(name, value)
@@ -105,12 +108,15 @@ class ParameterNode:
                     return why
             for name, value in changes:
                 self._params[name].value = value
-        for name, value in changes:
+        for name, value in changes if notify else ():
             for callback in list(self._callbacks):
                 callback(name, value)
         return None
 
     # -- the services ----------------------------------------------------------------------------
+    def _response(self, srvtype: str, **fields):
+        return ros_messages.new(f"{srvtype}_Response", store=self.store, **fields)
+
     def _value_msg(self, store, param: Parameter | None):
         if param is None:
             return ros_messages.new("rcl_interfaces/msg/ParameterValue", store=store, type=NOT_SET)
@@ -133,7 +139,6 @@ class ParameterNode:
         )
 
     def _list_parameters(self, request):
-        server = self.servers[0]
         depth, prefixes = int(request.depth), list(request.prefixes)
         with self._lock:
             names = sorted(self._params)
@@ -148,15 +153,14 @@ class ParameterNode:
             chosen.append(name)
         found_prefixes = sorted({n.rsplit(".", 1)[0] for n in chosen if "." in n})
         result = ros_messages.new(
-            "rcl_interfaces/msg/ListParametersResult", store=server.store, names=chosen, prefixes=found_prefixes
+            "rcl_interfaces/msg/ListParametersResult", store=self.store, names=chosen, prefixes=found_prefixes
         )
-        return server.new_response(result=result)
+        return self._response(SERVICES["list_parameters"], result=result)
 
     def _get_parameters(self, request):
-        server = self.servers[1]
         with self._lock:
             found = [self._params.get(name) for name in request.names]
-        return server.new_response(values=[self._value_msg(server.store, p) for p in found])
+        return self._response(SERVICES["get_parameters"], values=[self._value_msg(self.store, p) for p in found])
 
     def _changes(self, parameters):
         changes, why = [], None
@@ -168,30 +172,27 @@ class ParameterNode:
         return changes, None
 
     def _set_parameters(self, request):
-        server = self.servers[2]
         results = []
         for p in request.parameters:
             value, why = self._value_of(p.value)
             if why is None:
                 why = self._set_all([(p.name, value)])
-            results.append(self._result(server.store, why))
-        return server.new_response(results=results)
+            results.append(self._result(self.store, why))
+        return self._response(SERVICES["set_parameters"], results=results)
 
     def _set_parameters_atomically(self, request):
-        server = self.servers[3]
         changes, why = self._changes(request.parameters)
         if why is None:
             why = self._set_all(changes)
-        return server.new_response(result=self._result(server.store, why))
+        return self._response(SERVICES["set_parameters_atomically"], result=self._result(self.store, why))
 
     def _describe_parameters(self, request):
-        server = self.servers[4]
         with self._lock:
             found = [(name, self._params.get(name)) for name in request.names]
         descriptors = [
             ros_messages.new(
                 "rcl_interfaces/msg/ParameterDescriptor",
-                store=server.store,
+                store=self.store,
                 name=name,
                 type=p.type if p else NOT_SET,
                 description=p.description if p else "",
@@ -199,13 +200,12 @@ class ParameterNode:
             )
             for name, p in found
         ]
-        return server.new_response(descriptors=descriptors)
+        return self._response(SERVICES["describe_parameters"], descriptors=descriptors)
 
     def _get_parameter_types(self, request):
-        server = self.servers[5]
         with self._lock:
             kinds = [self._params[n].type if n in self._params else NOT_SET for n in request.names]
-        return server.new_response(types=np.array(kinds, dtype=np.uint8))
+        return self._response(SERVICES["get_parameter_types"], types=np.array(kinds, dtype=np.uint8))
 
     def close(self) -> None:
         for server in self.servers:

@@ -111,6 +111,7 @@ class RobotSettings:
 
 ROS2_LIMITS = (0.2, 1.0)  # speed limits reported for a ROS 2 robot (m/s, rad/s)
 SERVICE = "robot"  # the RobotSettings' key in the runtime's services
+PARAMETERS = "parameters"  # the ParameterNode's key (ROS_PARAMETER; None without one)
 
 
 def settings_of(rt) -> RobotSettings:
@@ -533,7 +534,7 @@ def _run_ros2(options, launch, program_paths, program_name, stderr) -> RunResult
         recorder = _recorder(bus, options.record)
         if options.use_sim_time:
             velocity.use_clock(_sim_time(bus))
-        _node_parameters(bus, node_name, options.namespace, options.use_sim_time)
+        parameters = _node_parameters(bus, node_name, options.namespace, options.use_sim_time)
     except RobotError:
         _close_ros2(bus)
         raise
@@ -546,7 +547,11 @@ def _run_ros2(options, launch, program_paths, program_name, stderr) -> RunResult
             bus,
             recorder=recorder,
             stderr=stderr,
-            extra_start=_starts(_deadline(settings.duration, expired), watch.start),
+            extra_start=_starts(
+                _deadline(settings.duration, expired),
+                watch.start,
+                lambda rt: rt.services.update({PARAMETERS: parameters}),
+            ),
         )
         watch.finish()
         if watch.failed:
