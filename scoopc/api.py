@@ -77,6 +77,8 @@ def run(
     use_sim_time: bool = False,
     wait_robot: float = 3.0,
     require_robot: bool = False,
+    profile: PathLike | None = None,
+    node_name: str | None = None,
 ) -> RunResult:
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
@@ -98,6 +100,8 @@ def run(
         use_sim_time=use_sim_time,
         wait_robot=wait_robot,
         require_robot=require_robot,
+        profile=profile,
+        node_name=node_name,
     )
     try:
         result = run_compilation(compilation, args, options, robot_options, use_cache=cache)

@@ -201,6 +201,17 @@ def _add_run_options(command: argparse.ArgumentParser) -> None:
         action="store_true",
         help="ROS 2: fail (exit 3) when a subscribed topic is still silent after --wait-robot seconds",
     )
+    robot.add_argument(
+        "--node-name",
+        metavar="NAME",
+        help="ROS 2: the program's node name in the ROS graph (default: the root class in lower case)",
+    )
+    robot.add_argument(
+        "--profile",
+        metavar="FILE",
+        help="the robot profile of DIFF_DRIVE_ROBOT.make_from_profile: topic names, command type, QoS, limits "
+        "(default: robot.yaml beside the program, if any)",
+    )
 
 
 def _add_distro_option(group) -> None:
@@ -348,6 +359,8 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
         use_sim_time=args.use_sim_time,
         wait_robot=args.wait_robot,
         require_robot=args.require_robot,
+        profile=args.profile,
+        node_name=args.node_name,
     )
     try:
         compilation.cached_program(use_cache=not args.no_cache)

@@ -7,7 +7,9 @@ note
 		scan) and the whole scan (`laser'). Each part is a separate object on its own
 		processor, so that controllers reserve only what they use; the robot object just makes
 		and holds them. The odometry, battery and laser signalers subscribe on first use (a
-		program that never asks for them does not pay for their messages).
+		program that never asks for them does not pay for their messages). `make_from_profile'
+		takes the topic names, the command type and the speed limits from the run's robot profile
+		(robot.yaml, docs/ROBOTS.md).
 	]"
 
 class
@@ -17,7 +19,7 @@ inherit
 	ROBOT
 
 create
-	make, make_stamped, make_with_limits
+	make, make_stamped, make_with_limits, make_from_profile
 
 feature {NONE} -- Initialization
 
@@ -33,6 +35,21 @@ feature {NONE} -- Initialization
 			make_with_limits (a_namespace, default_max_linear, default_max_angular, True)
 		ensure
 			stamped: is_stamped
+		end
+
+	make_from_profile (a_namespace: separate STRING)
+			-- Robot under `a_namespace' as the run's robot profile describes it (robot.yaml beside
+			-- the program, or `scoopc run --profile'): its topic names, Twist or TwistStamped, its
+			-- speed limits. Without a profile: the simulated robot's limits and command type, or on
+			-- ROS 2 the robot interface's names, Twist and ROBOT_ENVIRONMENT's limits.
+		local
+			env: ROBOT_ENVIRONMENT
+		do
+			create env
+			is_from_profile := True
+			make_with_limits (a_namespace, env.max_linear, env.max_angular, env.profile_stamped)
+		ensure
+			from_profile: is_from_profile
 		end
 
 	make_with_limits (a_namespace: separate STRING; a_max_linear, a_max_angular: REAL_64; a_stamped: BOOLEAN)
@@ -89,9 +106,17 @@ feature -- Access
 		end
 
 	topic (a_name: STRING): STRING
-			-- Full name of the robot's topic `a_name' ("odom" -> "/robot1/odom").
+			-- Full name of the robot's topic `a_name' ("odom" -> "/robot1/odom", or the name the
+			-- robot profile gives it).
+		local
+			env: ROBOT_ENVIRONMENT
 		do
-			Result := namespace + "/" + a_name
+			if is_from_profile then
+				create env
+				Result := env.profile_topic (namespace, a_name)
+			else
+				Result := namespace + "/" + a_name
+			end
 		end
 
 	default_max_linear: REAL_64
@@ -110,6 +135,9 @@ feature -- Status report
 
 	is_stamped: BOOLEAN
 			-- Are velocity commands TwistStamped?
+
+	is_from_profile: BOOLEAN
+			-- Were topic names, command type and limits taken from the run's robot profile?
 
 feature -- Basic operations
 
@@ -232,7 +260,7 @@ feature {NONE} -- Implementation
 	make_range_signaler
 			-- Create `range_signaler' from the laser scans.
 		do
-			create range_signaler.make_laser (namespace)
+			create range_signaler.make_laser_topic (topic ("scan"))
 		end
 
 	normalized (a_namespace: STRING): STRING

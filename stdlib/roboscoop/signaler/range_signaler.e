@@ -27,7 +27,7 @@ inherit
 		end
 
 create
-	make_thymio, make_laser, make_unconnected
+	make_thymio, make_laser, make_laser_topic, make_unconnected
 
 feature {NONE} -- Initialization
 
@@ -54,13 +54,22 @@ feature {NONE} -- Initialization
 			-- Signaler fed by the laser scans on `a_namespace' + "/scan".
 		local
 			namespace: STRING
+		do
+			create namespace.make_from_separate (a_namespace)
+			make_laser_topic (namespace + "/scan")
+		ensure
+			laser: is_laser
+		end
+
+	make_laser_topic (a_topic: separate STRING)
+			-- Signaler fed by the laser scans on `a_topic' ("/robot1/scan").
+		local
 			i: INTEGER
 		do
 			make_unconnected
 			is_laser := True
 			obstacle_distance := 0.35
-			create namespace.make_from_separate (a_namespace)
-			new_subscriber (namespace + "/scan").listen_scan (Current)
+			new_subscriber (create {STRING}.make_from_separate (a_topic)).listen_scan (Current)
 			from i := 0 until i > 6 loop
 				connected [i] := True
 				i := i + 1
