@@ -14,7 +14,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import ros_messages
+from . import ros_messages, velocity
+from .graph import node_namespace
 from .services import ServiceServer, service_store
 
 NOT_SET, BOOL, INTEGER, DOUBLE, STRING = 0, 1, 2, 3, 4  # rcl_interfaces/msg/ParameterType
@@ -210,3 +211,21 @@ class ParameterNode:
     def close(self) -> None:
         for server in self.servers:
             server.close()
+
+
+def node_parameters(bus, name: str, namespace: str | None, use_sim_time: bool) -> ParameterNode:
+    """The parameters of a ROS 2 run's node `name` under `namespace`: `use_sim_time` (its start
+    value given), which switches command stamps between the system clock and /clock
+    (scoopc.robots.velocity). The services close with the bus."""
+    node = ParameterNode(bus, node_namespace(namespace).rstrip("/") + "/" + name)
+    node.declare("use_sim_time", bool(use_sim_time), "stamp commands with /clock instead of the system clock")
+    clocks = []
+
+    def switch(parameter, value):
+        if parameter == "use_sim_time":
+            if value and not clocks:
+                clocks.append(velocity.sim_time(bus))
+            velocity.use_clock(clocks[0] if value else None)
+
+    node.on_set(switch)
+    return node

@@ -508,6 +508,15 @@ def load_profile(program_paths, given=None):
         raise RobotError(str(e)) from None
 
 
+def _node_parameters(bus, name, namespace, use_sim_time):
+    """The program's node's parameter services (DdsBus; an rclpy node has rclpy's own)."""
+    if not hasattr(bus, "owned"):
+        return None
+    from .parameters import node_parameters  # deferred: start-up (cyclonedds loads only when this is used)
+
+    return node_parameters(bus, name, namespace, use_sim_time)
+
+
 def _run_ros2(options, launch, program_paths, program_name, stderr) -> RunResult:
     from . import ros_messages, velocity  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
 
@@ -533,7 +542,7 @@ def _run_ros2(options, launch, program_paths, program_name, stderr) -> RunResult
     try:
         recorder = _recorder(bus, options.record)
         if options.use_sim_time:
-            velocity.use_clock(_sim_time(bus))
+            velocity.use_clock(velocity.sim_time(bus))
         parameters = _node_parameters(bus, node_name, options.namespace, options.use_sim_time)
     except RobotError:
         _close_ros2(bus)
@@ -566,47 +575,6 @@ def _run_ros2(options, launch, program_paths, program_name, stderr) -> RunResult
         result.stopped_by = "duration"
         stderr.write(f"scoopc: stopped the program after {settings.duration:g} s (--duration)\n")
     return result
-
-
-class _SimTime:
-    """ROS time from /clock (use_sim_time): the latest Clock message, 0 before the first."""
-
-    def __init__(self):
-        self.ns = 0
-
-    def __call__(self):
-        return self.ns
-
-    def on_clock(self, msg):
-        self.ns = msg.clock.sec * 1_000_000_000 + msg.clock.nanosec
-
-
-def _node_parameters(bus, name, namespace, use_sim_time):
-    """The parameter services of the program's node (DdsBus; an rclpy node has rclpy's own):
-    `use_sim_time`, which switches command stamps between the system clock and /clock."""
-    if not hasattr(bus, "owned"):
-        return None
-    from .graph import node_namespace  # deferred: start-up (scoopc.robots.graph loads only when this is used)
-    from .parameters import ParameterNode  # deferred: start-up (loads only when this is used)
-
-    node = ParameterNode(bus, node_namespace(namespace).rstrip("/") + "/" + name)
-    node.declare("use_sim_time", bool(use_sim_time), "stamp commands with /clock instead of the system clock")
-    clocks = []
-
-    def switch(parameter, value):
-        if parameter == "use_sim_time":
-            if value and not clocks:
-                clocks.append(_sim_time(bus))
-            velocity.use_clock(clocks[0] if value else None)
-
-    node.on_set(switch)
-    return node  # its services close with the bus
-
-
-def _sim_time(bus):
-    clock = _SimTime()
-    bus.subscribe("/clock", clock.on_clock)
-    return clock
 
 
 def _starts(*hooks):
