@@ -76,7 +76,7 @@ def run_program(
 ) -> RunResult:
     """Run `program` with the command-line arguments `args`; `program_paths` are its sources
     (where the simulator looks for world.yaml)."""
-    root_cls = _load(program)
+    root_cls = load_root(program)
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
 
@@ -108,7 +108,7 @@ def run_program(
     return result
 
 
-def _load(program: CompiledProgram) -> type:
+def load_root(program: CompiledProgram) -> type:
     """The root class, from the program's package imported fresh (another program of the same
     package name may have run in this process before)."""
     ensure_on_path(program.library, program.folder)

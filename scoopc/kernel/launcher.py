@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import gc
 import json
+import keyword
 import sys
 import traceback
 from pathlib import Path
@@ -21,6 +22,7 @@ from .errors import EiffelFailure
 from .support import GUARDS, ContractViolation, EiffelRuntimeError
 
 _LINE_MAPS: dict = {}
+_PYTHON_NAMES = frozenset({"self", "here", "print", "type", "super", "object"})  # taken, as keywords are
 PROGRAM = [sys.argv[0] if sys.argv and sys.argv[0] else "program"]  # the command line ARGUMENTS reads
 
 
@@ -34,7 +36,7 @@ def set_arguments(args) -> None:
 
 def main(
     root_cls,
-    creator: str,
+    creator,  # the creation procedure's name, or a routine (obj) -> None
     argv,
     shadowed=None,
     trace_processors=False,
@@ -56,7 +58,10 @@ def main(
     def describe(error, proc):
         return report(error, debug)
 
-    routine = getattr(root_cls, creator, None) if creator else None
+    if callable(creator):  # a routine of the caller's (`scoopc test` runs a test so)
+        routine = creator
+    else:
+        routine = getattr(root_cls, creator, None) if creator else None
     if creator and routine is None:
         stderr.write(f"scoopc: the root class has no creation procedure `{creator}`\n")
         return Exit.USAGE
@@ -167,6 +172,8 @@ def eiffel_frames(error) -> list:
             routine = routine[: -len(suffix)] if routine.endswith(suffix) else routine
         if routine == "_invariant_":
             routine = "invariant"
+        elif routine.endswith("_") and (keyword.iskeyword(routine[:-1]) or routine[:-1] in _PYTHON_NAMES):
+            routine = routine[:-1]  # `assert` is `assert_` in Python (codegen.names.py_identifier)
         frames.append((cls, "inline agent" if routine.startswith("_agent_") else routine, place))
     frames.reverse()
     return frames
