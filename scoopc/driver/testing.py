@@ -126,7 +126,7 @@ def _is_test(universe, info: ClassInfo, feature) -> bool:
 
 def _note(notes, tag: str) -> str | None:
     for note in notes:
-        if note.tag.name.lower() == tag and note.values and isinstance(note.values[0], syntax.ManifestString):
+        if note.tag.key.lower() == tag and note.values and isinstance(note.values[0], syntax.ManifestString):
             return note.values[0].value
     return None
 
@@ -248,9 +248,7 @@ def _body(obj, case: TestCase, watchdog: _Watchdog) -> None:
 
 def _outcome(case: TestCase, status: int, watchdog: _Watchdog, err: str, out: str, seconds: float) -> TestOutcome:
     outcome = TestOutcome(case.class_key, case.routine, "passed", seconds, output=out, file=case.file, line=case.line)
-    report = "\n".join(
-        line[len(_FAILURE_PREFIX) :] if line.startswith(_FAILURE_PREFIX) else line for line in err.splitlines()
-    ).strip()
+    report = _failures(err)
     if watchdog.expired:
         outcome.status = "timeout"
         outcome.message = f"timed out after {watchdog.seconds:g} s"
@@ -260,6 +258,20 @@ def _outcome(case: TestCase, status: int, watchdog: _Watchdog, err: str, out: st
         outcome.report = report or f"the test's run ended with status {status}"
         outcome.message = outcome.report.splitlines()[0]
     return outcome
+
+
+def _failures(err: str) -> str:
+    """The run-time failures the run reported on `err`, each with its trace; everything it
+    reported when there is none (a note on a lost exception precedes its failure: it goes)."""
+    blocks: list[list[str]] = []
+    for line in err.splitlines():
+        if line.startswith("scoopc: ") or not blocks:
+            blocks.append([])
+        blocks[-1].append(line)
+    failures = [b for b in blocks if b[0].startswith(_FAILURE_PREFIX)]
+    if not failures:
+        return err.strip()
+    return "\n".join(line for b in failures for line in [b[0][len(_FAILURE_PREFIX) :], *b[1:]]).strip()
 
 
 class _TimedOut(KeyboardInterrupt):

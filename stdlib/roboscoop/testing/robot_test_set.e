@@ -103,8 +103,8 @@ feature -- Assertions
 		require
 			tolerance_not_negative: a_tolerance >= 0.0
 		do
-			assert (with_values (a_tag, "at most " + a_tolerance.out + " m from (" + x.out + ", " + y.out + ")",
-				"at (" + robot_x.out + ", " + robot_y.out + ")"),
+			assert (with_values (a_tag, "at most " + fixed (a_tolerance) + " m from (" + fixed (x) + ", " + fixed (y) + ")",
+				"at (" + fixed (robot_x) + ", " + fixed (robot_y) + ")"),
 				distance_to (x, y) <= a_tolerance)
 		end
 
@@ -113,8 +113,8 @@ feature -- Assertions
 		require
 			tolerance_not_negative: a_tolerance >= 0.0
 		do
-			assert (with_values (a_tag, "within " + a_tolerance.out + " m of (" + x.out + ", " + y.out + ")",
-				"no closer than " + closest_approach (x, y).out + " m"),
+			assert (with_values (a_tag, "within " + fixed (a_tolerance) + " m of (" + fixed (x) + ", " + fixed (y) + ")",
+				"no closer than " + fixed (closest_approach (x, y)) + " m"),
 				closest_approach (x, y) <= a_tolerance)
 		end
 
@@ -136,8 +136,8 @@ feature -- Assertions
 			stop_requested: stop_requested_at >= 0.0
 			enough_time_simulated: simulated_time >= stop_requested_at + a_seconds
 		do
-			assert (with_values (a_tag, "still from " + (stop_requested_at + a_seconds).out + " s on",
-				"last moved at " + last_moved_at.out + " s"),
+			assert (with_values (a_tag, "still from " + fixed (stop_requested_at + a_seconds) + " s on",
+				"last moved at " + fixed (last_moved_at) + " s"),
 				last_moved_at <= stop_requested_at + a_seconds)
 		end
 
@@ -146,15 +146,15 @@ feature -- Assertions
 		require
 			range: a_min <= a_max
 		do
-			assert (with_values (a_tag, "between " + a_min.out + " and " + a_max.out + " m",
-				distance_driven.out + " m"),
+			assert (with_values (a_tag, "between " + fixed (a_min) + " and " + fixed (a_max) + " m",
+				fixed (distance_driven) + " m"),
 				a_min <= distance_driven and distance_driven <= a_max)
 		end
 
 	assert_battery_left (a_tag: READABLE_STRING_GENERAL; a_min: REAL_64)
 			-- Check that the robot has at least `a_min' of its battery left (0 to 1).
 		do
-			assert (with_values (a_tag, "at least " + a_min.out, battery_left.out), battery_left >= a_min)
+			assert (with_values (a_tag, "at least " + fixed (a_min), fixed (battery_left)), battery_left >= a_min)
 		end
 
 feature {NONE} -- Implementation
@@ -165,12 +165,29 @@ feature {NONE} -- Implementation
 			Result := (create {ANGLE_MATH}).sqrt ((robot_x - x) * (robot_x - x) + (robot_y - y) * (robot_y - y))
 		end
 
+	fixed (v: REAL_64): STRING
+			-- `v' with three decimals ("-0.125").
+		local
+			n: INTEGER_64
+			fraction: STRING
+		do
+			n := (v.abs * 1000.0).rounded_real_64.truncated_to_integer_64
+			fraction := (n \\ 1000).out
+			from until fraction.count = 3 loop
+				fraction.prepend_character ('0')
+			end
+			Result := (n // 1000).out + "." + fraction
+			if v < 0.0 and n > 0 then
+				Result.prepend_character ('-')
+			end
+		end
+
 	with_values (a_tag: READABLE_STRING_GENERAL; expected, actual: STRING): STRING_32
 			-- The message of a failed check.
 		do
 			Result := assert_strings_equal_message (a_tag, expected, actual)
 			Result.append_string_general ("%N   at time: ")
-			Result.append_string_general (simulated_time.out)
+			Result.append_string_general (fixed (simulated_time))
 			Result.append_string_general (" s")
 		end
 
