@@ -18,7 +18,7 @@ import io
 import signal
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -30,8 +30,10 @@ from ..kernel import launcher
 from ..results import TestOutcome, TestResult
 from ..robots.simulated_test import run_in_world
 from ..runtime.monitor import dump
+from ..runtime.sched import Runtime
 from ..runtime.stop_signals import stop_on_signals
-from ..semantics.universe import ClassInfo
+from ..semantics.features import Feature
+from ..semantics.universe import ClassInfo, Universe
 from .compilation import Compilation, CompiledProgram
 from .junit import write_junit
 from .packages import ensure_on_path
@@ -84,7 +86,7 @@ class TestOptions:
 def find_tests(compilation: Compilation) -> list[TestCase]:
     """Every test of the program's test classes, class by class (by name), in source order."""
     universe = compilation.semantics.universe
-    naming = Naming(universe)
+    naming = Naming(universe)  # type: ignore[no-untyped-call]  # codegen is not annotated
     found: list[TestCase] = []
     for key in sorted(universe.classes):
         info = universe.classes[key]
@@ -112,7 +114,7 @@ def find_tests(compilation: Compilation) -> list[TestCase]:
     return found
 
 
-def _is_test(universe, info: ClassInfo, feature) -> bool:
+def _is_test(universe: Universe, info: ClassInfo, feature: Feature) -> bool:
     """AutoTest's rule: a procedure without arguments, exported to every client, that the test
     class has from itself or a test class of the program (not from the testing library)."""
     decl = feature.decl
@@ -124,7 +126,7 @@ def _is_test(universe, info: ClassInfo, feature) -> bool:
     return owner is not None and not owner.from_library
 
 
-def _note(notes, tag: str) -> str | None:
+def _note(notes: Sequence[syntax.Note], tag: str) -> str | None:
     for note in notes:
         if note.tag.key.lower() == tag and note.values and isinstance(note.values[0], syntax.ManifestString):
             return note.values[0].value
@@ -177,14 +179,14 @@ def run_tests(compilation: Compilation, options: TestOptions) -> TestResult:
     return result
 
 
-def run_test(program: CompiledProgram, case: TestCase, options: TestOptions, paths=()) -> TestOutcome:
+def run_test(program: CompiledProgram, case: TestCase, options: TestOptions, paths: Sequence[str] = ()) -> TestOutcome:
     """Run one test in a runtime of its own; KeyboardInterrupt when a signal stopped it."""
     test_class = _test_class(program, case.class_key)
     out, err = io.StringIO(), io.StringIO()
     watchdog = _Watchdog(options.timeout)
 
     def launch(on_start: Callable[[Any], None] | None = None, virtual_clock: bool = False) -> int:
-        def start(rt) -> None:
+        def start(rt: Runtime) -> None:
             if on_start is not None:
                 on_start(rt)
             watchdog.start(rt)
@@ -226,7 +228,7 @@ def _test_class(program: CompiledProgram, key: str) -> type:
     return found
 
 
-def _body(obj, case: TestCase, watchdog: _Watchdog) -> None:
+def _body(obj: Any, case: TestCase, watchdog: _Watchdog) -> None:
     """The test, on the root processor: prepare, run, clean (also after a failure, as AutoTest
     does); the first failure is the test's. A robot test stops its world when it is over."""
     watchdog.in_body = True
@@ -294,7 +296,7 @@ class _Watchdog:
         self._done = threading.Event()
         self._thread: threading.Thread | None = None
 
-    def start(self, rt) -> None:
+    def start(self, rt: Runtime) -> None:
         self.rt = rt
         self._thread = threading.Thread(target=self._watch, name="scoopc-test-watchdog", daemon=True)
         self._thread.start()
@@ -315,7 +317,7 @@ class _Watchdog:
         if self._thread is not None:
             self._thread.join()
 
-    def interrupting(self):
+    def interrupting(self) -> _AlarmHandler:
         """Within the block, SIGALRM interrupts the test body (when this is the main thread)."""
         return _AlarmHandler(self)
 
