@@ -96,7 +96,7 @@ def find_tests(compilation: Compilation) -> list[TestCase]:
         for feature in info.features.values():
             if _is_test(universe, info, feature):
                 decl = feature.decl
-                world = _note(decl.notes, "world") or _note(info.decl.notes, "world")
+                world = _note(decl.notes, "world") or _note(info.decl.notes, "world") or _world_beside(info)
                 found.append(
                     TestCase(
                         key,
@@ -131,6 +131,11 @@ def _note(notes: Sequence[syntax.Note], tag: str) -> str | None:
         if note.tag.key.lower() == tag and note.values and isinstance(note.values[0], syntax.ManifestString):
             return note.values[0].value
     return None
+
+
+def _world_beside(info: ClassInfo) -> str | None:
+    """world.yaml in the test class's folder, if there is one."""
+    return "world.yaml" if (Path(info.decl.span.file).parent / "world.yaml").is_file() else None
 
 
 def _beside(world: str, info: ClassInfo) -> str:
@@ -169,7 +174,7 @@ def run_tests(compilation: Compilation, options: TestOptions) -> TestResult:
     outcomes = []
     with stop_on_signals():  # Ctrl-C, SIGTERM and SIGHUP end the test under way, then the run
         for case in chosen:
-            outcome = run_test(program, case, options, compilation.paths)
+            outcome = run_test(program, case, options)
             outcomes.append(outcome)
             if options.on_outcome is not None:
                 options.on_outcome(outcome)
@@ -179,7 +184,7 @@ def run_tests(compilation: Compilation, options: TestOptions) -> TestResult:
     return result
 
 
-def run_test(program: CompiledProgram, case: TestCase, options: TestOptions, paths: Sequence[str] = ()) -> TestOutcome:
+def run_test(program: CompiledProgram, case: TestCase, options: TestOptions) -> TestOutcome:
     """Run one test in a runtime of its own; KeyboardInterrupt when a signal stopped it."""
     test_class = _test_class(program, case.class_key)
     out, err = io.StringIO(), io.StringIO()
@@ -208,7 +213,7 @@ def run_test(program: CompiledProgram, case: TestCase, options: TestOptions, pat
     with watchdog.interrupting():
         try:
             if case.robot:
-                status = run_in_world(lambda on_start: launch(on_start, True), case.world, paths, stderr=err).status
+                status = run_in_world(lambda on_start: launch(on_start, True), case.world, stderr=err).status
             else:
                 status = launch()
         finally:
