@@ -105,12 +105,7 @@ def _add_test_command(commands) -> None:
         "errors, 2 for bad usage (no test found, say).",
     )
     _add_source_options(test)
-    test.add_argument(
-        "--assertions",
-        choices=("all", "require", "none"),
-        default=None,
-        help="which contracts are checked at run time (default: the .ecf's setting, else all)",
-    )
+    _add_assertions_option(test)
     test.add_argument(
         "-k",
         dest="pattern",
@@ -148,6 +143,10 @@ def _add_compile_options(command: argparse.ArgumentParser) -> None:
         "the class named like the single file or directory, else the one class with "
         "a `make` no other class uses)",
     )
+    _add_assertions_option(command)
+
+
+def _add_assertions_option(command: argparse.ArgumentParser) -> None:
     command.add_argument(
         "--assertions",
         choices=("all", "require", "none"),

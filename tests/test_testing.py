@@ -74,6 +74,14 @@ def test_a_program_without_tests_or_with_errors(tmp_path):
     assert status == Exit.SOURCE and out == "" and "broken_tests.e:1:" in err
 
 
+def test_a_world_that_cannot_be_read_names_the_test(tmp_path):
+    (tmp_path / "w_tests.e").write_text(
+        'class W_TESTS inherit ROBOT_TEST_SET feature\n\ttest_x note world: "nowhere.yaml" do run_for (1.0) end\nend\n'
+    )
+    with pytest.raises(scoopc.UsageError, match=r"W_TESTS.test_x \(.*w_tests.e:2\): no world file .*nowhere.yaml"):
+        scoopc.test([tmp_path])
+
+
 def test_usage_errors_exit_2(tmp_path):
     assert _cli("test", COUNTER, "--timeout", "0")[0] == Exit.USAGE
     assert _cli("test")[0] == Exit.USAGE

@@ -90,8 +90,12 @@ def find_tests(compilation: Compilation) -> list[TestCase]:
     found: list[TestCase] = []
     for key in sorted(universe.classes):
         info = universe.classes[key]
-        if info.from_library or info.is_deferred or TEST_SET not in info.ancestors:
+        if info.from_library or info.is_deferred or info.formals or TEST_SET not in info.ancestors:
             continue
+        if info.creators is not None and "default_create" not in info.creators:
+            raise UsageError(
+                f"test class {key} must be creatable with `default_create` (each test gets an object made so)"
+            )
         robot = ROBOT_TEST_SET in info.ancestors
         for feature in info.features.values():
             if _is_test(universe, info, feature):
@@ -213,7 +217,7 @@ def run_test(program: CompiledProgram, case: TestCase, options: TestOptions) -> 
     with watchdog.interrupting():
         try:
             if case.robot:
-                status = run_in_world(lambda on_start: launch(on_start, True), case.world, stderr=err).status
+                status = _in_world(case, lambda on_start: launch(on_start, True), err)
             else:
                 status = launch()
         finally:
@@ -222,6 +226,13 @@ def run_test(program: CompiledProgram, case: TestCase, options: TestOptions) -> 
     if status > 128 and not watchdog.expired:
         raise KeyboardInterrupt(f"stopped during {case.name}")
     return _outcome(case, status, watchdog, err.getvalue(), out.getvalue(), seconds)
+
+
+def _in_world(case: TestCase, launch: Callable[[Callable[[Any], None]], int], err: io.StringIO) -> int:
+    try:
+        return run_in_world(launch, case.world, stderr=err).status
+    except UsageError as problem:  # the world cannot be read: the test suite's mistake
+        raise UsageError(f"{case.name} ({case.file}:{case.line}): {problem}") from None
 
 
 def _test_class(program: CompiledProgram, key: str) -> type:
