@@ -115,6 +115,13 @@ def test_a_test_that_computes_forever_times_out():
     assert "P1(FAILURE_TESTS): running" in outcome.report and result.status == Exit.SOURCE
 
 
+def test_each_test_has_a_runtime_of_its_own():
+    # a once value set by one test is not seen by the next (both pass only then)
+    result = scoopc.test([PROGRAMS / "failures"], pattern="FRESH_TESTS")
+    assert [t.routine for t in result.tests] == ["test_first", "test_second"]
+    assert result.status == Exit.OK, [t.report for t in result.failed]
+
+
 def test_junit_xml_holds_what_xml_cannot():
     outcome = Outcome("A_TESTS", "test_x", "failed", 0.5, "bad \x01 byte", "bad \x01 byte\n  in A", "out\x1b[0m")
     top = ElementTree.fromstring(junit_xml([outcome]))
