@@ -11,6 +11,7 @@ import pytest
 
 import scoopc
 from scoopc import cli
+from scoopc.driver import Compilation
 from scoopc.driver.junit import junit_xml
 from scoopc.exits import Exit
 from scoopc.results import TestOutcome as Outcome  # not collected by pytest
@@ -120,6 +121,18 @@ def test_each_test_has_a_runtime_of_its_own():
     result = scoopc.test([PROGRAMS / "failures"], pattern="FRESH_TESTS")
     assert [t.routine for t in result.tests] == ["test_first", "test_second"]
     assert result.status == Exit.OK, [t.report for t in result.failed]
+
+
+def test_a_damaged_cached_program_is_compiled_again():
+    assert scoopc.test([COUNTER]).tests  # compiled into the cache
+    compilation = Compilation([COUNTER], root="COUNTER_TESTS.default_create")  # what scoopc test caches
+    module = compilation.cached_program().folder / "program" / "counter_tests.py"
+    assert module.is_file()
+    module.write_text("this is not Python (\n")
+    for cached in module.parent.glob("__pycache__/counter_tests*"):
+        cached.unlink()
+    result = scoopc.test([COUNTER])
+    assert [t.passed for t in result.tests] == [True, False, True]
 
 
 def test_junit_xml_holds_what_xml_cannot():

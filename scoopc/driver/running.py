@@ -50,11 +50,11 @@ def run_compilation(
                     "scoopc: note: the compiled program in scoopc's cache was "
                     "damaged (a module did not load): compiling it again\n"
                 )
-        program = _recompiled(compilation, program, rebuild_library)
+        program = recompiled(compilation, program, rebuild_library)
     return run_program(program, args, options, robot, compilation.paths)  # a third failure is a bug
 
 
-def _recompiled(compilation: Compilation, damaged: CompiledProgram, rebuild_library: bool) -> CompiledProgram:
+def recompiled(compilation: Compilation, damaged: CompiledProgram, rebuild_library: bool) -> CompiledProgram:
     remove_cached(damaged.folder)
     again = Compilation(
         compilation.paths,

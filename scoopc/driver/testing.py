@@ -36,8 +36,8 @@ from ..semantics.features import Feature
 from ..semantics.universe import ClassInfo, Universe
 from .compilation import Compilation, CompiledProgram
 from .junit import write_junit
-from .packages import ensure_on_path
-from .running import load_root
+from .packages import DamagedCache, ensure_on_path
+from .running import load_root, recompiled
 
 TEST_SET = "EQA_TEST_SET"
 ROBOT_TEST_SET = "ROBOT_TEST_SET"
@@ -175,10 +175,15 @@ def run_tests(compilation: Compilation, options: TestOptions) -> TestResult:
         raise UsageError(f"no test matches -k {options.pattern!r} (there are {len(found)} tests)")
     compilation.root_option = f"{chosen[0].class_key}.default_create"  # any class will do: tests have no root
     program = compilation.cached_program()
+    try:
+        classes = _load_classes(program, chosen)
+    except DamagedCache:  # a module of the cached program does not load: compile it again
+        program = recompiled(compilation, program, rebuild_library=False)
+        classes = _load_classes(program, chosen)
     outcomes = []
     with stop_on_signals():  # Ctrl-C, SIGTERM and SIGHUP end the test under way, then the run
         for case in chosen:
-            outcome = run_test(program, case, options)
+            outcome = run_test(program, classes[case.class_key], case, options)
             outcomes.append(outcome)
             if options.on_outcome is not None:
                 options.on_outcome(outcome)
@@ -188,9 +193,9 @@ def run_tests(compilation: Compilation, options: TestOptions) -> TestResult:
     return result
 
 
-def run_test(program: CompiledProgram, case: TestCase, options: TestOptions) -> TestOutcome:
-    """Run one test in a runtime of its own; KeyboardInterrupt when a signal stopped it."""
-    test_class = _test_class(program, case.class_key)
+def run_test(program: CompiledProgram, test_class: type, case: TestCase, options: TestOptions) -> TestOutcome:
+    """Run one test (of `test_class`, loaded from `program`) in a runtime of its own;
+    KeyboardInterrupt when a signal stopped it."""
     out, err = io.StringIO(), io.StringIO()
     watchdog = _Watchdog(options.timeout)
 
@@ -235,12 +240,15 @@ def _in_world(case: TestCase, launch: Callable[[Callable[[Any], None]], int], er
         raise UsageError(f"{case.name} ({case.file}:{case.line}): {problem}") from None
 
 
-def _test_class(program: CompiledProgram, key: str) -> type:
-    if program.root.key == key:
-        return load_root(program)
+def _load_classes(program: CompiledProgram, cases: list[TestCase]) -> dict[str, type]:
+    """The test classes, from the program's package imported fresh (its root, one of them,
+    first); DamagedCache when a module does not load."""
+    found = {program.root.key: load_root(program)}
     ensure_on_path(program.library, program.folder)
-    module = importlib.import_module(f"{program.package}.{module_name(key)}")
-    found: type = getattr(module, class_name(key))
+    for key in dict.fromkeys(c.class_key for c in cases):
+        if key not in found:
+            module = importlib.import_module(f"{program.package}.{module_name(key)}")
+            found[key] = getattr(module, class_name(key))
     return found
 
 
