@@ -113,6 +113,7 @@ def test_a_test_that_computes_forever_times_out():
     result = scoopc.test([PROGRAMS / "failures"], pattern="test_forever", timeout=0.5)
     [outcome] = result.tests
     assert outcome.status == "timeout" and outcome.message == "timed out after 0.5 s"
+    assert "the test body was interrupted\n  in FAILURE_TESTS.test_forever (failure_tests.e:49)" in outcome.report
     assert "P1(FAILURE_TESTS): running" in outcome.report and result.status == Exit.SOURCE
 
 

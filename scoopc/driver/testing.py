@@ -21,6 +21,7 @@ import time
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from types import FrameType
 from typing import Any
 
 from .. import syntax
@@ -278,7 +279,8 @@ def _outcome(case: TestCase, status: int, watchdog: _Watchdog, err: str, out: st
     if watchdog.expired:
         outcome.status = "timeout"
         outcome.message = f"timed out after {watchdog.seconds:g} s"
-        outcome.report = "\n".join(filter(None, [outcome.message, watchdog.dump.rstrip(), report]))
+        interrupted = ["the test body was interrupted", *watchdog.where] if watchdog.where else []
+        outcome.report = "\n".join(filter(None, [outcome.message, *interrupted, watchdog.dump.rstrip(), report]))
     elif status != Exit.OK:
         outcome.status = "failed"
         outcome.report = report or f"the test's run ended with status {status}"
@@ -317,6 +319,7 @@ class _Watchdog:
         self.in_body = False  # set and read on the main thread (the signal handler runs there)
         self.expired = False
         self.dump = ""  # the processors and what each waited for, when time ran out
+        self.where: list[str] = []  # the Eiffel trace of the test body, when it was interrupted
         self._done = threading.Event()
         self._thread: threading.Thread | None = None
 
@@ -359,8 +362,9 @@ class _AlarmHandler:
         if _can_interrupt() and threading.current_thread() is threading.main_thread():
             self.previous = signal.signal(signal.SIGALRM, self._handle)
 
-    def _handle(self, _number: int, _frame: object) -> None:
+    def _handle(self, _number: int, frame: FrameType | None) -> None:
         if self.watchdog.in_body:
+            self.watchdog.where = launcher.trace_lines(launcher.stack_frames(frame))
             raise _TimedOut("the test ran out of time")
 
     def __exit__(self, *_exc: object) -> None:
