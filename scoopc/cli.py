@@ -395,11 +395,14 @@ def _command_test(args: argparse.Namespace) -> int:
     from .driver import TestOptions, run_tests  # deferred: the code generator (start-up)
 
     compilation = _compilation(args, assertions=args.assertions)
-    options = TestOptions(args.pattern, args.timeout, args.junit, args.debug, _show_outcome)
-    try:
-        compilation.require_clean()
-    finally:
-        _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
+    options = TestOptions(
+        args.pattern,
+        args.timeout,
+        args.junit,
+        args.debug,
+        _show_outcome,
+        lambda: _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format),
+    )
     result = run_tests(compilation, options)
     for outcome in result.failed:
         _show_failure(outcome)

@@ -71,8 +71,12 @@ def test_a_program_without_tests_or_with_errors(tmp_path):
     result = scoopc.test([tmp_path])
     assert result.status == Exit.SOURCE and not result.tests
     assert [(d.span.line, d.is_error) for d in result.diagnostics] == [(1, True)]
-    status, out, err = _cli("test", tmp_path)
+    status, out, err = _cli("test", tmp_path, "--junit", tmp_path / "grades.xml")
     assert status == Exit.SOURCE and out == "" and "broken_tests.e:1:" in err
+    top = ElementTree.parse(tmp_path / "grades.xml").getroot()  # for a grader: no test passed
+    assert (top.get("tests"), top.get("errors")) == ("1", "1")
+    error = top.find("testsuite/testcase/error")
+    assert error.get("message") == "1 error in the source: no test ran" and "broken_tests.e:1:" in error.text
 
 
 def test_a_world_that_cannot_be_read_names_the_test(tmp_path):

@@ -10,6 +10,7 @@ from collections.abc import Sequence
 from pathlib import Path
 from xml.etree import ElementTree
 
+from ..diagnostics import Diagnostic, short
 from ..exits import UsageError
 from ..results import TestOutcome
 
@@ -31,11 +32,34 @@ def junit_xml(outcomes: Sequence[TestOutcome]) -> str:
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ElementTree.tostring(top, encoding="unicode") + "\n"
 
 
+def source_errors_xml(diagnostics: Sequence[Diagnostic]) -> str:
+    """The JUnit XML of a program that does not check: one test, `check`, in error, whose text is
+    the diagnostics (a grader then counts no test passed rather than finding no file)."""
+    errors = [d for d in diagnostics if d.is_error]
+    top = ElementTree.Element("testsuites", {"name": "scoopc test", "tests": "1", "failures": "0", "errors": "1"})
+    suite = ElementTree.SubElement(top, "testsuite", {"name": "scoopc", "tests": "1", "failures": "0", "errors": "1"})
+    case = ElementTree.SubElement(suite, "testcase", {"classname": "scoopc", "name": "check", "time": "0"})
+    message = f"{len(errors)} error{'s' if len(errors) != 1 else ''} in the source: no test ran"
+    error = ElementTree.SubElement(case, "error", {"message": message, "type": "source"})
+    error.text = _clean("\n".join(short(d) for d in diagnostics))
+    ElementTree.indent(top)
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ElementTree.tostring(top, encoding="unicode") + "\n"
+
+
+def write_source_errors(diagnostics: Sequence[Diagnostic], path: str | Path) -> str:
+    """Write `source_errors_xml` to `path`."""
+    return _write(source_errors_xml(diagnostics), path)
+
+
 def write_junit(outcomes: Sequence[TestOutcome], path: str | Path) -> str:
     """Write `outcomes` as JUnit XML to `path`; UsageError when it cannot be written."""
+    return _write(junit_xml(outcomes), path)
+
+
+def _write(text: str, path: str | Path) -> str:
     target = Path(path)
     try:
-        target.write_text(junit_xml(outcomes), encoding="utf-8")
+        target.write_text(text, encoding="utf-8")
     except OSError as error:
         raise UsageError(f"cannot write the JUnit file {target}: {error.strerror or error}") from None
     return str(target)

@@ -26,7 +26,7 @@ from typing import Any
 
 from .. import syntax
 from ..codegen.names import Naming, class_name, module_name
-from ..exits import Exit, UsageError
+from ..exits import Exit, SourceErrors, UsageError
 from ..kernel import launcher
 from ..results import TestOutcome, TestResult
 from ..robots.simulated_test import run_in_world
@@ -36,7 +36,7 @@ from ..runtime.stop_signals import stop_on_signals
 from ..semantics.features import Feature
 from ..semantics.universe import ClassInfo, Universe
 from .compilation import Compilation, CompiledProgram
-from .junit import write_junit
+from .junit import write_junit, write_source_errors
 from .packages import DamagedCache, ensure_on_path
 from .running import load_root, recompiled
 
@@ -75,6 +75,7 @@ class TestOptions:
     junit: str | Path | None = None  # where to write JUnit XML
     debug: bool = False  # Python tracebacks in the reports too
     on_outcome: Callable[[TestOutcome], None] | None = None  # told of each test as it ends
+    on_checked: Callable[[], None] | None = None  # called once the program is checked, before any test
 
     def __post_init__(self) -> None:
         if not (self.timeout > 0):
@@ -164,13 +165,22 @@ def select(tests: list[TestCase], pattern: str | None) -> list[TestCase]:
 
 def run_tests(compilation: Compilation, options: TestOptions) -> TestResult:
     """Check the program, find its tests, run those selected, write the JUnit file. SourceErrors
-    when the program has errors; UsageError when there is no test to run."""
-    compilation.require_clean()
+    when the program has errors (the JUnit file then has one test, `check`, in error);
+    UsageError when there is no test to run."""
+    if options.junit and not Path(options.junit).resolve().parent.is_dir():
+        raise UsageError(f"cannot write the JUnit file {options.junit}: its folder does not exist")
+    try:
+        compilation.require_clean()
+    except SourceErrors as errors:
+        if options.junit:
+            write_source_errors(errors.diagnostics, options.junit)
+        raise
+    finally:
+        if options.on_checked is not None:
+            options.on_checked()
     found = find_tests(compilation)
     if not found:
         raise UsageError(f"no tests in {', '.join(compilation.paths)}: a test class inherits {TEST_SET}")
-    if options.junit and not Path(options.junit).resolve().parent.is_dir():
-        raise UsageError(f"cannot write the JUnit file {options.junit}: its folder does not exist")
     chosen = select(found, options.pattern)
     if not chosen:
         raise UsageError(f"no test matches -k {options.pattern!r} (there are {len(found)} tests)")
