@@ -462,15 +462,15 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     settings.distro = ros_messages.distro()
     bus = Bus()
     clock = _Later()
+    for named in (options.png, options.gif, options.record):
+        if isinstance(named, (str, Path)) and Path(named).exists():
+            say(stderr, f"replacing the existing file {named}")
     recorder = _recorder(bus, options.record, clock)
     sim = Simulator(world, bus)
     clock.read = lambda: sim.time_ns
     velocity.use_clock(clock)  # stamps in simulated time, as /clock tells it
     if progress is not None:
         progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
-    for named in (options.png, options.gif, options.record):
-        if isinstance(named, (str, Path)) and Path(named).exists():
-            say(stderr, f"replacing the existing file {named}")
     png = unnamed_output(program_name, "png") if options.png is True else (options.png or None)
     return run_with_robot(
         lambda on_start: launch(on_start, not options.realtime),
