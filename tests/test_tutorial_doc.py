@@ -277,3 +277,18 @@ def test_the_ros2_step_against_scoopc_sim_in_a_second_process(tmp_path):
     want = [int(v) for v in re.findall(r"-?\d+", shown_stop)[1:]]
     assert all(abs(a - b) <= 3 for a, b in zip(got, want)), (first, shown_stop)
     assert done.stderr.startswith("scoopc: ROS 2 ") and "Traceback" not in done.stderr
+
+
+def test_the_eiffel_the_tutorial_quotes_is_the_real_code():
+    """Every line of an ```eiffel block (but those with `...`) is a line of the library's
+    SIMPLE_CONTROLLER or of samples/first_controller, as written there (the guard of `cruise` once
+    was quoted inverted)."""
+    sources = [ROOT / "stdlib" / "roboscoop" / "controller" / "simple_controller.e", FIRST / "first_controller.e"]
+    real = {" ".join(line.split()) for path in sources for line in path.read_text().splitlines()}
+    quoted = re.findall(r"```eiffel\n(.*?)```", TUTORIAL.read_text(), re.DOTALL)
+    assert len(quoted) >= 4
+    for block in quoted:
+        for line in block.splitlines():
+            line = " ".join(line.split())
+            if line and "..." not in line:
+                assert line in real, line
