@@ -271,7 +271,7 @@ MESSAGES: dict[str, Message] = {
     "VUTA(3)": Message(
         "call on separate `{target}` (type {type}) that is not controlled",
         "pass `{target}` as an argument of a routine (which reserves it) and call it there, "
-        "or wrap the call in `separate {target} as x do x.f end`",
+        "or wrap the call in `separate {target} as {fresh} do {fresh}.f end`",
     ),
     "VUAR(3)": Message(
         "`{actual}` is a non-separate reference passed in a call on a separate target to a formal of "

@@ -113,7 +113,8 @@ class CallChecks:
             self.evaluate(arguments)
             return None  # reported: the enclosing expression stays silent
         if target.handler == UNCONTROLLED and scoop.separate_by_constraint(self, ty):
-            self.report("VUTA(3)", target_node.span, target=walk.describe(target_node), type=str(ty))
+            target = walk.describe(target_node)
+            self.report("VUTA(3)", target_node.span, target=target, type=str(ty), fresh=scoop.fresh(target_node))
             self.evaluate(arguments)
             return None
         current = ty.with_marks(attached=True) if ty.is_formal else None  # `like Current` is G, not its constraint

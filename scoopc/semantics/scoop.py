@@ -8,6 +8,8 @@ its expression (Value.handler names the controlling entity; "?" means not contro
 
 from __future__ import annotations
 
+import re
+
 from .. import syntax
 from .types import Ty
 from .values import UNCONTROLLED, Value
@@ -18,8 +20,15 @@ def check_target(ctx, target_node, value: Value) -> bool:
     """VUTA(3) (Gobo VUTA-4G): a call on a separate target needs the target controlled."""
     if value.controlled:
         return True
-    ctx.report("VUTA(3)", target_node.span, target=describe(target_node), type=str(value.ty))
+    ctx.report("VUTA(3)", target_node.span, target=describe(target_node), type=str(value.ty), fresh=fresh(target_node))
     return False
+
+
+def fresh(target_node) -> str:
+    """A name for the separate block's local in VUTA(3)'s hint: `x` -> `l_x`, not `x` itself
+    (a separate block's name must be fresh: V1SE-G2)."""
+    words = re.findall(r"[A-Za-z]\w*", describe(target_node))
+    return f"l_{words[-1].lower()}" if words else "l_target"
 
 
 def separate_by_constraint(ctx, ty: Ty | None) -> bool:

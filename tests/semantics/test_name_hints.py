@@ -55,6 +55,7 @@ def found(tmp_path_factory):
     routines.append("case_result (buffer: separate BUF): INTEGER do Reslt := 1 end")
     routines.append("case_vjar_result (buffer: separate BUF): STRING do Result := buffer.last end")
     routines.append("case_unknown_class local b: BUFF do end")
+    routines.append("case_vuta_local local b: separate BUF do create b; b.is_full.do_nothing end")
     app = "class APP\ncreate make\nfeature\n    make do end\n    count: INTEGER\n"
     app += "".join(f"    {r}\n" for r in routines) + "end\n"
     checked = check(tmp_path_factory.mktemp("hints"), {"BUF": BUF, "APP": app})
@@ -87,3 +88,8 @@ def test_vjar_hint_fits_result(found):
 
 def test_misspelt_class(found):
     assert found["unknown_class"] == ("VTCT", "did you mean BUF?")
+
+
+def test_vuta_3_hint_names_a_fresh_separate_block_local(found):
+    code, hint = found["vuta_local"]
+    assert code == "VUTA(3)" and "`separate b as l_b do l_b.f end`" in hint  # `as b` would be V1SE-G2
