@@ -94,7 +94,7 @@ def run(
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
     simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in
-    <root>.png. The result's `status` is the program's exit status."""
+    runs/<root>/<n>/<root>.png. The result's `status` is the program's exit status."""
     compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
     options = RunOptions(trace_processors, strict, virtual_clock, debug, stdout, stderr)
     robot_options = RobotOptions(

@@ -54,7 +54,13 @@ def build_parser() -> argparse.ArgumentParser:
         "safety) and SCOOP separateness rules, each with its EiffelStudio "
         "code.",
     )
-    check.add_argument("--explain", metavar="CODE", help="explain a diagnostic code and exit")
+    check.add_argument(
+        "--explain",
+        metavar="CODE",
+        nargs="?",
+        const="",
+        help="explain a diagnostic code (VUTA3, vuta-3, 'VUTA(3)', Gobo's VUTA-4G) and exit; alone: list the codes",
+    )
     _add_source_options(check)
     check.set_defaults(handler=_command_check)
 
@@ -356,16 +362,25 @@ def _command_parse(args: argparse.Namespace) -> int:
 
 def _command_check(args: argparse.Namespace) -> int:
     if args.explain is not None:
-        from .explain import explain  # deferred: the explanation table is large (start-up)
-
-        text = explain(args.explain)
-        if text is None:
-            raise UsageError(f"unknown diagnostic code `{args.explain}`")
-        print(text)
-        return Exit.OK
+        return _explain(args.explain)
     checked = _compilation(args).checked
-    _render(checked.diagnostics, checked.line_text, args.format)
+    _render(checked.diagnostics, checked.line_text, args.format, checked=len(checked.units))
     return Exit.SOURCE if checked.has_errors else Exit.OK
+
+
+def _explain(code: str) -> int:
+    from . import explain  # deferred: the explanation table is large (start-up)
+
+    if not code.strip():
+        print(explain.listing())
+        return Exit.OK
+    text = explain.explain(code)
+    if text is None:
+        close = explain.suggestions(code)
+        advice = f"; did you mean {' or '.join(f'`{c}`' for c in close)}?" if close else ""
+        raise UsageError(f"unknown diagnostic code `{code}`{advice} (`scoopc check --explain` lists them all)")
+    print(text)
+    return Exit.OK
 
 
 def _command_compile(args: argparse.Namespace) -> int:
@@ -464,15 +479,23 @@ def _command_msg(args: argparse.Namespace) -> int:
 # ---- rendering -----------------------------------------------------------------------------------
 
 
-def _render(found: list, line_text: Callable[[str, int], str], style: str) -> None:
+def _render(found: list, line_text: Callable[[str, int], str], style: str, checked: int | None = None) -> None:
+    """The diagnostics on stderr; in the pretty form, then the count of errors, or with `checked`
+    (`scoopc check`) one closing line even when all is well: "12 classes checked, no errors"."""
     pretty = style == "pretty" or (style == "auto" and sys.stderr.isatty())
     color = pretty and sys.stderr.isatty()
     for d in found:
         text = diagnostics.pretty(d, line_text, color) if pretty else diagnostics.short(d)
         print(text, file=sys.stderr)
     errors = sum(1 for d in found if d.is_error)
-    if errors and pretty:
-        print(f"{errors} error{'s' if errors != 1 else ''}", file=sys.stderr)
+    warnings = sum(1 for d in found if d.severity == diagnostics.WARNING)
+    counted = f"{errors} error{'s' if errors != 1 else ''}" if errors else "no errors"
+    if warnings:
+        counted += f", {warnings} warning{'s' if warnings != 1 else ''}"
+    if pretty and checked is not None:
+        print(f"{checked} class{'es' if checked != 1 else ''} checked, {counted}", file=sys.stderr)
+    elif errors and pretty:
+        print(counted, file=sys.stderr)
 
 
 def _progress() -> Callable[[str], None] | None:

@@ -604,12 +604,15 @@ EXPLANATIONS: dict[str, Explanation] = {
         -- show (s: STRING);  name: detachable STRING
         p.move ("one", 2)
         show (name)
+        -- SCOOP: in take (buffer: separate BUFFER), whose `last: STRING` is on buffer's processor
+        show (buffer.last)
         """,
         """
         p.move (1, 2)
         if attached name as l_name then
             show (l_name)
         end
+        show (create {STRING}.make_from_separate (buffer.last))     -- or: show (s: separate STRING)
         """,
         """Pass a value of the formal's type; test a detachable value with an object test first (and for
         a separate value, declare the formal `separate`).""",
@@ -677,14 +680,18 @@ EXPLANATIONS: dict[str, Explanation] = {
         n: INTEGER;  name: STRING;  found_name: detachable STRING
         n := "seven"
         name := found_name
+        -- SCOOP: in take (buffer: separate BUFFER), whose `last: STRING` is on buffer's processor
+        name := buffer.last
         """,
         """
         n := 7
         if attached found_name as l_name then
             name := l_name
         end
+        name := create {STRING}.make_from_separate (buffer.last)   -- a copy on this processor
         """,
-        "Assign a value of the target's type; test a detachable source with an object test first.",
+        """Assign a value of the target's type; test a detachable source with an object test first; copy a
+        separate object with `make_from_separate`, or declare the target `separate` too.""",
     ),
     "VJAW": _x(
         """Only a variable can be the target of an assignment or of a creation: an attribute of the
@@ -1015,7 +1022,7 @@ EXPLANATIONS: dict[str, Explanation] = {
         non-separate reference type: the copy would share those objects across processors.""",
         """
         expanded class LABELLED  feature text: STRING ... end
-        worker.store (label)           -- label: LABELLED
+        worker.store (label)           -- worker: separate WORKER;  label: LABELLED
         """,
         """
         expanded class LABELLED  feature text: separate STRING ... end

@@ -51,8 +51,8 @@ MESSAGES: dict[str, Message] = {
     # --- syntax ---------------------------------------------------------------------------
     "SYNTAX": Message("{found} is not allowed here; expected {expected}", "{hint}"),
     "SYNTAX-END": Message(
-        "missing `end` of the `{construct}` opened at {opened}",
-        "every `{construct}` needs its own `end`; check the lines between {opened} and here",
+        "missing `end` of the `{construct}`{owner} opened at {opened}",
+        "every `{construct}` needs its own `end`: add it before {due}, aligned with the `{construct}`",
     ),
     "SYNTAX-RESERVED": Message(
         "`{word}` is a reserved word and cannot be used as a name",
@@ -69,7 +69,7 @@ MESSAGES: dict[str, Message] = {
     "VSCN": Message("class {name} is declared twice (also at {other})", "rename one of the classes"),
     "VTCT": Message(
         "type based on unknown class {name}",
-        "check the spelling, and that the file declaring {name} is in a cluster given to scoopc",
+        "{hint}",
     ),
     "VTUG(1)": Message(
         "{type} is not generic but is given {given} actual generic parameter(s)", "remove the `[...]` after {type}"
@@ -175,9 +175,7 @@ MESSAGES: dict[str, Message] = {
     ),
     "VRLE(2)": Message("local `{name}` has the name of an argument", "rename the local, for example `l_{name}`"),
     "VREG": Message("`{name}` is declared twice in the same routine", "remove one declaration or rename it"),
-    "VEEN": Message(
-        "unknown identifier `{name}` {where}", "check the spelling; a local must be declared in the `local` clause"
-    ),
+    "VEEN": Message("unknown identifier `{name}` {where}", "{hint}"),
     "VEEN(2)": Message(
         "`Result` is not available in {where}", "only functions (and their postconditions) have a Result"
     ),
@@ -273,7 +271,7 @@ MESSAGES: dict[str, Message] = {
     "VUTA(3)": Message(
         "call on separate `{target}` (type {type}) that is not controlled",
         "pass `{target}` as an argument of a routine (which reserves it) and call it there, "
-        "or wrap the call in `separate {target} as x do x.f end`",
+        "or wrap the call in `separate {target} as {fresh} do {fresh}.f end`",
     ),
     "VUAR(3)": Message(
         "`{actual}` is a non-separate reference passed in a call on a separate target to a formal of "

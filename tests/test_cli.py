@@ -77,14 +77,14 @@ def test_syntax_error_one_line_form_and_exit_1(capsys, tmp_path):
     code, out, err = run(capsys, "check", "--format", "short", str(tmp_path / "broken.e"))
     assert code == Exit.SOURCE and out == ""
     first = err.splitlines()[0]
-    assert first.startswith(f"{tmp_path / 'broken.e'}:12:1: error SYNTAX-END: missing `end` of the `")
+    assert first == f"{tmp_path / 'broken.e'}:8:4: error SYNTAX-END: missing `end` of the `if` opened at 8:4"
 
 
 def test_pretty_form_shows_the_line_an_underline_and_a_hint(capsys, tmp_path):
     (tmp_path / "broken.e").write_text(BROKEN)
     code, _, err = run(capsys, "check", "--format", "pretty", str(tmp_path / "broken.e"))
     assert code == Exit.SOURCE
-    assert "12 | end" in err and "^" in err and "hint:" in err and "1 error" in err
+    assert "8 | \t\t\tif x > 0 then".expandtabs(1) in err and "^" in err and "hint:" in err and "1 error" in err
 
 
 def test_unreadable_source_is_a_located_error(capsys, tmp_path):

@@ -105,3 +105,50 @@ def test_the_gobo_scoop_codes_are_aliases():
 def test_an_unknown_code_is_a_usage_error(capsys, unknown):
     status, out, err = run(capsys, "check", "--explain", unknown)
     assert status == Exit.USAGE and out == "" and "unknown diagnostic code" in err
+
+
+# ---- spellings, the list, suggestions (issue 22) -----------------------------------------------
+@pytest.mark.parametrize(
+    "spelled", ["VUTA3", "vuta-3", "VUTA(3)", "vuta(3)", "VUTA-4G", "vuta4g", "VUTA(4G)", " vuta3 "]
+)
+def test_every_spelling_of_vuta_3_is_explained(capsys, spelled):
+    status, out, err = run(capsys, "check", "--explain", spelled)
+    assert status == Exit.OK and err == "" and out.startswith("VUTA(3)")
+
+
+@pytest.mark.parametrize(
+    "spelled, code", [("V1SE-G1", "FRESH_IDENTIFIER"), ("v1se3g", "V1SE"), ("syntax_end", "SYNTAX-END")]
+)
+def test_gobo_and_squeezed_spellings(spelled, code):
+    assert canonical_code(spelled) == code
+
+
+def test_explain_without_a_code_lists_every_code_with_one_line(capsys):
+    status, out, err = run(capsys, "check", "--explain")
+    assert status == Exit.OK and err == ""
+    listed = {line.split()[0] for line in out.splitlines() if line and not line.startswith(("Gobo", "Details"))}
+    assert listed == set(EXPLANATIONS) | set(messages.MESSAGES)
+    assert "VUTA-4G = VUTA(3)" in out
+
+
+def test_an_unknown_code_suggests_the_closest(capsys):
+    status, _, err = run(capsys, "check", "--explain", "VUTB3")
+    assert status == Exit.USAGE and "did you mean `VUTA(3)`" in err and "--explain` lists them all" in err
+
+
+@pytest.mark.parametrize("code", ["VJAR", "VUAR(2)", "VUAR(4)"] + PLAN_SCOOP_CODES)
+def test_every_scoop_code_has_a_scoop_example(code):
+    entry = EXPLANATIONS[code]
+    assert "separate" in entry.wrong or "separate" in entry.fix
+
+
+def test_check_ends_with_one_summary_line_in_the_pretty_form(capsys, tmp_path):
+    (tmp_path / "app.e").write_text("class APP\ncreate make\nfeature\n\tmake do print (1) end\nend\n")
+    (tmp_path / "other.e").write_text("class OTHER\nend\n")
+    status, out, err = run(capsys, "check", "--format", "pretty", str(tmp_path))
+    assert status == Exit.OK and out == "" and err == "2 classes checked, no errors\n"
+    status, _, err = run(capsys, "check", "--format", "short", str(tmp_path))
+    assert status == Exit.OK and err == ""
+    (tmp_path / "other.e").write_text("class OTHER\nfeature f do x := 1 end\nend\n")
+    status, _, err = run(capsys, "check", "--format", "pretty", str(tmp_path))
+    assert status == Exit.SOURCE and err.endswith("\n2 classes checked, 1 error\n")

@@ -100,12 +100,54 @@ def _tune_collector():
 
 
 def report(error, debug: bool = False) -> str:
-    """The text of an uncaught exception: what failed, then the Eiffel call stack."""
-    lines = [describe_error(error), *trace_lines(eiffel_frames(error))]
+    """The text of an uncaught exception: what failed, then the Eiffel call stack; one line when
+    it follows from an exception lost earlier on the same region (reported then)."""
+    consequence = _consequence(error)
+    if consequence is not None and not debug:
+        return consequence
+    lines = [describe_error(error)]
+    frames = eiffel_frames(error)
+    cause = error.__cause__ if isinstance(error, DirtyRegionError) else None
+    supplier = eiffel_frames(cause) if cause is not None and cause.__traceback__ is not None else []
+    supplier = [f for f in supplier if f not in frames]
+    if getattr(error, "asynchronous", False) and supplier:
+        # The failed command ran on the supplier after its client had gone on: the supplier's
+        # frames, then where the client learnt of it (its next synchronous call there).
+        lines.extend(trace_lines(supplier))
+        lines.extend(trace_lines(frames, first="failure noticed in"))
+    else:
+        lines.extend(trace_lines(supplier + frames))
     if debug:
         lines.append("Python traceback (--debug):")
         lines.append("".join(traceback.format_exception(type(error), error, error.__traceback__)).rstrip())
     return "\n".join(lines)
+
+
+def _consequence(error) -> str | None:
+    """One line for a failure on a region whose earlier asynchronous call failed unseen (a Void
+    attribute its creation procedure never set, say), or None."""
+    proc = getattr(error, "proc", None) if isinstance(error, DirtyRegionError) else None
+    try:
+        runtime = rt.current()
+    except RuntimeError:
+        return None
+    with runtime.glock:
+        if proc is None or proc not in runtime.lost:
+            return None
+    cause = error.__cause__ if error.__cause__ is not None else error
+    where = eiffel_frames(cause)[:1] + eiffel_frames(error)[:1]
+    places = " noticed in ".join(f"{cls}.{routine} ({place})" for cls, routine, place in where)
+    return f"a consequence of the exception lost on {proc!r} (reported above): {describe_error(cause)}" + (
+        f" in {places}" if places else ""
+    )
+
+
+def trace_lines(frames: list, first: str = "in") -> list[str]:
+    """The lines of an Eiffel trace: `first` ("in") the innermost frame, `called by` each other."""
+    return [
+        f"  {first if index == 0 else 'called by'} {cls}.{routine} ({place})"
+        for index, (cls, routine, place) in enumerate(frames)
+    ]
 
 
 def describe_error(error) -> str:
@@ -156,7 +198,10 @@ def _at(where) -> str:
 
 
 def eiffel_frames(error) -> list:
-    """(class, routine, file:line) for each frame of generated code, innermost first."""
+    """(class, routine, file:line) for each frame of generated code, innermost first. Python's
+    own helpers never show: a precondition clause (a module-level function of the generated
+    code) is named after its routine, at the clause's line; any other helper function (an `old`
+    or a loop's exit condition) is left out, as its routine's frame shows the line."""
     return _frames(traceback.walk_tb(error.__traceback__))[::-1]
 
 
@@ -166,19 +211,16 @@ def stack_frames(frame) -> list:
     return _frames(traceback.walk_stack(frame))
 
 
-def trace_lines(frames) -> list[str]:
-    """The lines of an Eiffel trace: `in` the innermost frame, `called by` each other."""
-    return [
-        f"  {'in' if i == 0 else 'called by'} {cls}.{routine} ({place})"
-        for i, (cls, routine, place) in enumerate(frames)
-    ]
-
-
 def _frames(walk) -> list:
     frames = []
     for frame, lineno in walk:
         place = eiffel_place(frame.f_code.co_filename, lineno)
         if place is None or frame.f_code in GUARDS:
+            continue
+        if frame.f_code.co_name == "<lambda>":
+            clause = _clause_of(frame)
+            if clause is not None:
+                frames.append(clause)
             continue
         module = frame.f_globals.get("__name__", "")
         cls = module.rsplit(".", 1)[-1].upper()
@@ -191,6 +233,27 @@ def _frames(walk) -> list:
             routine = routine[:-1]  # `assert` is `assert_` in Python (codegen.names.py_identifier)
         frames.append((cls, "inline agent" if routine.startswith("_agent_") else routine, place))
     return frames
+
+
+_CLAUSES: dict = {}  # code object of a precondition clause -> its frame, filled per module
+
+
+def _clause_of(frame) -> tuple | None:
+    """(class, "routine, wait condition" or "routine, precondition", file:line) when `frame` runs
+    a precondition clause of a routine with separate arguments: generated modules keep those in
+    `PRE_n` tables of (clause, separate arguments it queries, tag, (class, routine, file, line))."""
+    module = frame.f_globals
+    key = module.get("__name__", "")
+    if key not in _CLAUSES:
+        table = {}
+        for name, value in list(module.items()):
+            if name.startswith("PRE_") and isinstance(value, tuple):
+                for clause in value:
+                    predicate, queried, _tag, (cls, routine, path, line) = clause
+                    what = "wait condition" if queried else "precondition"
+                    table[predicate.__code__] = (cls, f"{routine}, {what}", f"{Path(path).name}:{line}")
+        _CLAUSES[key] = table
+    return _CLAUSES[key].get(frame.f_code)
 
 
 def eiffel_place(filename: str, lineno: int):

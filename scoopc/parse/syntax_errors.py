@@ -10,7 +10,10 @@ Diagnosis tries repairs on copies of the parser: if inserting `end` lets the par
 from __future__ import annotations
 
 import copy
+import dataclasses
+import re
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import Any
 
 from lark import Token
@@ -79,10 +82,9 @@ def _unexpected(error: UnexpectedToken, source: SourceFile, lark_parser: Any) ->
     if obsolete is not None:
         return diagnostics.make("SYNTAX-OBSOLETE", span, **obsolete)
     if parser is not None:
-        opener = _missing_end(parser, token, expected)
-        if opener is not None:
-            construct, where = opener
-            return diagnostics.make("SYNTAX-END", span, construct=construct, opened=where)
+        missing = _dedent_missing_end(lark_parser, source.text, token) or _missing_end(parser, token, expected)
+        if missing is not None:
+            return _syntax_end(missing, source, span)
     patterns = {t.name: t.pattern.value for t in lark_parser.terminals}
     stack = parser.parser_state.value_stack if parser is not None else []
     return diagnostics.make(
@@ -212,29 +214,180 @@ def _is_reserved_name(parser: Any, token: Token, expected: set, following: Token
     return _feeds(parser, [_borrow("IDENTIFIER", token.value, token), following])
 
 
-def _missing_end(parser: Any, token: Token, expected: set) -> tuple[str, str] | None:
-    """(construct, where) of the innermost construct whose `end` is missing, if adding `end`s
-    lets the parser accept `token`."""
+@dataclass(frozen=True)
+class _Open:
+    """A construct left open: its keyword, where the keyword is, and the routine it belongs to."""
+
+    construct: str
+    line: int
+    column: int
+    routine: str = ""
+
+
+def _syntax_end(missing: tuple[_Open, Token | None], source: SourceFile, at: Span) -> Diagnostic:
+    """SYNTAX-END located at the construct that lacks its `end`, with a note where it was due."""
+    opened, due = missing
+    due_span = _token_span(due, source) if due is not None else at
+    span = Span(source.path, opened.line, opened.column, opened.line, opened.column + len(opened.construct))
+    owner = f" of `{opened.routine}`" if opened.routine else ""
+    where = "the end of the file" if due is None or due.type == "$END" else f"line {due_span.line}"
+    found = diagnostics.make(
+        "SYNTAX-END",
+        span,
+        notes=[diagnostics.Note(f"the `end` was due before {where}", due_span)],
+        construct=opened.construct,
+        opened=f"{opened.line}:{opened.column}",
+        owner=owner,
+        due=where,
+    )
+    lines = source.text.split("\n")[opened.line - 1 : due_span.line]
+    if opened.construct == "if" and any(_ELSE_IF.match(line) for line in lines):
+        return dataclasses.replace(found, hint=_ELSE_IF_HINT)
+    return found
+
+
+_ELSE_IF = re.compile(r"\s*else\s+if\b", re.IGNORECASE)
+_ELSE_IF_HINT = "`else if` opens a second `if`, which needs its own `end`: write `elseif` to add a branch"
+
+
+# Words that may start a line at the same column as the keyword of the construct they belong to.
+_SAME_COLUMN = frozenset(
+    """
+END ELSE ELSEIF WHEN THEN UNTIL LOOP INVARIANT VARIANT ENSURE RESCUE REQUIRE LOCAL DO ONCE ALL SOME
+FROM FEATURE CREATE INHERIT CONVERT NOTE ATTRIBUTE EXTERNAL
+""".split()
+)
+_LOOKAHEAD = 40  # tokens after the error a repair must also accept
+
+
+def _dedent_missing_end(lark_parser: Any, text: str, stop: Token) -> tuple[_Open, Token] | None:
+    """The construct whose `end` is missing, found by indentation: the first line, up to the
+    error, that starts left of an open construct's keyword (or at its column with a word that
+    does not continue it), where adding that many `end`s lets the parse go on past the error.
+    Eiffel code is laid out so; this finds a routine's missing `end` even when the next
+    routine's header parsed for a while as a call (`print (n)` then `other (x`)."""
+    parser = lark_parser.parse_interactive(text)
+    tokens = _tokens_through(parser, stop)
+    indents = [len(line) - len(line.lstrip(" \t")) + 1 for line in text.split("\n")]
+    line = 0
+    for index, token in enumerate(tokens):
+        if token.type == "$END" or token.start_pos > stop.start_pos:
+            break
+        if token.line > line:
+            found = _close_before(parser, tokens[index:], indents)
+            if found is not None:
+                return found, token
+        try:
+            parser.feed_token(token)
+        except UnexpectedInput:
+            return None
+        line = token.end_line or token.line
+    return None
+
+
+def _tokens_through(parser: Any, stop: Token) -> list[Token]:
+    """The tokens of the file up to `stop` and a few beyond (fewer if the lexer fails); with
+    `stop` itself last when it is the end of the file."""
+    stream = parser.lexer_thread.lex(parser.parser_state)
+    if stop.type == "$END":
+        return list(iter(lambda: _next(stream), None)) + [stop]
+    tokens: list[Token] = []
+    after = 0
+    while after < _LOOKAHEAD:
+        token = _next(stream)
+        if token is None:
+            break
+        tokens.append(token)
+        after += token.start_pos > stop.start_pos
+    return tokens
+
+
+def _close_before(parser: Any, rest: list[Token], indents: list[int]) -> _Open | None:
+    """The innermost open construct that `rest[0]` (a line's first token) leaves, if closing the
+    constructs it leaves with `end`s lets the parser accept `rest`. A construct's indentation
+    is that of the line its keyword is on (`separate a as b do` is as indented as `separate`)."""
+    first = rest[0]
+    left = []
+    for opened in _open_constructs(parser.parser_state.value_stack):
+        indent = indents[opened.line - 1]
+        if first.column < indent or (first.column == indent and first.type not in _SAME_COLUMN):
+            left.append(opened)
+        else:
+            break
+    if not left or "END" not in parser.accepts():
+        return None
+    ends = [_borrow("END", "end", first) for _ in left]
+    return left[0] if _feeds(parser, ends + rest) else None
+
+
+def _open_constructs(stack: list) -> list[_Open]:
+    """The constructs open on the parser's stack (no `end` shifted for them), innermost first."""
+    ends = 0
+    found: list[_Open] = []
+    for index in range(len(stack) - 1, -1, -1):
+        value = stack[index]
+        if getattr(value, "type", None) == "END":
+            ends += 1
+            continue
+        opener = _opener(value)
+        if opener is None or _separate_do(stack, index):
+            continue
+        if ends:
+            ends -= 1
+            continue
+        found.append(_Open(opener[0], opener[1], opener[2], _routine_name(stack, index, opener[0])))
+    return found
+
+
+def _separate_do(stack: list, index: int) -> bool:
+    """Whether `stack[index]` is the `do` of a separate instruction's header."""
+    if getattr(stack[index], "type", None) != "DO":
+        return False
+    for value in reversed(stack[:index]):
+        kind = getattr(value, "type", None)
+        if kind == "SEPARATE":
+            return True
+        if kind != "COMMA" and not isinstance(value, syntax.SeparateArgument):
+            return False
+    return False
+
+
+def _routine_name(stack: list, index: int, construct: str) -> str:
+    """The name of the routine whose body `stack[index]` opens ('' for other constructs)."""
+    if construct not in _BODIES.values() and construct != "once":
+        return ""
+    for value in reversed(stack[:index]):
+        if getattr(value, "data", None) == "_feature_names":
+            names = [getattr(getattr(n, "name", None), "text", "") for n in value.children]
+            return ", ".join(n for n in names if n)
+    return ""
+
+
+def _missing_end(parser: Any, token: Token, expected: set) -> tuple[_Open, Token] | None:
+    """The innermost construct whose `end` is missing, if adding `end`s lets the parser accept
+    `token`, and `token` (where the `end` was due)."""
     if "END" not in expected:
         return None
     ends: list[Token] = []
     for _ in range(_MAX_MISSING_ENDS):
         ends.append(_borrow("END", "end", token))
         if _feeds(parser, ends + [token]):
-            return _innermost_opener(parser.parser_state.value_stack)
+            opened = _innermost_opener(parser.parser_state.value_stack)
+            return (opened, token) if opened is not None else None
         if not _feeds(parser, ends):
             return None
     return None
 
 
-def _innermost_opener(stack: list) -> tuple[str, str] | None:
+def _innermost_opener(stack: list) -> _Open | None:
     """The innermost opener on the parser's stack that lacks its `end`. An `end` less indented
     than the opener it was matched with belonged to an outer construct (Eiffel code aligns
     `end` with its opener), so that opener, or a construct nested in it that took its `end`,
     is the one left open."""
     ends: list[Any] = []
     inner: list[Any] = []
-    for value in reversed(stack):
+    for index in range(len(stack) - 1, -1, -1):
+        value = stack[index]
         if getattr(value, "type", None) == "END":
             ends.append(value)
             continue
@@ -244,7 +397,7 @@ def _innermost_opener(stack: list) -> tuple[str, str] | None:
             continue
         if not ends or ends.pop().column < opener[2]:
             nested = _misaligned_within(inner + [value])
-            return nested or (opener[0], f"{opener[1]}:{opener[2]}")
+            return nested or _Open(opener[0], opener[1], opener[2], _routine_name(stack, index, opener[0]))
         inner.append(value)
     return None
 
@@ -260,7 +413,7 @@ _CONSTRUCTS = {
 }
 
 
-def _misaligned_within(values: list) -> tuple[str, str] | None:
+def _misaligned_within(values: list) -> _Open | None:
     """The deepest construct, along the last instructions of `values`, whose `end` is less
     indented than its opening keyword (it took the `end` of the construct around it)."""
     found = None
@@ -268,7 +421,7 @@ def _misaligned_within(values: list) -> tuple[str, str] | None:
     while node is not None:
         span = node.span
         if type(node) in _CONSTRUCTS and span.end_column - 3 < span.column:
-            found = (_CONSTRUCTS[type(node)], f"{span.line}:{span.column}")
+            found = _Open(_CONSTRUCTS[type(node)], span.line, span.column)
         node = _last_instruction(_inner_compound(node))
     return found
 

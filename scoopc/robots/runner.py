@@ -317,10 +317,12 @@ def run_with_robot(
     progress=None,
     stderr=None,
     extra_start=None,
+    program="",
 ):
     """Run `launch(on_start)` (which runs the program and returns its exit status) with `bus` as the
     transport and, when `sim` is given, the simulator stepped on the runtime's clock. The program
-    reads `settings` through ROBOT_ENVIRONMENT (the runtime's `services`)."""
+    reads `settings` through ROBOT_ENVIRONMENT (the runtime's `services`); `program` names it in
+    the pictures' titles."""
     stderr = stderr or sys.stderr
     safety = SafetyBus(bus)
     previous_bus = transport.use(safety)
@@ -352,8 +354,8 @@ def run_with_robot(
     elif driver is not None:
         result.stopped_by = driver.stopped_by or "program"
     if driver is not None:
-        result.png = _render(sim, png, "render_png", stderr)
-        result.gif = _render(sim, gif, "render_gif", stderr)
+        result.png = _render(sim, png, "render_png", stderr, program)
+        result.gif = _render(sim, gif, "render_gif", stderr, program)
     return result
 
 
@@ -370,30 +372,31 @@ def _recorder(bus, path, clock=None):
         raise RobotError(f"cannot record to {path}: {e.strerror or e}") from None
 
 
-def _render(sim, path, how, stderr):
+def _render(sim, path, how, stderr, program=""):
     if not path:
         return None
     try:
         if how == "render_png":
-            sim.render_png(str(path))
+            sim.render_png(str(path), program=program)
         else:
             from .sim.render import (
                 render_gif,  # deferred: start-up (scoopc.robots.sim.render loads only when this is used)
             )
 
-            render_gif(sim, str(path))
+            render_gif(sim, str(path), program=program)
     except Exception as e:  # noqa: BLE001 - the run itself succeeded
         stderr.write(f"scoopc: could not write {path}: {e}\n")
         return None
     return str(path)
 
 
-def describe_end(result, wall) -> str:
-    """One line for stderr after a simulated run."""
+def describe_end(result, wall, asked: bool = False) -> str:
+    """One line for stderr after a simulated run (`asked`: the duration was given, not the world's)."""
     sim = result.sim
-    why = {"duration": "the world's duration", "program": "the program ended"}.get(
-        result.stopped_by, f"stopped by {result.stopped_by}"
-    )
+    why = {
+        "duration": "the duration asked for" if asked else "the world's duration",
+        "program": "the program ended",
+    }.get(result.stopped_by, f"stopped by {result.stopped_by}")
     parts = []
     for robot in sim.robots:
         text = f"{robot.name} moved {robot.distance:.2f} m"
@@ -444,7 +447,7 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
     if progress is not None:
         progress("", final=True)
     if result.sim is not None:
-        stderr.write(describe_end(result, time.monotonic() - wall) + "\n")
+        stderr.write(describe_end(result, time.monotonic() - wall, options.duration is not None) + "\n")
     elif result.stopped_topics:
         stderr.write(f"scoopc: sent a zero velocity on {', '.join(result.stopped_topics)}\n")
     return result
@@ -474,13 +477,16 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     settings.distro = ros_messages.distro()
     bus = Bus()
     clock = _Later()
+    for named in (options.png, options.gif, options.record):
+        if isinstance(named, (str, Path)) and Path(named).exists():
+            say(stderr, f"replacing the existing file {named}")
     recorder = _recorder(bus, options.record, clock)
     sim = Simulator(world, bus)
     clock.read = lambda: sim.time_ns
     velocity.use_clock(clock)  # stamps in simulated time, as /clock tells it
     if progress is not None:
         progress(f"simulating {world.name} ({source}), {settings.duration:g} s", final=True)
-    png = f"{program_name.lower()}.png" if options.png is True else (options.png or None)
+    png = unnamed_output(program_name, "png") if options.png is True else (options.png or None)
     return run_with_robot(
         lambda on_start: launch(on_start, not options.realtime),
         settings,
@@ -491,7 +497,18 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
         gif=options.gif,
         progress=progress,
         stderr=stderr,
+        program=program_name,
     )
+
+
+def unnamed_output(program_name: str, suffix: str, root: Path = Path("runs")) -> Path:
+    """Where a picture nobody named goes: runs/<program>/<n>/<program>.<suffix>, n one more than
+    the highest run number there, so that no run replaces another's files."""
+    folder = root / program_name.lower()
+    numbers = [int(p.name) for p in folder.iterdir() if p.name.isdigit()] if folder.is_dir() else []
+    run_folder = folder / str(max(numbers, default=0) + 1)
+    run_folder.mkdir(parents=True, exist_ok=True)
+    return run_folder / f"{program_name.lower()}.{suffix}"
 
 
 def load_profile(program_paths, given=None):

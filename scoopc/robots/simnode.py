@@ -310,7 +310,8 @@ def run(
     for path, what, render in ((png, "trajectories", sim.render_png), (gif, "animation", _gif(sim))):
         if path:
             try:
-                _say(stderr, f"{what} in {render(path)}")
+                render(path)
+                _say(stderr, f"{what} in {path}")
             except (OSError, ValueError) as e:
                 _say(stderr, f"error: cannot write {path}: {e}")
                 status = 1

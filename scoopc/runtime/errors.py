@@ -20,6 +20,9 @@ class DirtyRegionError(ScoopError):
     earlier asynchronous call of this reservation failed (the call is not executed), or a
     synchronous call that failed itself; `__cause__` is that failure."""
 
+    asynchronous = False  # True: the failure was an earlier asynchronous call's
+    proc: object = None  # the region whose call failed
+
 
 DIRTY_TAG = "EVE/Qs dirty processor exception"
 
@@ -27,6 +30,8 @@ DIRTY_TAG = "EVE/Qs dirty processor exception"
 def dirty_error(proc: object, failure: BaseException | None) -> DirtyRegionError:
     """The exception a client gets instead of its synchronous call on dirty `proc`."""
     error = DirtyRegionError(f"{DIRTY_TAG}: an earlier asynchronous call on {proc} failed")
+    error.asynchronous = True
+    error.proc = proc
     error.__cause__ = failure
     return error
 
@@ -41,6 +46,7 @@ def sync_failure(proc: object, failure: Exception) -> Exception:
     if isinstance(failure, DeadlockError):
         return failure
     error = DirtyRegionError(f"{DIRTY_TAG}: a synchronous call on {proc} failed")
+    error.proc = proc
     error.__cause__ = failure
     return error
 
@@ -56,6 +62,10 @@ class Shutdown(BaseException):
 
 class DeadlockError(ScoopError):
     """Ends the root routine when a deadlock was detected; the report is in `args[0]`."""
+
+
+# The `where` of the private queue a separate creation opens: its report names the creation.
+CREATION: tuple[str, str, str, int] = ("", "creation", "", 0)
 
 
 def fmt_where(where: object) -> str:

@@ -122,6 +122,26 @@ def dump(rt: Runtime) -> str:
     return "\n".join(lines) + "\n"
 
 
+def _after_lost(rt: Runtime, blocks: frozenset[Block]) -> str | None:
+    """One line for a deadlock that follows from a lost exception (already reported): the
+    processors that wait on a region whose asynchronous call failed, or None."""
+    with rt.glock:
+        lost = set(rt.lost)
+    waiting = [blk for blk in blocks if _waits_on(blk) & lost]
+    if not waiting:
+        return None
+    shown = "; ".join(_describe(blk) for blk in waiting)
+    return f"deadlock, a consequence of the lost exception reported above: {shown}"
+
+
+def _waits_on(blk: Block) -> set[Processor]:
+    on = blk.on
+    if isinstance(on, tuple):
+        return set(on)
+    proc = getattr(on, "proc", None)
+    return {proc} if proc is not None else set()
+
+
 class Monitor:
     """The deadlock watchdog thread, owned by run_main (started, stopped and joined)."""
 
@@ -153,7 +173,7 @@ class Monitor:
             return
         blocks, lines = found
         if self.previous is not None and self.previous == blocks:
-            self.rt.fail("\n".join(lines))
+            self.rt.fail(_after_lost(self.rt, blocks) or "\n".join(lines))
             self.stopped.set()
             return
         self.previous = blocks

@@ -18,7 +18,7 @@ from collections import deque
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TypeVar
 
-from .errors import PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error, sync_failure
+from .errors import CREATION, PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error, sync_failure
 from .fast import FastPaths
 from .once import once_in
 from .protocols import Args, Call, Clause, OnceKey, OnceTable, Routine, Separate, Where
@@ -125,7 +125,7 @@ class Processor(FastPaths):
         obj = proc.new(cls)
         if gen is not None:
             obj._gen_ = gen  # type: ignore[attr-defined]  # only generic classes have `_gen_`
-        s = Session(self, proc)
+        s = Session(self, proc, CREATION)
         proc.head = s  # the new processor is ours alone: no lock needed yet
         self.held[proc] = s
         try:

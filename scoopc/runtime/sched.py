@@ -26,7 +26,7 @@ from collections import deque
 from collections.abc import Callable
 from typing import TYPE_CHECKING, TextIO
 
-from .errors import Shutdown, fmt_where
+from .errors import CREATION, Shutdown, fmt_where
 from .protocols import OnceTable, Where
 from .session import IDLE
 
@@ -151,6 +151,7 @@ class Runtime:
     blocked: set[Exec]
     workers: list[Worker]
     failures: list[tuple[str, BaseException | None]]
+    lost: set[Processor]
     procs: weakref.WeakValueDictionary[int, Processor]
     stderr: TextIO
     shutdown_hooks: list[Callable[[], object]]
@@ -186,6 +187,7 @@ class Runtime:
         self.workers = []  # [g] every Worker started and not yet joined
         self.sources = 0  # [g] open outside clients
         self.failures = []  # [g] (message, exception) run-time failures
+        self.lost = set()  # [g] processors whose failed asynchronous call no client saw (reported)
         self.stopping = False  # [g] set once; read racily as a fast check
         self.attention = False  # [g] stopping or permits.want_yield: one racy read
         #                                  at reservation entry instead of two
@@ -448,14 +450,28 @@ class Runtime:
         self.stop()
 
     def report_lost(self, proc: Processor, s: Session) -> None:
-        """[proc.lock held] An asynchronous call failed and no client ever saw it."""
+        """[proc.lock held] An asynchronous call failed and no client ever saw it. A failed
+        creation leaves its object half made: later failures on that region follow from it and
+        get one line each, not a report of their own."""
         e = s.dirty
         assert e is not None, "a lost exception is a dirty session's"
         detail = self.describe(e, proc) if self.describe is not None else f"{type(e).__name__}: {e}"
-        self.stderr.write(
-            f"scoopc: exception lost in an asynchronous call on {proc!r} "
-            f"(client {s.client!r}, reservation at {fmt_where(s.where)}): {detail}\n"
-        )
+        with self.glock:
+            again = proc in self.lost
+            if s.where is CREATION:
+                self.lost.add(proc)
+        if again:
+            first, _, rest = detail.partition("\n")
+            where = rest.split("\n", 1)[0].strip()
+            self.stderr.write(f"scoopc:   then on {proc!r}, as a consequence: {first}{', ' + where if where else ''}\n")
+        elif s.where is CREATION:
+            self.stderr.write(f"scoopc: exception lost in the creation of {proc!r} by {s.client!r}: {detail}\n")
+        else:
+            reserved = f", reservation at {fmt_where(s.where)}" if s.where is not None else ""
+            self.stderr.write(
+                f"scoopc: exception lost in an asynchronous call on {proc!r} (client {s.client!r}{reserved}): "
+                f"{detail}\n"
+            )
         if self.strict:
             self.fail(f"lost exception on {proc!r}: {detail}", e)
 

@@ -5,6 +5,7 @@ are PROCEDURE / FUNCTION / PREDICATE [TUPLE [open operand types]].
 from __future__ import annotations
 
 from .. import syntax
+from . import suggest
 from .features import member_signature
 from .resolve import declare_routine_entities
 from .types import Ty
@@ -38,7 +39,9 @@ class AgentChecks:
             return None  # the class's own errors are reported there
         feature = info.features.get(node.name.key) if info is not None else None
         if feature is None:
-            self.report("VEEN", node.name.span, name=node.name.text, where=f"among the features of {base_class.name}")
+            where = f"among the features of {base_class.name}"
+            hint = suggest.unknown_feature(self, node.name.text, info)
+            self.report("VEEN", node.name.span, name=node.name.text, where=where, hint=hint)
             return None
         self.tables.features[node] = feature
         signature = member_signature(self.universe, base_class.with_marks(attached=True), feature)

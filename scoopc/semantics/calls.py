@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from . import scoop, walk
+from . import scoop, suggest, walk
 from .conformance import base_type
 from .features import member_signature
 from .types import NONE, Ty
@@ -35,7 +35,8 @@ class CallChecks:
             value = self.call_feature(node, None, Value(self.current), feature, (), node.name.span)
             return None if value is None else self.agent_call(node, value, as_instruction)
         if feature is None:
-            self.report("VEEN", node.name.span, name=node.name.text, where=f"in class {self.info.name}")
+            hint = suggest.unknown_identifier(self, node.name.text)
+            self.report("VEEN", node.name.span, name=node.name.text, where=f"in class {self.info.name}", hint=hint)
             self.evaluate(node.arguments)
             return None
         value = self.call_feature(
@@ -104,14 +105,16 @@ class CallChecks:
                 return scoop.adapt_result(self, node, item, target)
             return Value(item, UNCONTROLLED if item.separate or scoop.separate_by_constraint(self, item) else None)
         if feature is None:
-            self.report("VEEN", name.span, name=name.text, where=f"among the features of {base.name}")
+            hint = suggest.unknown_feature(self, name.text, self.universe.get(base.name))
+            self.report("VEEN", name.span, name=name.text, where=f"among the features of {base.name}", hint=hint)
             self.evaluate(arguments)
             return None
         if ty.separate and not scoop.check_target(self, target_node, target):
             self.evaluate(arguments)
             return None  # reported: the enclosing expression stays silent
         if target.handler == UNCONTROLLED and scoop.separate_by_constraint(self, ty):
-            self.report("VUTA(3)", target_node.span, target=walk.describe(target_node), type=str(ty))
+            target = walk.describe(target_node)
+            self.report("VUTA(3)", target_node.span, target=target, type=str(ty), fresh=scoop.fresh(target_node))
             self.evaluate(arguments)
             return None
         current = ty.with_marks(attached=True) if ty.is_formal else None  # `like Current` is G, not its constraint
@@ -240,12 +243,14 @@ class CallChecks:
                 return False
         return True
 
-    def expect(self, node, value: Value, target: Ty, code: str) -> bool:
+    def expect(self, node, value: Value, target: Ty, code: str, written=None) -> bool:
+        """Whether `value` fits `target`, reporting `code` if not; `written` is the entity an
+        assignment writes (its kind shapes the hint)."""
         reason = self.meets(node, value, target)
         if reason is None:
             return True
         if reason == "separate":
-            scoop.separate_mismatch(self, code, node, value.ty, target)
+            scoop.separate_mismatch(self, code, node, value.ty, target, written)
         else:
             detail = (
                 "it may be Void (detachable) and the target is attached"
@@ -331,7 +336,10 @@ class CallChecks:
         info = self.universe.get(ty.name)
         feature = info.features.get(node.name.key) if info is not None else None
         if feature is None:
-            self.report("VEEN", node.name.span, name=node.name.text, where=f"among the features of {ty.name}")
+            hint = suggest.unknown_feature(self, node.name.text, info)
+            self.report(
+                "VEEN", node.name.span, name=node.name.text, where=f"among the features of {ty.name}", hint=hint
+            )
             self.evaluate(node.arguments)
             return None
         return self.call_feature(node, None, Value(ty), feature, node.arguments, node.name.span, as_instruction)

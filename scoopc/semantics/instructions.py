@@ -8,7 +8,7 @@ from __future__ import annotations
 from contextlib import contextmanager
 
 from .. import syntax
-from . import scoop, walk
+from . import scoop, suggest, walk
 from .flow import UNREACHABLE, join
 from .tables import Entity
 from .types import INTEGERS, NATURALS, STRINGS
@@ -40,7 +40,7 @@ class InstructionChecks:
                 self.facts = self.facts.set(target.name, target.ty.attached)
             return
         self.tables.types[node.target] = target.ty
-        fits = self.expect(node.source, value, target.ty, "VJAR")
+        fits = self.expect(node.source, value, target.ty, "VJAR", target)
         if self.facts is not UNREACHABLE:  # after a VJAR the target counts as set: no VEVI cascade
             attached = value.ty.attached or scoop.is_expanded(self.universe, value.ty)
             self.facts = self.facts.set(target.name, attached if fits else target.ty.attached)
@@ -65,7 +65,8 @@ class InstructionChecks:
             return None
         feature = self.info.features.get(name)
         if feature is None:
-            self.report("VEEN", target.name.span, name=target.name.text, where=f"in class {self.info.name}")
+            hint = suggest.unknown_identifier(self, target.name.text, assigned=True)
+            self.report("VEEN", target.name.span, name=target.name.text, where=f"in class {self.info.name}", hint=hint)
             return None
         if feature.kind != "attribute":
             self.report("VJAW", target.span, name=target.name.text, what=f"a {feature.kind}, not a variable")

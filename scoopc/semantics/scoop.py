@@ -8,6 +8,8 @@ its expression (Value.handler names the controlling entity; "?" means not contro
 
 from __future__ import annotations
 
+import re
+
 from .. import syntax
 from .types import Ty
 from .values import UNCONTROLLED, Value
@@ -18,8 +20,15 @@ def check_target(ctx, target_node, value: Value) -> bool:
     """VUTA(3) (Gobo VUTA-4G): a call on a separate target needs the target controlled."""
     if value.controlled:
         return True
-    ctx.report("VUTA(3)", target_node.span, target=describe(target_node), type=str(value.ty))
+    ctx.report("VUTA(3)", target_node.span, target=describe(target_node), type=str(value.ty), fresh=fresh(target_node))
     return False
+
+
+def fresh(target_node) -> str:
+    """A name for the separate block's local in VUTA(3)'s hint: `x` -> `l_x`, not `x` itself
+    (a separate block's name must be fresh: V1SE-G2)."""
+    words = re.findall(r"[A-Za-z]\w*", describe(target_node))
+    return f"l_{words[-1].lower()}" if words else "l_target"
 
 
 def separate_by_constraint(ctx, ty: Ty | None) -> bool:
@@ -89,9 +98,21 @@ SEPARATE_ACTUAL = {
 }
 
 
-def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, **extra) -> None:
+_WRITTEN = {
+    "local": "the local",
+    "attribute": "the attribute",
+    "result": "the result type of",
+    "argument": "the argument",
+}
+
+
+def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, written=None, **extra) -> None:
     """VJAR / VUAR(2) when only separateness stops conformance: a separate value cannot become
-    non-separate (the object lives on another processor)."""
+    non-separate (the object lives on another processor). The hint fits what is written: the
+    entity `written` of an assignment (local, attribute, Result), else a formal argument."""
+    hint = SEPARATE_ACTUAL
+    if code != "VUAR(2)":
+        hint = {"hint": _separate_target_hint(written, target, describe(node))}
     ctx.report(
         code,
         node.span,
@@ -100,8 +121,24 @@ def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, **extra) -> 
         actual=str(source),
         formal=str(target),
         reason="it is separate and the target is not",
-        **SEPARATE_ACTUAL,
+        **hint,
         **extra,
+    )
+
+
+def _separate_target_hint(written, target: Ty, source: str) -> str:
+    if written is not None and written.kind == "result":
+        return (
+            f"the value is on another processor: declare the result type `separate {target}`, or return a copy "
+            f"made on this processor: `create Result.make_from_separate ({source})` (STRING has it)"
+        )
+    name = written.name if written is not None and written.kind in _WRITTEN else "x"
+    declare = (
+        f"{_WRITTEN[written.kind]} `{name}: separate {target}`" if name != "x" else f"the target `separate {target}`"
+    )
+    return (
+        f"the value is on another processor: declare {declare}, or copy it to this processor: "
+        f"`create {name}.make_from_separate ({source})` (STRING has it)"
     )
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from .. import syntax
+from . import suggest
 from .types import Ty
 
 Report = Callable[..., None]
@@ -59,7 +60,8 @@ class TypeResolver:
             return Ty("NONE", attached=node.attachment == "attached", separate=node.separate)
         target = self.universe.get(self.universe.name_in(key, self.info))
         if target is None:
-            self.report("VTCT", node.name.span, name=node.name.text)
+            hint = suggest.unknown_class(self.universe, node.name.text)
+            self.report("VTCT", node.name.span, name=node.name.text, hint=hint)
             return None
         generics = tuple(self.resolve(g) for g in node.generics)
         if any(g is None for g in generics):

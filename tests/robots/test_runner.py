@@ -87,13 +87,20 @@ def test_namespace_goal_and_duration_options(capsys):
 
 
 def test_cli_writes_the_trajectory_png(tmp_path, capsys, monkeypatch):
+    """An unnamed picture goes to runs/<program>/<n>/, one folder per run (none replaces another's);
+    a named one is written where named, and replacing an existing file says so."""
     monkeypatch.chdir(tmp_path)
-    assert cli.main(["run", str(PROGRAMS / "run_forward")]) == 0
-    err = capsys.readouterr().err
-    assert (tmp_path / "forward.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
-    assert "trajectory written to forward.png" in err
-    assert cli.main(["run", str(PROGRAMS / "run_forward"), "--png", str(tmp_path / "x.png")]) == 0
-    assert (tmp_path / "x.png").exists()
+    for n in (1, 2):
+        assert cli.main(["run", str(PROGRAMS / "run_forward")]) == 0
+        err = capsys.readouterr().err
+        picture = tmp_path / "runs" / "forward" / str(n) / "forward.png"
+        assert picture.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+        assert err.splitlines()[-1] == f"scoopc: trajectory written to runs/forward/{n}/forward.png"
+    named = tmp_path / "x.png"
+    assert cli.main(["run", str(PROGRAMS / "run_forward"), "--png", str(named)]) == 0
+    assert named.exists() and "replacing" not in capsys.readouterr().err
+    assert cli.main(["run", str(PROGRAMS / "run_forward"), "--png", str(named)]) == 0
+    assert f"scoopc: replacing the existing file {named}" in capsys.readouterr().err.splitlines()
 
 
 @pytest.mark.parametrize(

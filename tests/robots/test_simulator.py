@@ -206,11 +206,34 @@ def test_coverage_and_png(tmp_path):
     cov = sim.coverage()
     assert 0.05 < cov < 0.5
     out = tmp_path / "run.png"
-    assert sim.render_png(str(out)) == str(out)
+    labels = sim.render_png(str(out), program="COVERAGE")
+    assert labels == [
+        f"title: COVERAGE - world world - {sim.time:.1f} s simulated",
+        "scale: 0.5 m",
+        "r",
+        "start",
+        "end",
+        "hole",
+        "charging station",
+        "goal",
+    ]
     from PIL import Image
 
     with Image.open(out) as img:
         assert img.size[0] > 100 and img.format == "PNG"
+
+
+def test_the_picture_labels_obstacles_collisions_and_falls(tmp_path):
+    sim, bus = make(
+        start=(0.5, 0.3, math.pi / 2),
+        boxes=[{"min": [0.3, 1.0], "max": [0.7, 1.2]}],
+        holes=[{"min": [2.0, 0.0], "max": [2.5, 4.0]}],
+    )
+    drive(sim, bus, 0.14, 0.0, 8.0)  # into the box
+    sim.robots[0].fell_at = (sim.time, 2.2, 1.0)  # as a fall would leave it
+    labels = sim.render_png(str(tmp_path / "run.png"))
+    assert labels[0].startswith("title: world world - ") and labels[1].startswith("scale: ")
+    assert labels[2:] == ["r", "start", "end", "obstacle", "hole", "collision", "fall"]
 
 
 def test_two_robots_under_their_namespaces():

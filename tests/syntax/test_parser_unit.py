@@ -225,39 +225,60 @@ def only_error(text: str) -> str:
 
 def test_missing_end_of_if_names_the_if():
     text = "class A\nfeature\n\tf\n\t\tdo\n\t\t\tif x then\n\t\t\t\ty := 1\n\t\tend\n\nfeature\nend\n"
-    assert only_error(text) == "t.e:9:1: error SYNTAX-END: missing `end` of the `if` opened at 5:4"
+    assert (
+        only_error(text) == "t.e:5:4: error SYNTAX-END: missing `end` of the `if` opened at 5:4\n"
+        "    t.e:7:3: note: the `end` was due before line 7"
+    )
 
 
 def test_missing_end_of_loop_names_the_from():
     text = (
         "class A\nfeature\n\tf\n\t\tdo\n\t\t\tfrom i := 1 until i > 3 loop\n\t\t\t\ti := i + 1\n\t\tend\nfeature\nend\n"
     )
-    assert only_error(text) == "t.e:8:1: error SYNTAX-END: missing `end` of the `from` opened at 5:4"
+    assert (
+        only_error(text) == "t.e:5:4: error SYNTAX-END: missing `end` of the `from` opened at 5:4\n"
+        "    t.e:7:3: note: the `end` was due before line 7"
+    )
 
 
 def test_missing_end_of_routine():
     text = "class A\nfeature\n\tf\n\t\tdo\n\t\t\tg\nfeature\nend\n"
-    assert only_error(text) == "t.e:6:1: error SYNTAX-END: missing `end` of the `do` opened at 4:3"
+    assert (
+        only_error(text) == "t.e:4:3: error SYNTAX-END: missing `end` of the `do` of `f` opened at 4:3\n"
+        "    t.e:6:1: note: the `end` was due before line 6"
+    )
 
 
 def test_missing_end_of_class_at_end_of_file():
     text = "class A\nfeature\n\tf do end\n"
-    assert only_error(text) == "t.e:3:1: error SYNTAX-END: missing `end` of the `class` opened at 1:1"
+    assert (
+        only_error(text) == "t.e:1:1: error SYNTAX-END: missing `end` of the `class` opened at 1:1\n"
+        "    t.e:3:1: note: the `end` was due before the end of the file"
+    )
 
 
 def test_missing_end_found_by_indentation_when_an_inner_construct_took_it():
     text = "class A\nfeature\n\tf\n\t\tdo\n\t\t\tif x then\n\t\t\t\tg\n\t\tend\n\nend\n"
-    assert only_error(text) == "t.e:9:1: error SYNTAX-END: missing `end` of the `if` opened at 5:4"
+    assert (
+        only_error(text) == "t.e:5:4: error SYNTAX-END: missing `end` of the `if` opened at 5:4\n"
+        "    t.e:7:3: note: the `end` was due before line 7"
+    )
 
 
 def test_missing_end_of_redefine():
     text = "class A\ninherit\n\tB\n\t\tredefine f\ncreate\n\tmake\nend\n"
-    assert only_error(text) == "t.e:5:1: error SYNTAX-END: missing `end` of the `redefine` opened at 4:3"
+    assert (
+        only_error(text) == "t.e:4:3: error SYNTAX-END: missing `end` of the `redefine` opened at 4:3\n"
+        "    t.e:5:1: note: the `end` was due before line 5"
+    )
 
 
 def test_missing_end_of_separate_block():
     text = "class A\nfeature\n\tf do\n\t\tseparate a as b do\n\t\t\tb.g\n\tend\nfeature\nend\n"
-    assert only_error(text) == "t.e:7:1: error SYNTAX-END: missing `end` of the `separate` opened at 4:3"
+    assert (
+        only_error(text) == "t.e:4:3: error SYNTAX-END: missing `end` of the `separate` opened at 4:3\n"
+        "    t.e:6:2: note: the `end` was due before line 6"
+    )
 
 
 def test_missing_then_says_what_was_expected():
@@ -446,3 +467,49 @@ def test_accelerated_and_pure_parsers_agree(monkeypatch):
     pure = parser.make_parser(builder)
     builder.reset("t.e")
     assert s.dump(pure.parse(text)[0]) == fast
+
+
+# ---- a missing `end` before the next routine (issue 22): the header parsed as a call ------------
+def only_diagnostic(text: str):
+    result = parse_text(text)
+    (d,) = result.diagnostics
+    return d
+
+
+def test_missing_end_of_routine_before_a_routine_with_arguments_names_the_routine():
+    text = (
+        "class A\nfeature\n\tmake\n\t\tlocal\n\t\t\tn: INTEGER\n\t\tdo\n\t\t\tn := 3\n\t\t\tprint (n)\n\n"
+        "\tother (x: INTEGER): INTEGER\n\t\tdo\n\t\t\tResult := x\n\t\tend\nend\n"
+    )
+    d = only_diagnostic(text)
+    assert diagnostics.short(d) == (
+        "t.e:6:3: error SYNTAX-END: missing `end` of the `do` of `make` opened at 6:3\n"
+        "    t.e:10:2: note: the `end` was due before line 10"
+    )
+    assert d.hint == "every `do` needs its own `end`: add it before line 10, aligned with the `do`"
+
+
+def test_missing_end_of_if_before_the_next_routine():
+    text = (
+        "class A\nfeature\n\tf\n\t\tdo\n\t\t\tif True then\n\t\t\t\tprint (1)\n\t\tend\n\n"
+        "\tg (x: INTEGER)\n\t\tdo\n\t\tend\nend\n"
+    )
+    assert only_error(text).startswith("t.e:5:4: error SYNTAX-END: missing `end` of the `if` opened at 5:4")
+
+
+def test_missing_end_of_inspect_and_across_and_check():
+    inspect = "\t\t\tinspect x\n\t\t\twhen 1 then\n\t\t\t\tprint (1)\n"
+    across = "\t\t\tacross 1 |..| 3 as i loop\n\t\t\t\tprint (i.item)\n"
+    check = "\t\t\tcheck x > 0 then\n\t\t\t\tprint (x)\n"
+    for body, word in ((inspect, "inspect"), (across, "across"), (check, "check")):
+        text = f"class A\nfeature\n\tf (x: INTEGER)\n\t\tdo\n{body}\t\tend\n\n\tg (y: INTEGER)\n\t\tdo\n\t\tend\nend\n"
+        assert only_error(text).startswith(f"t.e:5:4: error SYNTAX-END: missing `end` of the `{word}` opened at 5:4")
+
+
+def test_else_if_gets_the_elseif_hint():
+    text = (
+        "class A\nfeature\n\tf (x: INTEGER)\n\t\tdo\n\t\t\tif x > 0 then\n\t\t\t\tprint (1)\n"
+        "\t\t\telse if x < 0 then\n\t\t\t\tprint (2)\n\t\t\tend\n\t\tend\n\n\tg\n\t\tdo\n\t\tend\nend\n"
+    )
+    d = only_diagnostic(text)
+    assert d.code == "SYNTAX-END" and "write `elseif`" in d.hint

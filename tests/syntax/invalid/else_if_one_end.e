@@ -15,7 +15,7 @@ feature {NONE} -- Initialization
 	make
 			-- Classify `value'.
 		do
-			if value < 0 then
+			if value < 0 then -- E: SYNTAX-END@4
 				print ("negative%N")
 			else if value = 0 then
 				print ("zero%N")
@@ -24,7 +24,7 @@ feature {NONE} -- Initialization
 			end
 		end
 
-feature -- Access -- E: SYNTAX-END
+feature -- Access
 
 	value: INTEGER = 5
 

@@ -12,11 +12,11 @@ feature {NONE} -- Initialization
 	make
 			-- Print each name.
 		do
-			across names as n loop
+			across names as n loop -- E: SYNTAX-END@4
 				print (n.item + "%N")
 		end
 
-feature -- Access -- E: SYNTAX-END
+feature -- Access
 
 	names: ARRAY [STRING]
 		once

@@ -1,7 +1,7 @@
 note
 	description: "The class itself has no closing `end': the parser notices at the end of the file."
 
-class
+class -- E: SYNTAX-END@1
 	MISSING_END_CLASS
 
 create
@@ -13,4 +13,4 @@ feature {NONE} -- Initialization
 			-- Do nothing.
 		do
 		end
--- E: SYNTAX-END
+

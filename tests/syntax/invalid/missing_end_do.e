@@ -11,10 +11,10 @@ feature {NONE} -- Initialization
 
 	make
 			-- Greet.
-		do
+		do -- E: SYNTAX-END@3
 			print ("hello%N")
 
-feature -- Access -- E: SYNTAX-END
+feature -- Access
 
 	name: STRING = "missing end"
 

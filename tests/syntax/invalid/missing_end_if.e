@@ -12,11 +12,11 @@ feature {NONE} -- Initialization
 	make
 			-- Print whether `limit' is large.
 		do
-			if limit > 10 then
+			if limit > 10 then -- E: SYNTAX-END@4
 				print ("large%N")
 		end
 
-feature -- Access -- E: SYNTAX-END
+feature -- Access
 
 	limit: INTEGER = 20
 

@@ -12,7 +12,7 @@ feature {NONE} -- Initialization
 	make
 			-- Name a small number.
 		do
-			inspect count
+			inspect count -- E: SYNTAX-END@4
 			when 1 then
 				print ("one%N")
 			when 2 then
@@ -21,7 +21,7 @@ feature {NONE} -- Initialization
 				print ("many%N")
 		end
 
-feature -- Access -- E: SYNTAX-END
+feature -- Access
 
 	count: INTEGER = 2
 

@@ -14,7 +14,7 @@ feature {NONE} -- Initialization
 		local
 			i: INTEGER
 		do
-			from
+			from -- E: SYNTAX-END@4
 				i := 1
 			until
 				i > 10
@@ -23,7 +23,7 @@ feature {NONE} -- Initialization
 				i := i + 1
 		end
 
-feature -- Access -- E: SYNTAX-END
+feature -- Access
 
 	total: INTEGER
 

@@ -6,10 +6,10 @@ class
 
 inherit
 	ANY
-		redefine
+		redefine -- E: SYNTAX-END@3
 			out
 
-create -- E: SYNTAX-END
+create
 	make
 
 feature {NONE} -- Initialization

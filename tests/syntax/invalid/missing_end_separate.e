@@ -13,11 +13,11 @@ feature {NONE} -- Initialization
 			-- Read a separate cell.
 		do
 			create cell.put (3)
-			separate cell as c do
+			separate cell as c do -- E: SYNTAX-END@4
 				print (c.item.out + "%N")
 		end
 
-feature -- Access -- E: SYNTAX-END
+feature -- Access
 
 	cell: separate CELL [INTEGER]
 

@@ -7,7 +7,7 @@ feature
 		local
 			i: INTEGER
 		do
-			from
+			from -- E: SYNTAX-END@4
 				i := n
 			until
 				i = 0
@@ -16,4 +16,4 @@ feature
 				i := i - 1
 		end
 
-end -- E: SYNTAX-END@1
+end

@@ -5,13 +5,13 @@ feature
 
 	sign (x: INTEGER): INTEGER
 		do
-			if x > 0 then
+			if x > 0 then -- E: SYNTAX-END@4
 				Result := 1
 			elseif x < 0 then
 				Result := -1
 		end
 
-feature -- E: SYNTAX-END@1
+feature
 
 	zero: INTEGER = 0
 

@@ -5,11 +5,11 @@ feature -- First
 
 	f (x: INTEGER)
 		do
-			if x > 0 then
+			if x > 0 then -- E: SYNTAX-END@4
 				print (x)
 		end
 
-feature -- Second -- E: SYNTAX-END@1
+feature -- Second
 
 	g: INTEGER
 		do
