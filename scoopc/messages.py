@@ -16,6 +16,8 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - ECF: a problem in an .ecf project file; ECF-NOTE: an .ecf setting we ignore.
 - ECF-LIBRARY: an .ecf names a library scoopc does not have, or a library .ecf file that is missing.
 - ECF-CYCLE: (a warning) libraries whose .ecf files name each other in a cycle.
+- ECF-CAPABILITY: (a warning) a library whose .ecf says it does not support the application's
+  concurrency (EiffelStudio's order of the capability: thread < none < scoop).
 - ONCE-KEY: a once key other than "PROCESS", "THREAD" or "OBJECT".
 - FORMAL-TRAITOR (a warning): a value of an unmarked formal generic type `G` passed to a
   non-separate formal in a call on a separate target, or a `G` result of such a call used as
@@ -47,6 +49,11 @@ MESSAGES: dict[str, Message] = {
     "ECF-CYCLE": Message(
         "library `{name}` closes a cycle of libraries: {cycle}",
         "each library is read once; break the cycle if EiffelStudio should build the libraries",
+    ),
+    "ECF-CAPABILITY": Message(
+        "library `{name}` supports {capability} `{support}`, not the system's `{wanted}`",
+        "the application's setting applies to the library's classes too; "
+        "check that the library works under `{wanted}` or change the system's {capability}",
     ),
     # --- syntax ---------------------------------------------------------------------------
     "SYNTAX": Message("{found} is not allowed here; expected {expected}", "{hint}"),

@@ -135,7 +135,14 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
     if library_bodies is None:
         library_bodies = not use_cache
     root = (project.root.class_name, project.root.creation) if project.root is not None else None
-    result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base, root=root)
+    result = semantics.check(
+        trees,
+        project.settings.void_safety,
+        library_bodies=library_bodies,
+        base=base,
+        root=root,
+        concurrency=project.concurrency,
+    )
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)
     checked.diagnostics.sort(key=diagnostics.sort_key)

@@ -60,6 +60,13 @@ class Project:
     errors: list[Diagnostic] = field(default_factory=list)
     libraries: list[str] = field(default_factory=list)  # the stdlib clusters the .ecf names
     ecf_files: list[Path] = field(default_factory=list)  # every .ecf read (libraries' included)
+    # (library name, its concurrency support, where it is named): checked against the system's
+    library_concurrency: list[tuple[str, str, Span]] = field(default_factory=list)
+
+    @property
+    def concurrency(self) -> str:
+        """The system's concurrency: the .ecf's, else SCOOP (EiffelStudio's default since ECF 1.16)."""
+        return self.settings.concurrency or "scoop"
 
     def add_file(self, path: Path) -> None:
         resolved = path.resolve()
@@ -84,7 +91,34 @@ def collect(paths: list[str], target: str | None = None) -> Project:
             raise UsageError(f"{raw}: expected a .e file, a directory or an .ecf file")
     if not project.files and not project.errors:
         raise UsageError("no Eiffel source files (.e) found in " + ", ".join(paths))
+    _check_library_concurrency(project)
     return project
+
+
+# EiffelStudio's order of the concurrency capability (Gobo's ET_ECF_CAPABILITY_NAMES: thread <
+# none < scoop): a target supporting one value supports the values before it too.
+CONCURRENCY_ORDER = ("thread", "none", "scoop")
+
+
+def _check_library_concurrency(project: Project) -> None:
+    """The application's concurrency governs every class; a library whose .ecf says it does not
+    support that concurrency is named in a warning (its classes are still compiled)."""
+    wanted = project.concurrency
+    if wanted not in CONCURRENCY_ORDER:
+        return
+    for name, support, span in project.library_concurrency:
+        if support in CONCURRENCY_ORDER and CONCURRENCY_ORDER.index(support) < CONCURRENCY_ORDER.index(wanted):
+            project.notes.append(
+                diagnostics.make(
+                    "ECF-CAPABILITY",
+                    span,
+                    severity=diagnostics.WARNING,
+                    name=name,
+                    capability="concurrency",
+                    support=support,
+                    wanted=wanted,
+                )
+            )
 
 
 def _add_cluster(
@@ -270,6 +304,8 @@ class _EcfReader:
         project, ecf = self.project, self.ecf
         for element in target:
             kind = _local(element.tag)
+            if self.library and kind == "capability":
+                self.read_library_capability(element)
             if self.library and kind in _LIBRARY_ONLY:
                 continue
             if kind == "root":
@@ -283,9 +319,26 @@ class _EcfReader:
             elif kind == "capability":
                 _read_capability(project, element)
             elif kind == "setting":
-                _note(project, ecf, f"setting `{element.get('name')}` is ignored", self.span(element))
+                self.read_setting(element)
             elif kind not in _IGNORED_QUIETLY:
                 _note(project, ecf, f"<{kind}> is not supported and is ignored", self.span(element))
+
+    def read_setting(self, element: ElementTree.Element) -> None:
+        """The settings we honour: `concurrency` (ECF 1.7 to 1.15; `multithreaded` before it),
+        which the capability of ECF 1.16 superseded; any other is named in a note."""
+        name, value = (element.get("name") or "").lower(), (element.get("value") or "").lower()
+        if name == "concurrency" and value in CONCURRENCY_ORDER:
+            self.project.settings.concurrency = value
+        elif name == "multithreaded" and value in ("true", "false"):
+            self.project.settings.concurrency = "thread" if value == "true" else "none"
+        else:
+            _note(self.project, self.ecf, f"setting `{element.get('name')}` is ignored", self.span(element))
+
+    def read_library_capability(self, element: ElementTree.Element) -> None:
+        for child in element:
+            support = (child.get("support") or "").lower()
+            if _local(child.tag) == "concurrency" and support:
+                self.project.library_concurrency.append((self.ecf.stem, support, self.span(child)))
 
     def read_cluster(self, element: ElementTree.Element, base: Path) -> None:
         location = _expand_location(element.get("location", "."), base)

@@ -51,6 +51,9 @@ class ClassInfo:
 class Universe:
     classes: dict[str, ClassInfo] = field(default_factory=dict)
     void_safe: bool = True
+    # a SCOOP system (the default); False under concurrency `thread` or `none`, where, as in
+    # EiffelStudio (`system.is_scoop` guards its SCOOP rules), the program's `separate` means nothing
+    scoop: bool = True
     shadowed: dict[str, str] = field(
         default_factory=dict
     )  # library class name -> its key when a user class has the name
