@@ -8,8 +8,9 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - SYNTAX-RESERVED: a reserved word used where a name is expected.
 - SYNTAX-LEXICAL: a character or literal that is not part of any Eiffel token.
 - SYNTAX-CLASS: the file does not hold exactly one class.
-- SYNTAX-OBSOLETE: pre-ECMA syntax (`indexing`, `is` before a routine body, `creation`,
-  `infix`/`prefix` names) that EiffelStudio accepts only in its obsolete-syntax mode.
+- SYNTAX-OBSOLETE: pre-ECMA syntax: `indexing`, `is` before a routine body or a constant, `?T`,
+  `!T` and `{x: T} e` (an error at the .ecf's `standard` syntax level, the default; a warning at
+  `transitional` and `obsolete`), and `creation`, `infix`/`prefix` names (errors at every level).
 - SYNTAX-FEATURE: an `attribute` body on a feature without a type, or an attribute or
   constant declared with arguments.
 - SOURCE: a file that cannot be read (missing, not UTF-8).
@@ -66,7 +67,7 @@ MESSAGES: dict[str, Message] = {
         "choose another name, for example `{word}_value`",
     ),
     "SYNTAX-LEXICAL": Message("{reason}"),
-    "SYNTAX-OBSOLETE": Message("{what}", "{instead}; scoopc accepts the ECMA-367 syntax of EiffelStudio 7 and later"),
+    "SYNTAX-OBSOLETE": Message("{what}", "{instead}"),
     "SYNTAX-CLASS": Message("{reason}", "Eiffel puts one class in each .e file"),
     "SYNTAX-FEATURE": Message(
         "the feature `{name}` mixes an attribute and a routine: an attribute has a type and no arguments",

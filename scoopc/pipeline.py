@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import gc
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from . import diagnostics
@@ -64,10 +64,22 @@ def parse_project(project: Project) -> Parsed:
             continue
         parsed.sources[source.path] = source
         result = parser.parse(source)
-        parsed.diagnostics.extend(result.diagnostics)
+        parsed.diagnostics.extend(_at_level(result, project.syntax_level(path)))
         parsed.units.append(ParsedUnit(source, result.tree))
     parsed.diagnostics.sort(key=diagnostics.sort_key)
     return parsed
+
+
+def _at_level(result, level: str) -> list[Diagnostic]:
+    """A file's syntax diagnostics at its syntax level: at `transitional` and `obsolete` the
+    pre-ECMA forms the parser accepted (all of a file that parsed: the others stop the parser)
+    are warnings, as EiffelStudio's parser reports them there; at `standard` they are errors."""
+    if level not in ("transitional", "obsolete") or result.tree is None:
+        return list(result.diagnostics)
+    return [
+        replace(d, severity=diagnostics.WARNING, hint=d.hint.split(", or set")[0]) if d.code == "SYNTAX-OBSOLETE" else d
+        for d in result.diagnostics
+    ]
 
 
 @dataclass

@@ -49,6 +49,7 @@ class Settings:
     assertions: str | None = None  # "all" | "require" | "none"; None: the tool's default
     void_safety: str | None = None  # "none" | "conformance" | "initialization" | "transitional" | "all"
     concurrency: str | None = None  # "scoop" | "thread" | "none"
+    syntax: str | None = None  # "obsolete" | "transitional" | "standard" | "provisional"; None: standard
 
 
 @dataclass
@@ -62,6 +63,11 @@ class Project:
     ecf_files: list[Path] = field(default_factory=list)  # every .ecf read (libraries' included)
     # (library name, its concurrency support, where it is named): checked against the system's
     library_concurrency: list[tuple[str, str, Span]] = field(default_factory=list)
+    # the syntax level of the files of each .ecf's clusters (a library's own, else the application's)
+    file_syntax: dict[Path, str] = field(default_factory=dict)
+
+    def syntax_level(self, path: Path) -> str:
+        return self.file_syntax.get(Path(path).resolve(), self.settings.syntax or "standard")
 
     @property
     def concurrency(self) -> str:
@@ -98,6 +104,9 @@ def collect(paths: list[str], target: str | None = None) -> Project:
 # EiffelStudio's order of the concurrency capability (Gobo's ET_ECF_CAPABILITY_NAMES: thread <
 # none < scoop): a target supporting one value supports the values before it too.
 CONCURRENCY_ORDER = ("thread", "none", "scoop")
+# EiffelStudio's syntax levels (EIFFEL_PARSER's obsolete_syntax, transitional_syntax, ecma_syntax
+# for `standard`, provisional_syntax); scoopc reads `provisional` as `standard`.
+SYNTAX_LEVELS = ("obsolete", "transitional", "standard", "provisional")
 
 
 def _check_library_concurrency(project: Project) -> None:
@@ -296,6 +305,7 @@ class _EcfReader:
 
     def __init__(self, project: Project, ecf: Path, positions: dict, chain: tuple, library: bool):
         self.project, self.ecf, self.positions, self.chain, self.library = project, ecf, positions, chain, library
+        self.syntax = "standard"  # this .ecf's own syntax level, for the files of its clusters
 
     def span(self, element) -> Span:
         return _ecf_span(self.ecf, element, self.positions)
@@ -306,6 +316,9 @@ class _EcfReader:
             kind = _local(element.tag)
             if self.library and kind == "capability":
                 self.read_library_capability(element)
+            if self.library and kind == "setting":
+                self.read_setting(element)  # its syntax level (the others are the application's)
+                continue
             if self.library and kind in _LIBRARY_ONLY:
                 continue
             if kind == "root":
@@ -324,10 +337,17 @@ class _EcfReader:
                 _note(project, ecf, f"<{kind}> is not supported and is ignored", self.span(element))
 
     def read_setting(self, element: ElementTree.Element) -> None:
-        """The settings we honour: `concurrency` (ECF 1.7 to 1.15; `multithreaded` before it),
-        which the capability of ECF 1.16 superseded; any other is named in a note."""
+        """The settings we honour: `syntax` (each .ecf's own, for its clusters: a library's too) and
+        `concurrency` (ECF 1.7 to 1.15; `multithreaded` before it; the capability of ECF 1.16
+        superseded both), the application's; any other of the application is named in a note."""
         name, value = (element.get("name") or "").lower(), (element.get("value") or "").lower()
-        if name == "concurrency" and value in CONCURRENCY_ORDER:
+        if name == "syntax" and value in SYNTAX_LEVELS:
+            self.syntax = value  # EiffelStudio applies each .ecf's own level to its clusters
+            if not self.library:
+                self.project.settings.syntax = value
+        elif self.library:
+            return  # a library's other settings: the application's govern every class
+        elif name == "concurrency" and value in CONCURRENCY_ORDER:
             self.project.settings.concurrency = value
         elif name == "multithreaded" and value in ("true", "false"):
             self.project.settings.concurrency = "thread" if value == "true" else "none"
@@ -350,7 +370,10 @@ class _EcfReader:
             )
             return
         recursive = element.get("recursive", "false").lower() == "true"
+        known = len(self.project.files)
         _add_cluster(self.project, location, recursive, _patterns(element, "exclude"), _patterns(element, "include"))
+        for path in self.project.files[known:]:
+            self.project.file_syntax[path.resolve()] = self.syntax
         for sub in _children(element, "cluster"):
             self.read_cluster(sub, location)
 
