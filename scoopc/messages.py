@@ -77,7 +77,7 @@ MESSAGES: dict[str, Message] = {
     "VSCN": Message("class {name} is declared twice (also at {other})", "rename one of the classes"),
     "VTCT": Message(
         "type based on unknown class {name}",
-        "check the spelling, and that the file declaring {name} is in a cluster given to scoopc",
+        "check the spelling, and that the file declaring {name} is in a cluster given to scoopc{library}",
     ),
     "VTUG(1)": Message(
         "{type} is not generic but is given {given} actual generic parameter(s)", "remove the `[...]` after {type}"

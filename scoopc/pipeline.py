@@ -154,6 +154,7 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
         base=base,
         root=root,
         concurrency=project.concurrency,
+        visible=project.visibility(),
     )
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)

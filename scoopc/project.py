@@ -65,6 +65,17 @@ class Project:
     library_concurrency: list[tuple[str, str, Span]] = field(default_factory=list)
     # the syntax level of the files of each .ecf's clusters (a library's own, else the application's)
     file_syntax: dict[Path, str] = field(default_factory=dict)
+    # Visibility, as EiffelStudio groups classes: each file's .ecf, and what each .ecf names
+    # directly (stdlib clusters by name, user libraries by their .ecf); empty without an .ecf.
+    file_group: dict[Path, Path] = field(default_factory=dict)
+    group_names: dict[Path, set] = field(default_factory=dict)
+
+    def visibility(self) -> Visibility | None:
+        """Which classes each class sees; None when every class sees every other (no .ecf: the
+        command line's files and the whole standard library)."""
+        if not self.group_names:
+            return None
+        return Visibility(dict(self.file_group), {g: frozenset(n) for g, n in self.group_names.items()})
 
     def syntax_level(self, path: Path) -> str:
         return self.file_syntax.get(Path(path).resolve(), self.settings.syntax or "standard")
@@ -78,6 +89,31 @@ class Project:
         resolved = path.resolve()
         if all(f.resolve() != resolved for f in self.files):
             self.files.append(path)
+
+
+@dataclass(frozen=True)
+class Visibility:
+    """EiffelStudio's visibility of classes between groups: a class sees the classes of its own
+    .ecf's clusters, of the libraries that .ecf names directly (a library's libraries are its
+    own), and EiffelBase (every system has it; scoopc does not ask for it to be named)."""
+
+    file_group: dict  # file -> the .ecf whose cluster holds it
+    group_names: dict  # .ecf -> the stdlib clusters and the libraries' .ecf files it names
+
+    def __call__(self, from_file: str, to_file: str, to_cluster: str | None) -> bool:
+        """Does a class of `from_file` see the class of `to_file` (of stdlib cluster `to_cluster`,
+        None for a class of the program)?"""
+        group = self.file_group.get(Path(from_file).resolve())
+        if group is None:
+            return True  # a file given on the command line beside the .ecf
+        if to_cluster is not None:
+            return to_cluster == "base" or to_cluster in self.group_names[group]
+        target = self.file_group.get(Path(to_file).resolve())
+        return target is None or target == group or target in self.group_names[group]
+
+    def library_of(self, file: str) -> str:
+        group = self.file_group.get(Path(file).resolve())
+        return group.stem if group is not None else Path(file).parent.name
 
 
 def collect(paths: list[str], target: str | None = None) -> Project:
@@ -306,6 +342,8 @@ class _EcfReader:
     def __init__(self, project: Project, ecf: Path, positions: dict, chain: tuple, library: bool):
         self.project, self.ecf, self.positions, self.chain, self.library = project, ecf, positions, chain, library
         self.syntax = "standard"  # this .ecf's own syntax level, for the files of its clusters
+        self.group = ecf.resolve()
+        project.group_names.setdefault(self.group, set())
 
     def span(self, element) -> Span:
         return _ecf_span(self.ecf, element, self.positions)
@@ -316,9 +354,8 @@ class _EcfReader:
             kind = _local(element.tag)
             if self.library and kind == "capability":
                 self.read_library_capability(element)
-            if self.library and kind == "setting":
-                self.read_setting(element)  # its syntax level (the others are the application's)
-                continue
+            if self.library and kind == "option":
+                self.syntax = _syntax(element, self.syntax)  # its own level (its other options are ignored)
             if self.library and kind in _LIBRARY_ONLY:
                 continue
             if kind == "root":
@@ -329,6 +366,8 @@ class _EcfReader:
                 self.read_library(element)
             elif kind == "option":
                 _read_option(project, element)
+                if _syntax(element, None) is not None:
+                    self.syntax = project.settings.syntax = _syntax(element, self.syntax)
             elif kind == "capability":
                 _read_capability(project, element)
             elif kind == "setting":
@@ -337,17 +376,10 @@ class _EcfReader:
                 _note(project, ecf, f"<{kind}> is not supported and is ignored", self.span(element))
 
     def read_setting(self, element: ElementTree.Element) -> None:
-        """The settings we honour: `syntax` (each .ecf's own, for its clusters: a library's too) and
-        `concurrency` (ECF 1.7 to 1.15; `multithreaded` before it; the capability of ECF 1.16
-        superseded both), the application's; any other of the application is named in a note."""
+        """The settings we honour: the application's `concurrency` (ECF 1.7 to 1.15; `multithreaded`
+        before it; the capability of ECF 1.16 superseded both); any other is named in a note."""
         name, value = (element.get("name") or "").lower(), (element.get("value") or "").lower()
-        if name == "syntax" and value in SYNTAX_LEVELS:
-            self.syntax = value  # EiffelStudio applies each .ecf's own level to its clusters
-            if not self.library:
-                self.project.settings.syntax = value
-        elif self.library:
-            return  # a library's other settings: the application's govern every class
-        elif name == "concurrency" and value in CONCURRENCY_ORDER:
+        if name == "concurrency" and value in CONCURRENCY_ORDER:
             self.project.settings.concurrency = value
         elif name == "multithreaded" and value in ("true", "false"):
             self.project.settings.concurrency = "thread" if value == "true" else "none"
@@ -372,8 +404,12 @@ class _EcfReader:
         recursive = element.get("recursive", "false").lower() == "true"
         known = len(self.project.files)
         _add_cluster(self.project, location, recursive, _patterns(element, "exclude"), _patterns(element, "include"))
+        level = self.syntax  # a cluster's own option overrides its target's
+        for option in _children(element, "option"):
+            level = _syntax(option, level)
         for path in self.project.files[known:]:
-            self.project.file_syntax[path.resolve()] = self.syntax
+            self.project.file_syntax[path.resolve()] = level
+            self.project.file_group[path.resolve()] = self.group
         for sub in _children(element, "cluster"):
             self.read_cluster(sub, location)
 
@@ -387,6 +423,7 @@ class _EcfReader:
         if ours is not None:
             if ours not in project.libraries:
                 project.libraries.append(ours)
+            project.group_names[self.group].add(ours)
             return
         planned = _planned_library(name, raw)
         if planned is not None:
@@ -422,6 +459,7 @@ class _EcfReader:
             )
             return
         resolved = path.resolve()
+        project.group_names[self.group].add(resolved)  # its classes are visible to this .ecf's
         if resolved in self.chain:
             cycle = self.chain[self.chain.index(resolved) :] + (resolved,)
             project.notes.append(
@@ -490,6 +528,12 @@ def _patterns(element: ElementTree.Element, kind: str) -> tuple[re.Pattern, ...]
             except re.error:
                 continue
     return tuple(found)
+
+
+def _syntax(option: ElementTree.Element, level):
+    """The syntax level an <option> sets (its `syntax` attribute), else `level`."""
+    value = (option.get("syntax") or "").lower()
+    return value if value in SYNTAX_LEVELS else level
 
 
 def _read_option(project: Project, element: ElementTree.Element) -> None:

@@ -1,8 +1,8 @@
-"""Syntax levels: the .ecf's `syntax` setting (EiffelStudio's obsolete, transitional, standard,
-provisional). At `standard`, the default, the pre-ECMA forms (`indexing`, `is` before a body or a
-constant, `?T`, `!T`, `{x: T} e`) are errors whose hint names the setting; at `transitional` (and
-`obsolete`) they are warnings and the class compiles and runs. A library's .ecf sets the level
-of its own clusters."""
+"""Syntax levels: the .ecf's `syntax` option (`<option syntax="...">` of a target or a cluster:
+EiffelStudio's obsolete, transitional, standard, provisional). At `standard`, the default, the
+pre-ECMA forms (`indexing`, `is` before a body or a constant, `?T`, `!T`, `{x: T} e`) are errors
+whose hint names the option; at `transitional` (and `obsolete`) they are warnings and the class
+compiles and runs. A library's .ecf sets the level of its own clusters."""
 
 import io
 from pathlib import Path
@@ -34,7 +34,7 @@ def test_at_the_standard_level_each_old_form_is_an_error_naming_the_setting():
     parsed = parse_project(collect([str(FOLDER / "old_style.e")]))
     found = _obsolete(parsed.diagnostics)
     assert [(d.span.line, d.span.column) for d in found] == OLD_FORMS and parsed.has_errors
-    assert all(d.is_error and "setting `syntax` to `transitional`" in d.hint for d in found)
+    assert all(d.is_error and '<option syntax="transitional">' in d.hint for d in found)
     messages = {d.message for d in found}
     assert "`?T` is the obsolete spelling of `detachable T`" in messages
     assert "`!T` is the obsolete spelling of `attached T`" in messages
@@ -75,10 +75,32 @@ def _library_project(tmp_path, library_syntax: str) -> Path:
 
 
 def test_a_library_s_own_syntax_level_applies_to_its_classes(tmp_path):
-    ecf = _library_project(tmp_path, '<setting name="syntax" value="transitional"/>')
+    ecf = _library_project(tmp_path, '<option syntax="transitional"/>')
     project = collect([str(ecf)])
     assert project.settings.syntax is None  # the application's level stays standard
     parsed = parse_project(project)
     assert not parsed.has_errors and len(_obsolete(parsed.diagnostics)) == len(OLD_FORMS)
     standard = parse_project(collect([str(_library_project(tmp_path / "s", ""))]))
     assert standard.has_errors and len(_obsolete(standard.diagnostics)) == len(OLD_FORMS)
+    cluster = collect([str(_library_project(tmp_path / "c", ""))])  # a cluster's own option
+    assert cluster.syntax_level(tmp_path / "c" / "old" / "old_style.e") == "standard"
+
+
+def test_a_cluster_s_option_sets_the_level_of_its_files(tmp_path):
+    (tmp_path / "old").mkdir()
+    (tmp_path / "old" / "old_style.e").write_text((FOLDER / "old_style.e").read_text())
+    ecf = tmp_path / "app.ecf"
+    ecf.write_text(
+        """<?xml version="1.0" encoding="ISO-8859-1"?>
+<system name="app" uuid="00000000-0000-0000-0000-000000000005">
+	<target name="app">
+		<root class="OLD_STYLE" feature="make"/>
+		<cluster name="old" location="old"><option syntax="obsolete"/></cluster>
+	</target>
+</system>
+"""
+    )
+    project = collect([str(ecf)])
+    assert project.settings.syntax is None and project.syntax_level(tmp_path / "old" / "old_style.e") == "obsolete"
+    parsed = parse_project(project)
+    assert not parsed.has_errors and {d.severity for d in _obsolete(parsed.diagnostics)} == {"warning"}

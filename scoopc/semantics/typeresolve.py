@@ -67,7 +67,11 @@ class TypeResolver:
             return Ty("NONE", attached=node.attachment == "attached", separate=self._separate(node.separate))
         target = self.universe.get(self.universe.name_in(key, self.info))
         if target is None:
-            self.report("VTCT", node.name.span, name=node.name.text)
+            library = self.universe.hidden_cluster(key, self.info)
+            where = (
+                f"; it is a class of the library `{library}`, which this class's .ecf does not name" if library else ""
+            )
+            self.report("VTCT", node.name.span, name=node.name.text, library=where)
             return None
         generics = tuple(self.resolve(g) for g in node.generics)
         if any(g is None for g in generics):

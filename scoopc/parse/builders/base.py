@@ -80,7 +80,7 @@ class BuilderBase:
             "SYNTAX-OBSOLETE",
             where,
             what=what,
-            instead=f"{instead}, or set the .ecf's setting `syntax` to `transitional`",
+            instead=f'{instead}, or set the syntax level in the .ecf: <option syntax="transitional">',
         )
 
     def report_at_offset(self, token: Token, offset: int, length: int, reason: str) -> None:
