@@ -83,6 +83,21 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Make the libraries depend on each other in one direction only.",
     ),
+    "ECF-CAPABILITY": _x(
+        """A warning: a library's .ecf says which concurrency it supports (`<capability><concurrency
+        support="..."/></capability>`), and the application uses one the library does not support
+        (EiffelStudio orders the values thread < none < scoop: supporting one means supporting those
+        before it). The application's setting applies to every class, the library's too.""",
+        """
+        <!-- app.ecf -->   <capability><concurrency support="scoop"/></capability>
+        <!-- tools.ecf --> <capability><concurrency support="thread"/></capability>
+        """,
+        """
+        <!-- app.ecf -->   <capability><concurrency support="thread"/></capability>
+        <!-- tools.ecf --> <capability><concurrency support="thread"/></capability>
+        """,
+        "Use a concurrency every library supports, or make the library support the application's.",
+    ),
     # --- syntax -----------------------------------------------------------------------------------
     "SYNTAX": _x(
         """The text does not follow Eiffel's grammar at this point: a token appears where the language

@@ -8,14 +8,17 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - SYNTAX-RESERVED: a reserved word used where a name is expected.
 - SYNTAX-LEXICAL: a character or literal that is not part of any Eiffel token.
 - SYNTAX-CLASS: the file does not hold exactly one class.
-- SYNTAX-OBSOLETE: pre-ECMA syntax (`indexing`, `is` before a routine body, `creation`,
-  `infix`/`prefix` names) that EiffelStudio accepts only in its obsolete-syntax mode.
+- SYNTAX-OBSOLETE: pre-ECMA syntax: `indexing`, `is` before a routine body or a constant, `?T`,
+  `!T` and `{x: T} e` (an error at the .ecf's `standard` syntax level, the default; a warning at
+  `transitional` and `obsolete`), and `creation`, `infix`/`prefix` names (errors at every level).
 - SYNTAX-FEATURE: an `attribute` body on a feature without a type, or an attribute or
   constant declared with arguments.
 - SOURCE: a file that cannot be read (missing, not UTF-8).
 - ECF: a problem in an .ecf project file; ECF-NOTE: an .ecf setting we ignore.
 - ECF-LIBRARY: an .ecf names a library scoopc does not have, or a library .ecf file that is missing.
 - ECF-CYCLE: (a warning) libraries whose .ecf files name each other in a cycle.
+- ECF-CAPABILITY: (a warning) a library whose .ecf says it does not support the application's
+  concurrency (EiffelStudio's order of the capability: thread < none < scoop).
 - ONCE-KEY: a once key other than "PROCESS", "THREAD" or "OBJECT".
 - FORMAL-TRAITOR (a warning): a value of an unmarked formal generic type `G` passed to a
   non-separate formal in a call on a separate target, or a `G` result of such a call used as
@@ -48,6 +51,11 @@ MESSAGES: dict[str, Message] = {
         "library `{name}` closes a cycle of libraries: {cycle}",
         "each library is read once; break the cycle if EiffelStudio should build the libraries",
     ),
+    "ECF-CAPABILITY": Message(
+        "library `{name}` supports {capability} `{support}`, not the system's `{wanted}`",
+        "the application's setting applies to the library's classes too; "
+        "check that the library works under `{wanted}` or change the system's {capability}",
+    ),
     # --- syntax ---------------------------------------------------------------------------
     "SYNTAX": Message("{found} is not allowed here; expected {expected}", "{hint}"),
     "SYNTAX-END": Message(
@@ -59,7 +67,7 @@ MESSAGES: dict[str, Message] = {
         "choose another name, for example `{word}_value`",
     ),
     "SYNTAX-LEXICAL": Message("{reason}"),
-    "SYNTAX-OBSOLETE": Message("{what}", "{instead}; scoopc accepts the ECMA-367 syntax of EiffelStudio 7 and later"),
+    "SYNTAX-OBSOLETE": Message("{what}", "{instead}"),
     "SYNTAX-CLASS": Message("{reason}", "Eiffel puts one class in each .e file"),
     "SYNTAX-FEATURE": Message(
         "the feature `{name}` mixes an attribute and a routine: an attribute has a type and no arguments",

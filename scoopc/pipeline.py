@@ -10,7 +10,7 @@ import gc
 import os
 from collections.abc import Mapping
 from contextlib import contextmanager
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING
 
 from . import diagnostics
@@ -68,10 +68,22 @@ def parse_project(project: Project, overlay: Mapping[str, str] | None = None) ->
             continue
         parsed.sources[source.path] = source
         result = parser.parse(source)
-        parsed.diagnostics.extend(result.diagnostics)
+        parsed.diagnostics.extend(_at_level(result, project.syntax_level(path)))
         parsed.units.append(ParsedUnit(source, result.tree))
     parsed.diagnostics.sort(key=diagnostics.sort_key)
     return parsed
+
+
+def _at_level(result, level: str) -> list[Diagnostic]:
+    """A file's syntax diagnostics at its syntax level: at `transitional` and `obsolete` the
+    pre-ECMA forms the parser accepted (all of a file that parsed: the others stop the parser)
+    are warnings, as EiffelStudio's parser reports them there; at `standard` they are errors."""
+    if level not in ("transitional", "obsolete") or result.tree is None:
+        return list(result.diagnostics)
+    return [
+        replace(d, severity=diagnostics.WARNING, hint=d.hint.split(", or set")[0]) if d.code == "SYNTAX-OBSOLETE" else d
+        for d in result.diagnostics
+    ]
 
 
 @dataclass
@@ -151,7 +163,15 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
     if library_bodies is None:
         library_bodies = not use_cache
     root = (project.root.class_name, project.root.creation) if project.root is not None else None
-    result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base, root=root)
+    result = semantics.check(
+        trees,
+        project.settings.void_safety,
+        library_bodies=library_bodies,
+        base=base,
+        root=root,
+        concurrency=project.concurrency,
+        visible=project.visibility(),
+    )
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)
     checked.diagnostics.sort(key=diagnostics.sort_key)

@@ -50,6 +50,7 @@ class Settings:
     assertions: str | None = None  # "all" | "require" | "none"; None: the tool's default
     void_safety: str | None = None  # "none" | "conformance" | "initialization" | "transitional" | "all"
     concurrency: str | None = None  # "scoop" | "thread" | "none"
+    syntax: str | None = None  # "obsolete" | "transitional" | "standard" | "provisional"; None: standard
 
 
 @dataclass
@@ -61,11 +62,59 @@ class Project:
     errors: list[Diagnostic] = field(default_factory=list)
     libraries: list[str] = field(default_factory=list)  # the stdlib clusters the .ecf names
     ecf_files: list[Path] = field(default_factory=list)  # every .ecf read (libraries' included)
+    # (library name, its concurrency support, where it is named): checked against the system's
+    library_concurrency: list[tuple[str, str, Span]] = field(default_factory=list)
+    # the syntax level of the files of each .ecf's clusters (a library's own, else the application's)
+    file_syntax: dict[Path, str] = field(default_factory=dict)
+    # Visibility, as EiffelStudio groups classes: each file's .ecf, and what each .ecf names
+    # directly (stdlib clusters by name, user libraries by their .ecf); empty without an .ecf.
+    file_group: dict[Path, Path] = field(default_factory=dict)
+    group_names: dict[Path, set] = field(default_factory=dict)
+
+    def visibility(self) -> Visibility | None:
+        """Which classes each class sees; None when every class sees every other (no .ecf: the
+        command line's files and the whole standard library)."""
+        if not self.group_names:
+            return None
+        return Visibility(dict(self.file_group), {g: frozenset(n) for g, n in self.group_names.items()})
+
+    def syntax_level(self, path: Path) -> str:
+        return self.file_syntax.get(Path(path).resolve(), self.settings.syntax or "standard")
+
+    @property
+    def concurrency(self) -> str:
+        """The system's concurrency: the .ecf's, else SCOOP (EiffelStudio's default since ECF 1.16)."""
+        return self.settings.concurrency or "scoop"
 
     def add_file(self, path: Path) -> None:
         resolved = path.resolve()
         if all(f.resolve() != resolved for f in self.files):
             self.files.append(path)
+
+
+@dataclass(frozen=True)
+class Visibility:
+    """EiffelStudio's visibility of classes between groups: a class sees the classes of its own
+    .ecf's clusters, of the libraries that .ecf names directly (a library's libraries are its
+    own), and EiffelBase (every system has it; scoopc does not ask for it to be named)."""
+
+    file_group: dict  # file -> the .ecf whose cluster holds it
+    group_names: dict  # .ecf -> the stdlib clusters and the libraries' .ecf files it names
+
+    def __call__(self, from_file: str, to_file: str, to_cluster: str | None) -> bool:
+        """Does a class of `from_file` see the class of `to_file` (of stdlib cluster `to_cluster`,
+        None for a class of the program)?"""
+        group = self.file_group.get(Path(from_file).resolve())
+        if group is None:
+            return True  # a file given on the command line beside the .ecf
+        if to_cluster is not None:
+            return to_cluster == "base" or to_cluster in self.group_names[group]
+        target = self.file_group.get(Path(to_file).resolve())
+        return target is None or target == group or target in self.group_names[group]
+
+    def library_of(self, file: str) -> str:
+        group = self.file_group.get(Path(file).resolve())
+        return group.stem if group is not None else Path(file).parent.name
 
 
 def collect(paths: list[str], target: str | None = None) -> Project:
@@ -85,7 +134,37 @@ def collect(paths: list[str], target: str | None = None) -> Project:
             raise UsageError(f"{raw}: expected a .e file, a directory or an .ecf file")
     if not project.files and not project.errors:
         raise UsageError("no Eiffel source files (.e) found in " + ", ".join(paths))
+    _check_library_concurrency(project)
     return project
+
+
+# EiffelStudio's order of the concurrency capability (Gobo's ET_ECF_CAPABILITY_NAMES: thread <
+# none < scoop): a target supporting one value supports the values before it too.
+CONCURRENCY_ORDER = ("thread", "none", "scoop")
+# EiffelStudio's syntax levels (EIFFEL_PARSER's obsolete_syntax, transitional_syntax, ecma_syntax
+# for `standard`, provisional_syntax); scoopc reads `provisional` as `standard`.
+SYNTAX_LEVELS = ("obsolete", "transitional", "standard", "provisional")
+
+
+def _check_library_concurrency(project: Project) -> None:
+    """The application's concurrency governs every class; a library whose .ecf says it does not
+    support that concurrency is named in a warning (its classes are still compiled)."""
+    wanted = project.concurrency
+    if wanted not in CONCURRENCY_ORDER:
+        return
+    for name, support, span in project.library_concurrency:
+        if support in CONCURRENCY_ORDER and CONCURRENCY_ORDER.index(support) < CONCURRENCY_ORDER.index(wanted):
+            project.notes.append(
+                diagnostics.make(
+                    "ECF-CAPABILITY",
+                    span,
+                    severity=diagnostics.WARNING,
+                    name=name,
+                    capability="concurrency",
+                    support=support,
+                    wanted=wanted,
+                )
+            )
 
 
 def _add_cluster(
@@ -263,6 +342,9 @@ class _EcfReader:
 
     def __init__(self, project: Project, ecf: Path, positions: dict, chain: tuple, library: bool):
         self.project, self.ecf, self.positions, self.chain, self.library = project, ecf, positions, chain, library
+        self.syntax = "standard"  # this .ecf's own syntax level, for the files of its clusters
+        self.group = ecf.resolve()
+        project.group_names.setdefault(self.group, set())
 
     def span(self, element) -> Span:
         return _ecf_span(self.ecf, element, self.positions)
@@ -271,6 +353,10 @@ class _EcfReader:
         project, ecf = self.project, self.ecf
         for element in target:
             kind = _local(element.tag)
+            if self.library and kind == "capability":
+                self.read_library_capability(element)
+            if self.library and kind == "option":
+                self.syntax = _syntax(element, self.syntax)  # its own level (its other options are ignored)
             if self.library and kind in _LIBRARY_ONLY:
                 continue
             if kind == "root":
@@ -281,12 +367,31 @@ class _EcfReader:
                 self.read_library(element)
             elif kind == "option":
                 _read_option(project, element)
+                if _syntax(element, None) is not None:
+                    self.syntax = project.settings.syntax = _syntax(element, self.syntax)
             elif kind == "capability":
                 _read_capability(project, element)
             elif kind == "setting":
-                _note(project, ecf, f"setting `{element.get('name')}` is ignored", self.span(element))
+                self.read_setting(element)
             elif kind not in _IGNORED_QUIETLY:
                 _note(project, ecf, f"<{kind}> is not supported and is ignored", self.span(element))
+
+    def read_setting(self, element: ElementTree.Element) -> None:
+        """The settings we honour: the application's `concurrency` (ECF 1.7 to 1.15; `multithreaded`
+        before it; the capability of ECF 1.16 superseded both); any other is named in a note."""
+        name, value = (element.get("name") or "").lower(), (element.get("value") or "").lower()
+        if name == "concurrency" and value in CONCURRENCY_ORDER:
+            self.project.settings.concurrency = value
+        elif name == "multithreaded" and value in ("true", "false"):
+            self.project.settings.concurrency = "thread" if value == "true" else "none"
+        else:
+            _note(self.project, self.ecf, f"setting `{element.get('name')}` is ignored", self.span(element))
+
+    def read_library_capability(self, element: ElementTree.Element) -> None:
+        for child in element:
+            support = (child.get("support") or "").lower()
+            if _local(child.tag) == "concurrency" and support:
+                self.project.library_concurrency.append((self.ecf.stem, support, self.span(child)))
 
     def read_cluster(self, element: ElementTree.Element, base: Path) -> None:
         location = _expand_location(element.get("location", "."), base)
@@ -298,7 +403,14 @@ class _EcfReader:
             )
             return
         recursive = element.get("recursive", "false").lower() == "true"
+        known = len(self.project.files)
         _add_cluster(self.project, location, recursive, _patterns(element, "exclude"), _patterns(element, "include"))
+        level = self.syntax  # a cluster's own option overrides its target's
+        for option in _children(element, "option"):
+            level = _syntax(option, level)
+        for path in self.project.files[known:]:
+            self.project.file_syntax[path.resolve()] = level
+            self.project.file_group[path.resolve()] = self.group
         for sub in _children(element, "cluster"):
             self.read_cluster(sub, location)
 
@@ -312,6 +424,7 @@ class _EcfReader:
         if ours is not None:
             if ours not in project.libraries:
                 project.libraries.append(ours)
+            project.group_names[self.group].add(ours)
             return
         planned = _planned_library(name, raw)
         if planned is not None:
@@ -347,6 +460,7 @@ class _EcfReader:
             )
             return
         resolved = path.resolve()
+        project.group_names[self.group].add(resolved)  # its classes are visible to this .ecf's
         if resolved in self.chain:
             cycle = self.chain[self.chain.index(resolved) :] + (resolved,)
             project.notes.append(
@@ -415,6 +529,12 @@ def _patterns(element: ElementTree.Element, kind: str) -> tuple[re.Pattern, ...]
             except re.error:
                 continue
     return tuple(found)
+
+
+def _syntax(option: ElementTree.Element, level):
+    """The syntax level an <option> sets (its `syntax` attribute), else `level`."""
+    value = (option.get("syntax") or "").lower()
+    return value if value in SYNTAX_LEVELS else level
 
 
 def _read_option(project: Project, element: ElementTree.Element) -> None:

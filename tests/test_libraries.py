@@ -130,3 +130,56 @@ def test_entity_declarations_are_refused(tmp_path):
     assert result.status == Exit.SOURCE
     assert [d.code for d in result.diagnostics if d.is_error] == ["ECF"]
     assert "entity declarations are not accepted" in result.diagnostics[0].message
+
+
+LOCKER = """class
+	LOCKER
+
+create
+	make
+
+feature
+
+	make
+		do
+			create lock.make
+			print (lock.is_set.out + "%N")
+		end
+
+	lock: MUTEX
+
+end
+"""
+
+
+def _locker(tmp_path, libraries: str) -> Path:
+    (tmp_path / "locker.e").write_text(LOCKER)
+    ecf = tmp_path / "locker.ecf"
+    ecf.write_text(_ecf(libraries, "locker").replace('class="APP"', 'class="LOCKER"'))
+    return ecf
+
+
+def test_a_library_class_is_visible_only_when_the_ecf_names_its_library(tmp_path):
+    base = '\t\t<library name="base" location="$ISE_LIBRARY/library/base/base.ecf"/>'
+    result = scoopc.check([str(_locker(tmp_path, base))])
+    errors = [d for d in result.diagnostics if d.is_error]
+    assert [(d.code, d.span.line, d.span.column) for d in errors] == [("VTCT", 15, 8)]
+    assert errors[0].hint.endswith("it is a class of the library `thread`, which this class's .ecf does not name")
+    thread = base + '\n\t\t<library name="thread" location="$ISE_LIBRARY/library/thread/thread.ecf"/>'
+    assert scoopc.check([str(_locker(tmp_path, thread))]).status == Exit.OK
+    # without an .ecf every library class is visible, as before (robot programs use Roboscoop so)
+    assert scoopc.check([str(tmp_path / "locker.e")]).status == Exit.OK
+
+
+def test_a_library_s_own_libraries_are_not_visible_to_the_application():
+    """EiffelStudio's groups: the application names shapes only; units, which shapes names, is
+    shapes' own, so the application's use of LENGTH needs units named too."""
+    ecf = LIBRARIES / "two_level" / "app" / "app.ecf"
+    visibility = collect([str(ecf)]).visibility()
+    app = str(LIBRARIES / "two_level" / "app" / "application.e")
+    length = str(LIBRARIES / "two_level" / "units" / "src" / "length.e")
+    assert visibility(app, length, None) and visibility(app, "any.e", "base")
+    assert not visibility(app, "thread.e", "thread") and visibility.library_of(length) == "units"
+    shapes_only = collect([str(ecf)])
+    shapes_only.group_names[ecf.resolve()].discard((LIBRARIES / "two_level" / "units" / "units.ecf").resolve())
+    assert not shapes_only.visibility()(app, length, None)

@@ -1,7 +1,8 @@
-"""Thread systems (EiffelThread): programs that compile and run under today's (SCOOP) rules are
-golden cases (tests/golden/threads_mutex); this file holds those today's checker still refuses,
-each marked with the rule that blocks it, until the .ecf `concurrency` setting selects the rules
-of a thread system."""
+"""Thread systems (EiffelThread) and the .ecf `concurrency` setting: SCOOP's rules apply only
+under `scoop` (the default, also without an .ecf); under `thread` and `none` the program's
+`separate` means nothing, as in EiffelStudio, and a library that does not support the system's
+concurrency is named in a warning. Programs that run under either rules are golden cases
+(tests/golden/threads_mutex)."""
 
 import io
 from pathlib import Path
@@ -10,28 +11,182 @@ import pytest
 
 import scoopc
 from scoopc.exits import Exit
+from scoopc.project import collect
 
 LIBRARIES = Path(__file__).parent / "libraries"
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason=(
-        'VFFD(8) (scoopc/semantics/scoop.py, check_process_once) refuses a `once ("PROCESS")` function '
-        "of the non-separate type MUTEX, the usual lock shared by every thread of a thread system; "
-        "EiffelStudio accepts it when the .ecf's concurrency is `thread`"
-    ),
-)
 def test_a_process_wide_mutex_in_a_thread_system():
+    """process_once.ecf says `concurrency` `thread`: VFFD(8), a SCOOP rule, does not apply."""
     out = io.StringIO()
-    result = scoopc.run([str(LIBRARIES / "process_once")], stdout=out)
+    result = scoopc.run([str(LIBRARIES / "process_once" / "process_once.ecf")], stdout=out)
     assert result.status == Exit.OK, [str(d) for d in result.diagnostics]
     assert out.getvalue() == "total: 2000\n"
 
 
-def test_what_blocks_the_process_wide_mutex_is_vffd_8():
-    result = scoopc.check([str(LIBRARIES / "process_once")])
+def test_without_an_ecf_the_system_is_a_scoop_one_and_vffd_8_applies():
+    result = scoopc.check(
+        [str(LIBRARIES / "process_once" / "process_once.e"), str(LIBRARIES / "process_once" / "tally_thread.e")]
+    )
     assert [(d.code, d.span.line) for d in result.diagnostics if d.is_error] == [("VFFD(8)", 32)]
+
+
+BOX = """class
+	BOX
+
+create
+	make
+
+feature
+
+	make (a_name: STRING)
+		do
+			name := a_name
+			print ("made " + a_name + "%N")
+		end
+
+	name: STRING
+
+	show
+		do
+			print ("box " + name + "%N")
+		end
+
+end
+"""
+
+# Under SCOOP: VUAR(3) (a non-separate STRING to a separate object), VUTA(3) (`b.show` on an
+# attribute), VJAR (`plain := b`), V1SE (a separate block over a non-separate local), VFFD(8);
+# under thread and none, none of them.
+SEPARATE_APP = """class
+	APP
+
+create
+	make
+
+feature
+
+	make
+		local
+			plain: BOX
+		do
+			create b.make ("one")
+			b.show
+			plain := b
+			separate plain as p do
+				p.show
+			end
+			print ("shared: " + shared.name + "%N")
+		end
+
+	b: separate BOX
+
+	shared: BOX
+		once ("PROCESS")
+			create Result.make ("two")
+		end
+
+end
+"""
+
+
+def _concurrency_project(tmp_path, capability: str) -> Path:
+    (tmp_path / "box.e").write_text(BOX)
+    (tmp_path / "app.e").write_text(SEPARATE_APP)
+    ecf = tmp_path / "app.ecf"
+    ecf.write_text(
+        f"""<?xml version="1.0" encoding="ISO-8859-1"?>
+<system name="app" uuid="00000000-0000-0000-0000-000000000000">
+	<target name="app">
+		<root class="APP" feature="make"/>
+		{capability}
+		<library name="base" location="$ISE_LIBRARY/library/base/base.ecf"/>
+		<cluster name="app" location="."/>
+	</target>
+</system>
+"""
+    )
+    return ecf
+
+
+@pytest.mark.parametrize(
+    "capability, concurrency",
+    [
+        ("", "scoop"),  # the default since ECF 1.16
+        ('<capability><concurrency support="none"/></capability>', "none"),
+        ('<capability><concurrency support="scoop" use="thread"/></capability>', "thread"),
+        ('<setting name="concurrency" value="none"/>', "none"),  # ECF 1.7 to 1.15
+        ('<setting name="multithreaded" value="true"/>', "thread"),  # before ECF 1.7
+    ],
+)
+def test_the_system_concurrency_comes_from_the_ecf(tmp_path, capability, concurrency):
+    project = collect([str(_concurrency_project(tmp_path, capability))])
+    assert project.concurrency == concurrency and not project.notes
+
+
+@pytest.mark.parametrize(
+    "capability",
+    ['<capability><concurrency support="none"/></capability>', '<setting name="multithreaded" value="true"/>'],
+)
+def test_separate_means_nothing_in_a_thread_or_none_system(tmp_path, capability):
+    """Every call is a plain call: the output comes in program order, from one processor."""
+    out = io.StringIO()
+    result = scoopc.run([str(_concurrency_project(tmp_path, capability))], stdout=out, trace_processors=True)
+    assert result.status == Exit.OK, [str(d) for d in result.diagnostics]
+    lines = out.getvalue().splitlines()
+    assert [line.split("] ", 1)[1] for line in lines] == ["made one", "box one", "box one", "made two", "shared: two"]
+    assert len({line.split("]", 1)[0] for line in lines}) == 1  # no processor besides the root's
+
+
+def test_the_same_program_as_a_scoop_system_breaks_scoop_rules(tmp_path):
+    ecf = _concurrency_project(tmp_path, '<capability><concurrency support="scoop"/></capability>')
+    result = scoopc.check([str(ecf)])
+    assert sorted(d.code for d in result.diagnostics if d.is_error) == ["V1SE", "VFFD(8)", "VJAR", "VUAR(3)", "VUTA(3)"]
+
+
+def test_a_library_that_does_not_support_the_system_concurrency_is_named_in_a_warning(tmp_path):
+    library = tmp_path / "tools"
+    library.mkdir()
+    (library / "box.e").write_text(BOX)
+    (library / "tools.ecf").write_text(
+        """<?xml version="1.0" encoding="ISO-8859-1"?>
+<system name="tools" uuid="00000000-0000-0000-0000-000000000001" library_target="tools">
+	<target name="tools">
+		<capability>
+			<concurrency support="thread"/>
+		</capability>
+		<cluster name="tools" location="."/>
+	</target>
+</system>
+"""
+    )
+    app = tmp_path / "app"
+    app.mkdir()
+    (app / "app.e").write_text(
+        SEPARATE_APP.replace("b: separate BOX", "b: BOX").replace(
+            "separate plain as p do", "if attached plain as p then"
+        )
+    )
+    (app / "app.ecf").write_text(
+        """<?xml version="1.0" encoding="ISO-8859-1"?>
+<system name="app" uuid="00000000-0000-0000-0000-000000000002">
+	<target name="app">
+		<root class="APP" feature="make"/>
+		<capability>
+			<concurrency support="none"/>
+		</capability>
+		<library name="tools" location="../tools/tools.ecf"/>
+		<cluster name="app" location="."/>
+	</target>
+</system>
+"""
+    )
+    result = scoopc.check([str(app / "app.ecf")])
+    warnings = [d for d in result.diagnostics if d.code == "ECF-CAPABILITY"]
+    assert [(w.severity, w.message, w.span.line) for w in warnings] == [
+        ("warning", "library `tools` supports concurrency `thread`, not the system's `none`", 5)
+    ]
+    assert not [d for d in result.diagnostics if d.is_error]
 
 
 def test_an_exception_in_a_thread_ends_the_program_with_its_eiffel_trace():

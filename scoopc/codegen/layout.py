@@ -51,6 +51,9 @@ def make_layout(universe, info, layouts: dict) -> Layout:
         if parent is not None and parent.name in layouts and parent.name not in bases:
             bases.append(parent.name)
     mro = c3(info.name, bases, layouts)
+    if mro is None:  # `inherit ANY; ARGUMENTS`: a parent that is another's ancestor adds nothing
+        bases = [b for b in bases if not any(b in layouts[other].mro[1:] for other in bases if other != b)]
+        mro = c3(info.name, bases, layouts)
     if mro is None:  # an order Python cannot linearise: keep the first parent
         bases = bases[:1]
         mro = c3(info.name, bases, layouts)

@@ -219,6 +219,7 @@ class Compilation:
                 self.assertions_option,
                 self.project.settings.assertions,
                 self.project.root.class_name if self.project.root else None,
+                self.project.concurrency,  # decides what `separate` compiles to
             ]
         )
         key = program_key([Path(p) for p in self.project.files], extra)

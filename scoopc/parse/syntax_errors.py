@@ -120,7 +120,6 @@ def _hint(token: Token, expected: set, stack: list) -> str:
 
 # Pre-ECMA spellings still found in old course material and old example programs.
 _OBSOLETE = {
-    ("IDENTIFIER", "indexing"): ("`indexing` is the obsolete spelling of `note`", "write `note` instead"),
     ("IDENTIFIER", "creation"): ("`creation` is the obsolete spelling of `create`", "write `create` instead"),
     ("IS", "is"): (
         "`is` before a routine body or a constant's value is obsolete syntax",
@@ -155,7 +154,7 @@ def _obsolete(token: Token, expected: set, stack: list) -> dict | None:
         entry = ("`{x: T} e` is the obsolete form of an object test", "write `attached {T} e as x`")
     if entry is None:
         return None
-    return {"what": entry[0], "instead": entry[1]}
+    return {"what": entry[0], "instead": entry[1] + "; scoopc accepts ECMA-367's form only"}
 
 
 def _replay(lark_parser: Any, text: str, stop: Token) -> tuple[Any, Token | None]:

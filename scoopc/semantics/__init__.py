@@ -24,10 +24,13 @@ class Checked:
     diagnostics: list = field(default_factory=list)
 
 
-def prepare(trees, found: list, base=None):
+def prepare(trees, found: list, base=None, scoop: bool = True, visible=None):
     """The universe of `trees` with ancestors, feature tables and signatures (no bodies checked);
-    with `base` (a prepared universe of library classes), only the new classes are prepared."""
+    with `base` (a prepared universe of library classes), only the new classes are prepared.
+    `scoop` False: a `thread` or `none` system, where the program's `separate` marks mean nothing.
+    `visible`: which classes a class of the program sees (project.Project.visibility)."""
     universe = universe_module.build(trees, found, base)
+    universe.scoop, universe.visible = scoop, visible
     fresh = [i for i in universe.classes.values() if base is None or base.classes.get(i.name) is not i]
     order = ancestors.compute(universe, _reporter(universe, found, None), fresh)
     for info in order:  # after an unknown parent, its features are missing: stay silent
@@ -44,17 +47,24 @@ def prepare(trees, found: list, base=None):
 
 
 def check(
-    trees, void_safety=None, library_bodies: bool = True, base=None, root: tuple[str, str] | None = None
+    trees,
+    void_safety=None,
+    library_bodies: bool = True,
+    base=None,
+    root: tuple[str, str] | None = None,
+    concurrency: str = "scoop",
+    visible=None,
 ) -> Checked:
     """`trees`: [(ClassDeclaration, from_library)]. library_bodies False skips the routine
     bodies of library classes (already known clean, e.g. from the cache). `base`: the library's
     prepared universe (its classes are then not in `trees`). `root`: (class, creation procedure)
-    when the project names its root, checked against VSRT and VSRP."""
+    when the project names its root, checked against VSRT and VSRP. `concurrency`: the system's
+    (scoop, thread or none); SCOOP's rules apply only under scoop. `visible`: see `prepare`."""
     found: list = []
     level = VOID_LEVELS.get((void_safety or "complete").lower(), 3)
     if base is not None and any(base.get(tree.name.text) is not None for tree, _ in trees):
         base = None  # a user class replaces a library class: start afresh
-    universe, order = prepare(trees, found, base)
+    universe, order = prepare(trees, found, base, scoop=concurrency == "scoop", visible=visible)
     universe.void_safe = level >= 1
     tables = Tables()
     checked = order if base is not None else list(universe.classes.values())

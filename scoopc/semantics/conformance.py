@@ -68,7 +68,7 @@ def why_not(universe, source: Ty, target: Ty, context=None) -> str | None:
             if not expanded and (not target.attached or not universe.void_safe or target.is_formal)
             else ("type" if expanded else "detachable")
         )
-    if source.separate and not target.separate:
+    if source.separate and not target.separate and universe.scoop:  # EiffelStudio: is_processor_attachable_to
         return "separate" if _class_conforms(universe, source, target, context) else "type"
     if not _class_conforms(universe, source, target, context):
         return "type"

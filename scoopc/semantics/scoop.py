@@ -17,8 +17,9 @@ from .walk import children, describe
 
 
 def check_target(ctx, target_node, value: Value) -> bool:
-    """VUTA(3) (Gobo VUTA-4G): a call on a separate target needs the target controlled."""
-    if value.controlled:
+    """VUTA(3) (Gobo VUTA-4G): a call on a separate target needs the target controlled (in a
+    SCOOP system; elsewhere a separate value from the library is an ordinary one)."""
+    if value.controlled or not ctx.universe.scoop:
         return True
     ctx.report("VUTA(3)", target_node.span, target=describe(target_node), type=str(value.ty), fresh=fresh(target_node))
     return False
@@ -191,8 +192,10 @@ def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Value
     if clashes:
         ctx.report("FRESH_IDENTIFIER", argument.name.span, name=argument.name.text)
         return False
-    if value is not None and (
-        is_expanded(ctx.universe, value.ty) or not (value.ty.separate or separate_by_constraint(ctx, value.ty))
+    if (
+        value is not None
+        and ctx.universe.scoop  # not a SCOOP system: the program's separate types are ordinary ones
+        and (is_expanded(ctx.universe, value.ty) or not (value.ty.separate or separate_by_constraint(ctx, value.ty)))
     ):
         expanded = is_expanded(ctx.universe, value.ty)
         ctx.report(
@@ -215,8 +218,8 @@ def assign_to_separate_local(ctx, target_node, name: str) -> None:
 def check_process_once(ctx, feature, result: Ty | None) -> None:
     """VFFD(8): a `once ("PROCESS")` function is shared by all processors, so its result must be
     separate (or expanded): a non-separate reference would be reachable from other processors."""
-    if result is None or not any(k.upper() == "PROCESS" for k in feature.once_keys):
-        return
+    if result is None or not ctx.universe.scoop or not any(k.upper() == "PROCESS" for k in feature.once_keys):
+        return  # EiffelStudio checks VFFD(8) only in a SCOOP system (FEATURE_I, `system.is_scoop`)
     if not result.separate and not is_expanded(ctx.universe, result):
         ctx.report("VFFD(8)", feature.fname.name.span, name=feature.text, type=str(result))
 

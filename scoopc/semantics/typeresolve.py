@@ -41,10 +41,18 @@ class TypeResolver:
             return self._tuple_type(node)
         return self._anchored(node)
 
+    def _separate(self, mark: bool) -> bool:
+        """A `separate` mark as it counts here: in a system that is not a SCOOP one, EiffelStudio
+        gives the program's `separate` no meaning (a separate type is an ordinary one; only the
+        standard library keeps its SCOOP signatures, compiled once)."""
+        return mark and (self.universe.scoop or self.info.from_library)
+
     def _marks(self, node, ty: Ty) -> Ty:
         expanded = (info := self.universe.get(ty.name)) is not None and info.is_expanded and not ty.is_formal
         attached = expanded or node.attachment != "detachable"
-        return ty.with_marks(attached=attached, separate=node.separate or (ty.separate and not expanded))
+        return ty.with_marks(
+            attached=attached, separate=self._separate(node.separate or (ty.separate and not expanded))
+        )
 
     def _class_type(self, node: syntax.ClassType) -> Ty | None:
         key = node.name.key.upper()
@@ -57,10 +65,17 @@ class TypeResolver:
             if node.generics:
                 self.report("VTUG(1)", node.span, type="NONE", expected=0, given=len(node.generics))
                 return None
-            return Ty("NONE", attached=node.attachment == "attached", separate=node.separate)
+            return Ty("NONE", attached=node.attachment == "attached", separate=self._separate(node.separate))
         target = self.universe.get(self.universe.name_in(key, self.info))
         if target is None:
-            hint = suggest.unknown_class(self.universe, node.name.text)
+            library = self.universe.hidden_cluster(key, self.info)
+            if library:
+                hint = (
+                    f"check the spelling, and that the file declaring {node.name.text} is in a cluster given to scoopc;"
+                    f" it is a class of the library `{library}`, which this class's .ecf does not name"
+                )
+            else:
+                hint = suggest.unknown_class(self.universe, node.name.text)
             self.report("VTCT", node.name.span, name=node.name.text, hint=hint)
             return None
         generics = tuple(self.resolve(g) for g in node.generics)
@@ -148,7 +163,7 @@ class TypeResolver:
             self.report("VTAT(1)", node.span, anchor=_anchor_text(anchor))
             return None
         attached = found.attached if node.attachment is None else node.attachment != "detachable"
-        return found.with_marks(attached=attached, separate=found.separate or node.separate)
+        return found.with_marks(attached=attached, separate=self._separate(found.separate or node.separate))
 
     def _static_anchor(self, anchor: syntax.StaticCall) -> Ty | None:
         """`like {T}.f`: the type of T's feature f."""

@@ -8,10 +8,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from .. import diagnostics, syntax
 from ..diagnostics import Diagnostic
 from .types import ALIASES, Ty
+
+HIDDEN = "@HIDDEN"  # marks a class name a class cannot see (not in a library its .ecf names)
 
 
 @dataclass(eq=False)
@@ -51,6 +54,12 @@ class ClassInfo:
 class Universe:
     classes: dict[str, ClassInfo] = field(default_factory=dict)
     void_safe: bool = True
+    # a SCOOP system (the default); False under concurrency `thread` or `none`, where, as in
+    # EiffelStudio (`system.is_scoop` guards its SCOOP rules), the program's `separate` means nothing
+    scoop: bool = True
+    # which classes a class of the program sees (project.Project.visibility); None: all of them
+    visible: Any = None  # project.Visibility (a test and the library of a file)
+    clusters: dict = field(default_factory=dict)  # library class name -> its stdlib cluster (memo)
     shadowed: dict[str, str] = field(
         default_factory=dict
     )  # library class name -> its key when a user class has the name
@@ -70,7 +79,30 @@ class Universe:
         key = self.canonical(name)
         if info is not None and info.from_library:
             return self.shadowed.get(key, key)
+        if self.visible is not None and info is not None and (target := self.classes.get(key)) is not None:
+            if not self.visible(info.decl.span.file, target.decl.span.file, self.cluster_of(target)):
+                return key + HIDDEN
         return key
+
+    def cluster_of(self, info: ClassInfo) -> str | None:
+        """The stdlib cluster (base, thread, time, roboscoop) of a library class; None for the
+        program's classes."""
+        if not info.from_library:
+            return None
+        if info.name not in self.clusters:
+            path = Path(info.decl.span.file)
+            parts = path.parts
+            found = next((parts[i + 1] for i in range(len(parts) - 1) if parts[i] == "stdlib"), "base")
+            self.clusters[info.name] = found
+        return self.clusters[info.name]
+
+    def hidden_cluster(self, name: str, info: ClassInfo | None) -> str | None:
+        """The library a class named `name` belongs to when it exists but `info` does not see it."""
+        key = self.canonical(name)
+        target = self.classes.get(key)
+        if target is None or info is None or self.name_in(name, info) != key + HIDDEN:
+            return None
+        return self.cluster_of(target) or self.visible.library_of(target.decl.span.file)  # type: ignore[union-attr]
 
 
 def stdlib_root() -> Path:

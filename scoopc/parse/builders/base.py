@@ -73,6 +73,16 @@ class BuilderBase:
         span = where if isinstance(where, Span) else self.span(where, where)
         self.problems.append(diagnostics.make(code, span, **arguments))
 
+    def obsolete_form(self, where: Any, what: str, instead: str) -> None:
+        """A pre-ECMA form the parser accepts: an error at the `standard` syntax level, a warning
+        at `transitional` and `obsolete` (the pipeline applies the project's level)."""
+        self.report(
+            "SYNTAX-OBSOLETE",
+            where,
+            what=what,
+            instead=f'{instead}, or set the syntax level in the .ecf: <option syntax="transitional">',
+        )
+
     def report_at_offset(self, token: Token, offset: int, length: int, reason: str) -> None:
         """A lexical problem `offset` characters into a token."""
         before = token.value[:offset]

@@ -72,6 +72,8 @@ class ClassBuilder(BuilderBase):
 
     # ---- notes -----------------------------------------------------------------------
     def note_clause(self, c: list) -> Keyworded:
+        if c[0].type == "INDEXING":
+            self.obsolete_form(c[0], "`indexing` is the obsolete spelling of `note`", "write `note` instead")
         return Keyworded.of(c[0], (entry for entry in c[1:] if entry is not None))
 
     def note_entry(self, c: list) -> s.Note:

@@ -163,6 +163,12 @@ class ExpressionBuilder(BuilderBase):
         keyword, _, type_, expression, local = c
         return s.ObjectTest(type_, expression, local, self.span(keyword, local or expression))
 
+    def obsolete_object_test(self, c: list) -> s.ObjectTest:
+        """`{x: T} e`, the object test before ECMA-367: `attached {T} e as x`."""
+        opening, name, colon, type_, expression = c
+        self.obsolete_form(colon, "`{x: T} e` is the obsolete form of an object test", "write `attached {T} e as x`")
+        return s.ObjectTest(type_, expression, self.ident(name), self.span(opening, expression))
+
     def object_test_local(self, c: list) -> s.Identifier:
         return self.ident(c[0])
 

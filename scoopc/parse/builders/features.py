@@ -65,6 +65,17 @@ class FeatureBuilder(BuilderBase):
     def constant_value(self, c: list) -> s.Expression:
         return c[0]
 
+    def obsolete_constant_value(self, c: list) -> s.Expression:
+        self._obsolete_is(c[0])
+        return c[1]
+
+    def _obsolete_is(self, token) -> None:
+        self.obsolete_form(
+            token,
+            "`is` before a routine body or a constant's value is obsolete syntax",
+            "delete `is` before a routine's body; write a constant as `Name: TYPE = value`",
+        )
+
     def formal_arguments(self, c: list) -> tuple:
         return tuple(entity for group in c[1:-1] if group is not None for entity in group)
 
@@ -74,7 +85,9 @@ class FeatureBuilder(BuilderBase):
 
     # ---- routine bodies --------------------------------------------------------------
     def feature_body(self, c: list) -> s.RoutineBody:
-        obsolete, precondition, locals_, body, postcondition, rescue, end = c
+        is_, obsolete, precondition, locals_, body, postcondition, rescue, end = c
+        if is_ is not None:
+            self._obsolete_is(is_)
         start = _first(obsolete, precondition, locals_ and locals_[0], body)
         entities = locals_[1] if locals_ is not None else ()
         message = obsolete.value if obsolete is not None else None

@@ -12,6 +12,8 @@ from .base import BuilderBase
 
 _ATTACHMENT = {"attached", "detachable"}
 _VARIANCE = {"frozen", "variant"}
+# The attachment marks before ECMA-367's keywords (EiffelStudio 6.x): `?T` detachable, `!T` attached.
+_OLD_MARKS = {"?": "detachable", "!": "attached"}
 
 
 class TypeBuilder(BuilderBase):
@@ -19,7 +21,14 @@ class TypeBuilder(BuilderBase):
         base = c[-1]
         if len(c) == 1:
             return base
-        words = [mark.value.lower() for mark in c[:-1]]
+        words = [_OLD_MARKS.get(mark.value, mark.value.lower()) for mark in c[:-1]]
+        for mark in c[:-1]:
+            if mark.value in _OLD_MARKS:
+                self.obsolete_form(
+                    mark,
+                    f"`{mark.value}T` is the obsolete spelling of `{_OLD_MARKS[mark.value]} T`",
+                    f"write `{_OLD_MARKS[mark.value]} T`",
+                )
         attachment = next((w for w in words if w in _ATTACHMENT), None)
         variance = next((w for w in words if w in _VARIANCE), None)
         return dataclasses.replace(
