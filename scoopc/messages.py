@@ -16,6 +16,10 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - ECF: a problem in an .ecf project file; ECF-NOTE: an .ecf setting we ignore.
 - ECF-LIBRARY: an .ecf names a library scoopc does not have, or a library .ecf file that is missing.
 - ECF-CYCLE: (a warning) libraries whose .ecf files name each other in a cycle.
+- EXTERNAL: an `external` routine of the program that cannot be bound: an unknown language
+  string or form, a Python module or function that is not there, a type that cannot cross to C.
+- EXTERNAL-BUILD: the program's C or C++ externals cannot be built (no compiler, a missing
+  header or library, a compiler error).
 - ONCE-KEY: a once key other than "PROCESS", "THREAD" or "OBJECT".
 - FORMAL-TRAITOR (a warning): a value of an unmarked formal generic type `G` passed to a
   non-separate formal in a call on a separate target, or a `G` result of such a call used as
@@ -350,4 +354,6 @@ MESSAGES: dict[str, Message] = {
     "ONCE-KEY": Message(
         'unknown once key "{key}"', 'use "PROCESS", "THREAD" or "OBJECT" (or none: once per processor)'
     ),
+    "EXTERNAL": Message("{reason}", "see docs/LANGUAGE.md, Externals, for the forms scoopc accepts"),
+    "EXTERNAL-BUILD": Message("{reason}", "{hint}"),
 }

@@ -75,6 +75,7 @@ class Checked(Parsed):
     """Parsed plus what the checker proved (None when syntax errors stopped it)."""
 
     semantics: semantics_checked | None = None
+    externals: object = None  # semantics.externals.ProgramExternals: the program's externals
 
 
 def _parse_library_file(path) -> tuple:
@@ -117,6 +118,7 @@ def check_project(
 def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed, progress) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
     from .semantics import library  # deferred: start-up (scoopc.semantics.library loads only when this is used)
+    from .semantics import externals  # deferred: start-up, as the checker
 
     checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
     library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache, progress)
@@ -138,6 +140,8 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
     result = semantics.check(trees, project.settings.void_safety, library_bodies=library_bodies, base=base, root=root)
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)
+    problems, checked.externals = externals.check(result.universe, project)
+    checked.diagnostics.extend(problems)
     checked.diagnostics.sort(key=diagnostics.sort_key)
     return checked
 

@@ -30,6 +30,7 @@ from ..project import Project, collect
 from ..semantics import Checked as SemanticsChecked
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root
+from . import externals
 from .library import Library, compiled_library
 from .packages import (
     BASE_PACKAGE,
@@ -156,7 +157,8 @@ class Compilation:
         if package not in self._modules:
             sem = self.semantics
             leaves: list[str] = []
-            options = Options(assertions=self.assertions, package=package)
+            c_modules = tuple((plan.language, plan.name) for plan in externals.plans(self.checked.externals, self.project))
+            options = Options(assertions=self.assertions, package=package, c_modules=c_modules)
             modules = generate(
                 sem.universe,
                 sem.tables,
@@ -177,6 +179,8 @@ class Compilation:
         write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).", (BASE_PACKAGE,))
         (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
         (folder / "__main__.py").write_text(_main_text(package, self.root, dict(sem.universe.shadowed)))
+        externals.copy_python_modules(self.checked.externals, folder)
+        externals.build_all(self.checked.externals, self.project, folder)
         outdir.mark(folder)
         return CompiledProgram(
             out, package, self.root, self.library.path, dict(sem.universe.shadowed), uses_roboscoop(self.project.files)
@@ -214,6 +218,7 @@ class Compilation:
                 self.assertions_option,
                 self.project.settings.assertions,
                 self.project.root.class_name if self.project.root else None,
+                externals.inputs_digest(self.project),
             ]
         )
         key = program_key([Path(p) for p in self.project.files], extra)
