@@ -117,8 +117,10 @@ def check_project(
 
 def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed, progress) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
-    from .semantics import library  # deferred: start-up (scoopc.semantics.library loads only when this is used)
-    from .semantics import externals  # deferred: start-up, as the checker
+    from .semantics import (
+        externals,  # deferred: start-up, as the checker
+        library,  # deferred: start-up (scoopc.semantics.library loads only when this is used)
+    )
 
     checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
     library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache, progress)

@@ -381,7 +381,13 @@ class _EcfReader:
         _read_ecf(project, path, None, self.chain, self.span(element))
 
 
-_EXTERNAL_ELEMENTS = {"external_include", "external_object", "external_library", "external_cflag", "external_linker_flag"}
+_EXTERNAL_ELEMENTS = {
+    "external_include",
+    "external_object",
+    "external_library",
+    "external_cflag",
+    "external_linker_flag",
+}
 
 
 def _read_external(project: Project, element: ElementTree.Element, kind: str, base: Path) -> None:
@@ -397,7 +403,7 @@ def _read_external(project: Project, element: ElementTree.Element, kind: str, ba
     if kind == "external_linker_flag":
         found.linker_flags += value.split()
         return
-    raw = (element.get("location") or value).replace("$(ECF_CONFIG_PATH)", str(base)).strip().strip('"')
+    raw = (element.get("location") or value).replace("$(ECF_CONFIG_PATH)", str(base.resolve())).strip().strip('"')
     if kind == "variable":
         found.python_paths += [_expand_location(part, base) for part in raw.split(os.pathsep) if part]
     elif kind == "external_include":

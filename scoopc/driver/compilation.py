@@ -128,7 +128,18 @@ class Compilation:
         """The checked program; SourceErrors when it has errors."""
         if self.checked.has_errors:
             raise SourceErrors(self.checked.diagnostics)
+        try:
+            self.c_modules  # noqa: B018 - built now: a build failure is the source's error
+        except SourceErrors as failed:
+            self.checked.diagnostics.extend(failed.diagnostics)
+            raise SourceErrors(self.checked.diagnostics) from None
         return self.checked
+
+    @cached_property
+    def c_modules(self) -> list[Path]:
+        """The extension modules of the program's C and C++ externals, built with cffi (or taken
+        from the cache); SourceErrors naming what is missing when they cannot be built."""
+        return externals.build_all(self.checked.externals, self.project)
 
     @property
     def semantics(self) -> SemanticsChecked:
@@ -157,7 +168,9 @@ class Compilation:
         if package not in self._modules:
             sem = self.semantics
             leaves: list[str] = []
-            c_modules = tuple((plan.language, plan.name) for plan in externals.plans(self.checked.externals, self.project))
+            c_modules = tuple(
+                (plan.language, plan.name) for plan in externals.plans(self.checked.externals, self.project)
+            )
             options = Options(assertions=self.assertions, package=package, c_modules=c_modules)
             modules = generate(
                 sem.universe,
@@ -180,7 +193,8 @@ class Compilation:
         (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
         (folder / "__main__.py").write_text(_main_text(package, self.root, dict(sem.universe.shadowed)))
         externals.copy_python_modules(self.checked.externals, folder)
-        externals.build_all(self.checked.externals, self.project, folder)
+        for module in self.c_modules:
+            shutil.copy2(module, folder / module.name)
         outdir.mark(folder)
         return CompiledProgram(
             out, package, self.root, self.library.path, dict(sem.universe.shadowed), uses_roboscoop(self.project.files)

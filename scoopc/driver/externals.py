@@ -20,6 +20,7 @@ import subprocess
 import sys
 import sysconfig
 from pathlib import Path
+from typing import Any, NoReturn
 
 from .. import diagnostics
 from ..exits import SourceErrors
@@ -60,10 +61,10 @@ def python_files(dirs: list[Path]) -> list[tuple[str, Path]]:
     return sorted(found.items())
 
 
-def copy_python_modules(program: ProgramExternals, package: Path) -> None:
+def copy_python_modules(program: object, package: Path) -> None:
     """Copy the modules beside the program's classes (and on the .ecf's python_path) into the
     package, when a class of the program has an external "Python" of its own."""
-    if not program.python_modules:
+    if not isinstance(program, ProgramExternals) or not program.python_modules:
         return
     target = package / PYTHON_FOLDER
     target.mkdir(exist_ok=True)
@@ -105,7 +106,9 @@ class CPlan:
         headers = list(dict.fromkeys(h for item in items for h in item.spec.headers))
         self.source = _PRELUDE + "".join(f"#include {h}\n" for h in headers) + "".join(map(_wrapper, items))
         key = hashlib.sha256(
-            json.dumps([__version__, language, self.cdef, self.source, self.include_dirs, _settings_key(settings)]).encode()
+            json.dumps(
+                [__version__, language, self.cdef, self.source, self.include_dirs, _settings_key(settings)]
+            ).encode()
         )
         for path in settings.objects:
             if path.is_file():
@@ -116,7 +119,7 @@ class CPlan:
 _PRELUDE_CDEF = "\n".join(line for line in _PRELUDE.splitlines() if not line.startswith("#")) + "\n"
 
 
-def _settings_key(settings: ExternalSettings) -> list:
+def _settings_key(settings: ExternalSettings) -> list[object]:
     return [
         [str(p) for p in settings.objects],
         settings.libraries,
@@ -126,8 +129,8 @@ def _settings_key(settings: ExternalSettings) -> list:
     ]
 
 
-def plans(program: ProgramExternals | None, project: Project) -> list[CPlan]:
-    if program is None or not program.c:
+def plans(program: object, project: Project) -> list[CPlan]:
+    if not isinstance(program, ProgramExternals) or not program.c:
         return []
     include = list(program.python_dirs)  # the classes' folders: `use "mine.h"` finds headers beside them
     found = []
@@ -165,7 +168,7 @@ def _declaration(item: CExternal) -> str:
 
 def _wrapper(item: CExternal) -> str:
     arguments, result = _types(item)
-    span = item.span
+    span: Any = item.span
     line = f'#line {span.line} "{span.file}"\n' if span is not None else ""
     if item.spec.inline:
         code = item.alias
@@ -182,7 +185,7 @@ def _wrapper(item: CExternal) -> str:
     return f"static {_declaration(item)} {{\n{line}{code}\n}}\n"
 
 
-def build(plan: CPlan, spans: list) -> Path:
+def build(plan: CPlan, spans: list[Any]) -> Path:
     """The extension module of `plan`, from the cache or built now; SourceErrors naming what is
     missing when it cannot be built."""
     folder = cache_dir() / "c" / plan.name
@@ -210,7 +213,7 @@ def build(plan: CPlan, spans: list) -> Path:
     if result.returncode != 0:
         shutil.rmtree(staging, ignore_errors=True)
         reason, hint = explain_failure(result.stdout + result.stderr, plan)
-        _fail(spans, reason, hint)
+        _fail([s for item, s in zip(plan.items, spans) if _names_header(item, reason)] or spans, reason, hint)
     for leftover in list(staging.iterdir()):
         if not leftover.name.startswith(plan.name + "."):
             shutil.rmtree(leftover, ignore_errors=True) if leftover.is_dir() else leftover.unlink()
@@ -230,12 +233,14 @@ def _built(folder: Path, name: str) -> Path | None:
 
 
 def _compiler(language: str) -> str | None:
-    if language == "c++":
-        return shutil.which(os.environ.get("CXX", "c++")) or shutil.which("g++")
-    return shutil.which(os.environ.get("CC", "cc")) or shutil.which("gcc")
+    variable, defaults = ("CXX", ("c++", "g++")) if language == "c++" else ("CC", ("cc", "gcc"))
+    named = os.environ.get(variable, "").split()
+    if named:
+        return shutil.which(named[0])
+    return next((found for name in defaults if (found := shutil.which(name)) is not None), None)
 
 
-def _build_request(plan: CPlan, staging: Path) -> dict:
+def _build_request(plan: CPlan, staging: Path) -> dict[str, Any]:
     settings = plan.settings
     sources = [str(p) for p in settings.objects if p.suffix.lower() in _SOURCES]
     objects = [str(p) for p in settings.objects if p.suffix.lower() not in _SOURCES]
@@ -283,8 +288,10 @@ except ImportError as problem:
 def explain_failure(output: str, plan: CPlan) -> tuple[str, str]:
     """The reason and hint of a failed build, from the compiler's and cffi's output."""
     header = re.search(r"fatal error: ([^:\n]+): No such file or directory", output)
-    if header is not None:
+    if header is not None and not header.group(1).endswith(_SOURCES):
         return f"C header {header.group(1)} not found", "check the name in `use`, or name its folder in the .ecf"
+    if header is not None:
+        return f"C source {header.group(1)} not found", "check the .ecf's <external_object>"
     library = re.search(r"cannot find -l(\S+)", output) or re.search(r"cannot find (\S+):", output)
     if library is not None:
         return (
@@ -300,17 +307,22 @@ def explain_failure(output: str, plan: CPlan) -> tuple[str, str]:
     cdef = re.search(r"scoopc-cdef-error: (.*)", output)
     if cdef is not None:
         return f"a C type in a signature is not known: {cdef.group(1)}", "write C's own types or EIF_* types"
-    errors = [line.strip() for line in output.splitlines() if "error" in line.lower()][:6]
-    text = "; ".join(errors) if errors else output.strip().splitlines()[-1:] and output.strip().splitlines()[-1]
-    return f"the program's {plan.language.upper()} externals do not compile: {text}", "fix the C code the message quotes"
+    errors = [line.strip() for line in output.splitlines() if re.search(r":\d+(:\d+)?: (fatal )?error:", line)][:6]
+    text = "; ".join(errors) if errors else (output.strip().splitlines() or ["no output"])[-1]
+    return (
+        f"the program's {plan.language.upper()} externals do not compile: {text}",
+        "fix the C code the message quotes",
+    )
 
 
-def _fail(spans: list, reason: str, hint: str):
+def _names_header(item: CExternal, reason: str) -> bool:
+    return any(f"header {h[1:-1]} " in reason for h in item.spec.headers)
+
+
+def _fail(spans: list[Any], reason: str, hint: str) -> NoReturn:
     raise SourceErrors([diagnostics.make("EXTERNAL-BUILD", spans[0] if spans else None, reason=reason, hint=hint)])
 
 
-def build_all(program: ProgramExternals | None, project: Project, package: Path) -> None:
-    """Build (or take from the cache) each C/C++ module of the program and copy it into `package`."""
-    for plan in plans(program, project):
-        built = build(plan, [item.span for item in plan.items])
-        shutil.copy2(built, package / built.name)
+def build_all(program: object, project: Project) -> list[Path]:
+    """Build (or take from the cache) each C/C++ module of the program."""
+    return [build(plan, [item.span for item in plan.items]) for plan in plans(program, project)]

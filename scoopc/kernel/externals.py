@@ -94,7 +94,9 @@ def _resolving(current, feature, target, resolve):
     try:
         return resolve()
     except Exception as problem:  # noqa: BLE001 - any failure to load the user's module is the external's
-        raise _failure(current, f"external {feature} cannot load Python {target}: {_text(problem)}", problem)
+        raise _failure(
+            current, f"external {feature} cannot load Python {target}: {_text(problem)}", problem
+        ) from problem
 
 
 # --- calling ----------------------------------------------------------------------------------------
@@ -110,7 +112,7 @@ def _call(current, feature, what, fn, kinds, result, args, ffi):
     except _PASSED_THROUGH:
         raise
     except Exception as problem:  # noqa: BLE001 - every host failure is the external's failure
-        raise _failure(current, f"{what} failed in external {feature}: {_text(problem)}", problem)
+        raise _failure(current, f"{what} failed in external {feature}: {_text(problem)}", problem) from problem
 
 
 def _to_host(kind, value, keep: list, ffi):

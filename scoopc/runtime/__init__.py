@@ -5,8 +5,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING, TypeVar
 
-from . import reservation as _reservation  # noqa: F401  (installs Processor.reserve)
-from . import externals  # noqa: F401  (the program's externals run through it: externals.call)
+from . import (
+    externals,  # noqa: F401  (the program's externals run through it: externals.call)
+    reservation as _reservation,  # noqa: F401  (installs Processor.reserve)
+)
 from .errors import DeadlockError, DirtyRegionError, PreconditionViolation, ScoopError, Shutdown, UncontrolledTarget
 from .externals import InsideExternal, inside_externals
 from .main import current, finish, run_main, start

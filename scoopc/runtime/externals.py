@@ -54,7 +54,7 @@ def call(proc: Processor | None, feature: str, what: str, fn: Callable[..., obje
     """Run `fn(*args)`, the host function of external `feature`, on the calling thread, which runs
     `proc`: marked inside the external and without its run permit meanwhile."""
     ex = proc.exec if proc is not None else None
-    if ex is None:
+    if proc is None or ex is None:
         return fn(*args)
     rt = proc.rt
     record = InsideExternal(proc, feature, what, time.monotonic())

@@ -54,7 +54,7 @@ def _describe(blk: Block) -> str:
     if blk.kind == "sync":
         assert isinstance(on, Session)
         what = getattr(blk.what, "__qualname__", blk.what)
-        inside = on.proc.rt.inside.get(on.proc.exec) if on.proc.exec is not None else None  # type: ignore[call-overload]
+        inside = on.proc.rt.inside.get(on.proc.exec) if on.proc.exec is not None else None
         running = f", which is inside external {inside.feature} ({inside.what})" if inside is not None else ""
         return f"{blk.proc!r} in {where} waits for the result of {what} on {on.proc!r}{running}"
     if blk.kind == "turn":

@@ -103,7 +103,7 @@ def _headers(rest: str) -> tuple[tuple[str, ...], str]:
     headers = tuple(h.strip() for h in found.group(1).split(",") if h.strip())
     for header in headers:
         if not re.fullmatch(r'<[^<>"]+>|"[^"]+"|[\w./-]+\.h(?:pp)?', header):
-            raise ValueError(f"a header is written <name.h> or %\"name.h%\", not {header}")
+            raise ValueError(f'a header is written <name.h> or %"name.h%", not {header}')
     return tuple(h if h[0] in '<"' else f'"{h}"' for h in headers), ""
 
 
@@ -216,8 +216,9 @@ def _check_python(feature, inner, program: ProgramExternals, found: list) -> Non
             _error(
                 inner.span,
                 f'`{feature.text}`: an external "Python" names its function with alias "module.function" '
-                f'or "module.Class.method", not {alias!r}' if alias else f'`{feature.text}`: an external "Python" '
-                'needs alias "module.function" (or "module.Class.method")',
+                f'or "module.Class.method", not {alias!r}'
+                if alias
+                else f'`{feature.text}`: an external "Python" needs alias "module.function" (or "module.Class.method")',
             )
         )
         return
