@@ -274,9 +274,12 @@ class ClassGen:
         result = feature.signature.result
         result = P.const(externals.kind_of(universe, result) if result is not None else None)
         name = P.const(f"{eiffel_class_name(self.info.name)}.{feature.name}")
+        if spec.language == "python" and not inner.alias and externals.kernel_provides(self.info.name, feature.name):
+            return None  # a class replacing a library class: the kernel's own external
         if spec.language == "python":
             self.user_externals.add("KX")
-            binding = P.call("KX.python_external", [P.name("__name__"), name, P.const(inner.alias), kinds, result])
+            target = P.const(externals.python_alias(self.info.name, feature.name, inner.alias))
+            binding = P.call("KX.python_external", [P.name("__name__"), name, target, kinds, result])
         elif spec.language in ("c", "c++"):
             self.user_externals.update(("KX", spec.language))
             cx = C_MODULE_ALIAS[spec.language]

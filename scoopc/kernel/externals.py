@@ -68,13 +68,25 @@ def c_external(lib, ffi, symbol: str, feature: str, alias: str, arguments: tuple
     return external
 
 
+_FOLDERS: list[str] = []  # the programs' module folders put on sys.path by this process, latest last
+
+
 def _use_program_modules(package: str) -> None:
     """Put the program's copy of the user's modules first on sys.path (as Python puts a script's
-    folder), once."""
+    folder), once. A program run after another in the same process (the Python API, tests) does
+    not see the other's modules: its folder leaves sys.path and its modules sys.modules."""
     owner = sys.modules.get(package.rpartition(".")[0] or package)
-    folder = Path(getattr(owner, "__file__", "") or ".").parent / PYTHON_FOLDER
-    if folder.is_dir() and str(folder) not in sys.path:
-        sys.path.insert(0, str(folder))
+    folder = str(Path(getattr(owner, "__file__", "") or ".").parent / PYTHON_FOLDER)
+    if not Path(folder).is_dir() or (_FOLDERS and _FOLDERS[-1] == folder):
+        return
+    for old in _FOLDERS:
+        if old in sys.path:
+            sys.path.remove(old)
+        for name, module in list(sys.modules.items()):
+            if (getattr(module, "__file__", None) or "").startswith(old + "/"):
+                del sys.modules[name]
+    _FOLDERS[:] = [folder]
+    sys.path.insert(0, folder)
 
 
 def _import_longest(target: str):
@@ -83,7 +95,10 @@ def _import_longest(target: str):
     for split in range(len(parts) - 1, 0, -1):
         name = ".".join(parts[:split])
         try:
-            return importlib.import_module(name), parts[split:]
+            module = importlib.import_module(name)
+            if hasattr(sys.modules.get(parts[0]), "CLASSES_BY_NAME"):
+                raise ImportError(f"`{parts[0]}` is the name of a compiled Eiffel package: rename the module")
+            return module, parts[split:]
         except ModuleNotFoundError as missing:
             if missing.name is None or not name.startswith(missing.name):
                 raise  # a module the user's module imports is missing: say so

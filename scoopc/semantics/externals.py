@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import ast
 import importlib.util
+import keyword
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -204,23 +205,19 @@ def _check_one(universe, info, feature, inner, program: ProgramExternals, found:
     if signature is None:
         return
     if spec.language == "python":
-        _check_python(feature, inner, program, found)
+        _check_python(info, feature, inner, program, found)
     elif spec.language in ("c", "c++"):
         _check_c(universe, info, feature, inner, spec, program, found)
 
 
-def _check_python(feature, inner, program: ProgramExternals, found: list) -> None:
-    alias = inner.alias
+def _check_python(info, feature, inner, program: ProgramExternals, found: list) -> None:
+    if not inner.alias and kernel_provides(info.name, feature.name):
+        return  # a class of the program that replaces a library class keeps the kernel's externals
+    alias = python_alias(info.name, feature.name, inner.alias)
     if not alias or not re.fullmatch(r"[A-Za-z_]\w*(\.[A-Za-z_]\w*)+", alias):
-        found.append(
-            _error(
-                inner.span,
-                f'`{feature.text}`: an external "Python" names its function with alias "module.function" '
-                f'or "module.Class.method", not {alias!r}'
-                if alias
-                else f'`{feature.text}`: an external "Python" needs alias "module.function" (or "module.Class.method")',
-            )
-        )
+        wrong = f", not {alias!r}" if alias else ""
+        reason = f'`{feature.text}`: an external "Python" names its function with alias "module.function" or '
+        found.append(_error(inner.span, reason + f'"module.Class.method"{wrong}'))
         return
     parts = alias.split(".")
     for split in range(len(parts) - 1, 0, -1):
@@ -242,6 +239,25 @@ def _check_python(feature, inner, program: ProgramExternals, found: list) -> Non
             f"({searched}), not on the .ecf's python_path and not installed",
         )
     )
+
+
+def python_alias(class_name: str, feature: str, alias: str | None) -> str:
+    """What an external "Python" calls: its alias, or without one the function named like the
+    feature in the module named like the class, in lower case (as the kernel's own externals)."""
+    return alias or f"{class_name.split('@')[0].lower()}.{feature}"
+
+
+def kernel_provides(class_name: str, feature: str) -> bool:
+    """Does scoopc's kernel have the `external "Python"` of a library class's `feature` (for a
+    program class named like a library class)? Read from the kernel's source, not imported."""
+    try:
+        spec = importlib.util.find_spec(f"scoopc.kernel.ext.{class_name.split('@')[0].lower()}")
+    except (ImportError, ValueError):
+        return False
+    if spec is None or spec.origin is None:
+        return False
+    name = feature + "_" if keyword.iskeyword(feature) else feature
+    return _missing_name(Path(spec.origin), name) is None
 
 
 def _find_module(dirs: list[Path], dotted: list[str]) -> tuple[Path, Path] | None:
