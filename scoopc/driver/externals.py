@@ -292,7 +292,7 @@ def explain_failure(output: str, plan: CPlan) -> tuple[str, str]:
         return f"C header {header.group(1)} not found", "check the name in `use`, or name its folder in the .ecf"
     if header is not None:
         return f"C source {header.group(1)} not found", "check the .ecf's <external_object>"
-    library = re.search(r"cannot find -l(\S+)", output) or re.search(r"cannot find (\S+):", output)
+    library = re.search(r"cannot find -l([\w.+-]+)", output) or re.search(r"cannot find (\S+):", output)
     if library is not None:
         return (
             f"library {library.group(1)} not found when linking the program's C externals",

@@ -151,3 +151,16 @@ def test_ctrl_c_while_the_main_thread_is_inside_a_c_external():
         child.kill()
     assert child.returncode == 130
     assert "stopped by SIGINT while P1(SPIN) is inside external SPIN.spin (C inline)" in err
+
+
+@pytest.mark.slow  # builds C with cffi
+def test_a_missing_library_named_in_the_ecf(tmp_path):
+    (tmp_path / "app.e").write_text(BROKEN.format(header="math.h", name="sin"))
+    (tmp_path / "app.ecf").write_text(
+        '<?xml version="1.0"?>\n<system xmlns="http://www.eiffel.com/developers/xml/configuration-1-22-0" name="app">'
+        '<target name="app"><root class="APP" feature="make"/>'
+        '<external_library location="-lscoopc_no_such_library"/><cluster name="app" location="."/></target></system>'
+    )
+    result, _, _ = run(tmp_path / "app.ecf")
+    [found] = [d for d in result.diagnostics if d.code == "EXTERNAL-BUILD"]
+    assert "library scoopc_no_such_library not found" in found.message
