@@ -137,20 +137,37 @@ def test_language_strings_refused(text, reason):
         parse_spec(text)
 
 
+def interrupted(program: Path) -> tuple[int, str]:
+    """Run `program` in a child, press Ctrl-C once it is inside its C external: (status, stderr)."""
+    child = subprocess.Popen([sys.executable, "-m", "scoopc", "run", str(program)], stderr=subprocess.PIPE, text=True)
+    before = []
+    try:
+        for line in child.stderr:  # the C external says "spinning" once it runs
+            if line.strip() == "spinning":
+                break
+            before.append(line)
+        assert child.poll() is None, "".join(before)
+        child.send_signal(signal.SIGINT)
+        _, err = child.communicate(timeout=120)
+    finally:
+        child.kill()
+    return child.returncode, "".join(before) + err
+
+
 @pytest.mark.slow
 @pytest.mark.skipif(not hasattr(signal, "SIGINT") or sys.platform == "win32", reason="POSIX signals")
 def test_ctrl_c_while_the_main_thread_is_inside_a_c_external():
-    child = subprocess.Popen(
-        [sys.executable, "-m", "scoopc", "run", str(HERE / "c_spin" / "spin.e")], stderr=subprocess.PIPE, text=True
-    )
-    try:
-        assert child.stderr.readline().strip() == "spinning"
-        child.send_signal(signal.SIGINT)
-        _, err = child.communicate(timeout=30)
-    finally:
-        child.kill()
-    assert child.returncode == 130
+    status, err = interrupted(HERE / "c_spin" / "spin.e")
+    assert status == 130
     assert "stopped by SIGINT while P1(SPIN) is inside external SPIN.spin (C inline)" in err
+
+
+@pytest.mark.slow
+@pytest.mark.skipif(not hasattr(signal, "SIGINT") or sys.platform == "win32", reason="POSIX signals")
+def test_ctrl_c_while_a_worker_is_inside_a_c_external():
+    status, err = interrupted(HERE / "c_spin_worker")
+    assert status == 130
+    assert "scoopc: interrupted while P2(SPINNER) is inside external SPINNER.spin (C inline)" in err
 
 
 @pytest.mark.slow  # builds C with cffi
