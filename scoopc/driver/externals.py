@@ -24,12 +24,12 @@ from typing import Any, NoReturn
 
 from .. import diagnostics
 from ..exits import SourceErrors
+from ..kernel.externals import PYTHON_FOLDER
 from ..project import ExternalSettings, Project
 from ..semantics.externals import CExternal, ProgramExternals, c_type
 from ..semantics.library import cache_dir
 from ..version import __version__
 
-PYTHON_FOLDER = "_python"  # as scoopc.kernel.externals reads it
 # C types of Eiffel's run time that signatures may name (EiffelStudio's eif_portable.h).
 _PRELUDE = """#include <stdint.h>
 #include <stddef.h>
