@@ -52,6 +52,9 @@ def parse_args(argv):
     size.add_argument("--quick", action="store_true", help="1,000 timed messages per responder")
     size.add_argument("--smoke", action="store_true", help="100 timed messages: for tests")
     parser.add_argument("-n", type=int, metavar="N", help="timed messages per responder (default 10,000)")
+    parser.add_argument(
+        "--domain", type=int, metavar="ID", help="the loopback DDS domain id (default: random in 100..200)"
+    )
     parser.add_argument("--only", choices=("baseline", "compiled"), help="measure one responder")
     parser.add_argument("--echo", action="store_true", help=argparse.SUPPRESS)
     return parser.parse_args(argv)
@@ -281,7 +284,7 @@ def main(argv=None):
     from scoopc.robots import dds
 
     folder = tempfile.mkdtemp(prefix="scoopc-latency-")
-    settings = dds.loopback_environment(folder, random.randint(100, 200))
+    settings = dds.loopback_environment(folder, args.domain if args.domain is not None else random.randint(100, 200))
     os.environ.update(settings)
     env = dict(os.environ, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
     print(

@@ -53,6 +53,9 @@ def parse_args(argv):
     size.add_argument("--smoke", action="store_true", help="0.2 s per controller: for tests")
     parser.add_argument("--seconds", type=float, metavar="S", help="timed seconds per controller (default 3)")
     parser.add_argument("--repeat", type=int, metavar="R", help="runs per measurement (best is kept)")
+    parser.add_argument(
+        "--domain", type=int, metavar="ID", help="the loopback DDS domain id (default: random in 100..200)"
+    )
     parser.add_argument("--transport", choices=("bus", "dds", "both"), default="both")
     parser.add_argument("--layout", choices=("separate", "shared", "both"), default="both")
     parser.add_argument("--child", nargs=3, metavar=("TRANSPORT", "LAYOUT", "S"), help=argparse.SUPPRESS)
@@ -203,7 +206,9 @@ def main(argv=None):
     sys.path.insert(0, ROOT)
     from scoopc.robots import dds
 
-    settings = dds.loopback_environment(tempfile.mkdtemp(prefix="scoopc-rate-"), random.randint(100, 200))
+    settings = dds.loopback_environment(
+        tempfile.mkdtemp(prefix="scoopc-rate-"), args.domain if args.domain is not None else random.randint(100, 200)
+    )
     env = dict(os.environ, **settings, PYTHONPATH=ROOT + os.pathsep + os.environ.get("PYTHONPATH", ""))
     transports = ["bus", "dds"] if args.transport == "both" else [args.transport]
     layouts = ["separate", "shared"] if args.layout == "both" else [args.layout]

@@ -1,4 +1,4 @@
-"""The Python API: `scoopc.check`, `scoopc.compile` and `scoopc.run` do what the commands of the
+"""The Python API: `scoopc.check`, `scoopc.compile`, `scoopc.run` and `scoopc.test` do what the commands of the
 same names do, with options as keyword arguments and results as records (scoopc.results), never
 printing diagnostics (docs/API.md). A usage mistake raises scoopc.UsageError; source errors come
 back as the result's diagnostics with status 1."""
@@ -9,15 +9,26 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, TextIO
 
-from .driver import Compilation, RunOptions, run_compilation
+from .driver import Compilation, RunOptions, TestOptions, run_compilation, run_tests
 from .exits import Exit, SourceErrors, UsageError
-from .results import CheckResult, CompileResult, RunResult
+from .results import CheckResult, CompileResult, RunResult, TestOutcome, TestResult
 from .robots.runner import RobotOptions
 
 PathLike = str | Path
 Progress = Callable[[str], None] | None
 
-__all__ = ["CheckResult", "CompileResult", "RunResult", "UsageError", "check", "compile", "run"]
+__all__ = [
+    "CheckResult",
+    "CompileResult",
+    "RunResult",
+    "TestOutcome",
+    "TestResult",
+    "UsageError",
+    "check",
+    "compile",
+    "run",
+    "test",
+]
 
 
 def check(paths: Sequence[PathLike], *, target: str | None = None) -> CheckResult:
@@ -77,6 +88,8 @@ def run(
     use_sim_time: bool = False,
     wait_robot: float = 3.0,
     require_robot: bool = False,
+    profile: PathLike | None = None,
+    node_name: str | None = None,
 ) -> RunResult:
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
@@ -98,6 +111,8 @@ def run(
         use_sim_time=use_sim_time,
         wait_robot=wait_robot,
         require_robot=require_robot,
+        profile=profile,
+        node_name=node_name,
     )
     try:
         result = run_compilation(compilation, args, options, robot_options, use_cache=cache)
@@ -105,4 +120,30 @@ def run(
         return RunResult(Exit.SOURCE, errors.diagnostics)
     if compilation.was_checked:  # compiled now, not taken from the cache
         result.diagnostics = compilation.checked.diagnostics
+    return result
+
+
+def test(
+    paths: Sequence[PathLike],
+    *,
+    target: str | None = None,
+    assertions: str | None = None,
+    pattern: str | None = None,
+    timeout: float = 30.0,
+    junit: PathLike | None = None,
+    debug: bool = False,
+    progress: Progress = None,
+    on_outcome: Callable[[TestOutcome], None] | None = None,
+) -> TestResult:
+    """Run the program's tests (the procedures of its descendants of EQA_TEST_SET), each in a
+    runtime of its own within `timeout` seconds, as `scoopc test` does; `pattern` selects (-k),
+    `junit` names a JUnit XML file to write, `on_outcome` is told of each test as it ends. The
+    result's `status` is 0 when every test passed, 1 when one failed or the program has errors."""
+    compilation = Compilation(paths, target=target, assertions=assertions, progress=progress)
+    options = TestOptions(pattern, timeout, junit, debug, on_outcome)
+    try:
+        result = run_tests(compilation, options)
+    except SourceErrors as errors:
+        return TestResult(Exit.SOURCE, errors.diagnostics)
+    result.diagnostics = compilation.checked.diagnostics
     return result

@@ -87,8 +87,41 @@ def build_parser() -> argparse.ArgumentParser:
     _add_run_options(run)
     run.set_defaults(handler=_command_run)
 
+    _add_test_command(commands)
     _add_robot_commands(commands)
     return top
+
+
+def _add_test_command(commands) -> None:
+    test = commands.add_parser(
+        "test",
+        help="run the tests of a program (EQA_TEST_SET descendants)",
+        description="Check the program, then run its tests as EiffelStudio's AutoTest finds them: "
+        "every procedure without arguments that a descendant of EQA_TEST_SET exports to all "
+        "clients, each in a runtime of its own (its own processors and once values); a "
+        "ROBOT_TEST_SET runs in a simulated world. A failed assertion, a contract violation, "
+        "an exception, a deadlock, a lost exception or the time limit fails a test, with its "
+        "report. Exit status: 0 when every test passed, 1 when one failed or the program has "
+        "errors, 2 for bad usage (no test found, say).",
+    )
+    _add_source_options(test)
+    _add_assertions_option(test)
+    test.add_argument(
+        "-k",
+        dest="pattern",
+        metavar="PATTERN",
+        help="run the tests whose CLASS.routine contains PATTERN (or matches it as a glob: *, ?, [])",
+    )
+    test.add_argument(
+        "--timeout",
+        type=_positive,
+        default=30.0,
+        metavar="SECONDS",
+        help="wall-clock seconds a test may take before it fails (default 30)",
+    )
+    test.add_argument("--junit", metavar="FILE", help="also write the outcomes as JUnit XML (for graders and CI)")
+    test.add_argument("--debug", action="store_true", help="also show Python tracebacks of failures")
+    test.set_defaults(handler=_command_test)
 
 
 def _add_source_options(command: argparse.ArgumentParser) -> None:
@@ -110,6 +143,10 @@ def _add_compile_options(command: argparse.ArgumentParser) -> None:
         "the class named like the single file or directory, else the one class with "
         "a `make` no other class uses)",
     )
+    _add_assertions_option(command)
+
+
+def _add_assertions_option(command: argparse.ArgumentParser) -> None:
     command.add_argument(
         "--assertions",
         choices=("all", "require", "none"),
@@ -201,6 +238,17 @@ def _add_run_options(command: argparse.ArgumentParser) -> None:
         action="store_true",
         help="ROS 2: fail (exit 3) when a subscribed topic is still silent after --wait-robot seconds",
     )
+    robot.add_argument(
+        "--node-name",
+        metavar="NAME",
+        help="ROS 2: the program's node name in the ROS graph (default: the root class in lower case)",
+    )
+    robot.add_argument(
+        "--profile",
+        metavar="FILE",
+        help="the robot profile of DIFF_DRIVE_ROBOT.make_from_profile: topic names, command type, QoS, limits "
+        "(default: robot.yaml beside the program, if any)",
+    )
 
 
 def _add_distro_option(group) -> None:
@@ -234,6 +282,16 @@ def _add_robot_commands(commands) -> None:
     )
     msg.set_defaults(handler=_command_msg)
 
+    lsp = commands.add_parser(
+        "lsp",
+        help="run the language server for editors (LSP over stdio)",
+        description="Run the language server on stdin and stdout for an editor: the checker's "
+        "diagnostics as you type, hover, go to definition, references, completion, outline, folding "
+        "and quick fixes (docs/EDITOR.md).",
+    )
+    lsp.add_argument("--stdio", action="store_true", help="talk over stdin and stdout (the default and only way)")
+    lsp.set_defaults(handler=_command_lsp)
+
     sim = commands.add_parser(
         "sim",
         help="run the simulator as a ROS 2 (DDS) node",
@@ -255,6 +313,13 @@ def _non_negative(text: str) -> float:
         raise argparse.ArgumentTypeError(f"not a number of seconds: {text!r}") from None
     if value < 0 or value != value:
         raise argparse.ArgumentTypeError(f"a duration must not be negative: {text!r}")
+    return value
+
+
+def _positive(text: str) -> float:
+    value = _non_negative(text)
+    if value == 0:
+        raise argparse.ArgumentTypeError(f"a time limit must be more than 0 seconds: {text!r}")
     return value
 
 
@@ -338,6 +403,8 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
         use_sim_time=args.use_sim_time,
         wait_robot=args.wait_robot,
         require_robot=args.require_robot,
+        profile=args.profile,
+        node_name=args.node_name,
     )
     try:
         compilation.cached_program(use_cache=not args.no_cache)
@@ -345,6 +412,47 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
         if compilation.was_checked:  # checked now, not taken from the cache
             _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
     return run_compilation(compilation, program_args, options, robot).status
+
+
+def _command_lsp(args: argparse.Namespace) -> int:
+    from .lsp import server  # deferred: pygls and the checker load only for the server (start-up)
+
+    return server.main()
+
+
+def _command_test(args: argparse.Namespace) -> int:
+    from .driver import TestOptions, run_tests  # deferred: the code generator (start-up)
+
+    compilation = _compilation(args, assertions=args.assertions)
+    options = TestOptions(
+        args.pattern,
+        args.timeout,
+        args.junit,
+        args.debug,
+        _show_outcome,
+        lambda: _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format),
+    )
+    result = run_tests(compilation, options)
+    for outcome in result.failed:
+        _show_failure(outcome)
+    print(result.summary(), flush=True)
+    if result.junit:
+        print(f"scoopc: JUnit XML written to {result.junit}", file=sys.stderr)
+    return result.status
+
+
+def _show_outcome(outcome) -> None:
+    verdict = {"passed": "ok", "failed": "FAILED", "timeout": "TIMED OUT"}[outcome.status]
+    print(f"{outcome.name} ... {verdict} ({outcome.seconds:.2f} s)", flush=True)
+
+
+def _show_failure(outcome) -> None:
+    print(f"\n==== {outcome.name} ({outcome.file}:{outcome.line}) ====")
+    print(outcome.report)
+    if outcome.output:
+        print("---- its output ----")
+        print(outcome.output.rstrip("\n"))
+    print()
 
 
 def _command_msg(args: argparse.Namespace) -> int:

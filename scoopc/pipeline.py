@@ -7,6 +7,8 @@ Stages produce diagnostics; only the CLI renders them.
 from __future__ import annotations
 
 import gc
+import os
+from collections.abc import Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -52,13 +54,15 @@ def read_source(path: str) -> tuple[SourceFile | None, Diagnostic | None]:
     return None, diagnostics.make("SOURCE", Span(path, 1, 1, 1, 2), path=path, reason=reason)
 
 
-def parse_project(project: Project) -> Parsed:
-    """Parse every file of the project; syntax errors are collected, never raised."""
+def parse_project(project: Project, overlay: Mapping[str, str] | None = None) -> Parsed:
+    """Parse every file of the project; syntax errors are collected, never raised. `overlay`
+    ({absolute path: text}) replaces the text on disk of those files (an editor's unsaved buffers)."""
     from .parse import parser  # deferred: building the grammar is the costly part of start-up
 
     parsed = Parsed(diagnostics=list(project.errors) + list(project.notes))
     for path in project.files:
-        source, problem = read_source(str(path))
+        text = overlay.get(os.path.abspath(path)) if overlay else None
+        source, problem = (SourceFile(str(path), text), None) if text is not None else read_source(str(path))
         if problem is not None:
             parsed.diagnostics.append(problem)
             continue
@@ -107,23 +111,33 @@ def check_project(
     library_bodies: bool | None = None,
     parsed: Parsed | None = None,
     progress=None,
+    stdlib: tuple | None = None,
 ) -> Checked:
     """Everything `scoopc check` verifies: syntax (unless `parsed` is given), then the semantic
     checker over the project's classes and the standard library. Library bodies are checked unless
-    they come from the cache. `progress(text)` hears of slow steps."""
+    they come from the cache. `progress(text)` hears of slow steps. `stdlib`: what `load_stdlib`
+    returned, kept by a caller that checks many times (the language server); else it is loaded."""
     with without_gc_pauses():
-        return _check_project(project, use_cache, library_bodies, parsed or parse_project(project), progress)
+        if stdlib is None:
+            stdlib = load_stdlib(use_cache, progress)
+        return _check_project(project, use_cache, library_bodies, parsed or parse_project(project), stdlib)
 
 
-def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed, progress) -> Checked:
+def load_stdlib(use_cache: bool = True, progress=None) -> tuple:
+    """The standard library for the checker: (units, prepared universe), from the cache when it
+    can. Checking a program adds its classes to a copy of the universe's table and leaves the
+    library's classes as they were, so one load serves any number of checks."""
+    from .semantics import library  # deferred: start-up (scoopc.semantics.library loads only when this is used)
+
+    return library.load(_parse_library_file, _prepare_library, use_cache, progress)
+
+
+def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed, stdlib) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
-    from .semantics import (
-        externals,  # deferred: start-up, as the checker
-        library,  # deferred: start-up (scoopc.semantics.library loads only when this is used)
-    )
+    from .semantics import externals  # deferred: start-up, as the checker
 
     checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
-    library_units, prepared = library.load(_parse_library_file, _prepare_library, use_cache, progress)
+    library_units, prepared = stdlib
     trees = [(unit.tree, False) for unit in parsed.units if unit.tree is not None]
     base = prepared[0] if prepared is not None else None
     for source, _tree, found in library_units:

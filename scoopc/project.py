@@ -22,17 +22,18 @@ from .source import Span
 # The .ecf libraries our stdlib provides, by the name EiffelStudio gives each (its `name`, or the
 # folder under $ISE_LIBRARY/library/ of its `location`), and the stdlib cluster that is each one:
 # EiffelBase (FreeELKS is its kernel, `base-safe`/`base-scoop-safe` are its older .ecf files),
-# EiffelThread, EiffelTime and Roboscoop.
+# EiffelThread, EiffelTime, EiffelStudio's testing library and Roboscoop.
 STDLIB_LIBRARIES = {
     "base": "base",
     "free_elks": "base",
     "elks": "base",
     "thread": "thread",
     "time": "time",
+    "testing": "testing",
     "roboscoop": "roboscoop",
 }
 # Libraries of EiffelStudio that we are going to provide, named in a note rather than an error.
-PLANNED_LIBRARIES = {"testing": "EiffelStudio's testing library (EQA_TEST_SET) is not available yet"}
+PLANNED_LIBRARIES: dict[str, str] = {}
 # Variables naming EiffelStudio's installation in library locations.
 _ISE_VARIABLES = ("ISE_LIBRARY", "ISE_EIFFEL")
 

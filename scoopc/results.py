@@ -34,3 +34,46 @@ class RunResult:
     gif: str | None = None
     record: str | None = None
     stopped_topics: list = field(default_factory=list)  # cmd_vel topics that got a zero velocity
+
+
+@dataclass
+class TestOutcome:
+    """One test of `scoopc test`: a procedure of a test class (a descendant of EQA_TEST_SET)."""
+
+    class_name: str  # the test class, upper case
+    routine: str  # the test procedure, lower case
+    status: str  # "passed", "failed" or "timeout"
+    seconds: float = 0.0  # wall time of the test, runtime start to end
+    message: str = ""  # a failure's first line: what failed
+    report: str = ""  # a failure's whole report: what failed, where, the Eiffel trace
+    output: str = ""  # what the test printed
+    file: str = ""  # the test class's file
+    line: int = 0  # the line of the test procedure
+
+    @property
+    def name(self) -> str:
+        return f"{self.class_name}.{self.routine}"
+
+    @property
+    def passed(self) -> bool:
+        return self.status == "passed"
+
+
+@dataclass
+class TestResult:
+    status: int  # exits.Exit: OK when every test passed, SOURCE when one failed or the tests do not check
+    diagnostics: list = field(default_factory=list)  # what the check reported
+    tests: list = field(default_factory=list)  # TestOutcome, in the order they ran
+    junit: str | None = None  # the JUnit XML file written, if any
+
+    @property
+    def failed(self) -> list:
+        return [t for t in self.tests if not t.passed]
+
+    def summary(self) -> str:
+        """One line: how many tests passed and failed, and the time they took."""
+        failed = len(self.failed)
+        passed = len(self.tests) - failed
+        seconds = sum(t.seconds for t in self.tests)
+        parts = [f"{passed} passed"] + ([f"{failed} failed"] if failed else [])
+        return f"{', '.join(parts)} ({len(self.tests)} test{'s' if len(self.tests) != 1 else ''}) in {seconds:.2f} s"

@@ -1,5 +1,6 @@
 """Test-suite options: `--update-golden` rewrites expected outputs; hypothesis profiles."""
 
+import contextlib
 import os
 import tempfile
 
@@ -23,12 +24,27 @@ def pytest_addoption(parser):
     )
 
 
-@pytest.fixture(autouse=True)
-def _class_registry_restored():
-    """Programs run in-process register their classes; each test leaves the registry as it found it."""
-    from scoopc import kernel
+@contextlib.contextmanager
+def _registry_kept():
+    """The kernel's class registry as it was, afterwards (programs run in-process register classes)."""
+    from scoopc import kernel  # deferred: importing the kernel at collection would load it for every worker
 
     saved = dict(kernel.CLASSES)
     yield
     kernel.CLASSES.clear()
     kernel.CLASSES.update(saved)
+
+
+@pytest.fixture(autouse=True, scope="module")
+def _class_registry_restored_per_module():
+    """A module's fixtures may run programs too (a run shared by its tests): restored after each module,
+    whichever worker and order the modules run in."""
+    with _registry_kept():
+        yield
+
+
+@pytest.fixture(autouse=True)
+def _class_registry_restored():
+    """Each test leaves the registry as it found it."""
+    with _registry_kept():
+        yield

@@ -14,7 +14,7 @@ import os
 import re
 import shutil
 import sys
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass, field
 from functools import cached_property
 from pathlib import Path
@@ -94,7 +94,11 @@ class Compilation:
         root: str | None = None,
         assertions: str | None = None,
         progress: Progress = None,
+        overlay: Mapping[str, str] | None = None,
+        stdlib: tuple[Any, Any] | None = None,
     ):
+        """`overlay` ({absolute path: text}) stands for the files' text on disk (an editor's
+        unsaved buffers); `stdlib` is pipeline.load_stdlib's result, shared by many compilations."""
         if not paths:
             raise UsageError("no PATH given: name a .e file, a directory or an .ecf project file")
         if assertions is not None and assertions not in ASSERTIONS:
@@ -102,6 +106,7 @@ class Compilation:
         self.paths = [str(p) for p in paths]
         self.target, self.root_option, self.assertions_option = target, root, assertions
         self.progress = progress
+        self.overlay, self.stdlib = dict(overlay or {}), stdlib
         self._modules: dict[str, tuple[Modules, list[str]]] = {}
         self.rebuild_library = False
         self._program: CompiledProgram | None = None
@@ -113,11 +118,11 @@ class Compilation:
 
     @cached_property
     def parsed(self) -> pipeline.Parsed:
-        return pipeline.parse_project(self.project)
+        return pipeline.parse_project(self.project, self.overlay)
 
     @cached_property
     def checked(self) -> pipeline.Checked:
-        return pipeline.check_project(self.project, parsed=self.parsed, progress=self.progress)
+        return pipeline.check_project(self.project, parsed=self.parsed, progress=self.progress, stdlib=self.stdlib)
 
     @property
     def was_checked(self) -> bool:

@@ -50,11 +50,11 @@ def run_compilation(
                     "scoopc: note: the compiled program in scoopc's cache was "
                     "damaged (a module did not load): compiling it again\n"
                 )
-        program = _recompiled(compilation, program, rebuild_library)
+        program = recompiled(compilation, program, rebuild_library)
     return run_program(program, args, options, robot, compilation.paths)  # a third failure is a bug
 
 
-def _recompiled(compilation: Compilation, damaged: CompiledProgram, rebuild_library: bool) -> CompiledProgram:
+def recompiled(compilation: Compilation, damaged: CompiledProgram, rebuild_library: bool) -> CompiledProgram:
     remove_cached(damaged.folder)
     again = Compilation(
         compilation.paths,
@@ -76,7 +76,7 @@ def run_program(
 ) -> RunResult:
     """Run `program` with the command-line arguments `args`; `program_paths` are its sources
     (where the simulator looks for world.yaml)."""
-    root_cls = _load(program)
+    root_cls = load_root(program)
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
 
@@ -108,7 +108,7 @@ def run_program(
     return result
 
 
-def _load(program: CompiledProgram) -> type:
+def load_root(program: CompiledProgram) -> type:
     """The root class, from the program's package imported fresh (another program of the same
     package name may have run in this process before)."""
     ensure_on_path(program.library, program.folder)

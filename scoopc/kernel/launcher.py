@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import gc
 import json
+import keyword
 import sys
 import traceback
 from pathlib import Path
@@ -21,6 +22,7 @@ from .errors import EiffelFailure
 from .support import GUARDS, ContractViolation, EiffelRuntimeError
 
 _LINE_MAPS: dict = {}
+_PYTHON_NAMES = frozenset({"self", "here", "print", "type", "super", "object"})  # taken, as keywords are
 PROGRAM = [sys.argv[0] if sys.argv and sys.argv[0] else "program"]  # the command line ARGUMENTS reads
 
 
@@ -34,7 +36,7 @@ def set_arguments(args) -> None:
 
 def main(
     root_cls,
-    creator: str,
+    creator,  # the creation procedure's name, or a routine (obj) -> None
     argv,
     shadowed=None,
     trace_processors=False,
@@ -56,7 +58,10 @@ def main(
     def describe(error, proc):
         return report(error, debug)
 
-    routine = getattr(root_cls, creator, None) if creator else None
+    if callable(creator):  # a routine of the caller's (`scoopc test` runs a test so)
+        routine = creator
+    else:
+        routine = getattr(root_cls, creator, None) if creator else None
     if creator and routine is None:
         stderr.write(f"scoopc: the root class has no creation procedure `{creator}`\n")
         return Exit.USAGE
@@ -96,10 +101,7 @@ def _tune_collector():
 
 def report(error, debug: bool = False) -> str:
     """The text of an uncaught exception: what failed, then the Eiffel call stack."""
-    lines = [describe_error(error)]
-    frames = eiffel_frames(error)
-    for index, (cls, routine, place) in enumerate(frames):
-        lines.append(f"  {'in' if index == 0 else 'called by'} {cls}.{routine} ({place})")
+    lines = [describe_error(error), *trace_lines(eiffel_frames(error))]
     if debug:
         lines.append("Python traceback (--debug):")
         lines.append("".join(traceback.format_exception(type(error), error, error.__traceback__)).rstrip())
@@ -155,8 +157,26 @@ def _at(where) -> str:
 
 def eiffel_frames(error) -> list:
     """(class, routine, file:line) for each frame of generated code, innermost first."""
+    return _frames(traceback.walk_tb(error.__traceback__))[::-1]
+
+
+def stack_frames(frame) -> list:
+    """(class, routine, file:line) for each frame of generated code on the stack that ends in
+    `frame` (a running thread's), innermost first."""
+    return _frames(traceback.walk_stack(frame))
+
+
+def trace_lines(frames) -> list[str]:
+    """The lines of an Eiffel trace: `in` the innermost frame, `called by` each other."""
+    return [
+        f"  {'in' if i == 0 else 'called by'} {cls}.{routine} ({place})"
+        for i, (cls, routine, place) in enumerate(frames)
+    ]
+
+
+def _frames(walk) -> list:
     frames = []
-    for frame, lineno in traceback.walk_tb(error.__traceback__):
+    for frame, lineno in walk:
         place = eiffel_place(frame.f_code.co_filename, lineno)
         if place is None or frame.f_code in GUARDS:
             continue
@@ -167,8 +187,9 @@ def eiffel_frames(error) -> list:
             routine = routine[: -len(suffix)] if routine.endswith(suffix) else routine
         if routine == "_invariant_":
             routine = "invariant"
+        elif routine.endswith("_") and (keyword.iskeyword(routine[:-1]) or routine[:-1] in _PYTHON_NAMES):
+            routine = routine[:-1]  # `assert` is `assert_` in Python (codegen.names.py_identifier)
         frames.append((cls, "inline agent" if routine.startswith("_agent_") else routine, place))
-    frames.reverse()
     return frames
 
 

@@ -67,16 +67,30 @@ def open_ros2_bus(
     types: dict | None = None,
     writer_qos: dict | None = None,
     report=None,
+    node: tuple | None = None,
 ):
     """A ROS 2 bus on `domain` (None: ROS_DOMAIN_ID, default 0), through the chosen backend;
-    `writer_qos` ({topic: (reliability, depth)}) and `report` (QoS incompatibilities) are DdsBus's."""
+    `writer_qos` ({topic: (reliability, depth)}) and `report` (QoS incompatibilities) as DdsBus takes them;
+    `node` (name, namespace): the bus is that node of the ROS graph (DdsBus: scoopc.robots.graph)."""
     if resolve(backend) == "rclpy":
         from .rclpy_bus import RclpyBus  # deferred: start-up (scoopc.robots.rclpy_bus loads only when this is used)
 
-        return RclpyBus(domain=domain, types=types)
+        name, namespace = node or ("scoopc", None)
+        return RclpyBus(
+            domain=domain, types=types, writer_qos=writer_qos, report=report, node_name=name, namespace=namespace
+        )
     from .dds import DdsBus  # deferred: start-up (scoopc.robots.dds loads only when this is used)
 
-    return DdsBus(domain=domain, types=types, writer_qos=writer_qos, report=report)
+    bus = DdsBus(domain=domain, types=types, writer_qos=writer_qos, report=report)
+    if node is not None:
+        from .graph import GraphNode  # deferred: start-up (scoopc.robots.graph loads only when this is used)
+
+        try:
+            GraphNode(bus, *node)
+        except Exception:
+            bus.close()
+            raise
+    return bus
 
 
 def describe(bus) -> str:

@@ -440,6 +440,8 @@ class DdsBus(Tapped):
         self._closed = False
         self._taps = []  # Taps (a list replaced on change: read without the lock)
         self._own = set()  # [_lock] instance handles of our writers
+        self.entity_hooks = []  # called after a reader or writer is made or deleted (graph.GraphNode)
+        self.owned = []  # objects with DDS entities of this participant, closed before it (graph.GraphNode)
 
     # -- entities ---------------------------------------------------------------------------------
     def _topic(self, topic: str, typename: str) -> Topic:
@@ -469,6 +471,7 @@ class DdsBus(Tapped):
                 )
                 self._writers[topic] = writer
                 self._own.add(writer.get_instance_handle() & _HANDLE_MASK)  # as SampleInfo has it: unsigned
+                self._entities_changed()
             elif self._topics[topic][0] != typename:
                 raise TypeError(f"topic {topic} carries {self._topics[topic][0]}, not {typename}")
             return writer
@@ -481,6 +484,21 @@ class DdsBus(Tapped):
         if typename is None:
             raise TypeError(f"no message type known for {topic}: pass msgtype=")
         return typename
+
+    def endpoint_guids(self) -> tuple[list, list]:
+        """(GUIDs of this bus's readers, of its writers): the node's entities in the ROS graph."""
+        with self._lock:
+            readers = [e.reader.guid for e in self._readers.values()]
+            writers = [w.guid for w in self._writers.values()]
+            for child in self.owned:
+                theirs = child.guids() if hasattr(child, "guids") else ([], [])
+                readers += theirs[0]
+                writers += theirs[1]
+            return readers, writers
+
+    def _entities_changed(self) -> None:
+        for hook in list(self.entity_hooks):
+            hook()
 
     def _check_open(self):
         if self._closed:
@@ -522,6 +540,7 @@ class DdsBus(Tapped):
                 entry = _Reader(topic, typename, dds_topic, reader, condition)
                 self._readers[topic] = entry
                 self._waitset.attach(condition)
+                self._entities_changed()
             elif entry.typename != typename:
                 raise TypeError(f"topic {topic} carries {entry.typename}, not {typename}")
             entry.subs.append(sub)
@@ -542,6 +561,7 @@ class DdsBus(Tapped):
                 self._waitset.detach(entry.condition)
                 entry.condition.__del__()
                 entry.reader.__del__()
+                self._entities_changed()
 
     def subscriber_count(self, topic: str) -> int:
         with self._lock:
@@ -761,6 +781,9 @@ class DdsBus(Tapped):
             self._topics.clear()
             for reader in self.__dict__.pop("_graph", {}).values():
                 reader.__del__()
+            for child in reversed(list(self.owned)):
+                child.close()
+            self.owned.clear()
             self.participant.__del__()
         if self._held:
             _release_domain(self.domain)

@@ -264,6 +264,31 @@ def generate_types(typenames, output: str, store=None) -> list[str]:
     return written
 
 
+def _command_srv(args, srvtype: str, distro: str) -> int:
+    """`scoopc msg pkg/srv/Name`: the classes of its request and response (a known service, or
+    the `.srv` given with --file) and of the message types they use."""
+    extra = ()
+    if args.file:
+        try:
+            with open(args.file, encoding="utf-8") as source:
+                extra = ((srvtype, source.read()),)
+        except OSError as problem:
+            raise UsageError(f"cannot read {args.file}: {problem.strerror}") from None
+    elif srvtype not in ros_messages.SRV_DEFINITIONS:
+        known = ", ".join(sorted(ros_messages.SRV_DEFINITIONS))
+        raise UsageError(f"unknown ROS 2 service type `{srvtype}` (give its .srv with --file; known: {known})")
+    try:
+        store = ros_messages.service_store(distro, extra)
+    except Exception as problem:  # rosbags' parser errors
+        raise UsageError(f"{args.file}: not a valid .srv definition: {problem}") from None
+    written = []
+    for half in ("Request", "Response"):
+        written += generate(f"{srvtype}_{half}", args.output, store, include_library=args.all)
+    for path in written:
+        print(path)
+    return 0
+
+
 def command_msg(args) -> int:
     """`scoopc msg TYPE [-o DIR]` / `scoopc msg --file X.msg --type pkg/msg/X [-o DIR]`."""
     try:
@@ -276,8 +301,10 @@ def command_msg(args) -> int:
     typename = args.type or args.typename
     if not typename:
         raise UsageError("`scoopc msg` needs a type name (pkg/msg/Name), or --file with --type")
+    if re.fullmatch(r"\w+/srv/\w+", typename):
+        return _command_srv(args, typename, distro)
     if not re.fullmatch(r"\w+/msg/\w+", typename):
-        raise UsageError(f"`{typename}` is not a ROS 2 message type name (pkg/msg/Name)")
+        raise UsageError(f"`{typename}` is not a ROS 2 message or service type name (pkg/msg/Name, pkg/srv/Name)")
     if args.file:
         try:
             with open(args.file, encoding="utf-8") as source:

@@ -14,8 +14,16 @@ rclpy still needs the generated Python message class of each type for the type s
 (`rosidl_runtime_py.utilities.get_message("geometry_msgs/msg/Twist")`), so the message packages
 must be installed in the ROS 2 environment. QoS follows `dds.topic_kind`: sensor data QoS for
 sensor topics, a best-effort keep-last-1 profile for /clock, ROS's default (reliable, keep last
-10) for the rest. One node per bus, spun by a SingleThreadedExecutor on a thread of the bus
-(callbacks run there, as with DdsBus); `close()` stops and joins it and shuts the context down.
+10) for the rest, unless `writer_qos`/`reader_qos` override a topic (a robot profile). One node per
+bus, spun by a SingleThreadedExecutor on a thread of the bus (callbacks run there, as with DdsBus);
+`close()` stops and joins it and shuts the context down.
+
+The reports of a ROS 2 run (scoopc.robots.silence) get what rclpy tells: QoS incompatibilities
+through the endpoints' `incompatible_qos` event callbacks (rclpy/event_handler.py; Humble:
+qos_event.py), each topic once as DdsBus words them; publishers per topic (`count_publishers`) and
+messages received (`heard`); the graph's topics and types (`get_topic_names_and_types`,
+`get_publishers_info_by_topic`/`get_subscriptions_info_by_topic`) for the nearby-topic hints and
+the Twist/TwistStamped mismatch.
 """
 
 from __future__ import annotations
@@ -25,24 +33,51 @@ import time
 
 from . import cdr, ros_messages
 from .bus import Subscription, Tapped
-from .dds import default_type, topic_kind
+from .dds import default_type, reliability_of, topic_kind
 
 try:  # rclpy comes with a ROS 2 installation, never from PyPI
     import rclpy
     from rclpy.executors import SingleThreadedExecutor
     from rclpy.qos import HistoryPolicy, QoSProfile, ReliabilityPolicy, qos_profile_sensor_data
     from rosidl_runtime_py.utilities import get_message
+
+    try:
+        from rclpy.event_handler import PublisherEventCallbacks, SubscriptionEventCallbacks
+    except ImportError:  # Humble: the same classes in rclpy.qos_event
+        from rclpy.qos_event import PublisherEventCallbacks, SubscriptionEventCallbacks
 except ImportError:  # pragma: no cover - the backends module reports this
     rclpy = None
 
+#: rclpy.qos.QoSPolicyKind (rmw's incompatible_qos_events_statuses.h): RELIABILITY is 1 << 4
+_RELIABILITY_KIND = 1 << 4
+_POLICY_KINDS = {1 << 1: "durability", 1 << 2: "deadline", 1 << 3: "liveliness", 1 << 5: "history", 1 << 6: "lifespan"}
 
-def _qos(topic: str):
+
+def _qos(topic: str, reliability: str | None = None, depth: int | None = None):
     kind = topic_kind(topic)
-    if kind == "sensor":
-        return qos_profile_sensor_data
-    if kind == "clock":
-        return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1, reliability=ReliabilityPolicy.BEST_EFFORT)
-    return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=10)
+    if reliability is None and depth is None:
+        if kind == "sensor":
+            return qos_profile_sensor_data
+        if kind == "clock":
+            return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=1, reliability=ReliabilityPolicy.BEST_EFFORT)
+        return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=10)
+    chosen = reliability or ("reliable" if kind == "command" else "best_effort")
+    policy = ReliabilityPolicy.RELIABLE if chosen == "reliable" else ReliabilityPolicy.BEST_EFFORT
+    depth = depth or (10 if kind == "command" else 5 if kind == "sensor" else 1)
+    return QoSProfile(history=HistoryPolicy.KEEP_LAST, depth=depth, reliability=policy)
+
+
+def incompatibility(topic: str, reader: bool, mine: str, policy_kind: int) -> str:
+    """The report of an incompatible QoS, worded as DdsBus words it."""
+    if int(policy_kind) == _RELIABILITY_KIND:
+        if reader:
+            other = "best effort" if mine == "reliable" else "reliable"
+            return f"{topic}: the publisher is {other}, this reader asks {mine}"
+        return f"{topic}: a subscriber asks reliable, this publisher is {mine}"
+    policy = _POLICY_KINDS.get(int(policy_kind), f"policy {int(policy_kind)}")
+    if reader:
+        return f"{topic}: a publisher's QoS is incompatible with this reader's ({policy})"
+    return f"{topic}: a subscriber's QoS is incompatible with this publisher's ({policy})"
 
 
 class RclpyBus(Tapped):
@@ -50,14 +85,29 @@ class RclpyBus(Tapped):
 
     own_thread_callbacks = True  # the executor's thread (see bus.Bus)
 
-    def __init__(self, domain: int | None = None, types: dict | None = None, node_name: str = "scoopc"):
+    def __init__(
+        self,
+        domain: int | None = None,
+        types: dict | None = None,
+        node_name: str = "scoopc",
+        namespace: str | None = None,
+        writer_qos=None,
+        reader_qos=None,
+        report=None,
+    ):
         if rclpy is None:
             raise ImportError("rclpy is not importable: source a ROS 2 installation first")
         self.types = dict(types or {})
+        self.writer_qos = dict(writer_qos or {})  # {topic: (reliability, depth)}, as DdsBus
+        self.reader_qos = dict(reader_qos or {})
+        self.report = report or (lambda text: None)
+        self.reported = set()  # [_lock] topics whose QoS incompatibility was told
+        self._pending = []  # [_lock] incompatibilities told by rclpy's events, not yet reported
+        self._counts = {}  # [_lock] topic -> messages received (kept after the subscription closes)
         self.errors = []
         self.context = rclpy.Context()
         rclpy.init(context=self.context, domain_id=domain)  # None: ROS_DOMAIN_ID
-        self.node = rclpy.create_node(node_name, context=self.context)
+        self.node = rclpy.create_node(node_name, context=self.context, namespace=namespace or None)
         self.executor = SingleThreadedExecutor(context=self.context)
         self.executor.add_node(self.node)
         self._lock = threading.RLock()
@@ -86,7 +136,16 @@ class RclpyBus(Tapped):
                 raise RuntimeError("the rclpy bus is closed")
             known = self._publishers.get(topic)
             if known is None:
-                known = (typename, self.node.create_publisher(get_message(typename), topic, _qos(topic)))
+                override = self.writer_qos.get(topic, (None, None))
+                events = PublisherEventCallbacks(
+                    incompatible_qos=lambda info, t=topic, o=override[0]: self._incompatible(t, False, o, info)
+                )
+                known = (
+                    typename,
+                    self.node.create_publisher(
+                        get_message(typename), topic, _qos(topic, *override), event_callbacks=events
+                    ),
+                )
                 self._publishers[topic] = known
             elif known[0] != typename:
                 raise TypeError(f"topic {topic} carries {known[0]}, not {typename}")
@@ -114,9 +173,19 @@ class RclpyBus(Tapped):
             entry = self._subscriptions.get(topic)
             if entry is None:
                 subs = []
-                handle = self.node.create_subscription(
-                    get_message(typename), topic, lambda data, t=topic: self._deliver(t, data), _qos(topic), raw=True
+                override = self.reader_qos.get(topic, (None, None))
+                events = SubscriptionEventCallbacks(
+                    incompatible_qos=lambda info, t=topic, o=override[0]: self._incompatible(t, True, o, info)
                 )
+                handle = self.node.create_subscription(
+                    get_message(typename),
+                    topic,
+                    lambda data, t=topic: self._deliver(t, data),
+                    _qos(topic, *override),
+                    event_callbacks=events,
+                    raw=True,
+                )
+                self._counts.setdefault(topic, 0)
                 entry = (typename, handle, subs)
                 self._subscriptions[topic] = entry
             elif entry[0] != typename:
@@ -126,6 +195,7 @@ class RclpyBus(Tapped):
 
     def _deliver(self, topic: str, data: bytes) -> None:
         with self._lock:
+            self._counts[topic] = self._counts.get(topic, 0) + 1
             entry = self._subscriptions.get(topic)
             subs = tuple(entry[2]) if entry else ()
         if not subs:
@@ -167,6 +237,55 @@ class RclpyBus(Tapped):
 
     def wait_for_publisher(self, topic: str, timeout: float | None = None) -> bool:
         return self._poll(lambda: self.node.count_publishers(topic) > 0, timeout)
+
+    # -- what the graph holds (the reports of a ROS 2 run, scoopc.robots.silence) -------------------
+    def _incompatible(self, topic: str, reader: bool, override, info) -> None:
+        """rclpy's incompatible_qos event (on the executor's thread): kept for `check_qos`."""
+        text = incompatibility(topic, reader, reliability_of(topic, override), info.last_policy_kind)
+        with self._lock:
+            self._pending.append((topic, text))
+
+    def check_qos(self) -> list[str]:
+        """New QoS incompatibilities (each topic once), told through `report` and returned."""
+        with self._lock:
+            pending, self._pending = self._pending, []
+            texts = []
+            for topic, text in pending:
+                if topic not in self.reported:
+                    self.reported.add(topic)
+                    texts.append(text)
+        for text in texts:
+            self.report(text)
+        return texts
+
+    def heard(self) -> dict:
+        """{ROS topic subscribed (now or before): (publishers in the graph, messages received)}."""
+        with self._lock:
+            counts = dict(self._counts)
+        return {topic: (self.node.count_publishers(topic), count) for topic, count in counts.items()}
+
+    def graph_topics(self, readers: bool = False) -> dict:
+        """{ROS topic: type} of every publisher (`readers`: subscription) in the graph."""
+        found = {}
+        for topic, _ in self.node.get_topic_names_and_types():
+            infos = (
+                self.node.get_subscriptions_info_by_topic(topic)
+                if readers
+                else self.node.get_publishers_info_by_topic(topic)
+            )
+            if infos:
+                found[topic] = infos[0].topic_type
+        return found
+
+    def unmatched_writers(self) -> list[tuple[str, str, str]]:
+        """[(topic, our type, the type a subscription of the graph asks)] for our publishers that no
+        subscription matched while some node reads the topic with another type."""
+        with self._lock:
+            lonely = [(t, typename) for t, (typename, p) in self._publishers.items() if p.get_subscription_count() == 0]
+        if not lonely:
+            return []
+        graph = self.graph_topics(readers=True)
+        return [(t, typename, graph[t]) for t, typename in lonely if t in graph and graph[t] != typename]
 
     @staticmethod
     def _poll(done, timeout):

@@ -196,3 +196,55 @@ def nested_types(typename: str, store=None, found: list[str] | None = None) -> l
         if element[0] == NAME:
             nested_types(element[1], store, found)
     return found
+
+
+# ---- service types ---------------------------------------------------------------------------------
+
+#: `.srv` definitions known to scoopc (comments left out), from ros2/rcl_interfaces (the parameter
+#: services) and ros2/common_interfaces (std_srvs)
+SRV_DEFINITIONS = {
+    "rcl_interfaces/srv/GetParameters": "string[] names\n---\nParameterValue[] values\n",
+    "rcl_interfaces/srv/SetParameters": "Parameter[] parameters\n---\nSetParametersResult[] results\n",
+    "rcl_interfaces/srv/SetParametersAtomically": "Parameter[] parameters\n---\nSetParametersResult result\n",
+    "rcl_interfaces/srv/ListParameters": (
+        "uint64 DEPTH_RECURSIVE=0\nstring[] prefixes\nuint64 depth\n---\nListParametersResult result\n"
+    ),
+    "rcl_interfaces/srv/DescribeParameters": "string[] names\n---\nParameterDescriptor[] descriptors\n",
+    "rcl_interfaces/srv/GetParameterTypes": "string[] names\n---\nuint8[] types\n",
+    "std_srvs/srv/Trigger": "---\nbool success\nstring message\n",
+    "std_srvs/srv/Empty": "---\n",
+    "std_srvs/srv/SetBool": "bool data\n---\nbool success\nstring message\n",
+}
+
+
+def split_srv(text: str) -> tuple[str, ...]:
+    """The parts of a `.srv` (request, response) or `.action` (goal, result, feedback) definition."""
+    parts, current = [], []
+    for line in text.splitlines():
+        if line.strip() == "---":
+            parts.append("\n".join(current) + "\n")
+            current = []
+        else:
+            current.append(line)
+    parts.append("\n".join(current) + "\n")
+    return tuple(parts)
+
+
+@cache
+def service_store(distro: str, extra: tuple = ()):
+    """A type store of `distro` with every service type of SRV_DEFINITIONS (and `extra`, pairs of
+    (srv type, definition)) registered as `<pkg>/srv/<Name>_Request` and `_Response`."""
+    store = get_typestore(DISTROS[distro])
+    found: dict = {}
+    for srvtype, text in (*SRV_DEFINITIONS.items(), *extra):
+        package, _, name = srvtype.split("/")
+        for half, part in zip(("Request", "Response"), split_srv(text)):
+            parsed = get_types_from_msg(part, f"{package}/msg/{name}_{half}")
+            found.update(
+                {
+                    key.replace("/msg/", "/srv/", 1) if key.endswith(f"{name}_{half}") else key: v
+                    for key, v in parsed.items()
+                }
+            )
+    store.register(found)
+    return store

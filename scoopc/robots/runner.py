@@ -15,6 +15,7 @@ every cmd_vel topic the program published on gets a zero velocity before the run
 from __future__ import annotations
 
 import math
+import re
 import signal
 import sys
 import threading
@@ -44,6 +45,7 @@ DEFAULT_WORLD = {
 }
 
 _SIGNAL_NAMES = {int(getattr(signal, name)): name for name in STOP_SIGNALS if hasattr(signal, name)}
+_NODE_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")  # rcl's node names (rmw_validate_node_name)
 _TWISTS = ("geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped")
 
 
@@ -69,6 +71,8 @@ class RobotOptions:
     use_sim_time: bool = False  # ROS 2: stamp commands with the latest /clock, not the system clock
     wait_robot: float = 3.0  # ROS 2: seconds before silent topics are reported
     require_robot: bool = False  # ROS 2: a topic still silent after `wait_robot` fails the run (exit 3)
+    profile: str | Path | None = None  # a robot.yaml profile; None: robot.yaml beside the program, if any
+    node_name: str | None = None  # ROS 2: the program's node name (default: the root class in lower case)
 
     def __post_init__(self):
         if self.robot not in (None, "sim", "ros2", "none"):
@@ -80,6 +84,11 @@ class RobotOptions:
 
             if self.ros_distro.lower() not in DISTROS:
                 raise UsageError(f"ros_distro must be one of {', '.join(DISTROS)}, not {self.ros_distro!r}")
+        if self.node_name is not None and not _NODE_NAME.match(self.node_name):
+            raise UsageError(
+                f"node_name {self.node_name!r} is not a valid ROS 2 node name "
+                "(letters, digits and underscores, not starting with a digit)"
+            )
         if not (self.wait_robot >= 0):
             raise UsageError(f"wait_robot must be 0 seconds or more, not {self.wait_robot!r}")
 
@@ -96,10 +105,13 @@ class RobotSettings:
     station: tuple | None = None  # (x, y, radius)
     duration: float = -1.0
     distro: str = "jazzy"  # the ROS 2 distribution (ROBOT_ENVIRONMENT.ros_distro)
+    stamped: list = field(default_factory=list)  # per robot: does its cmd_vel take TwistStamped?
+    profile: Any = None  # the robot profile (scoopc.robots.profile.Profile) of a ROS 2 run
 
 
 ROS2_LIMITS = (0.2, 1.0)  # speed limits reported for a ROS 2 robot (m/s, rad/s)
 SERVICE = "robot"  # the RobotSettings' key in the runtime's services
+PARAMETERS = "parameters"  # the ParameterNode's key (ROS_PARAMETER; None without one)
 
 
 def settings_of(rt) -> RobotSettings:
@@ -272,6 +284,7 @@ def sim_settings(world, namespace=None, goal=None, duration=None):
         namespaces=namespaces,
         main=main,
         limits=[(r.max_linear, r.max_angular) for r in world.robots],
+        stamped=[r.cmd_vel_stamped for r in world.robots],
         goal=tuple(goal) if goal is not None else world.goal,
         station=station,
         duration=world.duration if duration is None else duration,
@@ -401,13 +414,14 @@ def describe_end(result, wall) -> str:
     return line
 
 
-def open_ros2_bus(report=None):
-    """The ROS 2 transport: rclpy or DDS (see scoopc.robots.backends), else cyclonedds directly."""
+def open_ros2_bus(report=None, node=None):
+    """The ROS 2 transport: rclpy or DDS (see scoopc.robots.backends), as the node `node`
+    ((name, namespace)) of the ROS graph."""
     from .backends import (
         open_ros2_bus as choose,  # deferred: start-up (scoopc.robots.backends loads only when this is used)
     )
 
-    return choose(report=report)
+    return choose(report=report, node=node)
 
 
 def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=None) -> RunResult:
@@ -424,7 +438,7 @@ def run(options: RobotOptions, launch, program_paths, program_name: str, stderr=
         if options.robot == "sim":
             result = _run_simulated(options, launch, program_paths, program_name, stderr, progress)
         else:
-            result = _run_ros2(options, launch, stderr)
+            result = _run_ros2(options, launch, program_paths, program_name, stderr)
     finally:
         velocity.use_clock(None)
     if progress is not None:
@@ -455,6 +469,7 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     )
 
     world, source = find_world(program_paths, options.world)
+    load_profile(program_paths, options.profile)  # checked here too: a mistake shows before the robot is real
     settings = sim_settings(world, options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
     bus = Bus()
@@ -479,15 +494,47 @@ def _run_simulated(options, launch, program_paths, program_name, stderr, progres
     )
 
 
-def _run_ros2(options, launch, stderr) -> RunResult:
+def load_profile(program_paths, given=None):
+    """The run's robot profile (scoopc.robots.profile): `given`, else robot.yaml beside the
+    program, else None; RobotError (exit 2) naming the file, line, column and key when invalid."""
+    from . import profile  # deferred: start-up (scoopc.robots.profile loads only when this is used)
+
+    path = profile.find(program_paths, given)
+    if path is None:
+        return None
+    try:
+        return profile.load(path)
+    except profile.ProfileError as e:
+        raise RobotError(str(e)) from None
+
+
+def _node_parameters(bus, name, namespace, use_sim_time):
+    """The program's node's parameter services (DdsBus; an rclpy node has rclpy's own)."""
+    if not hasattr(bus, "owned"):
+        return None
+    from .parameters import node_parameters  # deferred: start-up (cyclonedds loads only when this is used)
+
+    return node_parameters(bus, name, namespace, use_sim_time)
+
+
+def _run_ros2(options, launch, program_paths, program_name, stderr) -> RunResult:
     from . import ros_messages, velocity  # deferred: start-up (scoopc.robots.ros_messages loads only when this is used)
 
     settings = ros2_settings(options.namespace, options.goal, options.duration)
     settings.distro = ros_messages.distro()
+    settings.profile = profile = load_profile(program_paths, options.profile)
+    node_name = options.node_name or program_name.lower()
+    if profile is not None:
+        settings.limits = [(profile.max_linear or ROS2_LIMITS[0], profile.max_angular or ROS2_LIMITS[1])]
+        say(stderr, f"robot profile {profile.path}")
     try:
-        bus = open_ros2_bus(report=lambda text: say(stderr, text))
+        bus = open_ros2_bus(report=lambda text: say(stderr, text), node=(node_name, options.namespace))
     except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
         raise RobotError(f"cannot open the ROS 2 transport: {e}") from None
+    if profile is not None:
+        writers, readers = profile.qos(settings.namespaces[0])
+        bus.writer_qos.update(writers)
+        bus.reader_qos.update(readers)
     for warning in getattr(bus, "discovery_warnings", ()):
         say(stderr, warning)
     if getattr(bus, "discovery", None):
@@ -495,7 +542,8 @@ def _run_ros2(options, launch, stderr) -> RunResult:
     try:
         recorder = _recorder(bus, options.record)
         if options.use_sim_time:
-            velocity.use_clock(_sim_time(bus))
+            velocity.use_clock(velocity.sim_time(bus))
+        parameters = _node_parameters(bus, node_name, options.namespace, options.use_sim_time)
     except RobotError:
         _close_ros2(bus)
         raise
@@ -508,7 +556,11 @@ def _run_ros2(options, launch, stderr) -> RunResult:
             bus,
             recorder=recorder,
             stderr=stderr,
-            extra_start=_starts(_deadline(settings.duration, expired), watch.start),
+            extra_start=_starts(
+                _deadline(settings.duration, expired),
+                watch.start,
+                lambda rt: rt.services.update({PARAMETERS: parameters}),
+            ),
         )
         watch.finish()
         if watch.failed:
@@ -523,25 +575,6 @@ def _run_ros2(options, launch, stderr) -> RunResult:
         result.stopped_by = "duration"
         stderr.write(f"scoopc: stopped the program after {settings.duration:g} s (--duration)\n")
     return result
-
-
-class _SimTime:
-    """ROS time from /clock (use_sim_time): the latest Clock message, 0 before the first."""
-
-    def __init__(self):
-        self.ns = 0
-
-    def __call__(self):
-        return self.ns
-
-    def on_clock(self, msg):
-        self.ns = msg.clock.sec * 1_000_000_000 + msg.clock.nanosec
-
-
-def _sim_time(bus):
-    clock = _SimTime()
-    bus.subscribe("/clock", clock.on_clock)
-    return clock
 
 
 def _starts(*hooks):

@@ -48,7 +48,7 @@ class Watch:
 
     def start(self, rt):
         if not hasattr(self.bus, "heard"):
-            return  # a backend without the graph queries (rclpy)
+            return  # a bus without the graph queries (the in-process bus)
         self._thread = threading.Thread(target=self._run, args=(rt,), name="scoopc-robot-watch", daemon=True)
         self._thread.start()
         rt.shutdown_hooks.append(self._done.set)

@@ -36,6 +36,9 @@ from .bus import Tap
 MAX_LAG = 0.25  # wall-clock seconds the node may fall behind before it drops the debt
 
 
+NODE = ("scoopc_sim", None)  # the simulator's node in the ROS graph: /scoopc_sim
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> argparse.ArgumentParser:
     parser.add_argument("world", metavar="WORLD", help="the world file (YAML, see docs/ROBOTS.md)")
     pace = parser.add_mutually_exclusive_group()
@@ -213,7 +216,9 @@ def run(
         for spec in loaded.robots:
             qos.update(driver_qos(spec))
         try:
-            bus = open_ros2_bus(domain, types=stamped, writer_qos=qos, report=lambda text: _say(stderr, text))
+            bus = open_ros2_bus(
+                domain, types=stamped, writer_qos=qos, report=lambda text: _say(stderr, text), node=NODE
+            )
         except Exception as e:  # noqa: BLE001 - no backend, DDS cannot start, ...
             _say(stderr, f"error: cannot open the ROS 2 transport: {e}")
             return Exit.USAGE

@@ -58,6 +58,26 @@ def use_clock(now_ns=None):
     _clock[0] = time.time_ns if now_ns is None else now_ns
 
 
+class SimTime:
+    """ROS time from /clock (use_sim_time): the latest Clock message, 0 before the first."""
+
+    def __init__(self):
+        self.ns = 0
+
+    def __call__(self):
+        return self.ns
+
+    def on_clock(self, msg):
+        self.ns = msg.clock.sec * 1_000_000_000 + msg.clock.nanosec
+
+
+def sim_time(bus):
+    """A clock for `use_clock` that follows /clock on `bus`."""
+    clock = SimTime()
+    bus.subscribe("/clock", clock.on_clock)
+    return clock
+
+
 def now_ns():
     """ROS time now, in nanoseconds (the source `use_clock` set)."""
     return _clock[0]()

@@ -4,7 +4,10 @@ jumping to the next deadline when every thread running processor code waits.
 With the virtual clock, deadlines that fall on the same instant are served in phases: timers of
 phase 0 (a simulator's step) fire first, and sleepers and ordinary timers (phase 1) wake only once
 everything the first ones caused is over. A controller waking at the instant of a simulator step
-therefore always sees that step's sensor data.
+therefore always sees that step's sensor data. Sleepers due at the same instant wake one at a
+time, in the order they went to sleep, each once everything before it is over (waiting or
+asleep again): controllers with the same period take their turns in the same order in every
+run, instead of racing.
 
 Timers fire on the clock thread (owned and joined by the runtime), which logs the timer's
 command on its target processor like an outside client would.
@@ -19,7 +22,7 @@ import time
 from typing import TYPE_CHECKING
 
 from .protocols import Args, Routine, Separate, Where
-from .sched import Block
+from .sched import BUSY_CALLS, Block
 
 if TYPE_CHECKING:
     from .outside import OutsideClient
@@ -87,6 +90,7 @@ class Clock:
 
     # -- sleeping ----------------------------------------------------------------------
     def sleep(self, proc: Processor, ns: int, where: Where | None = None) -> None:
+        proc.busy = BUSY_CALLS  # its run of separate calls without sleeping starts again
         lk = threading.Lock()
         lk.acquire()
         rt = self.rt
@@ -135,6 +139,9 @@ class Clock:
         phase = self.heap[0][1]
         while self.heap and self.heap[0][0] <= now and self.heap[0][1] == phase:
             item = heapq.heappop(self.heap)[-1]
+            if phase > 0 and isinstance(item, Block):  # sleepers due together wake one at a time
+                self.rt.unblock_locked(item)
+                break
             if isinstance(item, Timer):
                 if not item.cancelled:
                     self.due.append(item)

@@ -61,6 +61,7 @@ class FastPaths:
 
     __slots__ = ()
     spare: Session | None  # Processor's slot
+    busy: int  # Processor's slot
 
     def reserve1(  # type: ignore[misc]
         self: Processor,
@@ -76,6 +77,9 @@ class FastPaths:
         private queue is returned; its `__enter__` then only re-checks it is held."""
         if x is None:
             return NOTHING
+        self.busy -= 1
+        if self.busy < 0:
+            self.busy_quantum()
         s = self._session1(x._region_, where)
         if pre is None:
             return s
@@ -155,7 +159,11 @@ class FastPaths:
         separate call, so nothing consults it); a non-leaf one is logged in a closed
         private queue for the supplier's thread with one lock round."""
         p = x._region_
+        self.busy -= 1
+        if self.busy < 0:
+            self.busy_quantum()
         if p in self.held or p.passive or self.rt.attention:
+            self.busy += 1  # counted once, by reserve1
             with self.reserve1(x, where):
                 self.call(x, routine, args)
             return

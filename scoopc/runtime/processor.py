@@ -22,7 +22,7 @@ from .errors import PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error, syn
 from .fast import FastPaths
 from .once import once_in
 from .protocols import Args, Call, Clause, OnceKey, OnceTable, Routine, Separate, Where
-from .sched import Block
+from .sched import BUSY_CALLS, BUSY_QUANTUM_NS, Block
 from .session import IDLE, RUNNING, SCHEDULED, Session, close, drop_claim_locked  # noqa: F401
 
 if TYPE_CHECKING:
@@ -65,6 +65,7 @@ class Processor(FastPaths):
         "frames",
         "name",
         "spare",
+        "busy",
         "__weakref__",
     )
     id: int
@@ -81,6 +82,7 @@ class Processor(FastPaths):
     frames: list[Where]
     name: str | None
     spare: Session | None
+    busy: int
 
     def __init__(self, rt: Runtime, passive: bool = False, name: str | None = None) -> None:
         self.rt = rt
@@ -98,6 +100,7 @@ class Processor(FastPaths):
         self.name = name  # class name of the first object, for reports
         self.spare = None  # [executor] a finished Session of ours no one refers to,
         #                           reused by the next `reserve1` (saves an allocation)
+        self.busy = BUSY_CALLS  # [executor] separate calls left before a virtual-time quantum
 
     def __repr__(self) -> str:
         return f"P{self.id}" + (f"({self.name})" if self.name else "")
@@ -576,6 +579,14 @@ class Processor(FastPaths):
         """Sleep `ns` nanoseconds on the runtime clock (virtual or real)."""
         self.rt.clock.sleep(self, ns, where)
 
+    def busy_quantum(self) -> None:
+        """`busy` ran out: this separate call follows BUSY_CALLS others made without sleeping.
+        On the virtual clock, sleep one quantum first, so that a processor that never sleeps
+        lets time go on (sched.py); this call is then the first of the next run."""
+        if self.rt.clock.virtual:
+            self.rt.clock.sleep(self, BUSY_QUANTUM_NS)  # sets `busy` again
+        self.busy = BUSY_CALLS - 1
+
     def once(self, key: OnceKey, fn: Callable[..., object], args: Args = ()) -> object:
         """A once routine per region: keyed by this region, whichever thread runs it."""
         return once_in(self.onces, key, fn, args)
@@ -599,6 +610,9 @@ class Processor(FastPaths):
         to every `pred` (a module-level clause table, see docs/RUNTIME.md)."""
         if pre is None and len(objs) == 1:
             return self.reserve1(objs[0], where)
+        self.busy -= 1
+        if self.busy < 0:
+            self.busy_quantum()
         return Reservation(self, objs, pre, where, pre_args)
 
 

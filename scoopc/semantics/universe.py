@@ -80,7 +80,7 @@ def stdlib_root() -> Path:
     return installed if (installed / "base").is_dir() else here.parent / "stdlib"
 
 
-def stdlib_files(clusters: tuple[str, ...] = ("base", "thread", "time", "roboscoop")) -> list[Path]:
+def stdlib_files(clusters: tuple[str, ...] = ("base", "thread", "time", "testing", "roboscoop")) -> list[Path]:
     root = stdlib_root()
     return sorted(p for cluster in clusters for p in (root / cluster).rglob("*.e"))
 

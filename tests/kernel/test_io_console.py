@@ -40,6 +40,7 @@ class Obj:
 @pytest.fixture
 def region():
     saved = dict(kernel.CLASSES)
+    kernel.CLASSES.clear()  # only the classes below: no exception class of an earlier program
     for key in ("STRING_8", "STRING_32", "IMMUTABLE_STRING_8", "IMMUTABLE_STRING_32"):
         kernel.CLASSES[key] = type(key, (Str,), {})
     yield Region()

@@ -130,6 +130,12 @@ class Node:
     def create_publisher(self, typename: str, topic: str, depth: int = 10) -> Publisher:
         return Publisher(self, typename, topic, depth)
 
+    def create_service(self, srvtype: str, name: str, handler) -> ServiceEnd:
+        return ServiceEnd(self, srvtype, name, handler)
+
+    def create_client(self, srvtype: str, name: str) -> ServiceEnd:
+        return ServiceEnd(self, srvtype, name)
+
     def close(self):
         for entity in reversed(self.entities):
             entity.close()
@@ -216,6 +222,275 @@ class Subscription:
         self.waitset.detach(self.condition)
         self.condition.__del__()
         self.reader.__del__()
+
+
+class GraphReader:
+    """The ROS graph as rmw_dds_common's GraphCache builds it (rmw_dds_common/src/graph_cache.cpp,
+    jazzy): participants with `enclave=` user data (DCPSParticipant), endpoints (DCPSPublication,
+    DCPSSubscription: topic, type, participant), and each participant's last
+    rmw_dds_common/msg/ParticipantEntitiesInfo on `ros_discovery_info`, decoded with the
+    distribution's store (its Gid: 24 bytes in Humble, 16 later). rmw_cyclonedds_cpp's reader of
+    that topic (rmw_node.cpp, rmw_context_impl_s::init): reliable, transient local, keep all,
+    ignoring its own participant; a gid is the 16-byte GUID, zero-filled to the Gid's size."""
+
+    def __init__(self, node: Node):
+        from cyclonedds.builtin import (
+            BuiltinDataReader,
+            BuiltinTopicDcpsParticipant,
+            BuiltinTopicDcpsPublication,
+            BuiltinTopicDcpsSubscription,
+        )
+
+        self.node = node
+        history = Policy.History.KeepAll
+        policies = [
+            Policy.WriterDataLifecycle(autodispose=False),
+            history,
+            Policy.Reliability.Reliable(max_blocking_time=duration(infinite=True)),
+            Policy.Durability.TransientLocal,
+            Policy.Liveliness.Automatic(lease_duration=duration(infinite=True)),
+            Policy.IgnoreLocal.Participant,
+        ]
+        typename = "rmw_dds_common/msg/ParticipantEntitiesInfo"
+        if node.distro != "humble":
+            policies.append(Policy.Userdata(data=f"typehash={node.store.hash_rihs01(typename)};".encode()))
+        self.topic = Topic(node.participant, "ros_discovery_info", node.idl(typename))
+        self.reader = DataReader(node.participant, self.topic, qos=Qos(*policies))
+        self.builtin = {
+            kind: BuiltinDataReader(node.participant, topic)
+            for kind, topic in (
+                ("participant", BuiltinTopicDcpsParticipant),
+                ("writer", BuiltinTopicDcpsPublication),
+                ("reader", BuiltinTopicDcpsSubscription),
+            )
+        }
+        self.alive = {
+            kind: ReadCondition(reader, SampleState.Any | ViewState.Any | InstanceState.Alive)
+            for kind, reader in self.builtin.items()
+        }
+        self.infos: dict = {}  # participant gid (16 bytes) -> the last ParticipantEntitiesInfo
+        self.size = 24 if node.distro == "humble" else 16
+        self.gid_sizes: list = []  # the Gid sizes seen on the wire
+
+    def _gid(self, key) -> bytes:
+        return key.bytes  # the GUID; the Gid of the message is this, zero-filled
+
+    def refresh(self) -> None:
+        samples = ddspy_take(self.reader._ref, 0xFFFFFFFF, 64)
+        for data, info in samples if not isinstance(samples, int) else ():
+            if not info.valid_data:
+                continue
+            msg = self.node.store.deserialize_cdr(bytes(data), "rmw_dds_common/msg/ParticipantEntitiesInfo")
+            raw = bytes(msg.gid.data)
+            self.gid_sizes.append(len(raw))
+            self.infos[raw[:16]] = msg
+
+    def enclaves(self) -> dict:
+        """{participant GUID bytes: enclave} of the participants that said one."""
+        found = {}
+        for sample in self.builtin["participant"].read(N=256, condition=self.alive["participant"]) or ():
+            text = bytes(sample.qos[Policy.Userdata].data).decode() if Policy.Userdata in sample.qos else ""
+            for item in text.split(";"):
+                if item.startswith("enclave="):
+                    found[self._gid(sample.key)] = item[len("enclave=") :]
+        return found
+
+    def nodes(self) -> list:
+        """Full names of the nodes of the graph (`ros2 node list`)."""
+        self.refresh()
+        names = []
+        for info in self.infos.values():
+            for n in info.node_entities_info_seq:
+                names.append(n.node_namespace.rstrip("/") + "/" + n.node_name)
+        return sorted(names)
+
+    def endpoints(self, topic: str) -> list:
+        """[(kind "writer"/"reader", ROS type, node name)] of `topic` as `ros2 topic info -v` names
+        them (graph_cache.cpp __find_name_and_namespace_from_entity_gid)."""
+        self.refresh()
+        enclaves = self.enclaves()
+        found = []
+        for kind in ("writer", "reader"):
+            for sample in self.builtin[kind].read(N=1024, condition=self.alive[kind]) or ():
+                if sample.topic_name != "rt" + topic:
+                    continue
+                gid, owner = self._gid(sample.key), self._gid(sample.participant_key)
+                name = "_CREATED_BY_BARE_DDS_APP_"
+                if owner in enclaves:
+                    name = "_NODE_NAME_UNKNOWN_"
+                    for n in getattr(self.infos.get(owner), "node_entities_info_seq", ()):
+                        gids = n.writer_gid_seq if kind == "writer" else n.reader_gid_seq
+                        if any(bytes(g.data)[:16] == gid for g in gids):
+                            name = n.node_namespace.rstrip("/") + "/" + n.node_name
+                parts = sample.type_name.split("::")
+                ros_type = f"{parts[0]}/{parts[1]}/{parts[3][:-1]}" if len(parts) == 4 else sample.type_name
+                found.append((kind, ros_type, name))
+        return sorted(found)
+
+    def wait_for(self, predicate, timeout: float = 30.0) -> bool:
+        """Until `predicate(self)` holds (discovery and the transient-local sample take a moment)."""
+        deadline = time.monotonic() + timeout
+        while not predicate(self):
+            if time.monotonic() >= deadline:
+                return False
+            time.sleep(0.02)
+        return True
+
+    def close(self):
+        for kind, reader in self.builtin.items():
+            self.alive[kind].__del__()
+            reader.__del__()
+        self.reader.__del__()
+
+
+#: `.srv` definitions the twin knows (ros2/common_interfaces std_srvs, ros2/rcl_interfaces)
+SRVS = {
+    "std_srvs/srv/Trigger": ("", "bool success\nstring message"),
+    "std_srvs/srv/SetBool": ("bool data", "bool success\nstring message"),
+    "rcl_interfaces/srv/GetParameters": ("string[] names", "ParameterValue[] values"),
+    "rcl_interfaces/srv/SetParameters": ("Parameter[] parameters", "SetParametersResult[] results"),
+    "rcl_interfaces/srv/SetParametersAtomically": ("Parameter[] parameters", "SetParametersResult result"),
+    "rcl_interfaces/srv/ListParameters": ("string[] prefixes\nuint64 depth", "ListParametersResult result"),
+    "rcl_interfaces/srv/DescribeParameters": ("string[] names", "ParameterDescriptor[] descriptors"),
+    "rcl_interfaces/srv/GetParameterTypes": ("string[] names", "uint8[] types"),
+}
+
+
+class ServiceEnd:
+    """A service or a client as rmw_cyclonedds_cpp's rmw_create_service / rmw_create_client make
+    them (rmw_node.cpp, jazzy): topics `rq<name>Request` and `rr<name>Reply`, types
+    `pkg::srv::dds_::Name_Request_`/`_Response_`, each sample the cdds_request_header_t
+    {uint64 guid; int64 seq} then the message (serdata.hpp), the client's guid its request
+    writer's instance handle; QoS rmw_qos_profile_services_default with `clientid=`/`serviceid=`
+    user data (csid_to_string: 16 bytes in hexadecimal joined by dots)."""
+
+    count = 0
+
+    def __init__(self, node: Node, srvtype: str, name: str, handler=None):
+        from rosbags.typesys import get_types_from_msg
+
+        self.node, self.name, self.handler = node, name, handler
+        package, _, short = srvtype.split("/")
+        found = {}
+        for half, text in zip(("Request", "Response"), SRVS[srvtype]):
+            for key, value in get_types_from_msg(text, f"{package}/msg/{short}_{half}").items():
+                found[key.replace("/msg/", "/srv/") if key.endswith(f"_{half}") else key] = value
+        node.store.register(found)
+        self.request, self.response = f"{srvtype}_Request", f"{srvtype}_Response"
+        ServiceEnd.count += 1
+        raw = node.participant.guid.bytes[:12] + ServiceEnd.count.to_bytes(4, "big")
+        ident = f"{raw[0]:02x}" + "".join(f".{b:x}" for b in raw[1:])
+        server = handler is not None
+        kind = "serviceid" if server else "clientid"
+        rq = Topic(node.participant, f"rq{name}Request", self._wire(self.request))
+        rr = Topic(node.participant, f"rr{name}Reply", self._wire(self.response))
+        self.writer = DataWriter(node.participant, rr if server else rq, qos=self._qos(kind, ident))
+        self.reader = DataReader(node.participant, rq if server else rr, qos=self._qos(kind, ident))
+        self.guid = self.writer.get_instance_handle() & ((1 << 64) - 1)
+        self.replies, self.seq, self.cond = {}, 0, threading.Condition()
+        self._stop = False
+        self.thread = threading.Thread(target=self._run, daemon=True)
+        self.thread.start()
+        node.entities.append(self)
+
+    def _wire(self, typename):
+        fields = {"_request_guid": idl.uint64, "_request_seq": idl.int64}
+        fields.update({n: self.node._field(d) for n, d in self.node.store.fielddefs[typename][1]})
+        return make_idl_struct(typename.replace("/", "_") + "_twin", dds_type(typename), fields)
+
+    def _qos(self, kind, ident):
+        return Qos(
+            Policy.WriterDataLifecycle(autodispose=False),
+            Policy.History.KeepLast(10),
+            Policy.Reliability.Reliable(max_blocking_time=duration(infinite=True)),
+            Policy.Durability.Volatile,
+            Policy.Liveliness.Automatic(lease_duration=duration(infinite=True)),
+            Policy.Userdata(data=f"{kind}={ident};".encode()),
+        )
+
+    def _send(self, guid, seq, msg, typename):
+        body = bytes(self.node.store.serialize_cdr(msg, typename))
+        data = body[:4] + guid.to_bytes(8, "little") + seq.to_bytes(8, "little", signed=True) + body[4:]
+        pad = -len(data) % 4
+        data = data[:3] + bytes([data[3] | pad]) + data[4:] + bytes(pad)
+        ddspy_write(self.writer._ref, data)
+
+    def _run(self):
+        while not self._stop:
+            samples = ddspy_take(self.reader._ref, 0xFFFFFFFF, 16)
+            if isinstance(samples, int) or not samples:
+                time.sleep(0.005)
+                continue
+            for data, info in samples:
+                if not info.valid_data:
+                    continue
+                data = bytes(data)
+                guid, seq = int.from_bytes(data[4:12], "little"), int.from_bytes(data[12:20], "little", signed=True)
+                body = data[:4] + data[20:]
+                if self.handler is not None:
+                    reply = self.handler(self.node.store.deserialize_cdr(body, self.request))
+                    self._client_reader(info.publication_handle)
+                    self._send(guid, seq, reply, self.response)
+                elif guid == self.guid:
+                    with self.cond:
+                        self.replies[seq] = self.node.store.deserialize_cdr(body, self.response)
+                        self.cond.notify_all()
+
+    def _client_reader(self, handle, timeout=1.0):
+        """rmw_send_response's check_for_response_reader: until the reply writer matched the reader
+        whose `clientid` is the requesting writer's."""
+
+        def clientid(endpoint):
+            text = bytes(endpoint.qos[Policy.Userdata].data).decode() if Policy.Userdata in endpoint.qos else ""
+            return next((i for i in text.split(";") if i.startswith("clientid=")), None)
+
+        try:
+            wanted = clientid(self.reader.get_matched_publication_data(handle))
+        except Exception:
+            return
+        deadline = time.monotonic() + timeout
+        while wanted and time.monotonic() < deadline:
+            for h in self.writer.get_matched_subscriptions():
+                try:
+                    if clientid(self.writer.get_matched_subscription_data(h)) == wanted:
+                        return
+                except Exception:
+                    pass
+            time.sleep(0.005)
+
+    def new_request(self, **fields):
+        return new_message(self.node.store, self.request, **fields)
+
+    def new_response(self, **fields):
+        return new_message(self.node.store, self.response, **fields)
+
+    def ready(self) -> bool:
+        return bool(
+            self.writer.get_publication_matched_status().current_count
+            and self.reader.get_subscription_matched_status().current_count
+        )
+
+    def call(self, request, timeout: float = 30.0):
+        """rclpy's Client.call: send, then wait for the reply with this request's seq."""
+        deadline = time.monotonic() + timeout
+        while not self.ready():
+            if time.monotonic() >= deadline:
+                raise TimeoutError(f"no service {self.name}")
+            time.sleep(0.005)
+        with self.cond:
+            self.seq += 1
+            seq = self.seq
+        self._send(self.guid, seq, request, self.request)
+        with self.cond:
+            if not self.cond.wait_for(lambda: seq in self.replies, max(0.0, deadline - time.monotonic())):
+                raise TimeoutError(f"no reply from {self.name}")
+            return self.replies.pop(seq)
+
+    def close(self):
+        self._stop = True
+        self.thread.join(2.0)
+        self.reader.__del__()
+        self.writer.__del__()
 
 
 def new_message(store, typename: str, **fields):

@@ -3,12 +3,13 @@ the fallback to DdsBus. rclpy cannot be installed here: its presence is simulate
 module, and RclpyBus runs only against a stand-in of the rclpy calls it makes (its CDR conversion,
 subscriptions, taps and shutdown), never against rclpy itself (see rclpy_bus.py's note)."""
 
+import io
 import os
-import random
 import sys
 import time
 import types
 
+import domains  # tests/robots/domains.py: a DDS domain per test, disjoint per worker
 import pytest
 
 from scoopc.robots import backends, rclpy_bus
@@ -21,7 +22,7 @@ def environment(monkeypatch, tmp_path):
     """Loopback DDS in a test domain; no backend chosen by the caller's environment."""
     from scoopc.robots import dds
 
-    for name, value in dds.loopback_environment(tmp_path, random.randint(100, 200)).items():
+    for name, value in dds.loopback_environment(tmp_path, domains.next_domain()).items():
         monkeypatch.setenv(name, value)
     monkeypatch.delenv(backends.ENV, raising=False)
 
@@ -37,7 +38,7 @@ def fake_rclpy(monkeypatch):
     monkeypatch.setitem(sys.modules, "rclpy", types.ModuleType("rclpy"))
 
     class StandIn:
-        def __init__(self, domain=None, types=None):
+        def __init__(self, domain=None, types=None, writer_qos=None, report=None, node_name=None, namespace=None):
             self.domain, self.types = domain, types
 
     monkeypatch.setattr(rclpy_bus, "RclpyBus", StandIn)
@@ -114,7 +115,8 @@ class FakeRclpy:
     raw subscription of the same topic (like a ROS graph with one process)."""
 
     def __init__(self):
-        self.subscriptions, self.published, self.inits, self.qos = [], [], [], {}
+        self.subscriptions, self.published, self.inits, self.qos, self.events = [], [], [], {}, {}
+        self.graph = []  # [(topic, type, "publisher" or "subscription")] of other nodes
         fake = self
 
         class Context:
@@ -142,20 +144,39 @@ class FakeRclpy:
                 return sum(topic == self.topic for topic, _, _ in fake.subscriptions)
 
         class Node:
-            def create_publisher(self, msgclass, topic, qos):
+            def create_publisher(self, msgclass, topic, qos, event_callbacks=None):
                 fake.qos[topic] = qos
+                fake.events[("publisher", topic)] = event_callbacks
                 return Publisher(topic)
 
-            def create_subscription(self, msgclass, topic, callback, qos, raw=False):
+            def create_subscription(self, msgclass, topic, callback, qos, event_callbacks=None, raw=False):
                 entry = (topic, callback, raw)
                 fake.subscriptions.append(entry)
+                fake.events[("subscription", topic)] = event_callbacks
+                fake.qos[("subscription", topic)] = qos
                 return entry
+
+            def get_topic_names_and_types(self):
+                return [(topic, [typename]) for topic, typename, _ in fake.graph]
+
+            def _infos(self, topic, kind):
+                return [
+                    types.SimpleNamespace(topic_type=typename)
+                    for t, typename, k in fake.graph
+                    if t == topic and k == kind
+                ]
+
+            def get_publishers_info_by_topic(self, topic):
+                return self._infos(topic, "publisher")
+
+            def get_subscriptions_info_by_topic(self, topic):
+                return self._infos(topic, "subscription")
 
             def destroy_subscription(self, entry):
                 fake.subscriptions.remove(entry)
 
             def count_publishers(self, topic):
-                return sum(t == topic for t, _ in fake.published)
+                return sum(t == topic for t, _ in fake.published) + len(self._infos(topic, "publisher"))
 
             def destroy_node(self):
                 fake.destroyed = True
@@ -176,20 +197,28 @@ class FakeRclpy:
         rclpy = types.ModuleType("rclpy")
         rclpy.Context = Context
         rclpy.init = lambda context, domain_id=None: fake.inits.append(domain_id)
-        rclpy.create_node = lambda name, context: Node()
+        rclpy.create_node = lambda name, context, namespace=None: Node()
         executors = types.ModuleType("rclpy.executors")
         executors.SingleThreadedExecutor = Executor
         qos = types.ModuleType("rclpy.qos")
         qos.HistoryPolicy = types.SimpleNamespace(KEEP_LAST="keep_last")
-        qos.ReliabilityPolicy = types.SimpleNamespace(BEST_EFFORT="best_effort")
+        qos.ReliabilityPolicy = types.SimpleNamespace(BEST_EFFORT="best_effort", RELIABLE="reliable")
         qos.QoSProfile = lambda **kw: ("profile", tuple(sorted(kw.items())))
         qos.qos_profile_sensor_data = "sensor_data"
+        events = types.ModuleType("rclpy.event_handler")
+
+        class Callbacks:
+            def __init__(self, incompatible_qos=None):
+                self.incompatible_qos = incompatible_qos
+
+        events.PublisherEventCallbacks = events.SubscriptionEventCallbacks = Callbacks
         utilities = types.ModuleType("rosidl_runtime_py.utilities")
         utilities.get_message = lambda typename: typename
         self.modules = {
             "rclpy": rclpy,
             "rclpy.executors": executors,
             "rclpy.qos": qos,
+            "rclpy.event_handler": events,
             "rosidl_runtime_py": types.ModuleType("rosidl_runtime_py"),
             "rosidl_runtime_py.utilities": utilities,
         }
@@ -243,3 +272,46 @@ def test_rclpy_bus_converts_through_cdr_on_the_rclpy_api(fake_ros):
     assert fake.destroyed and not bus._thread.is_alive()
     with pytest.raises(RuntimeError):
         bus.publish("/robot1/cmd_vel", sent)
+
+
+def test_rclpy_bus_reports_what_rclpy_tells(fake_ros):
+    """The reports of a ROS 2 run on RclpyBus: QoS incompatibilities from rclpy's incompatible_qos
+    events (each topic once, worded as DdsBus), silent topics with the graph's nearby names, and a
+    velocity topic read with another type, through silence.Watch as `scoopc run` uses it."""
+    from scoopc.robots import ros_messages, silence
+
+    fake, module = fake_ros
+    told = []
+    bus = module.RclpyBus(reader_qos={"/robot1/odom": ("reliable", 1)}, report=told.append)
+    bus.subscribe("/robot1/odom", lambda msg: None)
+    bus.subscribe("/robot1/scan", lambda msg: None)
+    bus.publish("/robot1/cmd_vel", ros_messages.new("geometry_msgs/msg/Twist"))
+    profile = ("profile", (("depth", 1), ("history", "keep_last"), ("reliability", "reliable")))
+    assert fake.qos[("subscription", "/robot1/odom")] == profile
+    reliability = types.SimpleNamespace(last_policy_kind=1 << 4, total_count=1)
+    for _ in range(2):  # told twice by rclpy, reported once
+        fake.events[("subscription", "/robot1/odom")].incompatible_qos(reliability)
+    fake.events[("publisher", "/robot1/cmd_vel")].incompatible_qos(types.SimpleNamespace(last_policy_kind=1 << 1))
+    assert bus.check_qos() == [
+        "/robot1/odom: the publisher is best effort, this reader asks reliable",
+        "/robot1/cmd_vel: a subscriber's QoS is incompatible with this publisher's (durability)",
+    ]
+    assert bus.check_qos() == [] and len(told) == 2
+    fake.graph = [
+        ("/odom", "nav_msgs/msg/Odometry", "publisher"),
+        ("/robot1/cmd_vel", "geometry_msgs/msg/TwistStamped", "subscription"),
+    ]
+    fake.subscriptions[:] = [s for s in fake.subscriptions if s[0] != "/robot1/cmd_vel"]
+    bus.publish("/robot1/scan", ros_messages.new("sensor_msgs/msg/LaserScan"))  # heard once
+    assert bus.heard() == {"/robot1/odom": (0, 0), "/robot1/scan": (1, 1)}
+    out = io.StringIO()
+    watch = silence.Watch(bus, 3, False, out)
+    assert watch.report_silence()
+    text = out.getvalue()
+    assert "nothing heard on /robot1/odom (no publisher)" in text
+    assert "/odom (this program asked /robot1/odom): is the namespace right?" in text
+    assert "/robot1/cmd_vel: the robot reads geometry_msgs/msg/TwistStamped, this program sends" in text
+    out.truncate(0)
+    watch.summary()
+    assert "heard /robot1/scan (1); nothing on /robot1/odom" in out.getvalue()
+    bus.close()

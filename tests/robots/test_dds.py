@@ -2,13 +2,13 @@
 
 import math
 import os
-import random
 import subprocess
 import sys
 import textwrap
 import threading
 import time
 
+import domains  # tests/robots/domains.py: a DDS domain per test, disjoint per worker
 import numpy as np
 import pytest
 
@@ -26,7 +26,7 @@ def loopback(tmp_path_factory):
     path.write_text(dds.LOOPBACK_CONFIG)
     saved = {name: os.environ.get(name) for name in ("CYCLONEDDS_URI", "ROS_DOMAIN_ID")}
     os.environ["CYCLONEDDS_URI"] = path.as_uri()
-    os.environ["ROS_DOMAIN_ID"] = str(random.randint(100, 200))
+    os.environ["ROS_DOMAIN_ID"] = str(domains.next_domain())
     yield
     for name, value in saved.items():
         if value is None:

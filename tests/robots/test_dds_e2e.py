@@ -6,7 +6,6 @@ benchmarks (benchmarks/robots_latency.py, robots_rate.py: processes talking over
 smoke sizes: their output's format only."""
 
 import os
-import random
 import re
 import signal
 import subprocess
@@ -15,6 +14,7 @@ import threading
 import time
 from pathlib import Path
 
+import domains  # tests/robots/domains.py: a DDS domain per test, disjoint per worker
 import pytest
 
 pytest.importorskip("cyclonedds")
@@ -39,7 +39,7 @@ def env(tmp_path_factory):
     """Loopback DDS in a random test domain, for this process and the children."""
     folder = tmp_path_factory.mktemp("dds_e2e")
     (folder / "world.yaml").write_text(WORLD)
-    settings = dds.loopback_environment(folder, random.randint(100, 200))
+    settings = dds.loopback_environment(folder, domains.next_domain())
     saved = {name: os.environ.get(name) for name in settings}
     os.environ.update(settings)
     child = dict(os.environ, PYTHONPATH=str(ROOT) + os.pathsep + os.environ.get("PYTHONPATH", ""))
@@ -248,7 +248,7 @@ NUMBER = r"\d+"
 
 def test_latency_benchmark_smoke(env):
     done = subprocess.run(
-        [sys.executable, str(BENCHMARKS / "robots_latency.py"), "--smoke"],
+        [sys.executable, str(BENCHMARKS / "robots_latency.py"), "--smoke", "--domain", str(domains.next_domain())],
         capture_output=True,
         text=True,
         env=env,
@@ -268,7 +268,12 @@ def test_latency_benchmark_smoke(env):
 
 def test_rate_benchmark_smoke(env):
     done = subprocess.run(
-        [sys.executable, str(BENCHMARKS / "robots_rate.py"), "--smoke", "--transport", "dds", "--layout", "shared"],
+        [
+            sys.executable,
+            str(BENCHMARKS / "robots_rate.py"),
+            *("--smoke", "--transport", "dds", "--layout", "shared"),
+            *("--domain", str(domains.next_domain())),
+        ],
         capture_output=True,
         text=True,
         env=env,

@@ -86,3 +86,24 @@ def test_bridge_round_trip_on_the_object_model():
     assert back.header.frame_id == "laser" and back.range_max == 2.0 and back.header.stamp.sec == 3
     assert back.ranges.dtype == np.float32 and list(back.ranges) == [0.5, 1.0, 2.0]
     assert eiffel_bridge.typename_of_class("GEOMETRY_MSGS_TWIST") == "geometry_msgs/msg/Twist"
+
+
+def test_service_classes(tmp_path, capsys, monkeypatch):
+    """`scoopc msg pkg/srv/Name` writes the request and response classes (those of
+    tests/robots/programs/service_ros2 are its output); a .srv of one's own with --file; an unknown
+    service is a usage error naming the known ones."""
+    from pathlib import Path
+
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    program = Path(__file__).parent / "programs" / "service_ros2"
+    assert cli.main(["msg", "std_srvs/srv/SetBool", "-o", str(tmp_path)]) == 0
+    for name in ("std_srvs_set_bool_request.e", "std_srvs_set_bool_response.e"):
+        assert (tmp_path / name).read_text() == (program / name).read_text()
+    srv = tmp_path / "Move.srv"
+    srv.write_text("float64 distance  # metres\n---\nbool done\n")
+    assert cli.main(["msg", "--file", str(srv), "--type", "my_pkg/srv/Move", "-o", str(tmp_path / "own")]) == 0
+    text = (tmp_path / "own" / "my_pkg_move_request.e").read_text()
+    assert "distance: REAL_64" in text and 'Ros_type: STRING = "my_pkg/srv/Move_Request"' in text
+    capsys.readouterr()
+    assert cli.main(["msg", "nope/srv/Missing"]) == 2
+    assert "unknown ROS 2 service type `nope/srv/Missing`" in capsys.readouterr().err

@@ -3,9 +3,9 @@ by three independent readers (the mcap library with mcap-ros2-support's decoder,
 reader, ours); the schemas, channels and log times; Bus.tap and DdsBus.tap; the GIF animation."""
 
 import os
-import random
 import threading
 
+import domains  # tests/robots/domains.py: a DDS domain per test, disjoint per worker
 import numpy as np
 import pytest
 from mcap.reader import make_reader
@@ -192,7 +192,7 @@ def test_dds_bus_tap_records_what_it_publishes_and_receives(tmp_path, monkeypatc
     pytest.importorskip("cyclonedds")
     from scoopc.robots import dds
 
-    for name, value in dds.loopback_environment(tmp_path, random.randint(100, 200)).items():
+    for name, value in dds.loopback_environment(tmp_path, domains.next_domain()).items():
         monkeypatch.setenv(name, value)
     sender, receiver = dds.DdsBus(), dds.DdsBus()
     try:

@@ -8,12 +8,13 @@ missing battery topic, (7) silent topics are reported. Waits are on conditions; 
 bound a broken run (the one negative discovery check, OFF, is bounded by a positive control)."""
 
 import os
-import random
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
+import domains  # tests/robots/domains.py: a DDS domain per test, disjoint per worker
 import pytest
 
 pytest.importorskip("cyclonedds")
@@ -43,7 +44,7 @@ INTERFACE_ONLY = """<?xml version="1.0" encoding="UTF-8"?>
 def env(tmp_path_factory):
     folder = tmp_path_factory.mktemp("ros2_robots")
     (folder / "world.yaml").write_text(WORLD)
-    settings = dds.loopback_environment(folder, random.randint(100, 200))
+    settings = dds.loopback_environment(folder, domains.next_domain())
     saved = {name: os.environ.get(name) for name in [*settings, "ROS_DISTRO"]}
     os.environ.update(settings)
     os.environ.pop("ROS_DISTRO", None)
@@ -140,6 +141,12 @@ def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported
         assert center.messages[-1].range == -1.0  # the Thymio driver's "nothing seen"
         assert ground.messages[-1].range == 0.0  # floor
         assert scan.wait_for(lambda s: s.incompatible() > 0, TIMEOUT)
+        # issue 17: the simulator is the node /scoopc_sim of the ROS graph
+        graph = rmw_twin.GraphReader(twin)
+        assert graph.wait_for(lambda g: "/scoopc_sim" in g.nodes(), TIMEOUT)
+        assert ("writer", "nav_msgs/msg/Odometry", "/scoopc_sim") in graph.endpoints("/robot1/odom")
+        assert ("reader", "geometry_msgs/msg/TwistStamped", "/scoopc_sim") in graph.endpoints("/tb3/cmd_vel")
+        graph.close()
         sim.send_signal(2)
         status, _, err = finish(sim)
         assert status == 0, err
@@ -157,6 +164,7 @@ def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported
 @pytest.mark.slow
 def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp_path):
     twin = rmw_twin.Node("humble")
+    graph = rmw_twin.GraphReader(twin)
     try:
         driver = twin.create_subscription("geometry_msgs/msg/Twist", "/robot1/cmd_vel", depth=1)
         run = scoopc(
@@ -171,8 +179,18 @@ def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp
             "6",
             "--wait-robot",
             "1",
+            "--node-name",
+            "thymio_brain",
             cwd=tmp_path,
         )
+        assert driver.wait_for(lambda s: len(s.messages) >= 1, TIMEOUT)
+        # issue 17: the program is a node (--node-name; no --namespace: "/"), with Humble's 24-byte gids
+        assert graph.wait_for(lambda g: g.nodes() == ["/thymio_brain"], TIMEOUT), graph.nodes()
+        assert graph.endpoints("/robot1/cmd_vel") == [
+            ("reader", "geometry_msgs/msg/Twist", "_NODE_NAME_UNKNOWN_"),
+            ("writer", "geometry_msgs/msg/Twist", "/thymio_brain"),
+        ]
+        assert set(graph.gid_sizes) == {24}
         status, out, err = finish(run, 180)
         assert status == 0, err
         assert out.startswith("battery 1\n") and "sent" in out
@@ -185,6 +203,7 @@ def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp
         assert {m.linear.x for m in driver.messages} >= {0.05}
         assert all(m.__msgtype__ == "geometry_msgs/msg/Twist" for m in driver.messages)
     finally:
+        graph.close()
         twin.close()
 
 
@@ -314,7 +333,7 @@ def _discovery(env, tmp_path, variables, wait):
     child = dict(
         env,
         CYCLONEDDS_URI=uri.resolve().as_uri(),
-        ROS_DOMAIN_ID=str(random.randint(100, 200)),
+        ROS_DOMAIN_ID=str(domains.next_domain()),
         ROS_DISTRO="jazzy",
         **variables,
     )
@@ -352,3 +371,123 @@ def test_discovery_off_keeps_two_processes_apart(env, tmp_path):
     assert control[-1] == "heard"
     lines = _discovery(env, tmp_path, {"ROS_AUTOMATIC_DISCOVERY_RANGE": "OFF"}, max(3.0, 3 * needed))
     assert lines[0].startswith("ready discovery OFF") and lines[-1] == "silent", lines
+
+
+# -- a robot.yaml profile, and the line of what was heard on Ctrl-C ----------------------------------------------
+
+
+def _reader_qos(participant, topic):
+    """The QoS of the DDS readers of `topic` (any participant), as discovery tells them."""
+    from cyclonedds.builtin import BuiltinDataReader, BuiltinTopicDcpsSubscription
+
+    reader = BuiltinDataReader(participant, BuiltinTopicDcpsSubscription)
+    try:
+        return [s.qos for s in reader.read(N=256) or () if s.topic_name == "rt" + topic]
+    finally:
+        reader.__del__()
+
+
+@pytest.mark.slow
+def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_was_heard(env, tmp_path):
+    """DIFF_DRIVE_ROBOT.make_from_profile with tests/robots/programs/profile_ros2/robot.yaml: TwistStamped
+    on /wheels/cmd, odometry on /wheels/odom read reliably with depth 3; Ctrl-C ends the run (130) with
+    one line of what was heard."""
+    from cyclonedds.qos import Policy
+
+    twin = rmw_twin.Node("jazzy")
+    stop = threading.Event()
+    odom = twin.create_publisher("nav_msgs/msg/Odometry", "/wheels/odom")
+
+    def publish():
+        while not stop.wait(0.05):
+            odom.publish(odom.new())
+
+    talker = threading.Thread(target=publish)
+    talker.start()
+    run = None
+    try:
+        driver = twin.create_subscription("geometry_msgs/msg/TwistStamped", "/wheels/cmd")
+        run = scoopc(env, "run", str(PROGRAMS / "profile_ros2"), "--robot", "ros2", cwd=tmp_path)
+        # issue 17: the program waits on its ROS_PARAMETER `speed' until a stock node sets it
+        setting = twin.create_client("rcl_interfaces/srv/SetParameters", "/profile_ros2/set_parameters")
+
+        def parameter(name, **value):
+            value = rmw_twin.new_message(twin.store, "rcl_interfaces/msg/ParameterValue", **value)
+            return rmw_twin.new_message(twin.store, "rcl_interfaces/msg/Parameter", name=name, value=value)
+
+        speeds = [parameter("speed", type=2, integer_value=1), parameter("speed", type=3, double_value=0.1)]
+        deadline = time.monotonic() + 120
+        while True:  # until the program, started, has declared it
+            results = setting.call(setting.new_request(parameters=speeds), 120).results
+            if results[1].reason != "parameter speed is not declared" or time.monotonic() > deadline:
+                break
+            assert not driver.messages  # still waiting for its speed
+            time.sleep(0.1)
+        assert [(r.successful, r.reason) for r in results] == [
+            (False, "parameter speed is a double, not an integer"),
+            (True, ""),
+        ]
+        assert driver.wait_for(lambda s: len(s.messages) >= 5, TIMEOUT)
+        qos = None
+        deadline = time.monotonic() + TIMEOUT
+        while not qos and time.monotonic() < deadline:
+            qos = _reader_qos(twin.participant, "/wheels/odom")
+            time.sleep(0.05)
+        assert qos and Policy.History.KeepLast(3) in qos[0]
+        assert isinstance(qos[0][Policy.Reliability], Policy.Reliability.Reliable)
+        graph = rmw_twin.GraphReader(twin)  # issue 17: the node is named after the root class
+        assert graph.wait_for(lambda g: g.nodes() == ["/profile_ros2"], TIMEOUT), graph.nodes()
+        assert ("writer", "geometry_msgs/msg/TwistStamped", "/profile_ros2") in graph.endpoints("/wheels/cmd")
+        graph.close()
+        # issue 17: `ros2 param set /profile_ros2 use_sim_time true` switches the stamps to /clock
+        assert abs(driver.messages[-1].header.stamp.sec - time.time()) < 5
+        clock = twin.create_publisher("rosgraph_msgs/msg/Clock", "/clock")
+        at_1000 = clock.new(clock=rmw_twin.new_message(twin.store, "builtin_interfaces/msg/Time", sec=1000))
+        clock.publish(at_1000)
+        request = setting.new_request(parameters=[parameter("use_sim_time", type=1, bool_value=True)])
+        assert setting.call(request, TIMEOUT).results[0].successful
+        for _ in range(3):  # /clock is best effort for the program's reader: say it again while it subscribes
+            clock.publish(at_1000)
+            time.sleep(0.2)
+        assert driver.wait_for(lambda s: s.messages[-1].header.stamp.sec == 1000, TIMEOUT)
+        time.sleep(0.3)  # some odometry heard
+        run.send_signal(2)
+        status, out, err = finish(run)
+        assert status == 130, err
+        said = "profile True stamped True max 0.29999999999999999 1.2 cmd /wheels/cmd odom /wheels/odom\n"
+        assert out == said + "speed 0.10000000000000001 after 1 change\n", out
+        assert "robot profile" in err and "robot.yaml" in err
+        heard = [line for line in err.splitlines() if line.startswith("scoopc: heard ")]
+        assert len(heard) == 1 and "nothing on /scan" in heard[0], err  # the laser of the profile: none here
+        assert int(heard[0].split("/wheels/odom (")[1].split(")")[0]) > 0, err
+        assert {m.twist.linear.x for m in driver.messages} >= {0.1}
+    finally:
+        stop.set()
+        talker.join()
+        if run is not None and run.poll() is None:
+            run.kill()
+        twin.close()
+
+
+# -- issue 17: ROS_SERVICE_CLIENT and ROS_SERVICE_SERVER in a program, against a stock node ----------------
+
+
+@pytest.mark.slow
+def test_a_program_calls_a_stock_service_and_serves_one(env, tmp_path):
+    twin = rmw_twin.Node("jazzy")
+    run = None
+    try:
+        trigger = twin.create_service(
+            "std_srvs/srv/Trigger", "/twin/trigger", lambda request: trigger.new_response(success=True, message="hi")
+        )
+        run = scoopc(env, "run", str(PROGRAMS / "service_ros2"), "--robot", "ros2", cwd=tmp_path)
+        enable = twin.create_client("std_srvs/srv/SetBool", "/svc/enable")
+        reply = enable.call(enable.new_request(data=True), 120)
+        assert (reply.success, reply.message) == (True, "enabled True")
+        status, out, err = finish(run, 120)
+        assert status == 0, err
+        assert out == "trigger: hi\nserved data=True\n", err
+    finally:
+        if run is not None and run.poll() is None:
+            run.kill()
+        twin.close()

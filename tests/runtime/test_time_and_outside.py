@@ -3,6 +3,7 @@
 import threading
 
 import scoopc.runtime as rt
+from scoopc.runtime.sched import BUSY_CALLS, BUSY_QUANTUM_NS
 
 from rt_helpers import Cell, gated_cell
 
@@ -189,3 +190,40 @@ def test_a_leaf_outside_call_run_by_the_transport_wakes_a_wait_condition(h):
     src.close()
     assert h.finish() == 0
     assert got == [7] and c.value == 0
+
+
+def busy_until(here, cell, sensor, until_ns):
+    """A loop that never sleeps: one reservation of `cell` per iteration until the clock reaches
+    `until_ns`; returns the iterations and the clock when `sensor` (set by a timer) was first seen."""
+    n, seen_at = 0, None
+    while rt.now_ns() < until_ns:
+        with here.reserve1(cell):
+            here.call(cell, Cell.add, (n,))
+        with here.reserve1(sensor):
+            if seen_at is None and here.query(sensor, Cell.get):
+                seen_at = rt.now_ns()
+        n += 1
+    return n, seen_at
+
+
+def busy_run(harness):
+    h = harness(virtual_clock=True)
+    root = h.root
+    cell = root.new_separate(Cell, Cell.make)
+    sensor = root.new_separate(Cell, Cell.make)
+    rt.call_later(SECOND // 2, sensor, Cell.set, (True,), phase=0)  # as a simulator step
+    result = busy_until(root, cell, sensor, SECOND)
+    end = rt.now_ns()
+    assert h.finish() == 0
+    return result, end
+
+
+def test_virtual_clock_goes_on_under_a_busy_processor(harness):
+    """A processor that never sleeps is charged BUSY_QUANTUM_NS every BUSY_CALLS reservations:
+    the clock reaches its deadline, the timer's command runs in between, and two runs agree."""
+    (n, seen_at), end = busy_run(harness)
+    # Two reservations per iteration; the quantum that reaches 1 s comes inside the iteration that
+    # began at 0.99 s, which still completes.
+    assert n == SECOND // BUSY_QUANTUM_NS * BUSY_CALLS // 2 + 1
+    assert seen_at == SECOND // 2 and end == SECOND
+    assert busy_run(harness) == ((n, seen_at), end)

@@ -95,6 +95,24 @@ def ros_distro(current):
     return strings.new_string_8(current._region_, _settings().distro)
 
 
+def has_profile(current):
+    return _settings().profile is not None
+
+
+def profile_stamped(current):
+    settings = _settings()
+    if settings.profile is not None:
+        return settings.profile.stamped
+    return bool(settings.stamped[settings.main]) if settings.main < len(settings.stamped) else False
+
+
+def profile_topic(current, namespace, name):
+    namespace, name = strings.text(namespace), strings.text(name)
+    profile = _settings().profile
+    found = profile.topic(name, namespace) if profile is not None and name in profile.topics else f"{namespace}/{name}"
+    return strings.new_string_8(current._region_, found)
+
+
 def report(current, text):
 
     sys.stderr.write(f"scoopc: {strings.text(text)}\n")

@@ -8,6 +8,11 @@ note
 		that saw it), one stops the robot when the stop is requested (`stop_on_emergency').
 		Random turn durations make the robot cover the floor instead of bouncing between the
 		same walls. The guards that stay true run every `period' (50 ms by default).
+		The paper's `start' and `launch': `start' (BEHAVIOR's) makes a fresh stop signaler and
+		three controllers, and `launch' sets them going, one loop each: `go_straight',
+		`turn_to_avoid_obstacles', `stop_on_emergency'. Made with `make_simple', the controllers
+		are the paper's own: `go', `turn' and `stop' on the robot (SIMPLE_CONTROLLER's
+		`make_for_robot'); made otherwise, the loops repeat the tuned `cruise', `avoid' and `halt'.
 	]"
 
 class
@@ -15,9 +20,12 @@ class
 
 inherit
 	BEHAVIOR
+		rename
+			launch as launch_controllers
+		end
 
 create
-	make, make_for_robot
+	make, make_for_robot, make_simple
 
 feature {NONE} -- Initialization
 
@@ -42,7 +50,20 @@ feature {NONE} -- Initialization
 			make (a_robot.range_signaler, a_robot.drive, a_robot.max_linear, a_robot.max_angular)
 		end
 
+	make_simple (a_robot: separate DIFF_DRIVE_ROBOT)
+			-- The paper's exploration: three controllers of `a_robot' (`go', `turn', `stop').
+		do
+			make_for_robot (a_robot)
+			robot := a_robot
+		ensure
+			not_running: not is_running
+			simple: robot /= Void
+		end
+
 feature -- Access
+
+	robot: detachable separate DIFF_DRIVE_ROBOT
+			-- The robot of `make_simple' (Void: the tuned controllers).
 
 	range_signaler: separate RANGE_SIGNALER
 			-- Obstacles and holes.
@@ -83,9 +104,20 @@ feature -- Element change
 			seed := a_seed
 		end
 
+feature -- Basic operations
+
+	launch (a, b, c: separate SIMPLE_CONTROLLER)
+			-- Set the three controllers going together (the paper's): `a' goes straight, `b' turns to
+			-- avoid obstacles, `c' stops the robot on an emergency.
+		do
+			a.go_straight
+			b.turn_to_avoid_obstacles
+			c.stop_on_emergency
+		end
+
 feature {NONE} -- Implementation
 
-	launch (a_stop: separate STOP_SIGNALER)
+	launch_controllers (a_stop: separate STOP_SIGNALER)
 			-- <Precursor>
 		local
 			m: separate MANEUVER_SIGNALER
@@ -93,20 +125,24 @@ feature {NONE} -- Implementation
 		do
 			create m.make
 			maneuver_signaler := m
-			create straight.make_with_maneuver (a_stop, range_signaler, m, drive, linear_speed, angular_speed, period)
-			create avoider.make_with_maneuver (a_stop, range_signaler, m, drive, linear_speed, angular_speed, period)
-			create emergency.make_with_maneuver (a_stop, range_signaler, m, drive, linear_speed, angular_speed, period)
-			start_controllers (straight, avoider, emergency)
+			if attached robot as r then
+				create straight.make_for_robot (a_stop, r)
+				create avoider.make_for_robot (a_stop, r)
+				create emergency.make_for_robot (a_stop, r)
+			else
+				create straight.make_with_maneuver (a_stop, range_signaler, m, drive, linear_speed, angular_speed, period)
+				create avoider.make_with_maneuver (a_stop, range_signaler, m, drive, linear_speed, angular_speed, period)
+				create emergency.make_with_maneuver (a_stop, range_signaler, m, drive, linear_speed, angular_speed, period)
+				seed_avoider (avoider)
+			end
+			launch (straight, avoider, emergency)
 			launch_more (a_stop, m)
 		end
 
-	start_controllers (a_straight, a_avoider, a_emergency: separate SIMPLE_CONTROLLER)
-			-- Set the three controllers going together.
+	seed_avoider (a_avoider: separate SIMPLE_CONTROLLER)
+			-- Seed the random turns of `a_avoider'.
 		do
 			a_avoider.set_seed (seed)
-			a_straight.run_cruise
-			a_avoider.run_avoid
-			a_emergency.run_emergency
 		end
 
 	launch_more (a_stop: separate STOP_SIGNALER; a_maneuver: separate MANEUVER_SIGNALER)

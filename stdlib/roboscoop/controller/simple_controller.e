@@ -2,25 +2,30 @@ note
 	description: "[
 		The paper's simple controller: go straight while the way is clear, turn away from an
 		obstacle, stop on an emergency. Each behaviour is a guarded routine over separate
-		signalers (STOP_SIGNALER, RANGE_SIGNALER, and a MANEUVER_SIGNALER for timed turns) whose
-		wait condition says when it applies; it commands a separate DIFFERENTIAL_DRIVE.
+		signalers whose wait condition says when it applies.
 
-		Two ways to use it. One controller can serve `go_straight' and `turn' on its own
-		processor (`run'). Or, as in the paper's exploration, three controllers are launched
-		together, each repeating one guarded routine until the stop signaler fires:
-		`run_cruise' (`cruise': forward while clear), `run_avoid' (`avoid': timed escape
-		maneuvers away from obstacles and holes, with random turn durations) and
-		`run_emergency' (`stop_on_emergency'). Each guard also holds once the stop is requested,
+		The paper's routines work on a ROBOT (`make_for_robot'): `go' (apply the default speed
+		when nothing is in front), `turn' (turn away from an obstacle while the robot moves) and
+		`stop' (stop the moving robot once a stop is requested). The controller's loops take no
+		arguments: `go_straight', `turn_to_avoid_obstacles' and `stop_on_emergency' repeat their
+		routine until the stop signaler fires. In the paper's exploration three controllers are
+		launched together, one loop each (EXPLORATION_BEHAVIOR's `launch').
+
+		A controller made with `make' or `make_with_maneuver' works on a DIFFERENTIAL_DRIVE
+		instead, and its loops repeat the library's tuned routines: `cruise' (forward while clear),
+		`avoid' (timed escape maneuvers away from obstacles and holes, with random turn durations,
+		shared through a MANEUVER_SIGNALER) and `halt'; `run' alternates `drive_straight' and
+		`turn_away' on one processor. Every guard of a loop also holds once the stop is requested,
 		so every loop ends. Not a busy loop: a guard that stays true runs every `period'
-		nanoseconds (the controller sleeps on the runtime's clock between iterations), so
-		cmd_vel gets at most one command per period from each controller.
+		nanoseconds (the controller sleeps on the runtime's clock between iterations), so cmd_vel
+		gets at most one command per period from each controller.
 	]"
 
 class
 	SIMPLE_CONTROLLER
 
 create
-	make, make_with_maneuver
+	make, make_with_maneuver, make_for_robot
 
 feature {NONE} -- Initialization
 
@@ -61,7 +66,27 @@ feature {NONE} -- Initialization
 			backoff_time := 0.4
 		end
 
+	make_for_robot (a_stop: separate STOP_SIGNALER; a_robot: separate DIFF_DRIVE_ROBOT)
+			-- Controller of `a_robot' (the paper's `go', `turn' and `stop'), with its range signaler,
+			-- odometry and drive, at its top speeds, every `Default_period'.
+		do
+			make (a_stop, a_robot.range_signaler, a_robot.drive, a_robot.max_linear, a_robot.max_angular, Default_period)
+			controlled_robot := a_robot
+			odometry_signaler := a_robot.odometry
+		ensure
+			has_robot: controlled_robot /= Void
+		end
+
 feature -- Access
+
+	controlled_robot: detachable separate ROBOT
+			-- The robot of `make_for_robot' (Void: the controller commands `drive').
+
+	odometry_signaler: detachable separate ODOMETRY_SIGNALER
+			-- The robot's motion, with `controlled_robot'.
+
+	Default_period: INTEGER_64 = 50_000_000
+			-- 50 ms: the period of `make_for_robot'.
 
 	stop_signaler: separate STOP_SIGNALER
 			-- Emergency stop.
@@ -126,7 +151,40 @@ feature -- Element change
 
 feature -- Guarded behaviours
 
-	go_straight (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
+	go (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; robot: separate ROBOT)
+			-- Go straight when nothing is in front (the paper's).
+		require
+			not s_sig.is_stop_requested
+			not r_sig.has_obstacle
+		do
+			robot.apply_default_speed
+		end
+
+	turn (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; o_sig: separate ODOMETRY_SIGNALER;
+			robot: separate ROBOT)
+			-- Turn away from an obstacle in front while the robot moves (the paper's).
+		require
+			not s_sig.is_stop_requested
+			r_sig.has_obstacle
+			o_sig.is_moving
+		do
+			if r_sig.is_obstacle_left then
+				robot.turn_right
+			else
+				robot.turn_left
+			end
+		end
+
+	stop (s_sig: separate STOP_SIGNALER; o_sig: separate ODOMETRY_SIGNALER; robot: separate ROBOT)
+			-- Stop the moving robot once a stop is requested (the paper's).
+		require
+			s_sig.is_stop_requested
+			o_sig.is_moving
+		do
+			robot.stop
+		end
+
+	drive_straight (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
 			-- Drive forward when nothing is in front.
 		require
 			not s_sig.is_stop_requested
@@ -135,7 +193,7 @@ feature -- Guarded behaviours
 			a_drive.send (linear_speed, 0.0)
 		end
 
-	turn (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
+	turn_away (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
 			-- Turn in place away from an obstacle in front (to the right when it is on the left).
 		require
 			not s_sig.is_stop_requested
@@ -148,7 +206,7 @@ feature -- Guarded behaviours
 			end
 		end
 
-	stop_on_emergency (s_sig: separate STOP_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
+	halt (s_sig: separate STOP_SIGNALER; a_drive: separate DIFFERENTIAL_DRIVE)
 			-- Stop the robot once a stop is requested.
 		require
 			s_sig.is_stop_requested
@@ -232,15 +290,20 @@ feature -- Loops
 			finished: is_finished
 		end
 
-	run_cruise
-			-- Repeat `cruise' until the stop signaler fires.
+	go_straight
+			-- Until the stop signaler fires, drive straight ahead whenever the way is clear, every
+			-- `period': the paper's `go' on `controlled_robot', or `cruise' on `drive'.
 		do
 			from
 				is_finished := False
 			until
 				is_finished
 			loop
-				cruise (stop_signaler, range_signaler, maneuver_signaler, drive)
+				if attached controlled_robot as r then
+					go_or_finish (stop_signaler, range_signaler, r)
+				else
+					cruise (stop_signaler, range_signaler, maneuver_signaler, drive)
+				end
 				iteration_count := iteration_count + 1
 				pause
 			end
@@ -248,15 +311,20 @@ feature -- Loops
 			finished: is_finished
 		end
 
-	run_avoid
-			-- Repeat `avoid' until the stop signaler fires.
+	turn_to_avoid_obstacles
+			-- Until the stop signaler fires, turn away from obstacles, every `period': the paper's
+			-- `turn' on `controlled_robot', or `avoid' (escape maneuvers, holes too) on `drive'.
 		do
 			from
 				is_finished := False
 			until
 				is_finished
 			loop
-				avoid (stop_signaler, range_signaler, maneuver_signaler, drive)
+				if attached controlled_robot as r and attached odometry_signaler as o then
+					turn_or_finish (stop_signaler, range_signaler, o, r)
+				else
+					avoid (stop_signaler, range_signaler, maneuver_signaler, drive)
+				end
 				iteration_count := iteration_count + 1
 				pause
 			end
@@ -264,11 +332,16 @@ feature -- Loops
 			finished: is_finished
 		end
 
-	run_emergency
-			-- Wait for the stop request, then stop the robot.
+	stop_on_emergency
+			-- Wait for the stop request, then stop the robot: the paper's `stop' on a moving
+			-- `controlled_robot' (a robot at rest gets a stop too), or `halt' on `drive'.
 		do
 			is_finished := False
-			stop_on_emergency (stop_signaler, drive)
+			if attached controlled_robot as r and attached odometry_signaler as o then
+				stop_or_finish (stop_signaler, o, r)
+			else
+				halt (stop_signaler, drive)
+			end
 			iteration_count := iteration_count + 1
 		ensure
 			finished: is_finished
@@ -304,13 +377,51 @@ feature {NONE} -- Implementation
 			-- One iteration: the behaviour whose guard holds (all three reserved together).
 		do
 			if s_sig.is_stop_requested then
-				stop_on_emergency (s_sig, a_drive)
+				halt (s_sig, a_drive)
 			elseif r_sig.has_obstacle then
-				turn (s_sig, r_sig, a_drive)
+				turn_away (s_sig, r_sig, a_drive)
 			else
-				go_straight (s_sig, r_sig, a_drive)
+				drive_straight (s_sig, r_sig, a_drive)
 			end
 			iteration_count := iteration_count + 1
+		end
+
+	go_or_finish (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; a_robot: separate ROBOT)
+			-- `go', or finish once the stop is requested.
+		require
+			s_sig.is_stop_requested or not r_sig.has_obstacle
+		do
+			if s_sig.is_stop_requested then
+				is_finished := True
+			else
+				go (s_sig, r_sig, a_robot)
+			end
+		end
+
+	turn_or_finish (s_sig: separate STOP_SIGNALER; r_sig: separate RANGE_SIGNALER; o_sig: separate ODOMETRY_SIGNALER;
+			a_robot: separate ROBOT)
+			-- `turn', or finish once the stop is requested.
+		require
+			s_sig.is_stop_requested or (r_sig.has_obstacle and o_sig.is_moving)
+		do
+			if s_sig.is_stop_requested then
+				is_finished := True
+			else
+				turn (s_sig, r_sig, o_sig, a_robot)
+			end
+		end
+
+	stop_or_finish (s_sig: separate STOP_SIGNALER; o_sig: separate ODOMETRY_SIGNALER; a_robot: separate ROBOT)
+			-- Once the stop is requested: `stop' the robot (at rest too), and finish.
+		require
+			s_sig.is_stop_requested
+		do
+			if o_sig.is_moving then
+				stop (s_sig, o_sig, a_robot)
+			else
+				a_robot.stop
+			end
+			is_finished := True
 		end
 
 	plan_escape (r_sig: separate RANGE_SIGNALER; m_sig: separate MANEUVER_SIGNALER; a_now: REAL_64)

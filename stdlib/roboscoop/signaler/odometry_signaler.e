@@ -62,9 +62,9 @@ feature -- Access
 feature -- Status report
 
 	is_moving: BOOLEAN
-			-- Is the robot moving forward or backward?
+			-- Is the robot moving: forward, backward or turning (in place too)?
 		do
-			Result := vx.abs > moving_threshold
+			Result := vx.abs > moving_threshold or is_twisting
 		end
 
 	is_twisting: BOOLEAN

@@ -1,8 +1,8 @@
 note
 	description: "[
 		Range sensors seen as one signaler that answers the questions of obstacle avoidance:
-		`has_obstacle' (in front), `is_obstacle_left' / `is_obstacle_right', `is_obstacle_behind',
-		`has_ground_hole'. Sensors: 0 left, 1 center_left, 2 center, 3 center_right, 4 right,
+		`has_obstacle' (in front, a hole under a ground sensor included), `is_obstacle_left' /
+		`is_obstacle_right', `is_obstacle_behind', `has_ground_hole'. Sensors: 0 left, 1 center_left, 2 center, 3 center_right, 4 right,
 		5 rear_left, 6 rear_right, 7 ground left, 8 ground right.
 		Fed either by the Thymio's seven proximity and two ground sensor_msgs/Range topics
 		(`make_thymio'; distances from the body surface, obstacle under 0.08 m), or by a laser
@@ -27,7 +27,7 @@ inherit
 		end
 
 create
-	make_thymio, make_laser, make_unconnected
+	make_thymio, make_laser, make_laser_topic, make_unconnected
 
 feature {NONE} -- Initialization
 
@@ -54,13 +54,22 @@ feature {NONE} -- Initialization
 			-- Signaler fed by the laser scans on `a_namespace' + "/scan".
 		local
 			namespace: STRING
+		do
+			create namespace.make_from_separate (a_namespace)
+			make_laser_topic (namespace + "/scan")
+		ensure
+			laser: is_laser
+		end
+
+	make_laser_topic (a_topic: separate STRING)
+			-- Signaler fed by the laser scans on `a_topic' ("/robot1/scan").
+		local
 			i: INTEGER
 		do
 			make_unconnected
 			is_laser := True
 			obstacle_distance := 0.35
-			create namespace.make_from_separate (a_namespace)
-			new_subscriber (namespace + "/scan").listen_scan (Current)
+			new_subscriber (create {STRING}.make_from_separate (a_topic)).listen_scan (Current)
 			from i := 0 until i > 6 loop
 				connected [i] := True
 				i := i + 1
@@ -123,21 +132,22 @@ feature -- Status report
 			-- Is Current fed by a laser scanner?
 
 	has_obstacle: BOOLEAN
-			-- Is there an obstacle in front?
+			-- Is there an obstacle in front: something near a front sensor, or no floor under a
+			-- ground sensor (a hole is in the way as much as a wall)?
 		do
-			Result := is_near (0) or is_near (1) or is_near (2) or is_near (3) or is_near (4)
+			Result := is_near (0) or is_near (1) or is_near (2) or is_near (3) or is_near (4) or has_ground_hole
 		end
 
 	is_obstacle_left: BOOLEAN
-			-- Is there an obstacle on the front left?
+			-- Is there an obstacle on the front left (a hole under the left ground sensor included)?
 		do
-			Result := is_near (0) or is_near (1)
+			Result := is_near (0) or is_near (1) or is_hole_left
 		end
 
 	is_obstacle_right: BOOLEAN
-			-- Is there an obstacle on the front right?
+			-- Is there an obstacle on the front right (a hole under the right ground sensor included)?
 		do
-			Result := is_near (3) or is_near (4)
+			Result := is_near (3) or is_near (4) or is_hole_right
 		end
 
 	is_obstacle_behind: BOOLEAN

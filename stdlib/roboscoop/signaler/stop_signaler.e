@@ -60,6 +60,18 @@ feature -- Basic operations
 			requested: is_stop_requested
 		end
 
+	set_stop_requested (a_value: BOOLEAN)
+			-- Ask everyone to stop (`request_stop') when `a_value', else withdraw the request (`reset').
+		do
+			if a_value then
+				request_stop
+			else
+				reset
+			end
+		ensure
+			set: is_stop_requested = a_value
+		end
+
 	reset
 			-- Withdraw the stop request (children keep theirs).
 		do

@@ -102,6 +102,14 @@ feature -- Access
 			"Python"
 		end
 
+	profile_topic (a_namespace, a_name: STRING): STRING
+			-- Full name of the robot topic `a_name' ("cmd_vel", "odom", "battery_state", "scan") for
+			-- the robot under `a_namespace': the name the run's robot profile gives it (relative names
+			-- under `a_namespace'), else `a_namespace' + "/" + `a_name'.
+		external
+			"Python"
+		end
+
 feature -- Output
 
 	report (a_text: STRING)
@@ -132,6 +140,19 @@ feature -- Status report
 
 	has_charging_station: BOOLEAN
 			-- Does the world have a charging station?
+		external
+			"Python"
+		end
+
+	has_profile: BOOLEAN
+			-- Does this run have a robot profile (robot.yaml, `--profile'; ROS 2 runs only)?
+		external
+			"Python"
+		end
+
+	profile_stamped: BOOLEAN
+			-- Does the program's robot take TwistStamped on cmd_vel, as its profile says (ROS 2), or
+			-- as the simulated robot does (its world's `cmd_vel_stamped')?
 		external
 			"Python"
 		end

@@ -1,0 +1,79 @@
+"""ROS_SERVICE_SERVER's `external "Python"` features (stdlib/roboscoop/communication/ros_service_server.e).
+
+A scoopc.robots.services.ServiceServer on the process's transport. Each request, on the server's
+DDS thread, becomes an ASYNCHRONOUS call of `answer' on the Eiffel server's processor, logged by
+an outside client of the runtime (`rt.outside_client`), as subscriptions deliver messages; the
+DDS thread waits for that call's result (the response) and sends it. A failing `answer' is told
+on stderr and the request gets no response (the client's call times out)."""
+
+import sys
+import threading
+
+import scoopc.runtime as rt
+from scoopc.kernel import strings
+from scoopc.kernel.ext.exception import failure
+from scoopc.robots import eiffel_bridge, transport
+
+ANSWER_WAIT = 60.0  # seconds the DDS thread waits for the processor's answer
+
+
+class _Answer:
+    """One request's response, set on the server's processor, awaited on the DDS thread."""
+
+    def __init__(self, request):
+        self.request, self.response, self.done = request, None, threading.Event()
+
+
+def _answer(current, pending, store, response_type):
+    """On the server's processor: the Eiffel `answer' to one request."""
+    try:
+        request = eiffel_bridge.from_message(pending.request, current._region_, store)
+        response = current.answer(request)
+        pending.response = eiffel_bridge.to_message(response, response_type, store)
+    except BaseException as e:
+        sys.stderr.write(f"scoopc: service {strings.text(current.service)}: `answer' failed: {e}\n")
+        raise
+    finally:
+        pending.done.set()
+
+
+def start_serving(current):
+    from scoopc.robots import services  # deferred: start-up (cyclonedds loads only when services are used)
+
+    bus = transport.current()
+    name = strings.text(current.service)
+    if not hasattr(bus, "owned"):
+        raise failure(
+            current._region_,
+            "DEVELOPER_EXCEPTION",
+            f"ROS_SERVICE_SERVER {name}: ROS 2 services need a ROS 2 robot over DDS (scoopc run --robot ros2)",
+        )
+    source = rt.outside_client(f"service {name}")
+    holder = {}
+
+    def handle(request):
+        pending = _Answer(request)
+        server = holder["server"]
+        source.call(current, _answer, (pending, server.store, server.response_type))
+        if not pending.done.wait(ANSWER_WAIT) or pending.response is None:
+            raise RuntimeError(f"no answer from the server's processor for {name}")
+        return pending.response
+
+    try:
+        holder["server"] = services.ServiceServer(bus, name, strings.text(current.service_type), handle)
+    except (TypeError, ValueError) as e:
+        source.close()
+        raise failure(current._region_, "DEVELOPER_EXCEPTION", f"ROS_SERVICE_SERVER: {e}") from None
+
+    def stop():
+        holder["server"].close()
+        source.close()
+
+    current._service_stop = stop
+    rt.add_shutdown_hook(stop)
+
+
+def close(current):
+    stop = current.__dict__.get("_service_stop")
+    if stop is not None:
+        stop()

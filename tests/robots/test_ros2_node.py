@@ -1,0 +1,224 @@
+"""Issue 17, "a real node": a scoopc program's DdsBus is a node of the ROS graph. A graph reader built
+on rmw_dds_common's definitions (tests/robots/rmw_twin.py GraphReader, as graph_cache.cpp reads the
+graph) sees the node, names its endpoints, and decodes ros_discovery_info with the distribution's
+Gid (24 bytes in Humble, 16 from Jazzy on). The processes `scoopc run` and `scoopc sim` are checked
+in tests/robots/test_ros2_robots.py (slow)."""
+
+import random
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+pytest.importorskip("cyclonedds")
+
+from scoopc.exits import UsageError  # noqa: E402
+from scoopc.robots import backends, dds, graph, ros_messages, runner  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).parent))
+import rmw_twin  # noqa: E402
+
+TIMEOUT = 30.0
+
+
+def _until(predicate, timeout=TIMEOUT):
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        found = predicate()
+        if found:
+            return found
+        time.sleep(0.02)
+    return predicate()
+
+
+@pytest.mark.parametrize("distro, size", [("humble", 24), ("jazzy", 16)])
+def test_a_graph_reader_sees_the_node_and_names_its_endpoints(distro, size, monkeypatch):
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(random.randint(100, 200)))
+    monkeypatch.setenv(backends.ENV, "dds")
+    previous = ros_messages.distro()
+    ros_messages.use_distro(distro)
+    bus = backends.open_ros2_bus(node=("explorer", "robot1"))
+    twin = rmw_twin.Node(distro)
+    reader = rmw_twin.GraphReader(twin)
+    try:
+        bus.subscribe("/robot1/odom", lambda msg: None)
+        bus.publish("/robot1/cmd_vel", ros_messages.new("geometry_msgs/msg/Twist"))
+        stock = twin.create_publisher("nav_msgs/msg/Odometry", "/robot1/odom")
+        assert _until(lambda: reader.nodes()) == ["/robot1/explorer"]
+        assert _until(lambda: len(reader.endpoints("/robot1/odom")) == 2)
+        assert reader.endpoints("/robot1/odom") == [
+            ("reader", "nav_msgs/msg/Odometry", "/robot1/explorer"),
+            ("writer", "nav_msgs/msg/Odometry", "_NODE_NAME_UNKNOWN_"),  # the twin publishes no graph info
+        ]
+        assert _until(lambda: reader.endpoints("/robot1/cmd_vel")) == [
+            ("writer", "geometry_msgs/msg/Twist", "/robot1/explorer")
+        ]
+        assert set(reader.gid_sizes) == {size}
+        stock.close()
+        # a reader closed later leaves the node's list (the graph is republished on every change)
+        bus.subscribe("/robot1/scan", lambda msg: None).close()
+        assert _until(lambda: not reader.endpoints("/robot1/scan"))
+    finally:
+        reader.close()
+        twin.close()
+        bus.close()
+        ros_messages.use_distro(previous)
+
+
+def test_a_bare_dds_participant_is_not_a_node(monkeypatch):
+    """Without the graph node (DdsBus alone) the endpoints belong to no node, as before issue 17."""
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(random.randint(100, 200)))
+    bus = dds.DdsBus()
+    twin = rmw_twin.Node("jazzy")
+    reader = rmw_twin.GraphReader(twin)
+    try:
+        bus.publish("/bare/cmd_vel", ros_messages.new("geometry_msgs/msg/Twist"))
+        assert _until(lambda: reader.endpoints("/bare/cmd_vel")) == [
+            ("writer", "geometry_msgs/msg/Twist", "_NODE_NAME_UNKNOWN_")
+        ]
+        assert reader.nodes() == []
+    finally:
+        reader.close()
+        twin.close()
+        bus.close()
+
+
+def test_node_names_and_namespaces():
+    assert graph.node_namespace(None) == "/" and graph.node_namespace("robot1/") == "/robot1"
+    assert graph.gid_bytes(bytes(range(16)), "humble") == bytes(range(16)) + bytes(8)
+    assert graph.gid_bytes(bytes(range(16)), "jazzy") == bytes(range(16))
+    assert runner.RobotOptions(node_name="my_node").node_name == "my_node"
+    with pytest.raises(UsageError, match="not a valid ROS 2 node name"):
+        runner.RobotOptions(node_name="2fast")
+
+
+# -- services, both ways, in rmw_cyclonedds_cpp's format ----------------------------------------------------
+
+
+@pytest.fixture
+def bus_and_twin(monkeypatch):
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(random.randint(100, 200)))
+    bus = dds.DdsBus()
+    twin = rmw_twin.Node(bus.distro)
+    yield bus, twin
+    twin.close()
+    bus.close()
+
+
+def test_a_service_both_ways_with_a_stock_node(bus_and_twin):
+    from scoopc.robots import services
+
+    bus, twin = bus_and_twin
+    asked = []
+
+    def answer(request):
+        asked.append(request.__msgtype__)
+        return server.new_response(success=True, message=f"call {len(asked)}")
+
+    server = services.ServiceServer(bus, "/robot1/reset", "std_srvs/srv/Trigger", answer)
+    client = twin.create_client("std_srvs/srv/Trigger", "/robot1/reset")
+    assert [client.call(client.new_request(), TIMEOUT).message for _ in range(2)] == ["call 1", "call 2"]
+    assert asked == ["std_srvs/srv/Trigger_Request"] * 2
+
+    stock = twin.create_service(
+        "std_srvs/srv/Trigger", "/twin/go", lambda request: stock.new_response(success=True, message="stock")
+    )
+    ours = services.ServiceClient(bus, "/twin/go", "std_srvs/srv/Trigger")
+    assert ours.wait_for_service(TIMEOUT)
+    reply = ours.call(ours.new_request(), TIMEOUT)
+    assert (reply.success, reply.message) == (True, "stock")
+    silent = services.ServiceClient(bus, "/nobody/there", "std_srvs/srv/Trigger")
+    with pytest.raises(services.ServiceTimeout, match="no reply from /nobody/there within 0.2 s"):
+        silent.call(silent.new_request(), 0.2)
+
+
+def test_the_wire_format_is_the_request_header_then_the_message():
+    from scoopc.robots import cdr, services
+
+    store = services.service_store("jazzy")
+    request = ros_messages.new("std_srvs/srv/SetBool_Request", store=store, data=True)
+    body = cdr.serialize(request, "std_srvs/srv/SetBool_Request", store)
+    wire = services.request_bytes(7, 3, body)
+    assert wire[:4] == b"\x00\x01\x00\x03" and wire[4:20] == (7).to_bytes(8, "little") + (3).to_bytes(8, "little")
+    assert wire[20] == 1 and len(wire) % 4 == 0
+    assert services.parse_request(wire)[:2] == (7, 3)
+
+
+# -- parameters: each operation from a stock node ------------------------------------------------------------
+
+
+def test_each_parameter_operation_from_a_stock_node(bus_and_twin):
+    from scoopc.robots import parameters
+
+    bus, twin = bus_and_twin
+    node = parameters.ParameterNode(bus, "/robot1/explorer")
+    node.declare("use_sim_time", False, "stamp commands with /clock")
+    node.declare("nav.speed", 0.2)
+    node.declare("nav.mode", "careful", read_only=True)
+    changed = []
+    node.on_set(lambda name, value: changed.append((name, value)))
+    store = twin.store
+
+    def client(name, srvtype):
+        return twin.create_client(srvtype, f"/robot1/explorer/{name}")
+
+    def value(kind, **field):
+        return rmw_twin.new_message(store, "rcl_interfaces/msg/ParameterValue", type=kind, **field)
+
+    def param(name, v):
+        return rmw_twin.new_message(store, "rcl_interfaces/msg/Parameter", name=name, value=v)
+
+    listing = client("list_parameters", "rcl_interfaces/srv/ListParameters")
+    result = listing.call(listing.new_request(), TIMEOUT).result
+    assert list(result.names) == ["nav.mode", "nav.speed", "use_sim_time"] and list(result.prefixes) == ["nav"]
+    result = listing.call(listing.new_request(prefixes=["nav"]), TIMEOUT).result
+    assert list(result.names) == ["nav.mode", "nav.speed"]
+
+    getting = client("get_parameters", "rcl_interfaces/srv/GetParameters")
+    values = getting.call(getting.new_request(names=["use_sim_time", "nav.speed", "nope"]), TIMEOUT).values
+    assert [(v.type, v.bool_value, v.double_value) for v in values] == [
+        (1, False, 0.0),
+        (3, False, 0.2),
+        (0, False, 0.0),
+    ]
+
+    setting = client("set_parameters", "rcl_interfaces/srv/SetParameters")
+    results = setting.call(
+        setting.new_request(
+            parameters=[
+                param("use_sim_time", value(1, bool_value=True)),
+                param("nav.speed", value(4, string_value="fast")),
+                param("nav.mode", value(4, string_value="bold")),
+                param("nope", value(2, integer_value=1)),
+            ]
+        ),
+        TIMEOUT,
+    ).results
+    assert [(r.successful, r.reason) for r in results] == [
+        (True, ""),
+        (False, "parameter nav.speed is a double, not a string"),
+        (False, "parameter nav.mode is read-only"),
+        (False, "parameter nope is not declared"),
+    ]
+    assert changed == [("use_sim_time", True)] and node.get("use_sim_time") is True
+
+    atomic = client("set_parameters_atomically", "rcl_interfaces/srv/SetParametersAtomically")
+    result = atomic.call(
+        atomic.new_request(
+            parameters=[param("nav.speed", value(3, double_value=0.5)), param("nope", value(1, bool_value=True))]
+        ),
+        TIMEOUT,
+    ).result
+    assert not result.successful and node.get("nav.speed") == 0.2  # all or nothing
+    result = atomic.call(atomic.new_request(parameters=[param("nav.speed", value(3, double_value=0.5))]), TIMEOUT)
+    assert result.result.successful and node.get("nav.speed") == 0.5
+
+    describing = client("describe_parameters", "rcl_interfaces/srv/DescribeParameters")
+    descriptors = describing.call(describing.new_request(names=["use_sim_time", "nav.mode"]), TIMEOUT).descriptors
+    assert [(d.name, d.type, d.description, d.read_only) for d in descriptors] == [
+        ("use_sim_time", 1, "stamp commands with /clock", False),
+        ("nav.mode", 4, "", True),
+    ]
+    typing = client("get_parameter_types", "rcl_interfaces/srv/GetParameterTypes")
+    assert list(typing.call(typing.new_request(names=["nav.mode", "x"]), TIMEOUT).types) == [4, 0]
