@@ -20,6 +20,7 @@ from pathlib import Path
 
 from ..runtime import Shutdown, externals as rt_externals
 from . import CLASSES, strings as KS, types as T
+from .basic_ops import r32
 from .errors import EiffelFailure
 from .support import ContractViolation, EiffelRuntimeError, create
 
@@ -177,8 +178,10 @@ def _from_host(region, kind, value, ffi):
         if not low <= number <= high:
             raise ValueError(f"the result {number} does not fit in {kind}")
         return number
-    if kind in ("REAL_32", "REAL_64"):
+    if kind == "REAL_64":
         return float(value)
+    if kind == "REAL_32":
+        return r32(float(value))  # rounded to single precision, as every REAL_32
     if kind == "BOOLEAN":
         return bool(operator.index(value)) if not isinstance(value, bool) else value
     if kind in ("CHARACTER_8", "CHARACTER_32"):
@@ -223,7 +226,7 @@ def _array_out(region, kind, value):
     """An ARRAY (indexed from 1) or SPECIAL made from the host's sequence or numpy array."""
     container, item = kind.split(":")
     items = value.tolist() if hasattr(value, "tolist") else list(value)
-    convert = float if item.startswith("REAL") else bool if item == "BOOLEAN" else operator.index
+    convert = {"REAL_64": float, "REAL_32": lambda v: r32(float(v)), "BOOLEAN": bool}.get(item, operator.index)
     items = [convert(v) for v in items]
     gen = (T.t(item),)
     default = gen[0].default(region)
