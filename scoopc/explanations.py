@@ -978,6 +978,45 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Use one of the keys PROCESS, THREAD or OBJECT.",
     ),
+    "EXTERNAL": _x(
+        """An `external` routine binds to code outside Eiffel. Its language string is one of
+        EiffelStudio's forms (`"C"`, `"C signature (double): double use <math.h>"`, `"C inline use
+        <math.h>"`, `"C++ inline"`) or `"Python"`; an external "Python" names a function of a
+        module beside the program's classes (or on the .ecf's python_path, or installed) with its
+        alias "module.function" or "module.Class.method".""",
+        """
+        twice (x: INTEGER): INTEGER
+            external "Python"
+            alias "double"
+            end
+        """,
+        """
+        twice (x: INTEGER): INTEGER
+            external "Python"
+            alias "arith.double"
+            end
+        """,
+        "Name the module and the function in the alias; put arith.py beside the class.",
+    ),
+    "EXTERNAL-BUILD": _x(
+        """The program's C and C++ externals are compiled (with cffi) when the program is compiled.
+        This fails when no C compiler is installed, when a header named in `use` or a library named
+        in the .ecf is missing, or when the C code does not compile; the message quotes the
+        compiler.""",
+        """
+        c_sin (x: REAL_64): REAL_64
+            external "C signature (double): double use <maths.h>"
+            alias "sin"
+            end
+        """,
+        """
+        c_sin (x: REAL_64): REAL_64
+            external "C signature (double): double use <math.h>"
+            alias "sin"
+            end
+        """,
+        "Name a header that exists (here math.h), or install the compiler or library the message names.",
+    ),
     # --- SCOOP ------------------------------------------------------------------------------------
     "VUTA(3)": _x(
         """A call on a target of separate type is allowed only when the target is controlled, that

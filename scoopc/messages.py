@@ -19,6 +19,10 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - ECF-CYCLE: (a warning) libraries whose .ecf files name each other in a cycle.
 - ECF-CAPABILITY: (a warning) a library whose .ecf says it does not support the application's
   concurrency (EiffelStudio's order of the capability: thread < none < scoop).
+- EXTERNAL: an `external` routine of the program that cannot be bound: an unknown language
+  string or form, a Python module or function that is not there, a type that cannot cross to C.
+- EXTERNAL-BUILD: the program's C or C++ externals cannot be built (no compiler, a missing
+  header or library, a compiler error).
 - ONCE-KEY: a once key other than "PROCESS", "THREAD" or "OBJECT".
 - FORMAL-TRAITOR (a warning): a value of an unmarked formal generic type `G` passed to a
   non-separate formal in a call on a separate target, or a `G` result of such a call used as
@@ -356,4 +360,6 @@ MESSAGES: dict[str, Message] = {
     "ONCE-KEY": Message(
         'unknown once key "{key}"', 'use "PROCESS", "THREAD" or "OBJECT" (or none: once per processor)'
     ),
+    "EXTERNAL": Message("{reason}", "see docs/LANGUAGE.md, Externals, for the forms scoopc accepts"),
+    "EXTERNAL-BUILD": Message("{reason}", "{hint}"),
 }

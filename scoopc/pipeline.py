@@ -91,6 +91,7 @@ class Checked(Parsed):
     """Parsed plus what the checker proved (None when syntax errors stopped it)."""
 
     semantics: semantics_checked | None = None
+    externals: object = None  # semantics.externals.ProgramExternals: the program's externals
 
 
 def _parse_library_file(path) -> tuple:
@@ -145,6 +146,7 @@ def load_stdlib(use_cache: bool = True, progress=None) -> tuple:
 
 def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed, stdlib) -> Checked:
     from . import semantics  # deferred: the checker is not needed by `scoopc parse` (start-up)
+    from .semantics import externals  # deferred: start-up, as the checker
 
     checked = Checked(parsed.units, parsed.diagnostics, parsed.sources)
     library_units, prepared = stdlib
@@ -174,6 +176,8 @@ def _check_project(project: Project, use_cache: bool, library_bodies: bool | Non
     )
     checked.semantics = result
     checked.diagnostics.extend(result.diagnostics)
+    problems, checked.externals = externals.check(result.universe, project)
+    checked.diagnostics.extend(problems)
     checked.diagnostics.sort(key=diagnostics.sort_key)
     return checked
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import os
 import re
+import sys
 import xml.etree.ElementTree as ElementTree
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -54,6 +55,20 @@ class Settings:
 
 
 @dataclass
+class ExternalSettings:
+    """What an .ecf names for the program's externals (docs/LANGUAGE.md, Externals): C headers'
+    folders, objects, sources and libraries to build and link with, compiler and linker flags,
+    and folders of Python modules (`<variable name="python_path">`)."""
+
+    include_dirs: list[Path] = field(default_factory=list)
+    objects: list[Path] = field(default_factory=list)  # .o/.a/.so files, and .c/.cpp sources to compile
+    libraries: list[str] = field(default_factory=list)  # -lNAME
+    cflags: list[str] = field(default_factory=list)
+    linker_flags: list[str] = field(default_factory=list)
+    python_paths: list[Path] = field(default_factory=list)
+
+
+@dataclass
 class Project:
     files: list[Path] = field(default_factory=list)
     root: Root | None = None
@@ -62,6 +77,7 @@ class Project:
     errors: list[Diagnostic] = field(default_factory=list)
     libraries: list[str] = field(default_factory=list)  # the stdlib clusters the .ecf names
     ecf_files: list[Path] = field(default_factory=list)  # every .ecf read (libraries' included)
+    externals: ExternalSettings = field(default_factory=ExternalSettings)
     # (library name, its concurrency support, where it is named): checked against the system's
     library_concurrency: list[tuple[str, str, Span]] = field(default_factory=list)
     # the syntax level of the files of each .ecf's clusters (a library's own, else the application's)
@@ -371,6 +387,8 @@ class _EcfReader:
                     self.syntax = project.settings.syntax = _syntax(element, self.syntax)
             elif kind == "capability":
                 _read_capability(project, element)
+            elif kind in _EXTERNAL_ELEMENTS or (kind == "variable" and element.get("name") == "python_path"):
+                _read_external(project, element, kind, ecf.parent)
             elif kind == "setting":
                 self.read_setting(element)
             elif kind not in _IGNORED_QUIETLY:
@@ -476,6 +494,52 @@ class _EcfReader:
         if resolved in project.ecf_files:
             return  # named by two libraries: read once
         _read_ecf(project, path, None, self.chain, self.span(element))
+
+
+_EXTERNAL_ELEMENTS = {
+    "external_include",
+    "external_object",
+    "external_library",
+    "external_cflag",
+    "external_linker_flag",
+}
+
+
+def _read_external(project: Project, element: ElementTree.Element, kind: str, base: Path) -> None:
+    """One of the .ecf's external settings; $(ECF_CONFIG_PATH) is the .ecf's folder, and an
+    element whose <condition> names another platform is skipped."""
+    if not _for_this_platform(element):
+        return
+    found = project.externals
+    value = (element.get("value") or "").strip()
+    if kind == "external_cflag":
+        found.cflags += value.split()
+        return
+    if kind == "external_linker_flag":
+        found.linker_flags += value.split()
+        return
+    raw = (element.get("location") or value).replace("$(ECF_CONFIG_PATH)", str(base.resolve())).strip().strip('"')
+    if kind == "variable":
+        found.python_paths += [_expand_location(part, base) for part in raw.split(os.pathsep) if part]
+    elif kind == "external_include":
+        found.include_dirs.append(_expand_location(raw, base))
+    elif raw.startswith("-l"):
+        found.libraries.append(raw[2:])
+    elif raw.startswith("-"):
+        found.linker_flags.append(raw)
+    else:
+        found.objects.append(_expand_location(raw, base))
+
+
+def _for_this_platform(element: ElementTree.Element) -> bool:
+    here = {"win32": "windows", "darwin": "macintosh"}.get(sys.platform, "unix")
+    for condition in _children(element, "condition"):
+        for platform in _children(condition, "platform"):
+            if platform.get("value") and platform.get("value").lower() != here:
+                return False
+            if platform.get("excluded_value") and platform.get("excluded_value").lower() == here:
+                return False
+    return True
 
 
 def _ise_folder(location: str) -> str | None:

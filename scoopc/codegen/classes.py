@@ -7,6 +7,7 @@ import ast
 import importlib
 
 from .. import syntax
+from ..semantics import externals
 from ..semantics.types import BASIC
 from . import pyast as P
 from .calls import declared_name, is_external
@@ -53,6 +54,7 @@ class ClassGen:
         self.module.functions = []
         self.module.parents = list(layout.bases)
         self.externals_used: set = set()
+        self.user_externals: set = set()  # "KX" and the cffi modules the class's own externals use
 
     def generate(self, plan) -> ast.Module:
         info = self.info
@@ -88,6 +90,7 @@ class ClassGen:
         stmts += [ast.parse(line).body[0] for line in HEADER_IMPORTS]
         stmts += self.module.import_lines(self.layout.bases, top=True)
         stmts += [ast.Import([ast.alias(f"scoopc.kernel.ext.{m}", f"X_{m}")]) for m in sorted(self.externals_used)]
+        stmts += user_external_imports(self.user_externals, self.program.options)
         stmts += self.module.constants
         stmts.append(cls)
         stmts += self.module.functions
@@ -228,11 +231,14 @@ class ClassGen:
         module = self.info.name.split("@")[0].lower()
         fname = declared_name(feature)
         fname = fname + "_" if fname in _PY_KEYWORDS else fname
+        user = None if self.info.from_library else self.user_external(pyname, feature, body.body)
         try:
-            found = hasattr(importlib.import_module(f"scoopc.kernel.ext.{module}"), fname)
+            found = user is None and hasattr(importlib.import_module(f"scoopc.kernel.ext.{module}"), fname)
         except ImportError:
             found = False
-        if found:
+        if user is not None:
+            value = user
+        elif found:
             self.externals_used.add(module)
             value = P.attr(P.name(f"X_{module}"), fname)
         else:
@@ -257,6 +263,35 @@ class ClassGen:
         if property_:
             value = P.call("property", [value])
         return [P.at(P.assign(P.name(pyname), value), feature.decl.span)]
+
+    def user_external(self, pyname, feature, inner):
+        """The binding of an external of the program's own (docs/LANGUAGE.md, Externals): a
+        Python function of the user's modules or a C wrapper of the program's cffi module; None
+        for a language the kernel provides (built_in)."""
+        spec = externals.parse_spec(inner.language)
+        universe = self.program.universe
+        kinds = P.tup([P.const(externals.kind_of(universe, t)) for t in feature.signature.arguments])
+        result = feature.signature.result
+        result = P.const(externals.kind_of(universe, result) if result is not None else None)
+        name = P.const(f"{eiffel_class_name(self.info.name)}.{feature.name}")
+        if spec.language == "python" and not inner.alias and externals.kernel_provides(self.info.name, feature.name):
+            return None  # a class replacing a library class: the kernel's own external
+        if spec.language == "python":
+            self.user_externals.add("KX")
+            target = P.const(externals.python_alias(self.info.name, feature.name, inner.alias))
+            binding = P.call("KX.python_external", [P.name("__name__"), name, target, kinds, result])
+        elif spec.language in ("c", "c++"):
+            self.user_externals.update(("KX", spec.language))
+            cx = C_MODULE_ALIAS[spec.language]
+            symbol = externals.c_symbol(self.info.name, feature.name)
+            alias = P.const("inline" if spec.inline else inner.alias or feature.name)
+            args = [P.attr(P.name(cx), "lib"), P.attr(P.name(cx), "ffi"), P.const(symbol), name, alias, kinds, result]
+            binding = P.call("KX.c_external", args)
+        else:
+            return None
+        constant = f"_external_{pyname}"  # made once, when the module loads
+        self.module.constants.append(P.assign(P.name(constant), binding))
+        return P.name(constant)
 
     def external_precondition(self, feature, body) -> list:
         """The checks of the routine's precondition, its own and inherited ones."""
@@ -285,6 +320,21 @@ class ClassGen:
         body += [gen.assertion(c, "invariant") for c in clauses]
         fn = P.function("_invariant_", ["self"], body)
         return P.at(fn, self.info.decl.span)
+
+
+C_MODULE_ALIAS = {"c": "CX_c", "c++": "CX_cpp"}
+
+
+def user_external_imports(used: set, options) -> list:
+    """The imports of a class with externals of its own: the kernel's binder, the cffi modules."""
+    found = []
+    if "KX" in used:
+        found.append(ast.ImportFrom("scoopc.kernel", [ast.alias("externals", "KX")], 0))
+    modules = dict(options.c_modules)
+    for language in ("c", "c++"):
+        if language in used:
+            found.append(ast.ImportFrom(options.package, [ast.alias(modules[language], C_MODULE_ALIAS[language])], 0))
+    return found
 
 
 # Classes (or (class, feature) pairs) whose `external "Python"` functions (scoopc/kernel/ext/)

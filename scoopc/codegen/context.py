@@ -20,6 +20,7 @@ class Options:
     library_assertions: str = "require"
     base_package: str = "eiffel_base"
     package: str = "program"
+    c_modules: tuple = ()  # (language, module name): the cffi modules of the program's C/C++ externals
 
 
 @dataclass

@@ -30,6 +30,7 @@ from ..project import Project, collect
 from ..semantics import Checked as SemanticsChecked
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root
+from . import externals
 from .library import Library, compiled_library
 from .packages import (
     BASE_PACKAGE,
@@ -132,7 +133,18 @@ class Compilation:
         """The checked program; SourceErrors when it has errors."""
         if self.checked.has_errors:
             raise SourceErrors(self.checked.diagnostics)
+        try:
+            self.c_modules  # noqa: B018 - built now: a build failure is the source's error
+        except SourceErrors as failed:
+            self.checked.diagnostics.extend(failed.diagnostics)
+            raise SourceErrors(self.checked.diagnostics) from None
         return self.checked
+
+    @cached_property
+    def c_modules(self) -> list[Path]:
+        """The extension modules of the program's C and C++ externals, built with cffi (or taken
+        from the cache); SourceErrors naming what is missing when they cannot be built."""
+        return externals.build_all(self.checked.externals, self.project)
 
     @property
     def semantics(self) -> SemanticsChecked:
@@ -161,7 +173,10 @@ class Compilation:
         if package not in self._modules:
             sem = self.semantics
             leaves: list[str] = []
-            options = Options(assertions=self.assertions, package=package)
+            c_modules = tuple(
+                (plan.language, plan.name) for plan in externals.plans(self.checked.externals, self.project)
+            )
+            options = Options(assertions=self.assertions, package=package, c_modules=c_modules)
             modules = generate(
                 sem.universe,
                 sem.tables,
@@ -182,6 +197,9 @@ class Compilation:
         write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).", (BASE_PACKAGE,))
         (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
         (folder / "__main__.py").write_text(_main_text(package, self.root, dict(sem.universe.shadowed)))
+        externals.copy_python_modules(self.checked.externals, folder)
+        for module in self.c_modules:
+            shutil.copy2(module, folder / module.name)
         outdir.mark(folder)
         return CompiledProgram(
             out, package, self.root, self.library.path, dict(sem.universe.shadowed), uses_roboscoop(self.project.files)
@@ -220,6 +238,7 @@ class Compilation:
                 self.project.settings.assertions,
                 self.project.root.class_name if self.project.root else None,
                 self.project.concurrency,  # decides what `separate` compiles to
+                externals.inputs_digest(self.project),
             ]
         )
         key = program_key([Path(p) for p in self.project.files], extra)

@@ -5,8 +5,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING, TypeVar
 
-from . import reservation as _reservation  # noqa: F401  (installs Processor.reserve)
+from . import (
+    externals,  # noqa: F401  (the program's externals run through it: externals.call)
+    reservation as _reservation,  # noqa: F401  (installs Processor.reserve)
+)
 from .errors import DeadlockError, DirtyRegionError, PreconditionViolation, ScoopError, Shutdown, UncontrolledTarget
+from .externals import InsideExternal, inside_externals
 from .main import current, finish, run_main, start
 from .monitor import dump as _dump
 from .once import once_object, once_process as _once_process
@@ -23,6 +27,7 @@ __all__ = [
     "Agent",
     "DeadlockError",
     "DirtyRegionError",
+    "InsideExternal",
     "OutsideClient",
     "PreconditionViolation",
     "Processor",
@@ -35,6 +40,7 @@ __all__ = [
     "current",
     "dump",
     "finish",
+    "inside_externals",
     "leaf",
     "now_ns",
     "once_object",

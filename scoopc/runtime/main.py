@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING, TextIO, TypedDict
 
 from ..exits import Exit
 from .errors import Shutdown, fmt_where
+from .externals import interrupted_lines
 from .monitor import Monitor, dump
 from .processor import Processor
 from .protocols import Args, Routine, Separate
@@ -76,6 +77,9 @@ def finish(rt: Runtime, root: Processor, interrupted: KeyboardInterrupt | None =
     status = status_of(interrupted) if interrupted else 0
     if isinstance(interrupted, Stopped):
         rt.stderr.write(f"scoopc: stopped by {interrupted.signal_name}\n")
+    if interrupted:
+        for line in interrupted_lines(rt):
+            rt.stderr.write(line + "\n")
     rt.stop()
     assert rt.monitor is not None, "set by `start`"
     rt.monitor.stop()

@@ -54,7 +54,9 @@ def _describe(blk: Block) -> str:
     if blk.kind == "sync":
         assert isinstance(on, Session)
         what = getattr(blk.what, "__qualname__", blk.what)
-        return f"{blk.proc!r} in {where} waits for the result of {what} on {on.proc!r}"
+        inside = on.proc.rt.inside.get(on.proc.exec) if on.proc.exec is not None else None
+        running = f", which is inside external {inside.feature} ({inside.what})" if inside is not None else ""
+        return f"{blk.proc!r} in {where} waits for the result of {what} on {on.proc!r}{running}"
     if blk.kind == "turn":
         assert isinstance(on, Session)
         return f"{blk.proc!r} in {where} waits for its turn on passive {on.proc!r}"
@@ -119,6 +121,9 @@ def dump(rt: Runtime) -> str:
     blocks, _ = snapshot(rt)
     for blk in blocks.values():
         lines.append("  blocked: " + _describe(blk))
+    with rt.glock:
+        inside = sorted(rt.inside.values(), key=lambda r: r.proc.id)
+    lines += ["  inside external: " + record.describe() for record in inside]
     return "\n".join(lines) + "\n"
 
 

@@ -31,6 +31,7 @@ from .protocols import OnceTable, Where
 from .session import IDLE
 
 if TYPE_CHECKING:
+    from .externals import InsideExternal
     from .monitor import Monitor
     from .outside import OutsideClient
     from .processor import Processor
@@ -203,6 +204,9 @@ class Runtime:
         self.out = Output(stdout or sys.stdout, trace_processors)
         self.clock = Clock(self, virtual_clock)
         self.shutdown_hooks = []  # [g]
+        self.inside: dict[Exec, InsideExternal] = {}  # [g] threads inside an external (externals.py)
+        self.interrupted_inside: InsideExternal | None = None  # the external a stop signal interrupted
+        self.interrupt_watch: threading.Thread | None = None  # externals.py's watcher, once installed
         self.services = {}  # what the embedding run offers the program's externals, by
         #                                  name (set by `on_start`, before the root object exists)
         self.process_onces = {}  # [g] once ("PROCESS") values

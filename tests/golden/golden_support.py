@@ -80,7 +80,8 @@ def compile_program(folder: Path, out_dir: Path, assertions: str = "all"):
     Returns (compiled, {module file name: text}); raises AssertionError on source errors."""
     from scoopc.driver import Compilation
 
-    compilation = Compilation([folder.resolve()], assertions=assertions)
+    ecf = sorted(folder.glob("*.ecf"))  # a sample with an .ecf (C sources of its own, say) is compiled from it
+    compilation = Compilation([(ecf[0] if ecf else folder).resolve()], assertions=assertions)
     checked = compilation.checked
     if checked.has_errors:
         errors = "\n".join(f"{d.span}: {d.code}: {d.message}" for d in checked.diagnostics if d.is_error)

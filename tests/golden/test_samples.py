@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import re
 import sys
+import zlib
 from pathlib import Path
 
 import pytest
@@ -99,6 +100,18 @@ def check_move_limbs(out: str) -> None:
     assert steps and all(int(leg) == -int(arm) for _, leg, arm in steps), "the arm moves opposite the leg"
     ((taken,),) = matching(out, r"Walker: (\d+) steps taken$")
     assert int(taken) == len(steps)
+
+
+def check_checksums(out: str) -> None:
+    blocks = matching(out, r"Block (\d+) \(seed (\d+)\): crc32 (\d+)$")
+    assert [int(b) for b, _, _ in blocks] == [1, 2, 3, 4]
+    for _, seed, crc in blocks:  # the same generator in Python, checked against zlib's CRC-32
+        state, data = int(seed), bytearray()
+        for _ in range(50_000):
+            state = (state * 1103515245 + 12345) & 0xFFFFFFFF
+            data.append((state >> 16) & 0xFF)
+        assert int(crc) == zlib.crc32(bytes(data))
+    assert matching(out, r"Checksummed (\d+) blocks of (\d+) bytes$") == [("4", "50000")]
 
 
 CHECKS = {name[len("check_") :]: fn for name, fn in globals().items() if name.startswith("check_")}
