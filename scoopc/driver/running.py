@@ -20,6 +20,7 @@ from ..runtime.sched import Runtime
 from ..runtime.stop_signals import stop_on_signals
 from .compilation import Compilation, CompiledProgram
 from .packages import BASE_PACKAGE, DamagedCache, ensure_on_path, remove_cached
+from .status import ClauseSource, StatusPrinter
 
 
 @dataclass
@@ -32,6 +33,8 @@ class RunOptions:
     debug: bool = False  # Python tracebacks too
     stdout: TextIO | None = None  # where the program's output goes (default: sys.stdout)
     stderr: TextIO | None = None  # where failures and scoopc's reports go (default: sys.stderr)
+    status: float | None = None  # --status: the processors and waits on stderr on SIGUSR1 (0) or every N s
+    live: int | None = None  # --live PORT: serve the Foxglove WebSocket protocol (docs/LIVE.md)
 
 
 def run_compilation(
@@ -79,10 +82,13 @@ def run_program(
     root_cls = load_root(program)
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
+    watch = _watchers(options, program_paths)
 
     def launch(
         on_start: Callable[[Runtime], None] | None = None, virtual_clock: bool | None = options.virtual_clock
     ) -> int:
+        if watch:
+            on_start = _chained(on_start, watch)
         return launcher.main(
             root_cls,
             program.root.creator,
@@ -106,6 +112,28 @@ def run_program(
             result = runner.run(chosen, launch, list(program_paths), program.root.key, stderr=options.stderr)
     _quiet_if_reader_gone()
     return result
+
+
+def _watchers(options: RunOptions, program_paths: Sequence[str]) -> list[Callable[[Runtime], None]]:
+    """What `--status` and `--live` attach to the runtime when the run starts."""
+    source = ClauseSource(program_paths)
+    found: list[Callable[[Runtime], None]] = []
+    if options.status is not None:
+        found.append(StatusPrinter(options.status, source).attach)
+    return found
+
+
+Attach = Callable[[Runtime], None]  # a hook run when the runtime starts (`on_start`)
+
+
+def _chained(first: Attach | None, more: list[Attach]) -> Attach:
+    def on_start(rt: Runtime) -> None:
+        if first is not None:
+            first(rt)
+        for attach in more:
+            attach(rt)
+
+    return on_start
 
 
 def load_root(program: CompiledProgram) -> type:
