@@ -9,7 +9,7 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from ..codegen.names import class_name, module_name
 from ..kernel import launcher, link
@@ -21,6 +21,9 @@ from ..runtime.stop_signals import stop_on_signals
 from .compilation import Compilation, CompiledProgram
 from .packages import BASE_PACKAGE, DamagedCache, ensure_on_path, remove_cached
 from .status import ClauseSource, StatusPrinter
+
+if TYPE_CHECKING:
+    from .live import LiveView
 
 
 @dataclass
@@ -82,7 +85,9 @@ def run_program(
     root_cls = load_root(program)
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
-    watch = _watchers(options, program_paths)
+    source = ClauseSource(program_paths)
+    view = _live_view(options, source)
+    watch = _watchers(options, source, view)
 
     def launch(
         on_start: Callable[[Runtime], None] | None = None, virtual_clock: bool | None = options.virtual_clock
@@ -104,20 +109,34 @@ def run_program(
         )
 
     kind = robot.robot or ("sim" if program.roboscoop else "none")
-    with stop_on_signals():  # SIGTERM and SIGHUP end a run the way Ctrl-C does
-        if kind == "none":
-            result = RunResult(launch())
-        else:
-            chosen = RobotOptions(**{**vars(robot), "robot": kind})
-            result = runner.run(chosen, launch, list(program_paths), program.root.key, stderr=options.stderr)
+    try:
+        with stop_on_signals():  # SIGTERM and SIGHUP end a run the way Ctrl-C does
+            if kind == "none":
+                result = RunResult(launch())
+            else:
+                chosen = RobotOptions(**{**vars(robot), "robot": kind})
+                result = runner.run(chosen, launch, list(program_paths), program.root.key, stderr=options.stderr)
+    finally:
+        if view is not None:
+            view.close()
     _quiet_if_reader_gone()
     return result
 
 
-def _watchers(options: RunOptions, program_paths: Sequence[str]) -> list[Callable[[Runtime], None]]:
+def _live_view(options: RunOptions, source: ClauseSource) -> LiveView | None:
+    """`--live PORT`: the server, started before the run (a port in use is a usage error)."""
+    if options.live is None:
+        return None
+    from .live import LiveView  # optional: the live extra (foxglove-sdk), loaded only for --live
+
+    return LiveView(options.live, source, options.stderr)
+
+
+def _watchers(options: RunOptions, source: ClauseSource, view: LiveView | None) -> list[Callable[[Runtime], None]]:
     """What `--status` and `--live` attach to the runtime when the run starts."""
-    source = ClauseSource(program_paths)
     found: list[Callable[[Runtime], None]] = []
+    if view is not None:
+        found.append(view.attach)
     if options.status is not None:
         found.append(StatusPrinter(options.status, source).attach)
     return found
@@ -127,11 +146,11 @@ Attach = Callable[[Runtime], None]  # a hook run when the runtime starts (`on_st
 
 
 def _chained(first: Attach | None, more: list[Attach]) -> Attach:
-    def on_start(rt: Runtime) -> None:
-        if first is not None:
-            first(rt)
+    def on_start(rt: Runtime) -> None:  # ours first: the live view's wait for a client comes before the robot's clock
         for attach in more:
             attach(rt)
+        if first is not None:
+            first(rt)
 
     return on_start
 
