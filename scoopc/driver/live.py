@@ -17,7 +17,7 @@ import sys
 import threading
 import time
 from collections.abc import Callable
-from typing import Any, TextIO
+from typing import Any, Protocol, TextIO
 
 from ..exits import UsageError
 from ..robots import cdr, record, ros_messages, transport
@@ -123,46 +123,40 @@ def sdk() -> Any:
     return foxglove
 
 
-class LiveView:
-    """A Foxglove WebSocket server on 127.0.0.1:`port` for one run: made before the run (the port
-    is taken then), `attach`ed when the runtime starts, `close`d after the run."""
+class Sink(Protocol):
+    """Where the sampler's messages go: the Foxglove server, or the recording beside `--record`."""
 
-    def __init__(self, port: int, clause_text: Callable[[Where], str | None], stderr: TextIO | None = None) -> None:
-        fg = sdk()
-        self.fg = fg
-        self.stderr = stderr or sys.stderr
+    def attach(self, rt: Runtime) -> None: ...
+
+    def send(self, topic: str, message: dict[str, Any], wall_ns: int, sim_ns: int | None) -> None: ...
+
+    def heard(self, topic: str, msg: Any) -> None: ...
+
+    def close(self) -> None: ...
+
+
+class Sampler:
+    """Samples the runtime's state (and the simulator's) for its sinks: at most every PERIOD seconds,
+    each channel only when it changed, events as they come; made before the run, `attach`ed when
+    the runtime starts, its last samples sent by a shutdown hook, `close`d after the run."""
+
+    def __init__(self, clause_text: Callable[[Where], str | None], sinks: list[Sink]) -> None:
         self.clause_text = clause_text
-        self.subscribed = threading.Event()
+        self.sinks = sinks
         self.stopped = threading.Event()
         self.thread: threading.Thread | None = None
         self.rt: Runtime | None = None
-        self.context = fg.Context()
-        self.channels = {
-            topic: fg.Channel(topic, schema=self._schema(name, schema), message_encoding="json", context=self.context)
-            for topic, (name, schema) in SCHEMAS.items()
-        }
-        self.ros: dict[str, Any] = {}  # topic -> Channel of a ROS topic (CDR)
-        self.scans: dict[str, Any] = {}  # robot name -> its last LaserScan
-        self.lock = threading.Lock()  # [ros, scans]: the bus's threads and the sampler
+        self.scans: dict[str, Any] = {}  # [lock] robot name -> its last LaserScan
+        self.lock = threading.Lock()
         self.last: dict[str, object] = {}  # topic -> what was sent last (changes only)
         self.events_sent = 0
         self.tap: Any = None
-        try:
-            self.server = fg.start_server(
-                name="scoopc", host="127.0.0.1", port=port, server_listener=_Listener(self), context=self.context
-            )
-        except Exception as e:  # the SDK's own error type: the port is taken, or not ours to use
-            raise UsageError(f"--live: cannot serve on port {port}: {e}") from None
-        self.stderr.write(f"scoopc: live view on ws://127.0.0.1:{port} (open it in Foxglove, docs/LIVE.md)\n")
-
-    def _schema(self, name: str, schema: dict[str, Any]) -> Any:
-        return self.fg.Schema(name=name, encoding="jsonschema", data=json.dumps(schema).encode())
 
     def attach(self, rt: Runtime) -> None:
-        """When the run starts (before the root object exists): wait for a client, then sample."""
+        """When the run starts (before the root object exists)."""
         self.rt = rt
-        if not self.subscribed.wait(FIRST_CLIENT):
-            self.stderr.write(f"scoopc: no Foxglove client after {FIRST_CLIENT:g} s: running without one\n")
+        for sink in self.sinks:
+            sink.attach(rt)
         bus = transport.current()  # type: ignore[no-untyped-call]  # the robots layer is not annotated
         if bus is not None and hasattr(bus, "tap"):
             self.tap = bus.tap(self._heard)
@@ -185,63 +179,106 @@ class LiveView:
         self.publish()
 
     def close(self) -> None:
-        """After the run: give the server DRAIN seconds to send what is queued, then stop it."""
-        if self.subscribed.is_set():
-            time.sleep(DRAIN)
-        self.server.stop()
-
-    # ---- sampling ---------------------------------------------------------------------------
+        for sink in self.sinks:
+            sink.close()
 
     def publish(self) -> None:
         rt = self.rt
         if rt is None:
             return
-        now = time.time_ns()
+        sim: Any = rt.services.get(SIMULATOR_SERVICE)
+        now, sim_ns = time.time_ns(), (int(sim.time_ns) if sim is not None else None)
         snap = snapshot.take(rt, self.clause_text)
-        self._send_changed(PROCESSORS, "processors", [_processor(p) for p in snap.processors], now)
+        self._changed(PROCESSORS, "processors", [_processor(p) for p in snap.processors], now, sim_ns)
         waits = [_wait(w) for w in snap.waits]
-        self._send_changed(WAITS, "waits", waits, now, key=[{**w, "waited": None, "since": None} for w in waits])
+        key = [{**w, "waited": None, "since": None} for w in waits]
+        self._changed(WAITS, "waits", waits, now, sim_ns, key)
         for event in snapshot.events(rt, self.events_sent):
-            self.channels[EVENTS].log(_event(event), log_time=now)
+            self._send(EVENTS, _event(event), now, sim_ns)
             self.events_sent = event.index + 1
-        sim = rt.services.get(SIMULATOR_SERVICE)
         if sim is not None:
             with self.lock:
                 scans = dict(self.scans)
-            self._send_changed(ROBOTS, "robots", live_scene.robots(sim, now)["robots"], now)
-            self._send_changed(SCENE, "", live_scene.scene(sim, now, scans), now, key=_scene_key(sim))
+            self._changed(ROBOTS, "robots", live_scene.robots(sim, now)["robots"], now, sim_ns)
+            self._changed(SCENE, "", live_scene.scene(sim, now, scans), now, sim_ns, _scene_key(sim))
 
-    def _send_changed(self, topic: str, field: str, rows: Any, now: int, key: object = None) -> None:
+    def _changed(self, topic: str, field: str, rows: Any, now: int, sim_ns: int | None, key: object = None) -> None:
         seen = key if key is not None else rows
         if self.last.get(topic) == seen:
             return
         self.last[topic] = seen
-        message = rows if not field else {"timestamp": live_scene.stamp(now), field: rows}
-        self.channels[topic].log(message, log_time=now)
+        self._send(topic, rows if not field else {"timestamp": live_scene.stamp(now), field: rows}, now, sim_ns)
 
-    # ---- the bus's topics ------------------------------------------------------------------
+    def _send(self, topic: str, message: dict[str, Any], now: int, sim_ns: int | None) -> None:
+        for sink in self.sinks:
+            sink.send(topic, message, now, sim_ns)
 
     def _heard(self, topic: str, msg: Any) -> None:
-        """A message on the run's bus (any thread): sent on its ROS topic; a laser scan kept."""
+        """A message on the run's bus (any thread): a laser scan is kept for the scene."""
+        if ros_messages.typename_of(msg) == "sensor_msgs/msg/LaserScan":
+            with self.lock:
+                self.scans[topic.strip("/").split("/")[0]] = msg
+        for sink in self.sinks:
+            sink.heard(topic, msg)
+
+
+class FoxgloveServer:
+    """A Foxglove WebSocket server on 127.0.0.1:`port` for one run: started when made (the port
+    is taken then, before the run); the run waits for a client's first subscription."""
+
+    def __init__(self, port: int, stderr: TextIO | None = None) -> None:
+        fg = sdk()
+        self.fg = fg
+        self.stderr = stderr or sys.stderr
+        self.subscribed = threading.Event()
+        self.context = fg.Context()
+        self.channels = {
+            topic: fg.Channel(topic, schema=self._schema(name, schema), message_encoding="json", context=self.context)
+            for topic, (name, schema) in SCHEMAS.items()
+        }
+        self.ros: dict[str, Any] = {}  # [lock] topic -> Channel of a ROS topic (CDR)
+        self.lock = threading.Lock()
+        try:
+            self.server = fg.start_server(
+                name="scoopc", host="127.0.0.1", port=port, server_listener=_Listener(self), context=self.context
+            )
+        except Exception as e:  # the SDK's own error type: the port is taken, or not ours to use
+            raise UsageError(f"--live: cannot serve on port {port}: {e}") from None
+        self.stderr.write(f"scoopc: live view on ws://127.0.0.1:{port} (open it in Foxglove, docs/LIVE.md)\n")
+
+    def _schema(self, name: str, schema: dict[str, Any]) -> Any:
+        return self.fg.Schema(name=name, encoding="jsonschema", data=json.dumps(schema).encode())
+
+    def attach(self, rt: Runtime) -> None:
+        if not self.subscribed.wait(FIRST_CLIENT):
+            self.stderr.write(f"scoopc: no Foxglove client after {FIRST_CLIENT:g} s: running without one\n")
+
+    def send(self, topic: str, message: dict[str, Any], wall_ns: int, sim_ns: int | None) -> None:
+        self.channels[topic].log(message, log_time=wall_ns)
+
+    def heard(self, topic: str, msg: Any) -> None:
+        """A ROS message of the run: on its topic, CDR-encoded with its ROS 2 schema."""
         typename = ros_messages.typename_of(msg)
         with self.lock:
             channel = self.ros.get(topic)
             if channel is None:
-                schema = self.fg.Schema(
-                    name=typename, encoding="ros2msg", data=record.message_definition(typename).encode()
-                )
-                channel = self.ros[topic] = self.fg.Channel(
-                    topic, schema=schema, message_encoding="cdr", context=self.context
-                )
-            if typename == "sensor_msgs/msg/LaserScan":
-                self.scans[topic.strip("/").split("/")[0]] = msg
+                data = record.message_definition(typename).encode()
+                schema = self.fg.Schema(name=typename, encoding="ros2msg", data=data)
+                channel = self.fg.Channel(topic, schema=schema, message_encoding="cdr", context=self.context)
+                self.ros[topic] = channel
         channel.log(cdr.serialize(msg, typename), log_time=record.stamp_ns(msg) or time.time_ns())
+
+    def close(self) -> None:
+        """After the run: give the server DRAIN seconds to send what is queued, then stop it."""
+        if self.subscribed.is_set():
+            time.sleep(DRAIN)
+        self.server.stop()
 
 
 class _Listener:
     """The server's callbacks: the first subscription lets the run start."""
 
-    def __init__(self, view: LiveView) -> None:
+    def __init__(self, view: FoxgloveServer) -> None:
         self.view = view
 
     def on_subscribe(self, client: Any, channel: Any) -> None:

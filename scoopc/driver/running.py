@@ -9,9 +9,11 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
+from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
 from ..codegen.names import class_name, module_name
+from ..exits import UsageError
 from ..kernel import launcher, link
 from ..results import RunResult
 from ..robots import runner
@@ -23,7 +25,7 @@ from .packages import BASE_PACKAGE, DamagedCache, ensure_on_path, remove_cached
 from .status import ClauseSource, StatusPrinter
 
 if TYPE_CHECKING:
-    from .live import LiveView
+    from .live import Sampler
 
 
 @dataclass
@@ -86,7 +88,8 @@ def run_program(
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
     source = ClauseSource(program_paths)
-    view = _live_view(options, source)
+    kind = robot.robot or ("sim" if program.roboscoop else "none")
+    view = _sampler(options, source, robot.record if kind != "none" else None)
     watch = _watchers(options, source, view)
 
     def launch(
@@ -108,7 +111,6 @@ def run_program(
             stderr=options.stderr,
         )
 
-    kind = robot.robot or ("sim" if program.roboscoop else "none")
     try:
         with stop_on_signals():  # SIGTERM and SIGHUP end a run the way Ctrl-C does
             if kind == "none":
@@ -123,16 +125,27 @@ def run_program(
     return result
 
 
-def _live_view(options: RunOptions, source: ClauseSource) -> LiveView | None:
-    """`--live PORT`: the server, started before the run (a port in use is a usage error)."""
-    if options.live is None:
+def _sampler(options: RunOptions, source: ClauseSource, record: str | Path | None) -> Sampler | None:
+    """`--live PORT`: the server, started before the run (a port in use is a usage error); and with
+    `--record run.mcap`, the live channels in run.scoop.mcap beside it."""
+    if options.live is None and not record:
         return None
-    from .live import LiveView  # optional: the live extra (foxglove-sdk), loaded only for --live
+    from . import live, live_record  # deferred: start-up (only a live or recorded run samples the runtime)
 
-    return LiveView(options.live, source, options.stderr)
+    sinks: list[live.Sink] = []
+    if options.live is not None:
+        sinks.append(live.FoxgloveServer(options.live, options.stderr))
+    if record:
+        try:
+            sinks.append(live_record.JsonRecording(live_record.beside(record)))
+        except OSError as e:
+            for sink in sinks:
+                sink.close()
+            raise UsageError(f"cannot record to {live_record.beside(record)}: {e.strerror or e}") from None
+    return live.Sampler(source, sinks)
 
 
-def _watchers(options: RunOptions, source: ClauseSource, view: LiveView | None) -> list[Callable[[Runtime], None]]:
+def _watchers(options: RunOptions, source: ClauseSource, view: Sampler | None) -> list[Callable[[Runtime], None]]:
     """What `--status` and `--live` attach to the runtime when the run starts."""
     found: list[Callable[[Runtime], None]] = []
     if view is not None:
