@@ -7,9 +7,10 @@ one, so that Foxglove shows both files of a run on one time line."""
 from __future__ import annotations
 
 import json
+import sys
 import threading
 from pathlib import Path
-from typing import Any
+from typing import Any, TextIO
 
 from mcap.writer import CompressionType, Writer
 
@@ -24,22 +25,28 @@ def beside(record: str | Path) -> Path:
 
 
 class JsonRecording:
-    """The sampler's messages in an MCAP file, one channel per live topic."""
+    """The sampler's messages in an MCAP file, one channel per live topic. The file is made when the
+    run starts, once the rosbag2 recording beside it has been (whose path errors are reported first)."""
 
-    def __init__(self, path: str | Path) -> None:
+    def __init__(self, path: str | Path, stderr: TextIO | None = None) -> None:
         self.path = Path(path)
-        self._stream = open(self.path, "wb")
+        self.stderr = stderr or sys.stderr
+        self._lock = threading.Lock()
+        self._closed = True  # until `attach` opens the file
+        self._channels: dict[str, int] = {}
+
+    def attach(self, rt: Runtime) -> None:
+        try:
+            self._stream = open(self.path, "wb")
+        except OSError as e:
+            self.stderr.write(f"scoopc: cannot write the live channels to {self.path}: {e.strerror or e}\n")
+            return
         self._writer = Writer(self._stream, compression=CompressionType.ZSTD)
         self._writer.start(profile="", library="scoopc")
-        self._lock = threading.Lock()
-        self._closed = False
-        self._channels: dict[str, int] = {}
         for topic, (name, schema) in SCHEMAS.items():
             schema_id = self._writer.register_schema(name, "jsonschema", json.dumps(schema).encode())
             self._channels[topic] = self._writer.register_channel(topic, "json", schema_id)
-
-    def attach(self, rt: Runtime) -> None:
-        pass  # nothing to wait for
+        self._closed = False
 
     def send(self, topic: str, message: dict[str, Any], wall_ns: int, sim_ns: int | None) -> None:
         when = sim_ns if sim_ns is not None else wall_ns
@@ -59,3 +66,4 @@ class JsonRecording:
             self._closed = True
             self._writer.finish()  # type: ignore[no-untyped-call]  # mcap's Writer is not annotated
             self._stream.close()
+        self.stderr.write(f"scoopc: live channels written to {self.path}\n")

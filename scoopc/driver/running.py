@@ -13,7 +13,6 @@ from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
 from ..codegen.names import class_name, module_name
-from ..exits import UsageError
 from ..kernel import launcher, link
 from ..results import RunResult
 from ..robots import runner
@@ -136,12 +135,7 @@ def _sampler(options: RunOptions, source: ClauseSource, record: str | Path | Non
     if options.live is not None:
         sinks.append(live.FoxgloveServer(options.live, options.stderr))
     if record:
-        try:
-            sinks.append(live_record.JsonRecording(live_record.beside(record)))
-        except OSError as e:
-            for sink in sinks:
-                sink.close()
-            raise UsageError(f"cannot record to {live_record.beside(record)}: {e.strerror or e}") from None
+        sinks.append(live_record.JsonRecording(live_record.beside(record), options.stderr))
     return live.Sampler(source, sinks)
 
 
