@@ -22,7 +22,7 @@ from .session import RUNNING, SCHEDULED, Session
 if TYPE_CHECKING:
     from .externals import InsideExternal
     from .processor import Processor
-    from .sched import Block, Exec, Runtime
+    from .sched import Block, Runtime
 
 IDLE_STATE = "idle"
 SCHEDULED_STATE = "scheduled"
@@ -106,7 +106,8 @@ def take(rt: Runtime, clause_text: ClauseText | None = None) -> Snapshot:
         inside = dict(rt.inside)
     now_wall, now = time.time(), time.monotonic()
     by_proc = {blk.proc: blk for blk in blocks.values()}
-    rows = tuple(_processor(p, by_proc.get(p), inside) for p in procs)
+    inside_by_proc = {record.proc: record for record in inside.values()}
+    rows = tuple(_processor(p, by_proc.get(p), inside_by_proc.get(p)) for p in procs)
     waits = [_wait(blk, clause_text, now_wall, now) for blk in blocks.values() if blk.kind == "wait"]
     waits.sort(key=lambda w: (w.processor, w.since))
     return Snapshot(now_wall, rows, tuple(waits))
@@ -119,9 +120,9 @@ def events(rt: Runtime, start: int = 0) -> list[EventInfo]:
     return [EventInfo(start + i, e.kind, e.text, e.at) for i, e in enumerate(new)]
 
 
-def _processor(p: Processor, blk: Block | None, inside: dict[Exec, InsideExternal]) -> ProcessorInfo:
+def _processor(p: Processor, blk: Block | None, record: InsideExternal | None) -> ProcessorInfo:
     with p.lock:
-        state, head, queued, ex = p.state, p.head, len(p.qoq), p.exec
+        state, head, queued = p.state, p.head, len(p.qoq)
     serving: int | None = getattr(head.client, "id", None) if head is not None else None  # an outside client: None
     top = _top_frame(p)
     at = fmt_where(top) if top is not None else None
@@ -129,7 +130,6 @@ def _processor(p: Processor, blk: Block | None, inside: dict[Exec, InsideExterna
         name, detail = _blocked_state(blk)
         at = fmt_where(blk.where) if blk.where else at
         return ProcessorInfo(p.id, p.name or "", name, queued, serving, at, detail)
-    record = inside.get(ex) if ex is not None and state == RUNNING else None
     if record is not None:
         return ProcessorInfo(p.id, p.name or "", INSIDE_EXTERNAL, queued, serving, at, record.describe())
     name = RUNNING_STATE if state == RUNNING else SCHEDULED_STATE if state == SCHEDULED else IDLE_STATE

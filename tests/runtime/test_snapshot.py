@@ -4,7 +4,7 @@ states, the wait conditions waited on with their clause text and age, and the ev
 import threading
 
 import scoopc.runtime as rt
-from scoopc.runtime import snapshot
+from scoopc.runtime import externals, snapshot
 
 from rt_helpers import Cell, spawn
 
@@ -114,3 +114,18 @@ def test_events_record_a_dirty_region_and_the_lost_exception(h):
     assert (dirty.kind, lost.kind) == ("dirty region", "lost exception")
     assert dirty.text.startswith(f"P{b._region_.id}(Bad) is dirty for P{root.id}") and "ValueError: no" in dirty.text
     assert [e.index for e in snapshot.events(h.rt, 1)] == [1]
+
+
+def test_a_processor_inside_an_external():
+    runtime, root = rt.start()
+    seen = {}
+
+    def host():
+        (seen["row"],) = [p for p in snapshot.take(runtime).processors if p.id == root.id]
+
+    try:
+        externals.call(root, "APP.f", "C f", host, [])
+    finally:
+        rt.finish(runtime, root)
+    assert seen["row"].state == snapshot.INSIDE_EXTERNAL
+    assert seen["row"].detail.startswith("P1(ROOT) is inside external APP.f (C f) for")
