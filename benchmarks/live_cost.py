@@ -6,6 +6,7 @@ pinned to one CPU. Reports the best of R runs of each and the ratio on/off.
 `python benchmarks/live_cost.py --help`."""
 
 import argparse
+import importlib
 import json
 import os
 import subprocess
@@ -42,12 +43,10 @@ def child(name, variant, size, build):
     for path in (HERE, ROOT):
         if path not in sys.path:
             sys.path.insert(0, path)
-    import importlib
+    from scoopc.driver.live import Sampler  # deferred: the child only
+    from scoopc.driver.status import ClauseSource  # deferred: the child only
 
-    from common import run_compiled
-
-    from scoopc.driver.live import Sampler
-    from scoopc.driver.status import ClauseSource
+    from common import run_compiled  # deferred: after sys.path has the benchmarks
 
     module = importlib.import_module("bench_" + name)
     on_start, sink = None, EncodingSink()
@@ -78,7 +77,7 @@ def main(argv=None):
     if hasattr(os, "sched_setaffinity"):
         os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
     sys.path.insert(0, HERE)
-    from common import compile_benchmark
+    from common import compile_benchmark  # deferred: after sys.path has the benchmarks
 
     with tempfile.TemporaryDirectory() as build:
         ratios = []
