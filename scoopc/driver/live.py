@@ -147,6 +147,7 @@ class Sampler:
         self.thread: threading.Thread | None = None
         self.rt: Runtime | None = None
         self.scans: dict[str, Any] = {}  # [lock] robot name -> its last LaserScan
+        self.proximity: dict[str, dict[str, float]] = {}  # [lock] robot name -> {sensor: last range}
         self.lock = threading.Lock()
         self.last: dict[str, object] = {}  # topic -> what was sent last (changes only)
         self.events_sent = 0
@@ -198,9 +199,10 @@ class Sampler:
             self.events_sent = event.index + 1
         if sim is not None:
             with self.lock:
-                scans = dict(self.scans)
+                scans, near = dict(self.scans), {name: dict(v) for name, v in self.proximity.items()}
             self._changed(ROBOTS, "robots", live_scene.robots(sim, now)["robots"], now, sim_ns)
-            self._changed(SCENE, "", live_scene.scene(sim, now, scans), now, sim_ns, _scene_key(sim))
+            scene = live_scene.scene(sim, now, scans, near)
+            self._changed(SCENE, "", scene, now, sim_ns, (_scene_key(sim), repr(near)))
 
     def _changed(self, topic: str, field: str, rows: Any, now: int, sim_ns: int | None, key: object = None) -> None:
         seen = key if key is not None else rows
@@ -215,9 +217,14 @@ class Sampler:
 
     def _heard(self, topic: str, msg: Any) -> None:
         """A message on the run's bus (any thread): a laser scan is kept for the scene."""
-        if ros_messages.typename_of(msg) == "sensor_msgs/msg/LaserScan":
+        typename = ros_messages.typename_of(msg)
+        parts = topic.strip("/").split("/")
+        if typename == "sensor_msgs/msg/LaserScan":
             with self.lock:
-                self.scans[topic.strip("/").split("/")[0]] = msg
+                self.scans[parts[0]] = msg
+        elif typename == "sensor_msgs/msg/Range" and len(parts) == 3 and parts[1] == "proximity":
+            with self.lock:
+                self.proximity.setdefault(parts[0], {})[parts[2]] = float(msg.range)
         for sink in self.sinks:
             sink.heard(topic, msg)
 

@@ -8,6 +8,8 @@ from __future__ import annotations
 import math
 from typing import Any
 
+from ..robots.sim.sensors import PROXIMITY, PROXIMITY_RANGE
+
 FRAME = "world"
 TRAIL_POINTS = 400  # the trail so far, thinned to at most this many points
 LINE_STRIP, LINE_LOOP, LINE_LIST = 0, 1, 2  # foxglove.LinePrimitive's types
@@ -95,8 +97,9 @@ def world_entities(world: Any, ns: int) -> list[Json]:
     return found
 
 
-def robot_entity(robot: Any, ns: int, scan: Any | None) -> Json:
-    """A robot: its body, an arrow for its heading, its trail so far and its last laser rays."""
+def robot_entity(robot: Any, ns: int, scan: Any | None, proximity: dict[str, float] | None = None) -> Json:
+    """A robot: its body, an arrow for its heading, its trail so far, its last laser rays and the
+    beams of its proximity sensors (a Thymio's), each as long as its last reading."""
     x, y, theta, r = robot.x, robot.y, robot.theta, robot.spec.radius
     body = _cylinder(x, y, r, 0.05, _color(0.2, 0.4, 0.9) if not robot.fallen else _color(0.5, 0.5, 0.5))
     arrow = {
@@ -113,6 +116,8 @@ def robot_entity(robot: Any, ns: int, scan: Any | None) -> Json:
     lines = [_line(LINE_STRIP, points, _color(0.2, 0.4, 0.9, 0.7), 0.01)]
     if scan is not None:
         lines.append(_line(LINE_LIST, _rays(x, y, theta, scan), _color(1.0, 0.2, 0.2, 0.5), 0.004))
+    if proximity:
+        lines.append(_line(LINE_LIST, _beams(x, y, theta, r, proximity), _color(1.0, 0.5, 0.0, 0.8), 0.006))
     return _entity(ns, f"robot/{robot.name}", cylinders=[body], arrows=[arrow], lines=lines)
 
 
@@ -129,9 +134,23 @@ def _rays(x: float, y: float, theta: float, scan: Any) -> list[Json]:
     return points
 
 
-def scene(sim: Any, ns: int, scans: dict[str, Any]) -> Json:
+def _beams(x: float, y: float, theta: float, radius: float, readings: dict[str, float]) -> list[Json]:
+    points: list[Json] = []
+    for name, value in readings.items():
+        if name not in PROXIMITY:
+            continue
+        mount, beam = PROXIMITY[name]
+        ox, oy = x + radius * math.cos(theta + mount), y + radius * math.sin(theta + mount)
+        d = value if 0 <= value <= PROXIMITY_RANGE else PROXIMITY_RANGE  # -1: nothing in range
+        a = theta + beam
+        points += [_point(ox, oy, 0.04), _point(ox + d * math.cos(a), oy + d * math.sin(a), 0.04)]
+    return points
+
+
+def scene(sim: Any, ns: int, scans: dict[str, Any], proximity: dict[str, dict[str, float]] | None = None) -> Json:
     """The whole scene (a SceneUpdate replaces entities by id): the world and every robot."""
-    robots = [robot_entity(robot, ns, scans.get(robot.name)) for robot in sim.robots]
+    near = proximity or {}
+    robots = [robot_entity(robot, ns, scans.get(robot.name), near.get(robot.name)) for robot in sim.robots]
     return {"deletions": [], "entities": world_entities(sim.world, ns) + robots}
 
 

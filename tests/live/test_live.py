@@ -37,6 +37,7 @@ def test_exploration_live_sends_processors_waits_scene_robots_and_topics(capsys)
     assert {"walls", "holes", "robot/robot1"} <= ids
     robot = next(e for e in scene["entities"] if e["id"] == "robot/robot1")
     assert robot["cylinders"] and robot["arrows"] and len(robot["lines"][0]["points"]) > 2  # body, heading, trail
+    assert len(robot["lines"][-1]["points"]) == 2 * 7  # the Thymio's seven proximity beams
     poses = client.on("/sim/robots")
     assert poses[-1]["robots"][0]["name"] == "robot1" and 0 < poses[-1]["robots"][0]["battery"] <= 1
     topics = {c["topic"]: c for c in client.channels.values()}
