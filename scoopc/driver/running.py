@@ -13,6 +13,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
 from ..codegen.names import class_name, module_name
+from ..exits import UsageError
 from ..kernel import launcher, link
 from ..results import RunResult
 from ..robots import runner
@@ -129,6 +130,8 @@ def _sampler(options: RunOptions, source: ClauseSource, record: str | Path | Non
     `--record run.mcap`, the live channels in run.scoop.mcap beside it."""
     if options.live is None and not record:
         return None
+    if options.live is not None and not 1 <= options.live <= 65535:
+        raise UsageError(f"--live: not a port (1 to 65535): {options.live}")
     from . import live, live_record  # deferred: start-up (only a live or recorded run samples the runtime)
 
     sinks: list[live.Sink] = []

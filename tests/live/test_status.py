@@ -1,6 +1,7 @@
 """`scoopc run --status [N]`: the processors and the wait conditions waited on, as text on stderr,
 every N seconds or on SIGUSR1 (tests/live/waits: a consumer waits until the root fills a cell)."""
 
+import io
 import os
 import signal
 import threading
@@ -9,6 +10,7 @@ from pathlib import Path
 
 import pytest
 
+import scoopc
 from scoopc import cli
 from scoopc.exits import Exit
 from scoopc.runtime import main as runtime_main, snapshot
@@ -67,3 +69,10 @@ def test_live_refuses_a_value_that_is_not_a_port(capsys):
         cli.main(["run", str(WAITS), "--live", "70000"])
     assert ended.value.code == Exit.USAGE
     assert "not a port (1 to 65535): '70000'" in capsys.readouterr().err
+
+
+def test_the_api_takes_status_as_the_command_line_does():
+    err = io.StringIO()
+    result = scoopc.run([WAITS], ["600"], status=0.05, stdout=io.StringIO(), stderr=err)
+    assert result.status == Exit.OK
+    assert _wait_line(err.getvalue()), err.getvalue()
