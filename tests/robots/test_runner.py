@@ -33,14 +33,14 @@ def test_a_program_that_ends_ends_the_simulation(capsys):
     assert "scoopc: simulated 14." in err and "(the program ended)" in err
 
 
-def test_the_world_duration_stops_a_program_that_runs_on(capsys):
+def test_the_duration_asked_for_stops_a_program_that_runs_on(capsys):
     result = run_on_simulator(PROGRAMS / "run_forever", duration=12)
     out, err = capsys.readouterr()
     assert result.status == 0, err
     assert result.stopped_by == "duration"
     assert result.sim.time == pytest.approx(12.0)
     assert result.sim.robot().x == pytest.approx(0.6 + 0.1 * 12, abs=0.03)
-    assert "(the world's duration)" in err
+    assert "(the duration asked for)" in err
 
 
 def test_runs_on_the_virtual_clock_are_repeatable(capsys):
