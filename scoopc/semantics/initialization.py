@@ -102,8 +102,10 @@ class CreationWalk:
             return
         if owner.from_library:
             # Our library's text is not EiffelBase's: its routines are trusted to set their own
-            # class's attributes and to read none unset.
+            # class's attributes and to read none unset, and taken to make qualified calls, as
+            # EiffelBase's routines nearly all do (`io.put_string`, `count + 1`).
             self.state = replace(self.state, unset=self.state.unset - self.attributes_of(owner))
+            self.qualified_call()
             return
         body = feature.decl.body
         with self.inside(feature):
@@ -129,7 +131,8 @@ class CreationWalk:
             versions.extend(p for _, p in version.precursors)
             body = version.body
             part = getattr(body, which, None) if body is not None else None
-            if part is None or self.universe.get(version.written_in) is None:
+            owner = self.universe.get(version.written_in)
+            if part is None or owner is None or owner.from_library:
                 continue
             with self.inside(version):
                 for clause in part.clauses:

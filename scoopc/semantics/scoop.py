@@ -198,7 +198,9 @@ def wait_arguments(ctx, clause: syntax.AssertionClause) -> tuple[str, ...]:
     makes the clause a wait condition when one of them was newly reserved by the call."""
     names: set[str] = set()
     separate_formals = {
-        e.name for e in ctx.scopes.frames[0].values() if e.kind == "argument" and e.ty is not None and e.ty.separate
+        e.name
+        for e in ctx.scopes.frames[0].values()
+        if e.kind == "argument" and e.ty is not None and (e.ty.separate or separate_by_constraint(ctx, e.ty))
     }
 
     def visit(node):
