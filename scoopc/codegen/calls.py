@@ -50,6 +50,8 @@ def declared_name(feature) -> str:
 class Calls:
     # --- unqualified and qualified calls ---------------------------------------------------------
     def x_UnqualifiedCall(self, node):
+        if node in self.tables.rewrites:
+            return self.x(self.tables.rewrites[node])  # `x (a)`: x's "()" alias
         entity = self.tables.entities.get(node)
         if entity is not None and entity.kind != "attribute":
             value = P.name(self.local_name(entity.name))
@@ -65,6 +67,8 @@ class Calls:
         return self.call_feature(node, None, P.name("self"), feature, node.arguments)
 
     def x_QualifiedCall(self, node):
+        if node in self.tables.rewrites:
+            return self.x(self.tables.rewrites[node])  # `t.x (a)`: x's "()" alias
         target = self.x(node.target)
         feature = self.tables.features.get(node)
         if feature is None:

@@ -2,6 +2,7 @@
 import scoopc.runtime as rt
 from scoopc.kernel import basic as B, strings as KS, support as S, types as T
 from eiffel_base.any import ANY
+W_1 = ('BOX', 'mapped', 'tests/golden/generics/box.e', 39)
 
 class BOX(ANY):
     """Eiffel class BOX (tests/golden/generics/box.e)."""
@@ -32,9 +33,11 @@ class BOX(ANY):
     def mapped(self, f):
         here = self._region_
         Result = None
+        if not (i := self.item) is not None:
+            S.assertion_failed('check', None, W_1)
         Result = here.new(BOX)
         Result._gen_ = (T.formal(self, 'BOX', 0),)
-        Result.make(f.item(S.new_tuple(here, [self.item], ())))
+        Result.make(f.item(S.new_tuple(here, [i], ())))
         return Result
 
     def replaced(self, v):
