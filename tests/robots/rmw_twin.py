@@ -815,6 +815,31 @@ def summary(msg) -> dict:
     return out
 
 
+def navigate_server(node: Node, steps: int, period: float) -> TwinActionServer:
+    """A stand-in of Nav2's bt_navigator: /navigate_to_pose accepts every goal, publishes `steps`
+    feedback messages `period` s apart (distance_remaining shrinking to 0), then succeeds; a
+    cancel request ends the goal CANCELED at the next step. Each event is a JSON line."""
+
+    def execute(goal):
+        position = goal.goal.pose.pose.position
+        print(
+            json.dumps({"goal": [float(position.x), float(position.y)], "frame": goal.goal.pose.header.frame_id}),
+            flush=True,
+        )
+        distance = (float(position.x) ** 2 + float(position.y) ** 2) ** 0.5
+        for step in range(steps):
+            if goal.cancel_requested:
+                goal.finish(5)
+                print(json.dumps({"canceled": step}), flush=True)
+                return
+            goal.publish_feedback(distance_remaining=distance * (1 - (step + 1) / steps))
+            time.sleep(period)
+        goal.finish(4)
+        print(json.dumps({"succeeded": steps}), flush=True)
+
+    return TwinActionServer(node, "nav2_msgs/action/NavigateToPose", "/navigate_to_pose", execute)
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--distro", default="jazzy", choices=tuple(STORES))
@@ -826,6 +851,9 @@ def main(argv=None) -> int:
     publish.add_argument("topic")
     publish.add_argument("type")
     publish.add_argument("--rate", type=float, default=20.0)
+    navigate = commands.add_parser("navigate", help="a stand-in Nav2 server of /navigate_to_pose")
+    navigate.add_argument("--steps", type=int, default=10, help="feedback messages before the goal succeeds")
+    navigate.add_argument("--period", type=float, default=0.1, help="seconds between feedback messages")
     args = parser.parse_args(argv)
     node = Node(args.distro)
     try:
@@ -835,6 +863,10 @@ def main(argv=None) -> int:
                 print(json.dumps({**summary(msg), "received": time.time()}), flush=True)
 
             node.create_subscription(args.type, args.topic, callback=show)
+            print(json.dumps({"ready": True}), flush=True)
+            threading.Event().wait()
+        elif args.command == "navigate":
+            navigate_server(node, args.steps, args.period)
             print(json.dumps({"ready": True}), flush=True)
             threading.Event().wait()
         else:

@@ -7,6 +7,7 @@ clock, (3) ROS_LOCALHOST_ONLY / ROS_AUTOMATIC_DISCOVERY_RANGE / ROS_STATIC_PEERS
 missing battery topic, (7) silent topics are reported. Waits are on conditions; time limits only
 bound a broken run (the one negative discovery check, OFF, is bounded by a positive control)."""
 
+import json
 import os
 import subprocess
 import sys
@@ -491,3 +492,75 @@ def test_a_program_calls_a_stock_service_and_serves_one(env, tmp_path):
         if run is not None and run.poll() is None:
             run.kill()
         twin.close()
+
+
+# -- issue 17: the NavigateToPose sample against a stand-in Nav2 server in another process ---------------------
+
+
+def _navigate_server(env, steps, period):
+    server = subprocess.Popen(
+        [
+            sys.executable,
+            str(Path(__file__).parent / "rmw_twin.py"),
+            "navigate",
+            "--steps",
+            str(steps),
+            "--period",
+            str(period),
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+    )
+    assert server.stdout.readline().strip() == '{"ready": true}', server.stderr.read()
+    return server
+
+
+def _events(server):
+    server.kill()
+    out, _ = server.communicate()
+    return [json.loads(line) for line in out.splitlines()]
+
+
+@pytest.mark.slow
+def test_the_navigate_to_pose_sample_reaches_its_goal(env, tmp_path):
+    server = _navigate_server(env, steps=5, period=0.1)
+    try:
+        run = scoopc(
+            env, "run", str(ROOT / "samples" / "navigate_to_pose"), "--robot", "ros2", "--", "3", "4", cwd=tmp_path
+        )
+        status, out, err = finish(run, 180)
+        assert status == 0, err
+        assert out.splitlines()[0] == "goal sent: 3 4"
+        assert out.splitlines()[1].startswith("goal reached after ") and out.endswith(" 0 m remaining\n"), out
+    finally:
+        events = _events(server)
+    assert events == [{"goal": [3.0, 4.0], "frame": "map"}, {"succeeded": 5}]
+
+
+@pytest.mark.slow
+def test_the_navigate_to_pose_sample_cancels_its_goal_when_the_stop_signaler_fires(env, tmp_path):
+    server = _navigate_server(env, steps=1000, period=0.05)
+    try:
+        run = scoopc(
+            env,
+            "run",
+            str(ROOT / "samples" / "navigate_to_pose"),
+            "--robot",
+            "ros2",
+            "--",
+            "1",
+            "0",
+            "1.5",
+            cwd=tmp_path,
+        )
+        status, out, err = finish(run, 180)
+        assert status == 0, err
+        lines = out.splitlines()
+        assert lines[:2] == ["goal sent: 1 0", "stop requested: cancelling the goal"], out
+        assert lines[2].startswith("goal canceled after "), out
+    finally:
+        events = _events(server)
+    assert events[0] == {"goal": [1.0, 0.0], "frame": "map"} and "canceled" in events[1], events
+    assert 0 < events[1]["canceled"] < 1000
