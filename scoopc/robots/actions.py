@@ -208,6 +208,20 @@ class ServerGoal:
     def execute(self) -> None:
         self.server._event(self, "execute")
 
+    def start(self) -> None:
+        """Execute the goal if it is still only accepted (whoever comes first: the server's
+        on_accepted or the program ending it)."""
+        with self.server._lock:
+            if self.status == ACCEPTED:
+                self.execute()
+
+    def mark_canceling(self) -> bool:
+        """A cancel request taken: CANCELING if still active; whether the goal is (or ended) cancelled."""
+        with self.server._lock:
+            if self.status in (ACCEPTED, EXECUTING):
+                self.server._event(self, "cancel")
+            return self.status in (CANCELING, CANCELED)
+
     def publish_feedback(self, feedback) -> None:
         server = self.server
         message = ros_messages.new(
@@ -230,10 +244,11 @@ class ServerGoal:
 
 class ActionServer:
     """Offers the action `action` (absolute name) of type `actiontype` (`nav2_msgs/action/
-    NavigateToPose`). `on_goal(goal_id, goal)` decides on each new goal (True: accepted) and
-    `on_accepted(server_goal)` is told each accepted goal (default: execute it, as rclpy's
-    default handle_accepted_callback does); `on_cancel(server_goal)` decides on a cancel request
-    of an active goal (default: accepted). The callbacks run on the services' threads."""
+        NavigateToPose`). `on_goal(server_goal)` decides on each new goal (True: accepted; its `id` and
+    `goal` are set, it is not yet among the server's goals) and
+        `on_accepted(server_goal)` is told each accepted goal (default: execute it, as rclpy's
+        default handle_accepted_callback does); `on_cancel(server_goal)` decides on a cancel request
+        of an active goal (default: accepted). The callbacks run on the services' threads."""
 
     def __init__(
         self,
@@ -251,10 +266,11 @@ class ActionServer:
         self.types = ros_messages.action_types(actiontype)
         if not ros_messages.has_type(self.types["goal"], self.store):
             raise TypeError(f"unknown action type {actiontype}")
-        self.on_goal = on_goal or (lambda goal_id, goal: True)
+        self.on_goal = on_goal or (lambda server_goal: True)
         self.on_accepted = on_accepted or (lambda server_goal: server_goal.execute())
         self.on_cancel = on_cancel or (lambda server_goal: True)
         self.result_timeout = result_timeout
+        self._closing = threading.Lock()
         self._lock = threading.RLock()
         self.goals: dict[bytes, ServerGoal] = {}  # [_lock] by goal id, until they expire
         parts = names(action)
@@ -279,10 +295,10 @@ class ActionServer:
         with self._lock:
             self._expire()
             known = goal_id in self.goals
-        accepted = not known and bool(self.on_goal(goal_id, request.goal))
         now = time.time()
+        server_goal = ServerGoal(self, goal_id, request.goal, now)
+        accepted = not known and bool(self.on_goal(server_goal))
         if accepted:
-            server_goal = ServerGoal(self, goal_id, request.goal, now)
             with self._lock:
                 self.goals[goal_id] = server_goal
             self._publish_status()
@@ -317,11 +333,7 @@ class ActionServer:
             chosen = [g for g in goals if g.is_active and (g.stamp <= limit or g.id == wanted)]
         canceling = []
         for server_goal in chosen:
-            if self.on_cancel(server_goal):
-                try:
-                    self._event(server_goal, "cancel")
-                except ActionError:  # it ended meanwhile
-                    continue
+            if self.on_cancel(server_goal) and server_goal.mark_canceling():  # False: it ended meanwhile
                 canceling.append(server_goal)
         if chosen and not canceling and code == CANCEL_NONE and any(wanted):
             code = CANCEL_REJECTED
@@ -390,10 +402,13 @@ class ActionServer:
             self.status.write(ros_messages.new(STATUS_TYPE, store=self.store, status_list=status_list))
 
     def close(self) -> None:
-        for server in self.servers:
-            server.close()
-        self.feedback.close()
-        self.status.close()
+        """Close the services and topics (idempotent; a program's `close' and the runtime's
+        shutdown hook may call it at once)."""
+        with self._closing:
+            for server in self.servers:
+                server.close()
+            self.feedback.close()
+            self.status.close()
 
 
 # -- the client ------------------------------------------------------------------------------------
@@ -460,6 +475,7 @@ class ActionClient:
         if not ros_messages.has_type(self.types["goal"], self.store):
             raise TypeError(f"unknown action type {actiontype}")
         self._lock = threading.Lock()
+        self._closing = threading.Lock()
         self._goals: dict[bytes, ClientGoal] = {}  # [_lock] goals whose result has not come
         parts = names(action)
         self.send_goal_client = ServiceClient(bus, parts["send_goal"], f"{actiontype}_SendGoal", self.store)
@@ -524,5 +540,6 @@ class ActionClient:
                 handle._status(int(each.status))
 
     def close(self) -> None:
-        for part in (self.send_goal_client, self.cancel_goal, self.get_result, self.feedback, self.status):
-            part.close()
+        with self._closing:  # idempotent, and safe from two threads
+            for part in (self.send_goal_client, self.cancel_goal, self.get_result, self.feedback, self.status):
+                part.close()

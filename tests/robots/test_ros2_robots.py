@@ -564,3 +564,29 @@ def test_the_navigate_to_pose_sample_cancels_its_goal_when_the_stop_signaler_fir
         events = _events(server)
     assert events[0] == {"goal": [1.0, 0.0], "frame": "map"} and "canceled" in events[1], events
     assert 0 < events[1]["canceled"] < 1000
+
+
+@pytest.mark.slow
+def test_a_program_serves_an_action_to_a_stock_client(env, tmp_path):
+    """ROS_ACTION_SERVER in tests/robots/programs/action_server_ros2, against the twin's action client:
+    feedback and result of one goal, the cancel of another."""
+    twin = rmw_twin.Node("jazzy")
+    run = None
+    try:
+        run = scoopc(env, "run", str(PROGRAMS / "action_server_ros2"), "--robot", "ros2", cwd=tmp_path)
+        client = rmw_twin.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
+        first = client.send_goal(timeout=120, order=5)
+        done = client.result(first, TIMEOUT)
+        assert (done.status, list(done.result.sequence)) == (4, [0, 1, 1, 2, 3, 5])
+        assert [list(f.sequence) for f in client.feedback_of(first)] == [[0, 1, 1, 2, 3, 5][:n] for n in range(1, 7)]
+        second = client.send_goal(order=3)
+        cancel = client.cancel(second)
+        assert cancel.return_code == 0 and bytes(cancel.goals_canceling[0].goal_id.uuid) == second
+        assert client.result(second, TIMEOUT).status == 5
+        status, out, err = finish(run, 120)
+        assert status == 0, err
+        assert out == "goal 1: order 5, 6 feedback\ngoal 2: cancelled\n", err
+    finally:
+        if run is not None and run.poll() is None:
+            run.kill()
+        twin.close()
