@@ -127,10 +127,13 @@ def test_action_classes(tmp_path, capsys, monkeypatch):
     ]
     for name in written:
         assert (tmp_path / "jazzy" / name).read_text() == (sample / name).read_text()
-    assert (
-        cli.main(["msg", "nav2_msgs/action/NavigateToPose", "--ros-distro", "humble", "-o", str(tmp_path / "h")]) == 0
-    )
-    assert "result: STD_MSGS_EMPTY" in (tmp_path / "h" / "nav2_msgs_navigate_to_pose_result.e").read_text()
+    previous = ros_messages.distro()
+    try:
+        humble = ["msg", "nav2_msgs/action/NavigateToPose", "--ros-distro", "humble", "-o", str(tmp_path / "h")]
+        assert cli.main(humble) == 0
+    finally:
+        ros_messages.use_distro(previous)  # `scoopc msg` chose the process's distribution
+    assert "result_value: STD_MSGS_EMPTY" in (tmp_path / "h" / "nav2_msgs_navigate_to_pose_result.e").read_text()
     action = tmp_path / "Dock.action"
     action.write_text("string dock_id\n---\nbool docked\n---\nfloat32 distance\n")
     out = tmp_path / "own"
