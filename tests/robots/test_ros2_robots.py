@@ -416,7 +416,11 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
             value = rmw_twin.new_message(twin.store, "rcl_interfaces/msg/ParameterValue", **value)
             return rmw_twin.new_message(twin.store, "rcl_interfaces/msg/Parameter", name=name, value=value)
 
-        speeds = [parameter("speed", type=2, integer_value=1), parameter("speed", type=3, double_value=0.1)]
+        speeds = [
+            parameter("speed", type=2, integer_value=1),
+            parameter("speed", type=3, double_value=0.1),
+            parameter("mode", type=4, string_value="bold"),  # ROS_PARAMETER [STRING]
+        ]
         deadline = time.monotonic() + 120
         while True:  # until the program, started, has declared it
             results = setting.call(setting.new_request(parameters=speeds), 120).results
@@ -426,6 +430,7 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
             time.sleep(0.1)
         assert [(r.successful, r.reason) for r in results] == [
             (False, "parameter speed is a double, not an integer"),
+            (True, ""),
             (True, ""),
         ]
         assert driver.wait_for(lambda s: len(s.messages) >= 5, TIMEOUT)
@@ -456,7 +461,7 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
         status, out, err = finish(run)
         assert status == 130, err
         said = "profile True stamped True max 0.29999999999999999 1.2 cmd /wheels/cmd odom /wheels/odom\n"
-        assert out == said + "speed 0.10000000000000001 after 1 change\n", out
+        assert out == said + "speed 0.10000000000000001 after 1 change, mode bold\n", out
         assert "robot profile" in err and "robot.yaml" in err
         heard = [line for line in err.splitlines() if line.startswith("scoopc: heard ")]
         assert len(heard) == 1 and "nothing on /scan" in heard[0], err  # the laser of the profile: none here
