@@ -150,6 +150,12 @@ class _Channel:
     def guids(self) -> tuple[list, list]:
         return ([self.entity.guid], []) if self.callback else ([], [self.entity.guid])
 
+    def matched(self) -> int:
+        """Endpoints of other participants matched with this one."""
+        if self.callback:
+            return self.entity.get_subscription_matched_status().current_count
+        return self.entity.get_publication_matched_status().current_count
+
     def write(self, msg) -> None:
         ret = ddspy_write(self.entity._ref, frame(cdr.serialize(msg, self.typename, self.store)))
         if ret < 0:
@@ -490,12 +496,17 @@ class ActionClient:
         return ros_messages.new(self.types["goal"], store=self.store, **fields)
 
     def wait_for_server(self, timeout: float | None = None) -> bool:
-        """Until the server's three services are there (rclpy's server_is_ready)."""
+        """Until the server's three services are there (rclpy's server_is_ready), and its feedback
+        and status writers have matched our readers (so that no early feedback is missed)."""
         deadline = None if timeout is None else time.monotonic() + timeout
         for client in (self.send_goal_client, self.cancel_goal, self.get_result):
             left = None if deadline is None else max(0.0, deadline - time.monotonic())
             if not client.wait_for_service(left):
                 return False
+        while not (self.feedback.matched() and self.status.matched()):
+            if deadline is not None and time.monotonic() >= deadline:
+                return False
+            time.sleep(0.005)
         return True
 
     def send_goal(self, goal, timeout: float | None = 10.0, on_feedback=None, on_status=None, on_result=None):

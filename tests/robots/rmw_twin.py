@@ -730,9 +730,14 @@ class TwinActionClient:
         self.status = Subscription(node, status_type, prefix + "status", 1, qos=_status_qos(node, status_type))
 
     def send_goal(self, timeout=30.0, **fields) -> bytes:
-        """Send a goal (its fields); its id once accepted (AssertionError if rejected)."""
+        """Send a goal (its fields); its id once accepted (AssertionError if rejected). Waits first
+        until the server's feedback and status writers matched (no early feedback missed)."""
         import uuid
 
+        deadline = time.monotonic() + timeout
+        while not (self.feedback.matched() and self.status.matched()):
+            assert time.monotonic() < deadline, "no action server"
+            time.sleep(0.005)
         store = self.node.store
         goal_id = uuid.uuid4().bytes
         goal = new_message(store, f"{self.actiontype}_Goal", **fields)
