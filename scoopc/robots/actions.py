@@ -249,12 +249,13 @@ class ServerGoal:
 
 
 class ActionServer:
-    """Offers the action `action` (absolute name) of type `actiontype` (`nav2_msgs/action/
-        NavigateToPose`). `on_goal(server_goal)` decides on each new goal (True: accepted; its `id` and
-    `goal` are set, it is not yet among the server's goals) and
-        `on_accepted(server_goal)` is told each accepted goal (default: execute it, as rclpy's
-        default handle_accepted_callback does); `on_cancel(server_goal)` decides on a cancel request
-        of an active goal (default: accepted). The callbacks run on the services' threads."""
+    """Offers the action `action` (absolute name) of type `actiontype`
+    (`nav2_msgs/action/NavigateToPose`). `on_goal(server_goal)` decides on each new goal (True:
+    accepted; its `id` and `goal` are set, it is not yet among the server's goals);
+    `on_accepted(server_goal)` is told each accepted goal once the client has the answer
+    (default: execute it, as rclpy's default handle_accepted_callback does); `on_cancel(server_goal)`
+    decides on a cancel request of an active goal (default: accepted). The callbacks run on the
+    services' threads and must not block: a goal that takes time runs on a thread of the caller's."""
 
     def __init__(
         self,
@@ -283,7 +284,7 @@ class ActionServer:
         self.status = _Channel(bus, parts["status"], STATUS_TYPE, self.store, True)
         self.feedback = _Channel(bus, parts["feedback"], self.types["feedback_message"], self.store, False)
         self.servers = [
-            ServiceServer(bus, parts["send_goal"], f"{actiontype}_SendGoal", self._send_goal, self.store),
+            ServiceServer(bus, parts["send_goal"], f"{actiontype}_SendGoal", self._send_goal, self.store, True),
             ServiceServer(bus, parts["cancel_goal"], ros_messages.CANCEL_GOAL, self._cancel_goal, self.store),
             ServiceServer(bus, parts["get_result"], f"{actiontype}_GetResult", self._get_result, self.store, True),
         ]
@@ -296,7 +297,7 @@ class ActionServer:
         return ros_messages.new(self.types["feedback"], store=self.store, **fields)
 
     # -- the services ----------------------------------------------------------------------------
-    def _send_goal(self, request):
+    def _send_goal(self, request, reply) -> None:
         goal_id = bytes(request.goal_id.uuid)
         with self._lock:
             self._expire()
@@ -314,9 +315,9 @@ class ActionServer:
             accepted=accepted,
             stamp=_stamp(self.store, now if accepted else 0.0),
         )
-        if accepted:  # after the response is sent: the client knows the goal before it moves
-            threading.Thread(target=self.on_accepted, args=(server_goal,), name="action goal", daemon=True).start()
-        return response
+        reply(response)
+        if accepted:  # after the response: the client knows the goal before it moves
+            self.on_accepted(server_goal)
 
     def _cancel_goal(self, request):
         """rcl_action_process_cancel_request, then the server's own decision per goal."""

@@ -310,7 +310,13 @@ def test_our_action_server_to_a_stock_client(monkeypatch):
             go.wait(TIMEOUT)
         goal.succeed(server.new_result(sequence=np.array(_fibonacci(int(goal.goal.order)), dtype=np.int32)))
 
-    server = actions.ActionServer(bus, "/fib", "example_interfaces/action/Fibonacci", on_accepted=run)
+    workers = []
+
+    def accepted(goal):  # each goal on a thread of the test's own, joined at the end
+        workers.append(threading.Thread(target=run, args=(goal,)))
+        workers[-1].start()
+
+    server = actions.ActionServer(bus, "/fib", "example_interfaces/action/Fibonacci", on_accepted=accepted)
     try:
         client = rmw_twin.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
         first = client.send_goal(order=3)
@@ -332,6 +338,8 @@ def test_our_action_server_to_a_stock_client(monkeypatch):
         assert actions.CANCELING in client.statuses_of(second)
     finally:
         go.set()
+        for worker in workers:
+            worker.join()
         twin.close()
         server.close()
         bus.close()
