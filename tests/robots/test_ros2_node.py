@@ -343,3 +343,20 @@ def test_our_action_server_to_a_stock_client(monkeypatch):
         twin.close()
         server.close()
         bus.close()
+
+
+@pytest.mark.slow  # compiles a program
+def test_an_action_client_off_dds_says_why_it_cannot_send():
+    """On a transport without a DDS participant (here `--robot none`) `is_available` is False and
+    `send_goal` raises an Eiffel exception that names what is needed."""
+    import io
+
+    import scoopc
+
+    out, err = io.StringIO(), io.StringIO()
+    result = scoopc.run([Path(__file__).parent / "programs" / "action_off_dds"], robot="none", stdout=out, stderr=err)
+    assert result.status == 3 and out.getvalue() == "available False\n", err.getvalue()
+    assert (
+        "ROS_ACTION_CLIENT /fib: ROS 2 actions need a ROS 2 robot over DDS (scoopc run --robot ros2)" in err.getvalue()
+    )
+    assert "Traceback" not in err.getvalue()
