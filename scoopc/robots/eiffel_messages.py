@@ -289,6 +289,31 @@ def _command_srv(args, srvtype: str, distro: str) -> int:
     return 0
 
 
+def _command_action(args, actiontype: str, distro: str) -> int:
+    """`scoopc msg pkg/action/Name`: the classes of its goal, result and feedback (a known action of
+    the distribution, or the `.action` given with --file) and of the message types they use."""
+    extra = ()
+    if args.file:
+        try:
+            with open(args.file, encoding="utf-8") as source:
+                extra = ((actiontype, source.read()),)
+        except OSError as problem:
+            raise UsageError(f"cannot read {args.file}: {problem.strerror}") from None
+    elif distro not in ros_messages.ACTION_DEFINITIONS.get(actiontype, {}):
+        known = ", ".join(sorted(ros_messages.ACTION_DEFINITIONS))
+        raise UsageError(f"unknown ROS 2 action type `{actiontype}` (give its .action with --file; known: {known})")
+    try:
+        store = ros_messages.action_store(distro, extra)
+    except Exception as problem:  # rosbags' parser errors
+        raise UsageError(f"{args.file}: not a valid .action definition: {problem}") from None
+    written = []
+    for part in ("Goal", "Result", "Feedback"):
+        written += generate(f"{actiontype}_{part}", args.output, store, include_library=args.all)
+    for path in written:
+        print(path)
+    return 0
+
+
 def command_msg(args) -> int:
     """`scoopc msg TYPE [-o DIR]` / `scoopc msg --file X.msg --type pkg/msg/X [-o DIR]`."""
     try:
@@ -303,8 +328,13 @@ def command_msg(args) -> int:
         raise UsageError("`scoopc msg` needs a type name (pkg/msg/Name), or --file with --type")
     if re.fullmatch(r"\w+/srv/\w+", typename):
         return _command_srv(args, typename, distro)
+    if re.fullmatch(r"\w+/action/\w+", typename):
+        return _command_action(args, typename, distro)
     if not re.fullmatch(r"\w+/msg/\w+", typename):
-        raise UsageError(f"`{typename}` is not a ROS 2 message or service type name (pkg/msg/Name, pkg/srv/Name)")
+        raise UsageError(
+            f"`{typename}` is not a ROS 2 message, service or action type name (pkg/msg/Name, pkg/srv/Name, "
+            "pkg/action/Name)"
+        )
     if args.file:
         try:
             with open(args.file, encoding="utf-8") as source:

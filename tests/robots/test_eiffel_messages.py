@@ -107,3 +107,40 @@ def test_service_classes(tmp_path, capsys, monkeypatch):
     capsys.readouterr()
     assert cli.main(["msg", "nope/srv/Missing"]) == 2
     assert "unknown ROS 2 service type `nope/srv/Missing`" in capsys.readouterr().err
+
+
+def test_action_classes(tmp_path, capsys, monkeypatch):
+    """`scoopc msg pkg/action/Name` writes the goal, result and feedback classes for the distribution
+    (samples/navigate_to_pose has Jazzy's output); an .action of one's own with --file; an unknown
+    action is a usage error naming the known ones."""
+    from pathlib import Path
+
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    sample = Path(__file__).parents[2] / "samples" / "navigate_to_pose"
+    assert cli.main(["msg", "nav2_msgs/action/NavigateToPose", "-o", str(tmp_path / "jazzy")]) == 0
+    written = sorted(p.name for p in (tmp_path / "jazzy").iterdir())
+    assert written == [
+        "builtin_interfaces_duration.e",
+        "nav2_msgs_navigate_to_pose_feedback.e",
+        "nav2_msgs_navigate_to_pose_goal.e",
+        "nav2_msgs_navigate_to_pose_result.e",
+    ]
+    for name in written:
+        assert (tmp_path / "jazzy" / name).read_text() == (sample / name).read_text()
+    previous = ros_messages.distro()
+    try:
+        humble = ["msg", "nav2_msgs/action/NavigateToPose", "--ros-distro", "humble", "-o", str(tmp_path / "h")]
+        assert cli.main(humble) == 0
+    finally:
+        ros_messages.use_distro(previous)  # `scoopc msg` chose the process's distribution
+    assert "result_value: STD_MSGS_EMPTY" in (tmp_path / "h" / "nav2_msgs_navigate_to_pose_result.e").read_text()
+    action = tmp_path / "Dock.action"
+    action.write_text("string dock_id\n---\nbool docked\n---\nfloat32 distance\n")
+    out = tmp_path / "own"
+    assert cli.main(["msg", "--file", str(action), "--type", "my_pkg/action/Dock", "-o", str(out)]) == 0
+    assert "docked: BOOLEAN" in (out / "my_pkg_dock_result.e").read_text()
+    assert 'Ros_type: STRING = "my_pkg/action/Dock_Feedback"' in (out / "my_pkg_dock_feedback.e").read_text()
+    assert cli.main(["check", "--format", "short", str(out)]) == 0, capsys.readouterr().err
+    capsys.readouterr()
+    assert cli.main(["msg", "nope/action/Missing"]) == 2
+    assert "unknown ROS 2 action type `nope/action/Missing`" in capsys.readouterr().err
