@@ -9,6 +9,7 @@ over 1 MiB, before anything is built."""
 from __future__ import annotations
 
 import difflib
+import json
 import math
 import re
 from collections.abc import Callable
@@ -290,6 +291,12 @@ def check_data(data, schema: Schema, reader: Reader):
     except yaml.YAMLError as e:
         reader.fail(None, "", f"not plain data: {e}")
     return load(text, schema, reader)
+
+
+def json_schema(schema: Schema, title: str) -> str:
+    """The JSON Schema document (draft 2020-12) of `schema`, for editors' completion and checks."""
+    document = {"$schema": "https://json-schema.org/draft/2020-12/schema", "title": title, **schema.json()}
+    return json.dumps(document, indent=2) + "\n"
 
 
 def keys_of(node) -> set:

@@ -10,6 +10,8 @@ from scoopc.robots import profile, yamlschema
 from scoopc.robots.sim import world_schema
 from scoopc.robots.sim.world import World, WorldError
 
+from harness import check_golden
+
 ROOT = Path(__file__).resolve().parents[2]
 
 MISTAKES = [
@@ -161,3 +163,14 @@ def test_the_json_schema_comes_from_the_same_definitions():
     assert schema["properties"]["step"] == {"type": "number", "exclusiveMinimum": 0.0, "maximum": 1.0}
     laser = schema["properties"]["robots"]["items"]["properties"]["laser"]["anyOf"][1]
     assert laser["properties"]["beams"] == {"type": "integer", "minimum": 1, "maximum": world_schema.MAX_BEAMS}
+
+
+@pytest.mark.parametrize(
+    ("name", "schema"),
+    [("world", world_schema.WORLD), ("robot", profile.SCHEMA)],
+)
+def test_the_shipped_json_schemas_are_generated_from_the_definitions(request, name, schema):
+    """docs/schemas/*.schema.json (for editors: a YAML language server reads them) are what the
+    definitions give; `pytest --update-golden` writes them again after a change."""
+    text = yamlschema.json_schema(schema, f"scoopc {name} file")
+    check_golden(request, ROOT / "docs" / "schemas" / f"{name}.schema.json", text)
