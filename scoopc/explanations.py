@@ -975,6 +975,19 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Choose a type large enough for the value, or a value within the type's range.",
     ),
+    "VQMC(3)": _x(
+        """An integer constant attribute must hold a value of its declared type: INTEGER_8 holds
+        -128 .. 127, INTEGER_32 (INTEGER) -2147483648 .. 2147483647, NATURAL_8 0 .. 255, and so on.
+        A literal that no integer type holds at all (beyond 18446744073709551615, or below
+        -9223372036854775808) is a syntax error already.""",
+        """
+        Limit: INTEGER_8 = 200
+        """,
+        """
+        Limit: INTEGER_16 = 200
+        """,
+        "Declare the constant with a type large enough for its value, or change the value.",
+    ),
     "ONCE-KEY": _x(
         """The key of a once routine says how often its body runs: plain `once` once per processor,
         `once ("PROCESS")` once for the whole program, `once ("THREAD")` once per processor and

@@ -226,6 +226,10 @@ MESSAGES: dict[str, Message] = {
         "the constant {constant} is not a value of {type}",
         "use a value within the type's range, or a larger type such as INTEGER_64",
     ),
+    "VQMC(3)": Message(
+        "the integer constant {value} is not a value of {type} ({low} to {high})",
+        "use a value within that range, or declare the constant with a larger type such as INTEGER_64",
+    ),
     "VJAR": Message("source of type {source} cannot be assigned to a target of type {target}: {reason}", "{hint}"),
     "VJAW": Message(
         "`{name}` cannot be assigned: it is {what}", "assign to a local, to Result or to an attribute of the class"

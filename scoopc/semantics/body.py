@@ -13,6 +13,7 @@ from .. import diagnostics, syntax
 from . import contracts, initialization, onces, scoop
 from .agents import AgentChecks
 from .calls import CallChecks
+from .conformance import manifest_fits
 from .creation import CreationChecks
 from .expressions import ExpressionChecks
 from .features import member_signature
@@ -20,7 +21,8 @@ from .flow import UNREACHABLE, Facts
 from .instructions import InstructionChecks
 from .resolve import Scopes, clashes, declare_routine_entities
 from .typeresolve import TypeResolver
-from .values import Value, meet
+from .types import RANGES
+from .values import Value, manifest_kind, meet
 
 
 class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, InstructionChecks):
@@ -166,9 +168,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.result_type = own.result
         self.result_context = "a procedure" if not feature.is_query else "this feature"
         if isinstance(decl, syntax.Constant):
-            value = self.expr(decl.value, own.result)
-            if value is not None and own.result is not None:
-                self.expect(decl.value, value, own.result, "VJAR")
+            self.check_constant(decl, own.result)
             return
         body = decl.body
         if body is None:
@@ -177,6 +177,19 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         declare_routine_entities(self, feature.arguments, locals_, own.arguments, self.resolve_type)
         onces.check_once(self, feature, own.result)
         self.check_routine_body(body, own.result)
+
+    def check_constant(self, decl, ty) -> None:
+        value = self.expr(decl.value, ty)
+        if value is None or ty is None:
+            return
+        kind = manifest_kind(decl.value)
+        integer = kind is not None and kind[0] == "integer" and ty.name in RANGES
+        if integer and not manifest_fits("integer", kind[1], ty):
+            # EiffelStudio: an integer constant outside its type's range is VQMC(3), not a VJAR
+            low, high = RANGES[ty.name]
+            self.report("VQMC(3)", decl.value.span, value=kind[1], type=str(ty), low=low, high=high)
+            return
+        self.expect(decl.value, value, ty, "VJAR")
 
     def check_routine_body(self, body, result) -> None:
         saved = (self.result_type, self.result_context)

@@ -119,7 +119,7 @@ def test_a_malformed_world_is_reported(tmp_path, capsys):
     bad = tmp_path / "bad.yaml"
     bad.write_text("robots:\n  - {kind: tank}\n")
     assert cli.main(["run", str(PROGRAMS / "run_world"), "--no-png", "--world", str(bad)]) == 2
-    assert f"scoopc: error: {bad}: unknown robot kind 'tank'" in capsys.readouterr().err
+    assert f"scoopc: error: {bad}:2:12: robots[0].kind: must be one of thymio" in capsys.readouterr().err
 
 
 def test_programs_without_roboscoop_get_no_robot(capsys):
