@@ -30,6 +30,7 @@ from ..project import Project, collect
 from ..semantics import Checked as SemanticsChecked
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root
+from . import cache
 from .library import Library, compiled_library
 from .packages import (
     BASE_PACKAGE,
@@ -228,6 +229,10 @@ class Compilation:
             self.require_clean()
             self.rebuild_library |= not use_cache  # no cache at all: the library is compiled again too
             found = self._cache(folder, key)
+            cache.tidy(keep=folder)
+        else:
+            cache.touch(folder / "program.json")
+        cache.touch(found.library)
         ensure_bytecode(found.library)
         return found
 
