@@ -66,7 +66,7 @@ class ModuleContext:
         if key is not None and key in self._const_names:
             return P.name(self._const_names[key])
         self.counter += 1
-        ident = f"{prefix}_{self.counter}"
+        ident = f"_{prefix}_{self.counter}"  # the module's own names start with `_`: no Eiffel name does
         self.constants.append(P.assign(P.name(ident), value))
         if key is not None:
             self._const_names[key] = ident

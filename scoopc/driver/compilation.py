@@ -264,7 +264,7 @@ def package_name(root_key: str) -> str:
     """The package `scoopc compile` writes for a root class: its name in lower case, unless that
     would shadow a module Python or scoopc needs (`json`, `threading`, `eiffel_base`, ...), then
     with `_program` after it."""
-    name = root_key.lower()
+    name = module_name(root_key)
     taken = name in sys.stdlib_module_names or name in (BASE_PACKAGE, "scoopc", "program") or keyword.iskeyword(name)
     return f"{name}_program" if taken else name
 

@@ -73,7 +73,7 @@ def _read_library_leaves(package: str) -> None:
 def is_leaf_routine(cls: type, name: str) -> bool:
     """Is routine `name` of (generated) class `cls` a leaf (no loop, no separate call, nothing
     that blocks: scoopc.codegen.scoop) in the loaded program? A program's own routine says so
-    by its `@rt.leaf` mark; a library routine by the program's list of library leaves."""
+    by its `@_rt.leaf` mark; a library routine by the program's list of library leaves."""
     for owner in cls.__mro__:
         function = owner.__dict__.get(name)
         if function is not None:
