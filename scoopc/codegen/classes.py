@@ -88,12 +88,13 @@ class ClassGen:
             )
         ]
         stmts += [ast.parse(line).body[0] for line in HEADER_IMPORTS]
-        stmts += self.module.import_lines(self.layout.bases, top=True)
+        stmts += self.module.import_lines(set(self.layout.bases) | self.module.ancestors, top=True)
         stmts += [ast.Import([ast.alias(f"scoopc.kernel.ext.{m}", f"_X_{m}")]) for m in sorted(self.externals_used)]
         stmts += self.module.constants
         stmts.append(cls)
         stmts += self.module.functions
         stmts.append(P.expr_stmt(P.call("_S.register", [P.const(self.info.name), P.name(class_name(self.info.name))])))
+        stmts += self.module.module_imports()
         module = ast.Module(stmts, [])
         _stamp_statements(module, 1)
         return module

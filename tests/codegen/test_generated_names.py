@@ -7,7 +7,24 @@ import io
 
 import scoopc
 
-NAMES = ["S", "B", "T", "KS", "P", "W_1", "W_3", "W_4", "G_1", "PRE_4", "PRE_5", "X_CONSOLE", "EIFFEL_BASE"]
+NAMES = [
+    "S",
+    "B",
+    "T",
+    "KS",
+    "P",
+    "AGENT_1",
+    "M_T",
+    "L_ANY",
+    "W_1",
+    "W_3",
+    "W_4",
+    "G_1",
+    "PRE_4",
+    "PRE_5",
+    "X_CONSOLE",
+    "EIFFEL_BASE",
+]
 
 ROOT = """class
 	NAMES_MAIN

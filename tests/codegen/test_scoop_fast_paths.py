@@ -176,18 +176,18 @@ def test_short_library_routines_count_as_leaves_but_are_never_decorated(program)
 
 def test_one_separate_command_is_command1_statically_bound(program):
     text = program[1]["fast.py"]
-    assert "here.command1(c, COUNTER.increment, (), _W_" in routine(text, "inc")
+    assert "here.command1(c, _M_counter.COUNTER.increment, (), _W_" in routine(text, "inc")
 
 
 def test_leaf_calls_and_queries_inside_a_reservation(program):
     text = program[1]["fast.py"]
     body = routine(text, "add_twice")
     assert "with here.reserve1(c, _W_" in body
-    assert "here.leaf_call(c, COUNTER.add, (n,))" in body
-    assert "here.leaf_call(c, COUNTER.add_square, (n,))" in body
+    assert "here.leaf_call(c, _M_counter.COUNTER.add, (n,))" in body
+    assert "here.leaf_call(c, _M_counter.COUNTER.add_square, (n,))" in body
     show = routine(text, "show")
     assert "here.leaf_query(c, _G_" in show  # an attribute: a getter
-    assert "here.query(c, COUNTER.factorial, (4,)" in show  # not a leaf: the general query
+    assert "here.query(c, _M_counter.COUNTER.factorial, (4,)" in show  # not a leaf: the general query
 
 
 def test_a_precondition_is_a_clause_table_not_command1(program):
@@ -198,7 +198,7 @@ def test_a_precondition_is_a_clause_table_not_command1(program):
 
 def test_a_reference_argument_takes_the_general_call(program):
     body = routine(program[1]["fast.py"], "give")
-    assert "here.call(c, COUNTER.register, (" in body and "command1" not in body
+    assert "here.call(c, _M_counter.COUNTER.register, (" in body and "command1" not in body
 
 
 def test_several_versions_are_bound_at_run_time(program):
@@ -209,8 +209,8 @@ def test_several_versions_are_bound_at_run_time(program):
 def test_several_separate_arguments_reserve_together(program):
     body = routine(program[1]["fast.py"], "fill")
     assert "here.reserve((box, c), where=_W_" in body
-    assert "here.leaf_call(box, BOX.put, (7,))" in body
-    assert "here.call(box, BOX.keep, (c,))" in body  # c may pass locks
+    assert "here.leaf_call(box, _M_box.BOX.put, (7,))" in body
+    assert "here.call(box, _M_box.BOX.keep, (c,))" in body  # c may pass locks
 
 
 def test_across_an_integer_interval_is_a_range(program):

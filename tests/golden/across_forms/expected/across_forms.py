@@ -26,10 +26,10 @@ class ACROSS_FORMS(ANY):
             self.print_(_KS.s8(here, 'never ').plus(_B.out_int(here, i)))
         for i in _S.cursors(_B.interval(here, -2, 2)):
             self.print_(_B.out_int(here, i.item).plus(_KS.s8(here, '\n') if i.is_last else _KS.s8(here, ',')))
-        list = here.new(LINKED_LIST)
+        list = here.new(_L_linked_list.LINKED_LIST)
         list._gen_ = (_T_1,)
         list.make()
-        for x in _S.cursors(_S.manifest_array(here, ARRAY, (_T_1,), [4, 8, 15, 16, 23, 42])):
+        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [4, 8, 15, 16, 23, 42])):
             list.extend(x.item)
         list.start()
         for c in _S.cursors(list):
@@ -47,7 +47,7 @@ class ACROSS_FORMS(ANY):
                 break
             self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))
         self.print_(_KS.s8(here, '\n'))
-        table = here.new(HASH_TABLE)
+        table = here.new(_L_hash_table.HASH_TABLE)
         table._gen_ = (_T_2, _T_2)
         table.make(3)
         table.put(_KS.s8(here, 'uno'), _KS.s8(here, 'one'))
@@ -62,12 +62,15 @@ class ACROSS_FORMS(ANY):
         for ch in _S.cursors(_KS.s8(here, 'abc')):
             self.print_(_B.out_c8(here, _B.UPPER8[ch.item]))
         self.print_(_KS.s8(here, '\n'))
-        a = _S.manifest_array(here, ARRAY, (_T_2,), [_KS.s8(here, 'x'), _KS.s8(here, 'y'), _KS.s8(here, 'z')])
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_2,), [_KS.s8(here, 'x'), _KS.s8(here, 'y'), _KS.s8(here, 'z')])
         for c in _S.cursors(a):
             for k_ in range(1, c.cursor_index + 1):
                 self.print_(c.item)
             self.print_(_KS.s8(here, ' '))
         self.print_(_KS.s8(here, '\n'))
-        self.print_(_B.out_bool(here, all((c.item > 0 for c in _S.take_while(lambda c: not c.item < 0, _S.cursors(_S.manifest_array(here, ARRAY, (_T_1,), [1, 2, 3, -4, 5])))))).plus(_KS.s8(here, '\n')))
+        self.print_(_B.out_bool(here, all((c.item > 0 for c in _S.take_while(lambda c: not c.item < 0, _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2, 3, -4, 5])))))).plus(_KS.s8(here, '\n')))
         self.print_(_B.out_bool(here, any((i == 3 for i in _S.take_while(lambda i: not i > 2, _S.items(_B.interval(here, 1, 10)))))).plus(_KS.s8(here, '\n')))
 _S.register('ACROSS_FORMS', ACROSS_FORMS)
+import eiffel_base.array as _L_array
+import eiffel_base.hash_table as _L_hash_table
+import eiffel_base.linked_list as _L_linked_list

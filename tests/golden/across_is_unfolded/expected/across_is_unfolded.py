@@ -14,14 +14,14 @@ class ACROSS_IS_UNFOLDED(ANY):
         a = None
         c = None
         i = 0
-        a = _S.manifest_array(here, ARRAY, (_T_1,), [1, 2])
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
         for x in _S.cursors(a):
             i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
             a.put(_t if -2147483648 <= (_t := (x.item * 10)) <= 2147483647 else _B.wrap_i32(_t), i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
         self.print_(_KS.s8(here, '(across is)\n'))
-        a = _S.manifest_array(here, ARRAY, (_T_1,), [1, 2])
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
         i = 0
         for x in _S.cursors(a):
             i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
@@ -29,7 +29,7 @@ class ACROSS_IS_UNFOLDED(ANY):
             a.put(_t if -2147483648 <= (_t := (x.item * 10)) <= 2147483647 else _B.wrap_i32(_t), i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
         self.print_(_KS.s8(here, '(symbolic)\n'))
-        a = _S.manifest_array(here, ARRAY, (_T_1,), [1, 2])
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
         i = 0
         c = a.new_cursor
         while not c.after:
@@ -40,3 +40,4 @@ class ACROSS_IS_UNFOLDED(ANY):
             c.forth()
         self.print_(_KS.s8(here, '(unfolded)\n'))
 _S.register('ACROSS_IS_UNFOLDED', ACROSS_IS_UNFOLDED)
+import eiffel_base.array as _L_array

@@ -25,49 +25,49 @@ class AGENTS(ANY):
         n = 0
         list = None
         total = 0
-        f = _S.new_agent(here, FUNCTION, (_T_2, _T_1), _S.dispatcher('add', False), [self, None, None], (1, 2))
+        f = _S.new_agent(here, _L_function.FUNCTION, (_T_2, _T_1), _S.dispatcher('add', False), [self, None, None], (1, 2))
         self.show(_KS.s8(here, 'item'), _B.out_int(here, f.item(_S.new_tuple(here, [2, 3], (_T_1, _T_1)))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, f.item(_S.new_tuple(here, [4, 5], ())))).plus(_KS.s8(here, ' open_count ')).plus(_B.out_int(here, f.open_count)))
         f.call(_S.new_tuple(here, [10, 20], (_T_1, _T_1)))
         self.show(_KS.s8(here, 'last_result'), _B.out_int(here, f.last_result))
-        g = _S.new_agent(here, FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, 10, None], (2,))
+        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, 10, None], (2,))
         self.show(_KS.s8(here, 'closed first'), _B.out_int(here, g.item(_S.new_tuple(here, [5], ()))))
-        g = _S.new_agent(here, FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, None, 100], (1,))
+        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, None, 100], (1,))
         self.show(_KS.s8(here, 'closed second'), _B.out_int(here, g.item(_S.new_tuple(here, [5], ()))))
         n = 1
-        g = _S.new_agent(here, FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, n, None], (2,))
+        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, n, None], (2,))
         n = 100
         self.show(_KS.s8(here, 'closed at creation'), _B.out_int(here, g.item(_S.new_tuple(here, [1], ()))))
-        h = _S.new_agent(here, FUNCTION, (_T_5, _T_1), _S.dispatcher('count', True), [None], (0,))
+        h = _S.new_agent(here, _L_function.FUNCTION, (_T_5, _T_1), _S.dispatcher('count', True), [None], (0,))
         self.show(_KS.s8(here, 'open target'), _B.out_int(here, h.item(_S.new_tuple(here, [_KS.s8(here, 'abcd')], ()))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, h.item(_S.new_tuple(here, [_KS.s8(here, 'xy')], (_T_4,))))))
-        p = _S.new_agent(here, PROCEDURE, (_T_5,), _S.dispatcher('say', False), [self, None], (1,))
+        p = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_5,), _S.dispatcher('say', False), [self, None], (1,))
         p.call(_S.new_tuple(here, [_KS.s8(here, 'hi')], (_T_4,)))
         p.call(_S.new_tuple(here, [_KS.s8(here, 'there')], ()))
-        q = _S.new_agent(here, PROCEDURE, (_T_6,), _S.dispatcher('bump', False), [self], ())
+        q = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_6,), _S.dispatcher('bump', False), [self], ())
         q.call(None)
         q.call(_S.new_tuple(here, [], ()))
         self.show(_KS.s8(here, 'counter'), _B.out_int(here, self.counter))
-        even = _S.new_agent(here, PREDICATE, (_T_3,), _agent_7, [self, None], (1,))
+        even = _S.new_agent(here, _L_predicate.PREDICATE, (_T_3,), _agent_7, [self, None], (1,))
         self.show(_KS.s8(here, 'predicate'), _B.out_bool(here, even.item(_S.new_tuple(here, [4], ()))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, even.item(_S.new_tuple(here, [7], ())))))
-        self.show(_KS.s8(here, 'as argument'), _B.out_int(here, self.twice(_S.new_agent(here, FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)), 3)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.twice(_S.new_agent(here, FUNCTION, (_T_3, _T_1), _agent_8, [self, None], (1,)), 1))))
-        list = here.new(ARRAYED_LIST)
+        self.show(_KS.s8(here, 'as argument'), _B.out_int(here, self.twice(_S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)), 3)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.twice(_S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _agent_8, [self, None], (1,)), 1))))
+        list = here.new(_L_arrayed_list.ARRAYED_LIST)
         list._gen_ = (_T_1,)
         list.make(5)
         list.extend(3)
         list.extend(8)
         list.extend(6)
-        list.do_all(_S.new_agent(here, PROCEDURE, (_T_3,), _agent_9, [self, None], (1,)))
+        list.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _agent_9, [self, None], (1,)))
         self.print_(_KS.s8(here, '\n'))
-        list.do_all(_S.new_agent(here, PROCEDURE, (_T_3,), _S.dispatcher('accumulate', False), [self, None, 2], (1,)))
+        list.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _S.dispatcher('accumulate', False), [self, None, 2], (1,)))
         self.show(_KS.s8(here, 'accumulated'), _B.out_int(here, self.accumulated))
-        list.do_if(_S.new_agent(here, PROCEDURE, (_T_3,), _S.dispatcher('say_integer', False), [self, None], (1,)), even)
+        list.do_if(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _S.dispatcher('say_integer', False), [self, None], (1,)), even)
         self.print_(_KS.s8(here, '\n'))
         self.show(_KS.s8(here, 'for_all even'), _B.out_bool(here, list.for_all(even)))
         self.show(_KS.s8(here, 'there_exists even'), _B.out_bool(here, list.there_exists(even)))
         for x in _S.cursors(list):
-            total = _t if -2147483648 <= (_t := (total + _S.new_agent(here, FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)).item(_S.new_tuple(here, [x.item], (_T_1,))))) <= 2147483647 else _B.wrap_i32(_t)
+            total = _t if -2147483648 <= (_t := (total + _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)).item(_S.new_tuple(here, [x.item], (_T_1,))))) <= 2147483647 else _B.wrap_i32(_t)
         self.show(_KS.s8(here, 'total'), _B.out_int(here, total))
-        self.show(_KS.s8(here, 'inline with closed'), _B.out_int(here, _S.new_agent(here, FUNCTION, (_T_3, _T_1), _agent_10, [self, 6, None], (2,)).item(_S.new_tuple(here, [7], (_T_1,)))))
-        self.show(_KS.s8(here, 'attribute agent'), _B.out_int(here, _S.new_agent(here, FUNCTION, (_T_6, _T_1), _S.dispatcher('counter', True), [self], ()).item(_S.new_tuple(here, [], ()))))
+        self.show(_KS.s8(here, 'inline with closed'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _agent_10, [self, 6, None], (2,)).item(_S.new_tuple(here, [7], (_T_1,)))))
+        self.show(_KS.s8(here, 'attribute agent'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_6, _T_1), _S.dispatcher('counter', True), [self], ()).item(_S.new_tuple(here, [], ()))))
     counter = 0
     accumulated = 0
 
@@ -122,3 +122,7 @@ def _agent_10(self, a, b_):
     Result = _t if -2147483648 <= (_t := (a * b_)) <= 2147483647 else _B.wrap_i32(_t)
     return Result
 _S.register('AGENTS', AGENTS)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import eiffel_base.function as _L_function
+import eiffel_base.predicate as _L_predicate
+import eiffel_base.procedure as _L_procedure

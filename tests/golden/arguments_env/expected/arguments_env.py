@@ -23,7 +23,7 @@ class ARGUMENTS_ENV(ARGUMENTS):
             self.print_(_KS.s8(here, 'name ').plus(n).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'number + 1 = ').plus(_B.out_int(here, _t if (_t := (self.argument(4).to_integer + 1)) <= 2147483647 else _B.wrap_i32(_t))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'argument_array ').plus(_B.out_int(here, self.argument_array.lower)).plus(_KS.s8(here, '..')).plus(_B.out_int(here, self.argument_array.upper)).plus(_KS.s8(here, '\n')))
-        env = here.new(EXECUTION_ENVIRONMENT)
+        env = here.new(_L_execution_environment.EXECUTION_ENVIRONMENT)
         env.default_create()
         env.put(_KS.s8(here, 'golden'), _KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))
         if (v := env.item(_KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))) is not None:
@@ -33,3 +33,4 @@ class ARGUMENTS_ENV(ARGUMENTS):
         env.sleep(2000000000)
         self.print_(_KS.s8(here, 'slept\n'))
 _S.register('ARGUMENTS_ENV', ARGUMENTS_ENV)
+import eiffel_base.execution_environment as _L_execution_environment

@@ -17,7 +17,7 @@ class ARRAYS(ANY):
         b_ = None
         names = None
         i = 0
-        a = here.new(ARRAY)
+        a = here.new(_L_array.ARRAY)
         a._gen_ = (_T_1,)
         a.make_filled(0, -2, 2)
         a.put(10, -2)
@@ -33,9 +33,9 @@ class ARRAYS(ANY):
         self.show(_KS.s8(here, 'resize'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)))
         self.show(_KS.s8(here, 'valid_index'), _B.out_bool(here, a.valid_index(8)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.valid_index(9))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.valid_index(-5))))
         self.show(_KS.s8(here, 'has, occurrences'), _B.out_bool(here, a.has(99)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.has(98))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.occurrences(0))))
-        b_ = _S.manifest_array(here, ARRAY, (_T_1,), [3, 1, 4, 1, 5])
+        b_ = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4, 1, 5])
         self.show(_KS.s8(here, 'manifest'), _B.out_int(here, b_.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.upper)).plus(_KS.s8(here, ' ')).plus(self.image(b_)))
-        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, _B.equal(b_, _S.manifest_array(here, ARRAY, (_T_1,), [3, 1, 4, 1, 5]))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, b_ is b_.twin)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, b_.twin))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, _S.manifest_array(here, ARRAY, (_T_1,), [3, 1, 4])))))
+        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4, 1, 5]))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, b_ is b_.twin)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, b_.twin))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4])))))
         i = b_.lower
         while not i > b_.upper:
             b_.put(_t if -2147483648 <= (_t := (b_.item(i) * 10)) <= 2147483647 else _B.wrap_i32(_t), i)
@@ -44,7 +44,7 @@ class ARRAYS(ANY):
         self.show(_KS.s8(here, 'subarray'), self.image(b_.subarray(2, 4)).plus(_KS.s8(here, ' lower ')).plus(_B.out_int(here, b_.subarray(2, 4).lower)))
         b_.rebase(0)
         self.show(_KS.s8(here, 'rebase'), _B.out_int(here, b_.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.item(0))))
-        names = here.new(ARRAY)
+        names = here.new(_L_array.ARRAY)
         names._gen_ = (_T_2,)
         names.make_empty()
         self.show(_KS.s8(here, 'empty'), _B.out_int(here, names.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, names.is_empty)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, names.lower)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, names.upper)))
@@ -52,17 +52,17 @@ class ARRAYS(ANY):
         names.force(_KS.s8(here, 'second'), 2)
         for n in _S.cursors(names):
             self.print_(n.item.plus(_KS.s8(here, ' at ')).plus(_B.out_int(here, n.cursor_index)).plus(_KS.s8(here, '\n')))
-        names = here.new(ARRAY)
+        names = here.new(_L_array.ARRAY)
         names._gen_ = (_T_2,)
         names.make_filled(_KS.s8(here, ''), 1, 2)
         self.show(_KS.s8(here, 'make_filled strings'), _B.out_bool(here, names.item(1) is names.item(2)))
-        a = here.new(ARRAY)
+        a = here.new(_L_array.ARRAY)
         a._gen_ = (_T_1,)
         a.make(1, 3)
         self.show(_KS.s8(here, 'make'), self.image(a))
         a.fill_with(4)
         self.show(_KS.s8(here, 'fill_with'), self.image(a))
-        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, a.for_all(_S.new_agent(here, PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))
+        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, a.for_all(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))
 
     def image(self, a):
         here = self._region_
@@ -82,3 +82,5 @@ def _agent_3(self, x):
     Result = x == 4
     return Result
 _S.register('ARRAYS', ARRAYS)
+import eiffel_base.array as _L_array
+import eiffel_base.predicate as _L_predicate

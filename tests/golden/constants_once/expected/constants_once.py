@@ -19,9 +19,9 @@ class CONSTANTS_ONCE(ANY):
         self.setup()
         self.setup()
         self.print_(_KS.s8(here, 'setup ran ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, ' time(s)\n')))
-        r1 = here.new(REGISTRY)
+        r1 = here.new(_M_registry.REGISTRY)
         r1.default_create()
-        r2 = here.new(REGISTRY)
+        r2 = here.new(_M_registry.REGISTRY)
         r2.default_create()
         r1.shared_list.extend(_KS.s8(here, 'one'))
         r2.shared_list.extend(_KS.s8(here, 'two'))
@@ -98,3 +98,4 @@ class CONSTANTS_ONCE(ANY):
                 raise
         return Result
 _S.register('CONSTANTS_ONCE', CONSTANTS_ONCE)
+import constants_once.registry as _M_registry

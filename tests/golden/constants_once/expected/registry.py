@@ -12,7 +12,7 @@ class REGISTRY(ANY):
     def shared_list_once_(self, _once_):
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, ARRAYED_LIST, (_T_1,), 'make', (4,))
+        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
         return _once_.result
 
     @property
@@ -22,10 +22,11 @@ class REGISTRY(ANY):
     def own_list_once_(self, _once_):
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, ARRAYED_LIST, (_T_1,), 'make', (4,))
+        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
         return _once_.result
 
     @property
     def own_list(self):
         return _rt.once_object(self, 'REGISTRY.own_list', REGISTRY.own_list_once_, (self,))
 _S.register('REGISTRY', REGISTRY)
+import eiffel_base.arrayed_list as _L_arrayed_list

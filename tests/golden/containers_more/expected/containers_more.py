@@ -17,7 +17,7 @@ class CONTAINERS_MORE(ANY):
         pq = None
         sorted = None
         set = None
-        s_ = here.new(ARRAYED_STACK)
+        s_ = here.new(_L_arrayed_stack.ARRAYED_STACK)
         s_._gen_ = (_T_1,)
         s_.make(2)
         s_.put(1)
@@ -26,29 +26,29 @@ class CONTAINERS_MORE(ANY):
         self.print_(_KS.s8(here, 'stack top ').plus(_B.out_int(here, s_.item)).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, s_.count)).plus(_KS.s8(here, '\n')))
         s_.remove()
         self.print_(_KS.s8(here, 'after remove ').plus(_B.out_int(here, s_.item)).plus(_KS.s8(here, ': ')).plus(self.image(s_.linear_representation)).plus(_KS.s8(here, '\n')))
-        ls = here.new(LINKED_STACK)
+        ls = here.new(_L_linked_stack.LINKED_STACK)
         ls._gen_ = (_T_2,)
         ls.make()
         ls.put(_KS.s8(here, 'a'))
         ls.put(_KS.s8(here, 'b'))
         self.print_(_KS.s8(here, 'linked stack top ').plus(ls.item).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, ls.count)).plus(_KS.s8(here, '\n')))
-        pq = here.new(HEAP_PRIORITY_QUEUE)
+        pq = here.new(_L_heap_priority_queue.HEAP_PRIORITY_QUEUE)
         pq._gen_ = (_T_1,)
         pq.make(10)
-        for x in _S.cursors(_S.manifest_array(here, ARRAY, (_T_1,), [5, 1, 9, 3, 7])):
+        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [5, 1, 9, 3, 7])):
             pq.put(x.item)
         self.print_(_KS.s8(here, 'priority queue:'))
         while not pq.is_empty:
             self.print_(_KS.s8(here, ' ').plus(_B.out_int(here, pq.item)))
             pq.remove()
         self.print_(_KS.s8(here, '\n'))
-        sorted = here.new(SORTED_TWO_WAY_LIST)
+        sorted = here.new(_L_sorted_two_way_list.SORTED_TWO_WAY_LIST)
         sorted._gen_ = (_T_1,)
         sorted.make()
-        for x in _S.cursors(_S.manifest_array(here, ARRAY, (_T_1,), [5, 2, 8, 2, 6])):
+        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [5, 2, 8, 2, 6])):
             sorted.extend(x.item)
         self.print_(_KS.s8(here, 'sorted: ').plus(self.image(sorted)).plus(_KS.s8(here, ' min ')).plus(_B.out_int(here, sorted.min)).plus(_KS.s8(here, ' max ')).plus(_B.out_int(here, sorted.max)).plus(_KS.s8(here, '\n')))
-        set = here.new(ARRAYED_SET)
+        set = here.new(_L_arrayed_set.ARRAYED_SET)
         set._gen_ = (_T_2,)
         set.make(4)
         set.compare_objects()
@@ -66,3 +66,9 @@ class CONTAINERS_MORE(ANY):
             l.forth()
         return Result
 _S.register('CONTAINERS_MORE', CONTAINERS_MORE)
+import eiffel_base.array as _L_array
+import eiffel_base.arrayed_set as _L_arrayed_set
+import eiffel_base.arrayed_stack as _L_arrayed_stack
+import eiffel_base.heap_priority_queue as _L_heap_priority_queue
+import eiffel_base.linked_stack as _L_linked_stack
+import eiffel_base.sorted_two_way_list as _L_sorted_two_way_list

@@ -14,7 +14,7 @@ class CONTRACT_INHERITANCE(EXCEPTION_MANAGER_FACTORY):
         here = self._region_
         acc = None
         base = None
-        acc = here.new(CREDIT_ACCOUNT)
+        acc = here.new(_M_credit_account.CREDIT_ACCOUNT)
         acc.make(50)
         _S.check_invariant(acc)
         _S.call_checked(acc, 'withdraw', (120,))
@@ -22,11 +22,11 @@ class CONTRACT_INHERITANCE(EXCEPTION_MANAGER_FACTORY):
         _S.call_checked(acc, 'deposit', (60,))
         self.print_(_KS.s8(here, 'deposit through Precursor: ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, ' deposits ')).plus(_B.out_int(here, acc.deposits)).plus(_KS.s8(here, '\n')))
         base = acc
-        self.print_(self.attempt(_S.new_agent(here, PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 40], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 100], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, PROCEDURE, (_T_1,), _S.dispatcher('deposit', False), [base, 0], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, FUNCTION, (_T_1, _T_2), _S.dispatcher('fee', True), [base], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, PROCEDURE, (_T_1,), _S.dispatcher('force_debt', False), [acc, 500], ())).plus(_KS.s8(here, '\n')))
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 40], ())).plus(_KS.s8(here, '\n')))
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 100], ())).plus(_KS.s8(here, '\n')))
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('deposit', False), [base, 0], ())).plus(_KS.s8(here, '\n')))
+        self.print_(self.attempt(_S.new_agent(here, _L_function.FUNCTION, (_T_1, _T_2), _S.dispatcher('fee', True), [base], ())).plus(_KS.s8(here, '\n')))
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('force_debt', False), [acc, 500], ())).plus(_KS.s8(here, '\n')))
 
     def attempt(self, action):
         here = self._region_
@@ -49,3 +49,6 @@ class CONTRACT_INHERITANCE(EXCEPTION_MANAGER_FACTORY):
                 raise
         return Result
 _S.register('CONTRACT_INHERITANCE', CONTRACT_INHERITANCE)
+import contract_inheritance.credit_account as _M_credit_account
+import eiffel_base.function as _L_function
+import eiffel_base.procedure as _L_procedure

@@ -33,7 +33,7 @@ class ACCOUNT(ANY):
     def history_init_(self):
         here = self._region_
         Result = None
-        Result = here.new(ARRAYED_LIST)
+        Result = here.new(_L_arrayed_list.ARRAYED_LIST)
         Result._gen_ = (_T_3,)
         Result.make(4)
         return Result
@@ -84,3 +84,4 @@ class ACCOUNT(ANY):
         if not self.balance >= 0:
             _S.assertion_failed('invariant', 'non_negative_balance', _W_13)
 _S.register('ACCOUNT', ACCOUNT)
+import eiffel_base.arrayed_list as _L_arrayed_list

@@ -11,7 +11,7 @@ class CONTRACTS(EXCEPTION_MANAGER_FACTORY):
     def make(self):
         here = self._region_
         acc = None
-        acc = here.new(ACCOUNT)
+        acc = here.new(_M_account.ACCOUNT)
         acc.make(100)
         _S.check_invariant(acc)
         _S.call_checked(acc, 'deposit', (50,))
@@ -37,7 +37,7 @@ class CONTRACTS(EXCEPTION_MANAGER_FACTORY):
                     elif _B.equal(what, _KS.s8(here, 'faulty deposit')):
                         _S.call_checked(acc, 'faulty_deposit', (10,))
                     else:
-                        other = here.new(ACCOUNT)
+                        other = here.new(_M_account.ACCOUNT)
                         other.make(-5)
                         _S.check_invariant(other)
                     self.print_(what.plus(_KS.s8(here, ': accepted\n')))
@@ -50,3 +50,4 @@ class CONTRACTS(EXCEPTION_MANAGER_FACTORY):
                 continue
                 raise
 _S.register('CONTRACTS', CONTRACTS)
+import contracts.account as _M_account

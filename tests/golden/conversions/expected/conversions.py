@@ -18,12 +18,12 @@ class CONVERSIONS(ANY):
         small = 0
         n = 0
         f = 0.0
-        c = _S.create(here, CELSIUS, None, 'from_integer', (21,))
+        c = _S.create(here, _M_celsius.CELSIUS, None, 'from_integer', (21,))
         self.print_(_KS.s8(here, 'from INTEGER: ').plus(c.out).plus(_KS.s8(here, '\n')))
         k_ = c.to_kelvin
         self.print_(_KS.s8(here, 'to REAL_64: ').plus(_B.out_r64(here, k_)).plus(_KS.s8(here, '\n')))
-        self.show(_S.create(here, CELSIUS, None, 'from_integer', (30,)))
-        self.print_(_KS.s8(here, 'sum: ').plus(_B.out_r64(here, self.kelvin(c.to_kelvin) + self.kelvin(_S.create(here, CELSIUS, None, 'make', (-273.15,)).to_kelvin))).plus(_KS.s8(here, '\n')))
+        self.show(_S.create(here, _M_celsius.CELSIUS, None, 'from_integer', (30,)))
+        self.print_(_KS.s8(here, 'sum: ').plus(_B.out_r64(here, self.kelvin(c.to_kelvin) + self.kelvin(_S.create(here, _M_celsius.CELSIUS, None, 'make', (-273.15,)).to_kelvin))).plus(_KS.s8(here, '\n')))
         i = 7
         d = i + 0.0
         big = i
@@ -44,3 +44,4 @@ class CONVERSIONS(ANY):
         Result = k_
         return Result
 _S.register('CONVERSIONS', CONVERSIONS)
+import conversions.celsius as _M_celsius

@@ -13,14 +13,14 @@ class COPY_EQUALITY(ANY):
         a = None
         b_ = None
         c = None
-        a = here.new(NODE)
+        a = here.new(_M_node.NODE)
         a.make(1, _KS.s8(here, 'a'))
-        a.add(_S.create(here, NODE, None, 'make', (2, _KS.s8(here, 'child'))))
+        a.add(_S.create(here, _M_node.NODE, None, 'make', (2, _KS.s8(here, 'child'))))
         b_ = a.twin
         self.print_(_KS.s8(here, 'twin: ').plus(_B.out_bool(here, a is b_)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' copies ')).plus(_B.out_int(here, b_.copies)).plus(_KS.s8(here, ' shares children ')).plus(_B.out_bool(here, a.children is b_.children)).plus(_KS.s8(here, '\n')))
         c = a.deep_twin
         self.print_(_KS.s8(here, 'deep_twin: ').plus(_B.out_bool(here, a.children is c.children)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.children.first is c.children.first)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a.children.first.label, c.children.first.label))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_deep_equal(c))).plus(_KS.s8(here, '\n')))
-        c = here.new(NODE)
+        c = here.new(_M_node.NODE)
         c.make(1, _KS.s8(here, 'other'))
         self.print_(_KS.s8(here, 'is_equal redefined: ').plus(_B.out_bool(here, _B.equal(a, c))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_equal(c))).plus(_KS.s8(here, ' standard ')).plus(_B.out_bool(here, a.standard_is_equal(c))).plus(_KS.s8(here, '\n')))
         c.set_value(5)
@@ -30,3 +30,4 @@ class COPY_EQUALITY(ANY):
         self.print_(_KS.s8(here, 'equal: ').plus(_B.out_bool(here, self.equal(a, c))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.equal(a, None))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.deep_equal(a, a.deep_twin))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'strings: ').plus(_B.out_bool(here, _KS.s8(here, 'abc').twin.same_string__readable_string_8(_KS.s8(here, 'abc')))).plus(_KS.s8(here, '\n')))
 _S.register('COPY_EQUALITY', COPY_EQUALITY)
+import copy_equality.node as _M_node

@@ -13,7 +13,7 @@ class NODE(ANY):
         here = self._region_
         self.value = v
         self.label = l
-        self.children = _S.create(here, ARRAYED_LIST, (_T_1,), 'make', (2,))
+        self.children = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (2,))
     value = 0
     label = None
     children = None
@@ -38,3 +38,4 @@ class NODE(ANY):
         self.children = other.children
         self.copies = _t if (_t := (other.copies + 1)) <= 2147483647 else _B.wrap_i32(_t)
 _S.register('NODE', NODE)
+import eiffel_base.arrayed_list as _L_arrayed_list

@@ -15,38 +15,41 @@ class CREATION(ANY):
         a = None
         thing = None
         list = None
-        p = here.new(POINT)
+        p = here.new(_M_point.POINT)
         p.make(1, 2)
         self.print_(_KS.s8(here, 'make: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        p = here.new(POINT)
+        p = here.new(_M_point.POINT)
         p.make_origin()
         self.print_(_KS.s8(here, 'make_origin: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        p = here.new(POINT)
+        p = here.new(_M_point.POINT)
         p.default_create()
         self.print_(_KS.s8(here, 'default_create: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        p = _S.create(here, POINT, None, 'make', (3, 4))
+        p = _S.create(here, _M_point.POINT, None, 'make', (3, 4))
         self.print_(_KS.s8(here, 'creation expression: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        a = here.new(POINT)
+        a = here.new(_M_point.POINT)
         a.make(5, 6)
         self.print_(_KS.s8(here, 'create {T}: ').plus(_B.query(a, 'out', here)).plus(_KS.s8(here, ' ')).plus(_B.query(a, 'generator', here)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'inline: ').plus(_B.out_int(here, _S.create(here, POINT, None, 'make', (7, 8)).x)).plus(_KS.s8(here, '\n')))
-        thing = here.new(PLAIN)
+        self.print_(_KS.s8(here, 'inline: ').plus(_B.out_int(here, _S.create(here, _M_point.POINT, None, 'make', (7, 8)).x)).plus(_KS.s8(here, '\n')))
+        thing = here.new(_M_plain.PLAIN)
         thing.default_create()
         thing.set_value(9)
         self.print_(_KS.s8(here, 'no create clause: ').plus(_B.out_int(here, thing.value)).plus(_KS.s8(here, '\n')))
-        list = here.new(ARRAYED_LIST)
+        list = here.new(_L_arrayed_list.ARRAYED_LIST)
         list._gen_ = (_T_1,)
         list.make(2)
         list.extend(_KS.s8(here, 'generic'))
         self.print_(_KS.s8(here, 'create {ARRAYED_LIST [STRING]}: ').plus(list.first).plus(_KS.s8(here, ' ')).plus(list.generator).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'each creation is new: ').plus(_B.out_bool(here, _S.create(here, POINT, None, 'make', (1, 1)) is _S.create(here, POINT, None, 'make', (1, 1)))).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'each creation is new: ').plus(_B.out_bool(here, _S.create(here, _M_point.POINT, None, 'make', (1, 1)) is _S.create(here, _M_point.POINT, None, 'make', (1, 1)))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'attribute default: ').plus(self.point.out).plus(_KS.s8(here, '\n')))
 
     def point_init_(self):
         here = self._region_
         Result = None
-        Result = here.new(POINT)
+        Result = here.new(_M_point.POINT)
         Result.make(10, 20)
         return Result
     point = _S.SelfInitialising(point_init_, 'point')
 _S.register('CREATION', CREATION)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import creation.plain as _M_plain
+import creation.point as _M_point

@@ -13,12 +13,15 @@ class DEFERRED_CLASSES(ANY):
         here = self._region_
         sensors = None
         c = None
-        c = here.new(COUNTER_SENSOR)
+        c = here.new(_M_counter_sensor.COUNTER_SENSOR)
         c.default_create()
-        sensors = _S.manifest_array(here, ARRAY, (_T_1,), [_S.create(here, THERMOMETER, None, 'make', (21,)), c])
+        sensors = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_S.create(here, _M_thermometer.THERMOMETER, None, 'make', (21,)), c])
         for s_ in _S.cursors(sensors):
             self.print_(s_.item.reading.plus(_KS.s8(here, ' calibrated: ')).plus(_B.out_bool(here, s_.item.is_calibrated)).plus(_KS.s8(here, '\n')))
         for s_ in _S.cursors(sensors):
             self.print_(s_.item.reading.plus(_KS.s8(here, ' calibrated: ')).plus(_B.out_bool(here, s_.item.is_calibrated)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'count ').plus(_B.out_int(here, c.count)).plus(_KS.s8(here, '\n')))
 _S.register('DEFERRED_CLASSES', DEFERRED_CLASSES)
+import eiffel_base.array as _L_array
+import deferred_classes.counter_sensor as _M_counter_sensor
+import deferred_classes.thermometer as _M_thermometer

@@ -29,10 +29,10 @@ class EXPANDED_COPY(ANY):
         t_ = _S.new_tuple(here, [_S.copy_expanded(a)], (_T_1,))
         a.set(4)
         self.print_(_KS.s8(here, 'tuple item: ').plus(t_._items[0].out).plus(_KS.s8(here, '\n')))
-        items = _S.manifest_array(here, ARRAY, (_T_1,), [_S.copy_expanded(a)])
+        items = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_S.copy_expanded(a)])
         a.set(5)
         self.print_(_KS.s8(here, 'array item: ').plus(items.item(1).out).plus(_KS.s8(here, '\n')))
-        f = _S.new_agent(here, FUNCTION, (_T_2, _T_1), _S.dispatcher('same_tally', False), [self, _S.copy_expanded(a)], ())
+        f = _S.new_agent(here, _L_function.FUNCTION, (_T_2, _T_1), _S.dispatcher('same_tally', False), [self, _S.copy_expanded(a)], ())
         a.set(6)
         self.print_(_KS.s8(here, 'agent operand: ').plus(f.item(_S.new_tuple(here, [], ())).out).plus(_KS.s8(here, '\n')))
         b_ = _S.copy_expanded(a.twin)
@@ -62,3 +62,5 @@ class EXPANDED_COPY(ANY):
         Result = _S.copy_expanded(x)
         return Result
 _S.register('EXPANDED_COPY', EXPANDED_COPY)
+import eiffel_base.array as _L_array
+import eiffel_base.function as _L_function

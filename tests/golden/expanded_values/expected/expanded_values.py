@@ -25,12 +25,12 @@ class EXPANDED_VALUES(ANY):
         self.print_(_KS.s8(here, 'equality: ').plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, a))))
         b_.set(1, 2)
         self.print_(_KS.s8(here, ' ').plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, '\n')))
-        p = here.new(PARTICLE)
+        p = here.new(_M_particle.PARTICLE)
         p.default_create()
         p.move(_S.copy_expanded(a))
         p.move(_S.copy_expanded(a))
         self.print_(_KS.s8(here, 'argument copies: ').plus(p.position.out).plus(_KS.s8(here, ' ')).plus(a.out).plus(_KS.s8(here, '\n')))
-        list = here.new(ARRAYED_LIST)
+        list = here.new(_L_arrayed_list.ARRAYED_LIST)
         list._gen_ = (_T_1,)
         list.make(2)
         list.extend(_S.copy_expanded(a))
@@ -44,3 +44,5 @@ class EXPANDED_VALUES(ANY):
         j = _t if (_t := (j + 1)) <= 2147483647 else _B.wrap_i32(_t)
         self.print_(_KS.s8(here, 'integers: ').plus(_B.out_int(here, i)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, j)).plus(_KS.s8(here, '\n')))
 _S.register('EXPANDED_VALUES', EXPANDED_VALUES)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import expanded_values.particle as _M_particle

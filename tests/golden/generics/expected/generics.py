@@ -24,38 +24,38 @@ class GENERICS(ANY):
         f = None
         rb = None
         real_box = None
-        ib = here.new(BOX)
+        ib = here.new(_M_box.BOX)
         ib._gen_ = (_T_1,)
         ib.make_empty()
-        sb = here.new(BOX)
+        sb = here.new(_M_box.BOX)
         sb._gen_ = (_T_2,)
         sb.make_empty()
         self.print_(_KS.s8(here, 'defaults: ').plus(_B.out_int(here, ib.item)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, sb.item is None)).plus(_KS.s8(here, '\n')))
-        ib = here.new(BOX)
+        ib = here.new(_M_box.BOX)
         ib._gen_ = (_T_1,)
         ib.make(21)
-        self.print_(_KS.s8(here, 'mapped: ').plus(_B.out_int(here, ib.mapped(_S.new_agent(here, FUNCTION, (_T_4, _T_1), _agent_3, [self, None], (1,))).item)).plus(_KS.s8(here, '\n')))
-        lb = here.new(LABELED_BOX)
+        self.print_(_KS.s8(here, 'mapped: ').plus(_B.out_int(here, ib.mapped(_S.new_agent(here, _L_function.FUNCTION, (_T_4, _T_1), _agent_3, [self, None], (1,))).item)).plus(_KS.s8(here, '\n')))
+        lb = here.new(_M_labeled_box.LABELED_BOX)
         lb._gen_ = (_T_1,)
         lb.make_labeled(7, _KS.s8(here, 'seven'))
         rb = lb.replaced(8)
         self.print_(_KS.s8(here, 'like Current: ').plus(rb.generator).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, rb.item)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, lb.item)).plus(_KS.s8(here, '\n')))
         if (l := rb) is not None and _T_5.accepts(l):
             self.print_(_KS.s8(here, 'label kept: ').plus(l.label).plus(_KS.s8(here, '\n')))
-        p = here.new(ORDERED_PAIR)
+        p = here.new(_M_ordered_pair.ORDERED_PAIR)
         p._gen_ = (_T_1,)
         p.make(9, 3)
         self.print_(_KS.s8(here, 'pair: ').plus(_B.out_int(here, p.low)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, p.high)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, p.contains(5))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, p.contains(10))).plus(_KS.s8(here, '\n')))
-        q = here.new(ORDERED_PAIR)
+        q = here.new(_M_ordered_pair.ORDERED_PAIR)
         q._gen_ = (_T_2,)
         q.make(_KS.s8(here, 'pear'), _KS.s8(here, 'apple'))
         self.print_(_KS.s8(here, 'strings: ').plus(q.low).plus(_KS.s8(here, ' ')).plus(q.high).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, q.contains(_KS.s8(here, 'banana')))).plus(_KS.s8(here, '\n')))
-        f = here.new(FACTORY)
+        f = here.new(_M_factory.FACTORY)
         f._gen_ = (_T_6,)
         f.default_create()
         self.print_(_KS.s8(here, 'created on formal: ').plus(_B.out_int(here, f.new_default.value)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, f.new_at(5).value)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'generating types: ').plus(ib.generating_type.name).plus(_KS.s8(here, '\n')))
-        real_box = here.new(BOX)
+        real_box = here.new(_M_box.BOX)
         real_box._gen_ = (_T_7,)
         real_box.make(0.10000000149011612)
         self.print_(_KS.s8(here, 'images: ').plus(real_box.image).plus(_KS.s8(here, ', ')).plus(ib.image).plus(_KS.s8(here, ', ')).plus(sb.image).plus(_KS.s8(here, ', ')).plus(q.low).plus(_KS.s8(here, '\n')))
@@ -64,3 +64,8 @@ def _agent_3(self, x):
     Result = _t if -2147483648 <= (_t := (x * 2)) <= 2147483647 else _B.wrap_i32(_t)
     return Result
 _S.register('GENERICS', GENERICS)
+import generics.box as _M_box
+import generics.factory as _M_factory
+import eiffel_base.function as _L_function
+import generics.labeled_box as _M_labeled_box
+import generics.ordered_pair as _M_ordered_pair

@@ -15,7 +15,7 @@ class HASH_TABLES(ANY):
         t_ = None
         n = None
         keys = None
-        t_ = here.new(HASH_TABLE)
+        t_ = here.new(_L_hash_table.HASH_TABLE)
         t_._gen_ = (_T_1, _T_2)
         t_.make(3)
         t_.put(1, _KS.s8(here, 'one'))
@@ -56,10 +56,10 @@ class HASH_TABLES(ANY):
             self.print_(t_.key_for_iteration.plus(_KS.s8(here, ':')).plus(_B.out_int(here, t_.item_for_iteration)).plus(_KS.s8(here, ' ')))
             t_.forth()
         self.print_(_KS.s8(here, '\n'))
-        n = here.new(HASH_TABLE)
+        n = here.new(_L_hash_table.HASH_TABLE)
         n._gen_ = (_T_2, _T_1)
         n.make(10)
-        for k_ in _S.cursors(_S.manifest_array(here, ARRAY, (_T_1,), [10, 3, 0, 25, 100003, 7])):
+        for k_ in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [10, 3, 0, 25, 100003, 7])):
             n.put(_KS.s8(here, 'v').plus(_B.out_int(here, k_.item)), k_.item)
         n.remove(3)
         n.put(_KS.s8(here, 'again'), 3)
@@ -83,3 +83,5 @@ class HASH_TABLES(ANY):
         here = self._region_
         self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
 _S.register('HASH_TABLES', HASH_TABLES)
+import eiffel_base.array as _L_array
+import eiffel_base.hash_table as _L_hash_table

@@ -2,6 +2,7 @@
 import scoopc.runtime as _rt
 from scoopc.kernel import basic as _B, strings as _KS, support as _S, types as _T
 from inheritance.colored import COLORED
+from inheritance.shape import SHAPE
 from inheritance.square import SQUARE
 
 class COLORED_SQUARE(SQUARE, COLORED):

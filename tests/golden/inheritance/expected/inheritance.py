@@ -17,12 +17,12 @@ class INHERITANCE(ANY):
         v = None
         b_ = None
         amphibian = None
-        shapes = here.new(ARRAYED_LIST)
+        shapes = here.new(_L_arrayed_list.ARRAYED_LIST)
         shapes._gen_ = (_T_1,)
         shapes.make(3)
-        shapes.extend(_S.create(here, RECTANGLE, None, 'make', (2.0, 3.0)))
-        shapes.extend(_S.create(here, SQUARE, None, 'make__square', (4.0,)))
-        cs = here.new(COLORED_SQUARE)
+        shapes.extend(_S.create(here, _M_rectangle.RECTANGLE, None, 'make', (2.0, 3.0)))
+        shapes.extend(_S.create(here, _M_square.SQUARE, None, 'make__square', (4.0,)))
+        cs = here.new(_M_colored_square.COLORED_SQUARE)
         cs.make_colored(1.5, _KS.s8(here, 'red'))
         shapes.extend(cs)
         for s_ in _S.cursors(shapes):
@@ -30,13 +30,13 @@ class INHERITANCE(ANY):
         c = cs
         self.print_(_KS.s8(here, 'as COLORED: ').plus(c.describe).plus(_KS.s8(here, ' / ')).plus(c.name).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'color_description: ').plus(cs.describe).plus(_KS.s8(here, '\n')))
-        v = here.new(CAR)
+        v = here.new(_M_car.CAR)
         v.default_create()
         self.print_(v.describe.plus(_KS.s8(here, '\n')))
-        v = here.new(BOAT)
+        v = here.new(_M_boat.BOAT)
         v.default_create()
         self.print_(v.describe.plus(_KS.s8(here, '\n')))
-        amphibian = here.new(AMPHIBIAN)
+        amphibian = here.new(_M_amphibian.AMPHIBIAN)
         amphibian.default_create()
         v = amphibian
         b_ = amphibian
@@ -44,3 +44,10 @@ class INHERITANCE(ANY):
         self.print_(_KS.s8(here, 'amphibian as BOAT: ').plus(_B.out_int(here, b_.speed)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'amphibian: ').plus(amphibian.both).plus(_KS.s8(here, '\n')))
 _S.register('INHERITANCE', INHERITANCE)
+import inheritance.amphibian as _M_amphibian
+import eiffel_base.arrayed_list as _L_arrayed_list
+import inheritance.boat as _M_boat
+import inheritance.car as _M_car
+import inheritance.colored_square as _M_colored_square
+import inheritance.rectangle as _M_rectangle
+import inheritance.square as _M_square

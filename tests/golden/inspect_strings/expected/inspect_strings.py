@@ -17,15 +17,15 @@ class INSPECT_STRINGS(ANY):
         words = None
         s_ = None
         w = None
-        words = _S.manifest_array(here, ARRAY, (_T_1,), [_KS.s8(here, 'one'), _KS.s8(here, 'many'), _KS.s8(here, 'none'), _KS.s8(here, 'zero')])
+        words = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_KS.s8(here, 'one'), _KS.s8(here, 'many'), _KS.s8(here, 'none'), _KS.s8(here, 'zero')])
         for c in _S.cursors(words):
-            s_ = here.new(STRING_8)
+            s_ = here.new(_L_string_8.STRING_8)
             s_.make_from_string(c.item)
             self.print_(s_.plus(_KS.s8(here, ': ')).plus(self.kind(s_)).plus(_KS.s8(here, ', ')).plus(self.size(s_)).plus(_KS.s8(here, '\n')))
         s_ = _KS.s8(here, 'ma')
         s_.append__string_8(_KS.s8(here, 'ny'))
         self.print_(self.kind(s_).plus(_KS.s8(here, '\n')))
-        w = here.new(STRING_32)
+        w = here.new(_L_string_32.STRING_32)
         w.make_from_string(_KS.s32(here, 'été'))
         _inspect1 = _S.inspect_text(w, _W_2)
         if _inspect1 == 'été':
@@ -59,3 +59,6 @@ class INSPECT_STRINGS(ANY):
         Result = _KS.s8(here, '1') if (_inspect1 := _S.inspect_text(s_, _W_4)) == 'one' else _KS.s8(here, 'n') if _inspect1 == 'many' else _KS.s8(here, '0')
         return Result
 _S.register('INSPECT_STRINGS', INSPECT_STRINGS)
+import eiffel_base.array as _L_array
+import eiffel_base.string_32 as _L_string_32
+import eiffel_base.string_8 as _L_string_8

@@ -34,15 +34,15 @@ class INTEGER_WRAP(ANY):
         i16 = 32767
         i16 = _t if (_t := (i16 + 2)) <= 32767 else _B.wrap_i16(_t)
         self.show(_KS.s8(here, 'i16 32767 + 2'), _B.out_int(here, i16))
-        i32 = INTEGER_32.max_value
+        i32 = _L_integer_32.INTEGER_32.max_value
         i32 = _t if (_t := (i32 + 1)) <= 2147483647 else _B.wrap_i32(_t)
         self.show(_KS.s8(here, 'i32 max + 1'), _B.out_int(here, i32))
         i32 = 65536
         i32 = _t if -2147483648 <= (_t := (i32 * 65536)) <= 2147483647 else _B.wrap_i32(_t)
         self.show(_KS.s8(here, 'i32 65536 * 65536'), _B.out_int(here, i32))
-        i32 = INTEGER_32.min_value
+        i32 = _L_integer_32.INTEGER_32.min_value
         self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, _t if -2147483648 <= (_t := (i32 - 1)) else _B.wrap_i32(_t)))
-        i64 = INTEGER_64.max_value
+        i64 = _L_integer_64.INTEGER_64.max_value
         i64 = _t if (_t := (i64 + 1)) <= 9223372036854775807 else _B.wrap_i64(_t)
         self.show(_KS.s8(here, 'i64 max + 1'), _B.out_int(here, i64))
         i64 = 3000000000
@@ -102,3 +102,5 @@ class INTEGER_WRAP(ANY):
         here = self._region_
         self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
 _S.register('INTEGER_WRAP', INTEGER_WRAP)
+import eiffel_base.integer_32 as _L_integer_32
+import eiffel_base.integer_64 as _L_integer_64

@@ -11,7 +11,7 @@ class INVARIANT_FAILURE(ANY):
     def make(self):
         here = self._region_
         acc = None
-        acc = here.new(ACCOUNT)
+        acc = here.new(_M_account.ACCOUNT)
         acc.make(100)
         _S.check_invariant(acc)
         _S.call_checked(acc, 'withdraw', (30,))
@@ -19,3 +19,4 @@ class INVARIANT_FAILURE(ANY):
         _S.call_checked(acc, 'withdraw', (100,))
         self.print_(_KS.s8(here, 'not reached\n'))
 _S.register('INVARIANT_FAILURE', INVARIANT_FAILURE)
+import invariant_failure.account as _M_account

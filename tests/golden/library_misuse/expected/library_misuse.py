@@ -42,10 +42,10 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
         while True:
             try:
                 if not failed:
-                    a = here.new(ARRAY)
+                    a = here.new(_L_array.ARRAY)
                     a._gen_ = (_T_1,)
                     a.make_filled(0, 1, 3)
-                    s_ = here.new(SPECIAL)
+                    s_ = here.new(_L_special.SPECIAL)
                     s_._gen_ = (_T_1,)
                     s_.make_filled(0, 2)
                     str = _KS.s8(here, 'abc')
@@ -84,3 +84,5 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
                 continue
                 raise
 _S.register('LIBRARY_MISUSE', LIBRARY_MISUSE)
+import eiffel_base.array as _L_array
+import eiffel_base.special as _L_special

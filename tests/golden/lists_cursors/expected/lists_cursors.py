@@ -16,17 +16,17 @@ class LISTS_CURSORS(ANY):
         a = None
         k_ = None
         words = None
-        a = here.new(ARRAYED_LIST)
+        a = here.new(_L_arrayed_list.ARRAYED_LIST)
         a._gen_ = (_T_1,)
         a.make(2)
         self.print_(_KS.s8(here, 'ARRAYED_LIST\n'))
         self.exercise(a)
-        k_ = here.new(LINKED_LIST)
+        k_ = here.new(_L_linked_list.LINKED_LIST)
         k_._gen_ = (_T_1,)
         k_.make()
         self.print_(_KS.s8(here, 'LINKED_LIST\n'))
         self.exercise(k_)
-        words = here.new(LINKED_LIST)
+        words = here.new(_L_linked_list.LINKED_LIST)
         words._gen_ = (_T_2,)
         words.make()
         words.extend(_KS.s8(here, 'alpha'))
@@ -88,9 +88,9 @@ class LISTS_CURSORS(ANY):
         self.show(_KS.s8(here, 'remove last'), self.image(l).plus(_KS.s8(here, ' after ')).plus(_B.out_bool(here, l.after)))
         self.show(_KS.s8(here, 'index_of'), _B.out_int(here, l.index_of(25, 1)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.index_of(99, 1))))
         self.show(_KS.s8(here, 'occurrences'), _B.out_int(here, l.occurrences(15)))
-        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, l.for_all(_S.new_agent(here, PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))
-        self.show(_KS.s8(here, 'there_exists'), _B.out_bool(here, l.there_exists(_S.new_agent(here, PREDICATE, (_T_4,), _agent_5, [self, None], (1,)))))
-        l.do_all(_S.new_agent(here, PROCEDURE, (_T_4,), _agent_6, [self, None], (1,)))
+        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, l.for_all(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))
+        self.show(_KS.s8(here, 'there_exists'), _B.out_bool(here, l.there_exists(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_5, [self, None], (1,)))))
+        l.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_4,), _agent_6, [self, None], (1,)))
         self.print_(_KS.s8(here, '\n'))
         l.wipe_out()
         self.show(_KS.s8(here, 'wipe_out'), _B.out_int(here, l.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.is_empty)))
@@ -120,3 +120,7 @@ def _agent_6(self, x):
     here = self._region_
     self.print_(_B.out_int(here, x).plus(_KS.s8(here, ';')))
 _S.register('LISTS_CURSORS', LISTS_CURSORS)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import eiffel_base.linked_list as _L_linked_list
+import eiffel_base.predicate as _L_predicate
+import eiffel_base.procedure as _L_procedure

@@ -26,7 +26,7 @@ class OBJECT_TESTS(ANY):
         zoo = None
         n = None
         dogs = 0
-        a = here.new(DOG)
+        a = here.new(_M_dog.DOG)
         a.default_create()
         if (d := a) is not None and _T_1.accepts(d):
             self.print_(_KS.s8(here, 'a dog: ').plus(d.fetch).plus(_KS.s8(here, '\n')))
@@ -50,12 +50,12 @@ class OBJECT_TESTS(ANY):
         s_ = _KS.s8(here, 'here')
         if (t_ := s_) is not None and t_.count == 4:
             self.print_(_KS.s8(here, 'attached local: ').plus(t_).plus(_KS.s8(here, '\n')))
-        zoo = here.new(ARRAYED_LIST)
+        zoo = here.new(_L_arrayed_list.ARRAYED_LIST)
         zoo._gen_ = (_T_5,)
         zoo.make(3)
         zoo.extend(a)
-        zoo.extend(_S.create(here, CAT, None, 'default_create', ()))
-        zoo.extend(_S.create(here, DOG, None, 'default_create', ()))
+        zoo.extend(_S.create(here, _M_cat.CAT, None, 'default_create', ()))
+        zoo.extend(_S.create(here, _M_dog.DOG, None, 'default_create', ()))
         for z in _S.cursors(zoo):
             if _S.conforms(z.item, _T_1):
                 dogs = _t if (_t := (dogs + 1)) <= 2147483647 else _B.wrap_i32(_t)
@@ -71,3 +71,6 @@ class OBJECT_TESTS(ANY):
         self.print_(_KS.s8(here, 'same_type: ').plus(_B.out_bool(here, a.same_type(zoo.i_th(3)))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.same_type(zoo.i_th(2)))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'conforms_to: ').plus(_B.out_bool(here, a.conforms_to(zoo.i_th(3)))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.conforms_to(zoo.i_th(2)))).plus(_KS.s8(here, '\n')))
 _S.register('OBJECT_TESTS', OBJECT_TESTS)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import object_tests.cat as _M_cat
+import object_tests.dog as _M_dog

@@ -17,9 +17,9 @@ class ONCE_RECURSION(ANY):
         self.print_(_KS.s8(here, 'before any assignment: ').plus(_B.out_int(here, self.fresh)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'process: ').plus(_B.out_int(here, self.shared_code)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'process again: ').plus(_B.out_int(here, self.shared_code)).plus(_KS.s8(here, '\n')))
-        n1 = here.new(NODE)
+        n1 = here.new(_M_node.NODE)
         n1.make(10)
-        n2 = here.new(NODE)
+        n2 = here.new(_M_node.NODE)
         n2.make(20)
         self.print_(_KS.s8(here, 'object: ').plus(_B.out_int(here, n1.total)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n2.total)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n1.total)).plus(_KS.s8(here, '\n')))
         self.setup()
@@ -68,3 +68,4 @@ class ONCE_RECURSION(ANY):
     def setup(self):
         return self._region_.once('ONCE_RECURSION.setup', ONCE_RECURSION.setup_once_, (self,))
 _S.register('ONCE_RECURSION', ONCE_RECURSION)
+import once_recursion.node as _M_node

@@ -23,11 +23,11 @@ class PRINTING(ANY):
         nothing = None
         i8 = -128
         i16 = 32767
-        i64 = INTEGER_64.min_value
+        i64 = _L_integer_64.INTEGER_64.min_value
         n8 = 255
         n16 = 65535
         n32 = 4294967295
-        n64 = NATURAL_64.max_value
+        n64 = _L_natural_64.NATURAL_64.max_value
         r = 0.10000000149011612
         d = 0.1
         c32 = 'Z'
@@ -101,3 +101,5 @@ class PRINTING(ANY):
         self.io.error.put_string(_KS.s8(here, 'to stderr\n'))
         self.io.put_string(_KS.s8(here, 'last line without newline'))
 _S.register('PRINTING', PRINTING)
+import eiffel_base.integer_64 as _L_integer_64
+import eiffel_base.natural_64 as _L_natural_64

@@ -15,7 +15,7 @@ class QUEUES(ANY):
         l = None
         a = None
         i = 0
-        l = here.new(LINKED_QUEUE)
+        l = here.new(_L_linked_queue.LINKED_QUEUE)
         l._gen_ = (_T_1,)
         l.make()
         self.show(_KS.s8(here, 'empty'), _B.out_bool(here, l.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.count)))
@@ -33,7 +33,7 @@ class QUEUES(ANY):
         self.show(_KS.s8(here, 'replace'), l.item)
         l.wipe_out()
         self.show(_KS.s8(here, 'wipe_out'), _B.out_bool(here, l.is_empty))
-        a = here.new(ARRAYED_QUEUE)
+        a = here.new(_L_arrayed_queue.ARRAYED_QUEUE)
         a._gen_ = (_T_2,)
         a.make(2)
         a.put(1)
@@ -66,3 +66,5 @@ class QUEUES(ANY):
         here = self._region_
         self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
 _S.register('QUEUES', QUEUES)
+import eiffel_base.arrayed_queue as _L_arrayed_queue
+import eiffel_base.linked_queue as _L_linked_queue

@@ -13,7 +13,7 @@ class RANDOM_NUMBERS(ANY):
         r = None
         i = 0
         dice = None
-        r = here.new(RANDOM)
+        r = here.new(_L_random.RANDOM)
         r.make()
         self.print_(_KS.s8(here, 'seed ').plus(_B.out_int(here, r.seed)).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, r.index)).plus(_KS.s8(here, '\n')))
         i = 1
@@ -25,7 +25,7 @@ class RANDOM_NUMBERS(ANY):
         self.print_(_KS.s8(here, 'real_item ').plus(_B.out_r32(here, r.real_item)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'i_th (10) ').plus(_B.out_int(here, r.i_th(10))).plus(_KS.s8(here, ' i_th (1) ')).plus(_B.out_int(here, r.i_th(1))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'next_random (1) ').plus(_B.out_int(here, r.next_random(1))).plus(_KS.s8(here, '\n')))
-        r = here.new(RANDOM)
+        r = here.new(_L_random.RANDOM)
         r.set_seed(42)
         self.print_(_KS.s8(here, 'set_seed 42: index ').plus(_B.out_int(here, r.index)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, r.item)).plus(_KS.s8(here, '\n')))
         r.forth()
@@ -40,3 +40,4 @@ class RANDOM_NUMBERS(ANY):
         self.print_(_KS.s8(here, 'dice ').plus(dice).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'double_i_th (3) ').plus(_B.out_r64(here, r.double_i_th(3))).plus(_KS.s8(here, '\n')))
 _S.register('RANDOM_NUMBERS', RANDOM_NUMBERS)
+import eiffel_base.random as _L_random

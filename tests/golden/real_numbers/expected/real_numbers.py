@@ -53,7 +53,7 @@ class REAL_NUMBERS(ANY):
         self.show(_KS.s8(here, 'abs, max, min'), _B.out_r64(here, -1.5 if -1.5 > 0 else --1.5).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, _B.fmax(1.5, 2.5))).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, _B.fmin(1.5, 2.5))))
         self.show(_KS.s8(here, 'comparisons'), _B.out_bool(here, not 1.5 >= 2.5).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 1.5 >= 2.5)))
         self.show(_KS.s8(here, 'integer to real'), _B.out_r64(here, 7 + 0.0).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, _B.r32(7 + 0.0))))
-        m = here.new(DOUBLE_MATH)
+        m = here.new(_L_double_math.DOUBLE_MATH)
         m.default_create()
         self.show(_KS.s8(here, 'sqrt 2'), _B.out_r64(here, m.sqrt(2.0)))
         self.show(_KS.s8(here, 'pi'), _B.out_r64(here, m.pi))
@@ -68,3 +68,4 @@ class REAL_NUMBERS(ANY):
         here = self._region_
         self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
 _S.register('REAL_NUMBERS', REAL_NUMBERS)
+import eiffel_base.double_math as _L_double_math

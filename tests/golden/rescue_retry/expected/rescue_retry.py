@@ -43,7 +43,7 @@ class RESCUE_RETRY(EXCEPTION_MANAGER_FACTORY):
     def raise_developer(self, text):
         here = self._region_
         e = None
-        e = here.new(DEVELOPER_EXCEPTION)
+        e = here.new(_L_developer_exception.DEVELOPER_EXCEPTION)
         e.default_create()
         e.set_description(text)
         e.raise_()
@@ -95,3 +95,4 @@ class RESCUE_RETRY(EXCEPTION_MANAGER_FACTORY):
         if not n > 0:
             _S.assertion_failed('precondition', 'positive', _W_3)
 _S.register('RESCUE_RETRY', RESCUE_RETRY)
+import eiffel_base.developer_exception as _L_developer_exception

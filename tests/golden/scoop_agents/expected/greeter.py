@@ -23,7 +23,7 @@ class GREETER(ANY):
         here = self._region_
         with here.reserve1(name, _W_1):
             self.greetings = _t if (_t := (self.greetings + 1)) <= 2147483647 else _B.wrap_i32(_t)
-            self.last = _S.create(here, STRING_8, None, 'make_from_separate', (name,))
+            self.last = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (name,))
             self.print_(_KS.s8(here, 'hello ').plus(self.last).plus(_KS.s8(here, '\n')))
 
     @_rt.leaf
@@ -37,3 +37,4 @@ class GREETER(ANY):
         Result = here.new_separate(GREETER, GREETER.default_create, ())
         return Result
 _S.register('GREETER', GREETER)
+import eiffel_base.string_8 as _L_string_8

@@ -27,7 +27,7 @@ class SCOOP_AGENTS(ANY):
         g = None
         other = None
         action = None
-        g = here.new_separate(GREETER, GREETER.default_create, ())
+        g = here.new_separate(_M_greeter.GREETER, _M_greeter.GREETER.default_create, ())
         action = self.greeting_agent(g)
         self.run_agent(action, _KS.s8(here, 'agent'))
         self.print_(_KS.s8(here, 'greetings: ').plus(_B.out_int(here, self.count(g))).plus(_KS.s8(here, '\n')))
@@ -39,13 +39,13 @@ class SCOOP_AGENTS(ANY):
     def greeting_agent(self, g):
         here = self._region_
         with here.reserve1(g, _W_3):
-            Result = _S.new_agent(here, PROCEDURE, (_T_2,), _S.dispatcher('greet', False), [g, None], (1,))
+            Result = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_2,), _S.dispatcher('greet', False), [g, None], (1,))
         return Result
 
     def run_agent(self, a, s_):
         here = self._region_
         with here.reserve1(a, _W_4):
-            here.call(a, PROCEDURE.call, (_S.new_tuple(here, [s_], (_T_1,)),))
+            here.call(a, _L_procedure.PROCEDURE.call, (_S.new_tuple(here, [s_], (_T_1,)),))
 
     def count(self, g):
         here = self._region_
@@ -56,13 +56,13 @@ class SCOOP_AGENTS(ANY):
     def spawn(self, g):
         here = self._region_
         with here.reserve1(g, _W_9):
-            Result = here.query(g, GREETER.new_greeter.fget, (), _W_8)
+            Result = here.query(g, _M_greeter.GREETER.new_greeter.fget, (), _W_8)
         return Result
 
     def link(self, g, p):
         here = self._region_
         with here.reserve((g, p), where=_W_10):
-            here.call(g, GREETER.set_partner, (p,))
+            here.call(g, _M_greeter.GREETER.set_partner, (p,))
 
     def greet_partner(self, g):
         here = self._region_
@@ -70,5 +70,7 @@ class SCOOP_AGENTS(ANY):
             if (p := here.leaf_query(g, _G_11, (), _W_12)) is not None:
                 q = p
                 with here.reserve1(q, _W_13):
-                    here.call(q, GREETER.greet, (_KS.s8(here, 'from the root'),))
+                    here.call(q, _M_greeter.GREETER.greet, (_KS.s8(here, 'from the root'),))
 _S.register('SCOOP_AGENTS', SCOOP_AGENTS)
+import scoop_agents.greeter as _M_greeter
+import eiffel_base.procedure as _L_procedure

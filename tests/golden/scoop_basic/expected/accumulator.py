@@ -12,7 +12,7 @@ class ACCUMULATOR(ANY):
     def make(self, n):
         here = self._region_
         with here.reserve1(n, _W_1):
-            self.name = _S.create(here, STRING_8, None, 'make_from_separate', (n,))
+            self.name = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (n,))
             self.print_(_KS.s8(here, 'created ').plus(self.name).plus(_KS.s8(here, '\n')))
     name = None
     sum = 0
@@ -22,3 +22,4 @@ class ACCUMULATOR(ANY):
         self.sum = _t if -2147483648 <= (_t := (self.sum + v)) <= 2147483647 else _B.wrap_i32(_t)
         self.print_(self.name.plus(_KS.s8(here, ' + ')).plus(_B.out_int(here, v)).plus(_KS.s8(here, ' = ')).plus(_B.out_int(here, self.sum)).plus(_KS.s8(here, '\n')))
 _S.register('ACCUMULATOR', ACCUMULATOR)
+import eiffel_base.string_8 as _L_string_8

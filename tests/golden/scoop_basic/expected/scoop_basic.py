@@ -21,8 +21,8 @@ class SCOOP_BASIC(ANY):
         here = self._region_
         a = None
         b_ = None
-        a = here.new_separate(ACCUMULATOR, ACCUMULATOR.make, (_KS.s8(here, 'a'),))
-        b_ = here.new_separate(ACCUMULATOR, ACCUMULATOR.make, (_KS.s8(here, 'b'),))
+        a = here.new_separate(_M_accumulator.ACCUMULATOR, _M_accumulator.ACCUMULATOR.make, (_KS.s8(here, 'a'),))
+        b_ = here.new_separate(_M_accumulator.ACCUMULATOR, _M_accumulator.ACCUMULATOR.make, (_KS.s8(here, 'b'),))
         self.feed(a, 1, 5)
         self.feed(b_, 10, 12)
         self.print_(_KS.s8(here, 'a total ').plus(_B.out_int(here, self.total(a))).plus(_KS.s8(here, '\n')))
@@ -30,8 +30,8 @@ class SCOOP_BASIC(ANY):
         x = a
         y = b_
         with here.reserve((x, y), where=_W_3):
-            here.call(x, ACCUMULATOR.add, (100,))
-            here.call(y, ACCUMULATOR.add, (200,))
+            here.call(x, _M_accumulator.ACCUMULATOR.add, (100,))
+            here.call(y, _M_accumulator.ACCUMULATOR.add, (200,))
             self.print_(_KS.s8(here, 'in separate block: ').plus(_B.out_int(here, _t if -2147483648 <= (_t := (here.leaf_query(x, _G_1, (), _W_2) + here.leaf_query(y, _G_1, (), _W_2))) <= 2147483647 else _B.wrap_i32(_t))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'name of a: ').plus(self.name_of(a)).plus(_KS.s8(here, '\n')))
 
@@ -41,7 +41,7 @@ class SCOOP_BASIC(ANY):
         with here.reserve1(acc, _W_4):
             i = low
             while not i > high:
-                here.call(acc, ACCUMULATOR.add, (i,))
+                here.call(acc, _M_accumulator.ACCUMULATOR.add, (i,))
                 i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
 
     def total(self, acc):
@@ -54,7 +54,9 @@ class SCOOP_BASIC(ANY):
         here = self._region_
         Result = None
         with here.reserve1(acc, _W_9):
-            Result = here.new(STRING_8)
+            Result = here.new(_L_string_8.STRING_8)
             Result.make_from_separate(here.leaf_query(acc, _G_7, (), _W_8))
         return Result
 _S.register('SCOOP_BASIC', SCOOP_BASIC)
+import scoop_basic.accumulator as _M_accumulator
+import eiffel_base.string_8 as _L_string_8

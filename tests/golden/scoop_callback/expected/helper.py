@@ -13,7 +13,8 @@ class HELPER(ANY):
     def work(self, client):
         here = self._region_
         with here.reserve1(client, _W_2):
-            here.call(client, SCOOP_CALLBACK.record, (_KS.s8(here, 'first'),))
-            here.call(client, SCOOP_CALLBACK.record, (_KS.s8(here, 'second'),))
-            self.print_(_KS.s8(here, 'helper sees ').plus(_B.out_int(here, here.leaf_query(client, SCOOP_CALLBACK.count.fget, (), _W_1))).plus(_KS.s8(here, ' entries\n')))
+            here.call(client, _M_scoop_callback.SCOOP_CALLBACK.record, (_KS.s8(here, 'first'),))
+            here.call(client, _M_scoop_callback.SCOOP_CALLBACK.record, (_KS.s8(here, 'second'),))
+            self.print_(_KS.s8(here, 'helper sees ').plus(_B.out_int(here, here.leaf_query(client, _M_scoop_callback.SCOOP_CALLBACK.count.fget, (), _W_1))).plus(_KS.s8(here, ' entries\n')))
 _S.register('HELPER', HELPER)
+import scoop_callback.scoop_callback as _M_scoop_callback

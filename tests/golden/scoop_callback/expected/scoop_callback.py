@@ -14,8 +14,8 @@ class SCOOP_CALLBACK(ANY):
     def make(self):
         here = self._region_
         h = None
-        self.log = _S.create(here, ARRAYED_LIST, (_T_1,), 'make', (4,))
-        h = here.new_separate(HELPER, HELPER.default_create, ())
+        self.log = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
+        h = here.new_separate(_M_helper.HELPER, _M_helper.HELPER.default_create, ())
         self.delegate(h)
         self.print_(_KS.s8(here, 'log has ').plus(_B.out_int(here, self.count)).plus(_KS.s8(here, ' entries\n')))
         for entry in _S.cursors(self.log):
@@ -24,7 +24,7 @@ class SCOOP_CALLBACK(ANY):
     def record(self, s_):
         here = self._region_
         with here.reserve1(s_, _W_2):
-            self.log.extend(_S.create(here, STRING_8, None, 'make_from_separate', (s_,)))
+            self.log.extend(_S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (s_,)))
             self.print_(_KS.s8(here, 'recorded ').plus(self.log.last).plus(_KS.s8(here, '\n')))
 
     @property
@@ -37,6 +37,9 @@ class SCOOP_CALLBACK(ANY):
     def delegate(self, h):
         here = self._region_
         with here.reserve1(h, _W_3):
-            here.call(h, HELPER.work, (self,))
+            here.call(h, _M_helper.HELPER.work, (self,))
             self.print_(_KS.s8(here, 'delegate returned\n'))
 _S.register('SCOOP_CALLBACK', SCOOP_CALLBACK)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import scoop_callback.helper as _M_helper
+import eiffel_base.string_8 as _L_string_8

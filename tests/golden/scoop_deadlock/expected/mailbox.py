@@ -20,6 +20,7 @@ class MAILBOX(ANY):
     def post(self, m):
         here = self._region_
         with here.reserve1(m, _W_1):
-            self.mail = _S.create(here, STRING_8, None, 'make_from_separate', (m,))
+            self.mail = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (m,))
             self.has_mail = True
 _S.register('MAILBOX', MAILBOX)
+import eiffel_base.string_8 as _L_string_8

@@ -17,7 +17,7 @@ class SCOOP_DEADLOCK(ANY):
     def make(self):
         here = self._region_
         box = None
-        box = here.new_separate(MAILBOX, MAILBOX.default_create, ())
+        box = here.new_separate(_M_mailbox.MAILBOX, _M_mailbox.MAILBOX.default_create, ())
         self.print_(_KS.s8(here, 'waiting for mail\n'))
         self.print_(_KS.s8(here, 'got ').plus(self.read(box)).plus(_KS.s8(here, '\n')))
 
@@ -25,7 +25,9 @@ class SCOOP_DEADLOCK(ANY):
         here = self._region_
         Result = None
         with here.reserve1(box, _W_3, _PRE_6, (here, self, box)):
-            Result = here.new(STRING_8)
+            Result = here.new(_L_string_8.STRING_8)
             Result.make_from_separate(here.leaf_query(box, _G_1, (), _W_2))
         return Result
 _S.register('SCOOP_DEADLOCK', SCOOP_DEADLOCK)
+import scoop_deadlock.mailbox as _M_mailbox
+import eiffel_base.string_8 as _L_string_8

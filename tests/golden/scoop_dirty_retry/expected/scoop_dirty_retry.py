@@ -16,7 +16,7 @@ class SCOOP_DIRTY_RETRY(ANY):
     def make(self):
         here = self._region_
         c = None
-        c = here.new_separate(COUNTER, COUNTER.default_create, ())
+        c = here.new_separate(_M_counter.COUNTER, _M_counter.COUNTER.default_create, ())
         self.print_(_KS.s8(here, 'result ').plus(_B.out_int(here, self.attempt(c))).plus(_KS.s8(here, ' after ')).plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ' attempts\n')))
         self.print_(_KS.s8(here, 'count after the reservation: ').plus(_B.out_int(here, self.count_of(c))).plus(_KS.s8(here, '\n')))
     attempts = 0
@@ -29,9 +29,9 @@ class SCOOP_DIRTY_RETRY(ANY):
                 try:
                     self.attempts = _t if (_t := (self.attempts + 1)) <= 2147483647 else _B.wrap_i32(_t)
                     if self.attempts == 1:
-                        here.leaf_call(c, COUNTER.explode, ())
-                        here.leaf_call(c, COUNTER.set, (100,))
-                    Result = here.leaf_query(c, COUNTER.next.fget, (), _W_1)
+                        here.leaf_call(c, _M_counter.COUNTER.explode, ())
+                        here.leaf_call(c, _M_counter.COUNTER.set, (100,))
+                    Result = here.leaf_query(c, _M_counter.COUNTER.next.fget, (), _W_1)
                     break
                 except Exception as _exception1:
                     _S.caught(here, _exception1)
@@ -46,3 +46,4 @@ class SCOOP_DIRTY_RETRY(ANY):
             Result = here.leaf_query(c, _G_3, (), _W_4)
         return Result
 _S.register('SCOOP_DIRTY_RETRY', SCOOP_DIRTY_RETRY)
+import scoop_dirty_retry.counter as _M_counter

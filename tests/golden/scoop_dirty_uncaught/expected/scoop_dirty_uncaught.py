@@ -13,7 +13,7 @@ class SCOOP_DIRTY_UNCAUGHT(ANY):
     def make(self):
         here = self._region_
         c = None
-        c = here.new_separate(COUNTER, COUNTER.default_create, ())
+        c = here.new_separate(_M_counter.COUNTER, _M_counter.COUNTER.default_create, ())
         self.print_(_KS.s8(here, 'before\n'))
         self.print_(_B.out_int(here, self.failing_then_query(c)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'never printed\n'))
@@ -22,7 +22,8 @@ class SCOOP_DIRTY_UNCAUGHT(ANY):
         here = self._region_
         Result = 0
         with here.reserve1(c, _W_2):
-            here.leaf_call(c, COUNTER.explode, ())
-            Result = here.leaf_query(c, COUNTER.next.fget, (), _W_1)
+            here.leaf_call(c, _M_counter.COUNTER.explode, ())
+            Result = here.leaf_query(c, _M_counter.COUNTER.next.fget, (), _W_1)
         return Result
 _S.register('SCOOP_DIRTY_UNCAUGHT', SCOOP_DIRTY_UNCAUGHT)
+import scoop_dirty_uncaught.counter as _M_counter

@@ -20,7 +20,7 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
     def make(self):
         here = self._region_
         f = None
-        f = here.new_separate(FRAGILE, FRAGILE.default_create, ())
+        f = here.new_separate(_M_fragile.FRAGILE, _M_fragile.FRAGILE.default_create, ())
         self.fire_and_forget(f)
         self.print_(_KS.s8(here, 'after the lost exception\n'))
         self.set(f, 7)
@@ -31,11 +31,11 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
 
     def fire_and_forget(self, f):
         here = self._region_
-        here.command1(f, FRAGILE.explode, (), _W_1)
+        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)
 
     def set(self, f, v):
         here = self._region_
-        here.command1(f, FRAGILE.set, (v,), _W_2)
+        here.command1(f, _M_fragile.FRAGILE.set, (v,), _W_2)
 
     def value(self, f):
         here = self._region_
@@ -53,8 +53,8 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
                     if failed:
                         Result = _KS.s8(here, 'query failed in the client')
                     else:
-                        here.leaf_call(f, FRAGILE.set, (v,))
-                        Result = _KS.s8(here, 'checked value ').plus(_B.out_int(here, here.leaf_query(f, FRAGILE.checked_value.fget, (), _W_6)))
+                        here.leaf_call(f, _M_fragile.FRAGILE.set, (v,))
+                        Result = _KS.s8(here, 'checked value ').plus(_B.out_int(here, here.leaf_query(f, _M_fragile.FRAGILE.checked_value.fget, (), _W_6)))
                     break
                 except Exception as _exception1:
                     _S.caught(here, _exception1)
@@ -73,7 +73,7 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
                     if failed:
                         Result = _KS.s8(here, 'dirty region: the query raised')
                     else:
-                        here.leaf_call(f, FRAGILE.explode, ())
+                        here.leaf_call(f, _M_fragile.FRAGILE.explode, ())
                         Result = _KS.s8(here, 'query after failed command returned ').plus(_B.out_int(here, here.leaf_query(f, _G_3, (), _W_8)))
                     break
                 except Exception as _exception1:
@@ -83,3 +83,4 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
                     raise
         return Result
 _S.register('SCOOP_EXCEPTIONS', SCOOP_EXCEPTIONS)
+import scoop_exceptions.fragile as _M_fragile

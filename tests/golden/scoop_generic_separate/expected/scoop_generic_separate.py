@@ -15,15 +15,15 @@ class SCOOP_GENERIC_SEPARATE(ANY):
         w = None
         v = None
         all_workers = None
-        w = here.new_separate(WORKABLE, WORKABLE.default_create, ())
-        v = here.new_separate(WORKABLE, WORKABLE.default_create, ())
-        r = here.new(RUNNER)
+        w = here.new_separate(_M_workable.WORKABLE, _M_workable.WORKABLE.default_create, ())
+        v = here.new_separate(_M_workable.WORKABLE, _M_workable.WORKABLE.default_create, ())
+        r = here.new(_M_runner.RUNNER)
         r._gen_ = (_T_1,)
         r.default_create()
         r.run(w, 3)
         r.run(w, 4)
         self.print_(_KS.s8(here, 'total of w: ').plus(_B.out_int(here, r.total(w))).plus(_KS.s8(here, '\n')))
-        all_workers = here.new(ARRAYED_LIST)
+        all_workers = here.new(_L_arrayed_list.ARRAYED_LIST)
         all_workers._gen_ = (_T_1,)
         all_workers.make(2)
         all_workers.extend(w)
@@ -31,3 +31,6 @@ class SCOOP_GENERIC_SEPARATE(ANY):
         r.run_all(all_workers, 10)
         self.print_(_KS.s8(here, 'totals: ').plus(_B.out_int(here, r.total(w))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, r.total(v))).plus(_KS.s8(here, '\n')))
 _S.register('SCOOP_GENERIC_SEPARATE', SCOOP_GENERIC_SEPARATE)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import scoop_generic_separate.runner as _M_runner
+import scoop_generic_separate.workable as _M_workable

@@ -12,11 +12,12 @@ class SCOOP_LOST_STRICT(ANY):
     def make(self):
         here = self._region_
         f = None
-        f = here.new_separate(FRAGILE, FRAGILE.default_create, ())
+        f = here.new_separate(_M_fragile.FRAGILE, _M_fragile.FRAGILE.default_create, ())
         self.print_(_KS.s8(here, 'before the lost exception\n'))
         self.fire_and_forget(f)
 
     def fire_and_forget(self, f):
         here = self._region_
-        here.command1(f, FRAGILE.explode, (), _W_1)
+        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)
 _S.register('SCOOP_LOST_STRICT', SCOOP_LOST_STRICT)
+import scoop_lost_strict.fragile as _M_fragile

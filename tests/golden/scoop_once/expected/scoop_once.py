@@ -21,11 +21,11 @@ class SCOOP_ONCE(ANY):
         s2 = None
         s3 = None
         s4 = None
-        s1 = here.new_separate(STAMPER, STAMPER.default_create, ())
-        s2 = here.new_separate(STAMPER, STAMPER.default_create, ())
-        s3 = here.new(STAMPER)
+        s1 = here.new_separate(_M_stamper.STAMPER, _M_stamper.STAMPER.default_create, ())
+        s2 = here.new_separate(_M_stamper.STAMPER, _M_stamper.STAMPER.default_create, ())
+        s3 = here.new(_M_stamper.STAMPER)
         s3.default_create()
-        s4 = here.new(STAMPER)
+        s4 = here.new(_M_stamper.STAMPER)
         s4.default_create()
         self.stamp(s1, 1)
         self.stamp(s1, 2)
@@ -38,23 +38,25 @@ class SCOOP_ONCE(ANY):
 
     def stamp(self, s_, v):
         here = self._region_
-        here.command1(s_, STAMPER.stamp, (v,), _W_1)
+        here.command1(s_, _M_stamper.STAMPER.stamp, (v,), _W_1)
 
     def count(self, s_):
         here = self._region_
         with here.reserve1(s_, _W_3):
-            Result = here.leaf_query(here.query(s_, STAMPER.stamps.fget, (), _W_2), ARRAYED_LIST.count.fget, (), _W_2)
+            Result = here.leaf_query(here.query(s_, _M_stamper.STAMPER.stamps.fget, (), _W_2), _L_arrayed_list.ARRAYED_LIST.count.fget, (), _W_2)
         return Result
 
     def region_tag(self, s_, t_):
         here = self._region_
         with here.reserve1(s_, _W_5):
-            Result = here.query(s_, STAMPER.region_tag, (t_,), _W_4)
+            Result = here.query(s_, _M_stamper.STAMPER.region_tag, (t_,), _W_4)
         return Result
 
     def process_tag(self, s_, t_):
         here = self._region_
         with here.reserve1(s_, _W_7):
-            Result = here.query(s_, STAMPER.process_tag, (t_,), _W_6)
+            Result = here.query(s_, _M_stamper.STAMPER.process_tag, (t_,), _W_6)
         return Result
 _S.register('SCOOP_ONCE', SCOOP_ONCE)
+import eiffel_base.arrayed_list as _L_arrayed_list
+import scoop_once.stamper as _M_stamper

@@ -12,7 +12,7 @@ class STAMPER(ANY):
     def stamps_once_(self, _once_):
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, ARRAYED_LIST, (_T_1,), 'make', (4,))
+        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
         return _once_.result
 
     @property
@@ -38,3 +38,4 @@ class STAMPER(ANY):
     def stamp(self, v):
         self.stamps.extend(v)
 _S.register('STAMPER', STAMPER)
+import eiffel_base.arrayed_list as _L_arrayed_list

@@ -20,8 +20,8 @@ class SCOOP_ONCE_KEYS(SHARED_BOARD):
         here = self._region_
         w1 = None
         w2 = None
-        w1 = here.new_separate(WORKER, WORKER.default_create, ())
-        w2 = here.new_separate(WORKER, WORKER.default_create, ())
+        w1 = here.new_separate(_M_worker.WORKER, _M_worker.WORKER.default_create, ())
+        w2 = here.new_separate(_M_worker.WORKER, _M_worker.WORKER.default_create, ())
         self.run(w1, 1)
         self.run(w2, 10)
         self.print_(_KS.s8(here, 'total ').plus(_B.out_int(here, self.total)).plus(_KS.s8(here, '\n')))
@@ -33,28 +33,28 @@ class SCOOP_ONCE_KEYS(SHARED_BOARD):
     def run(self, w, n):
         here = self._region_
         with here.reserve1(w, _W_1):
-            here.call(w, WORKER.work, (n,))
-            self.print_(_KS.s8(here, 'worker done: ').plus(_B.out_int(here, here.query(w, WORKER.own_count.fget, (), _W_1))).plus(_KS.s8(here, '\n')))
+            here.call(w, _M_worker.WORKER.work, (n,))
+            self.print_(_KS.s8(here, 'worker done: ').plus(_B.out_int(here, here.query(w, _M_worker.WORKER.own_count.fget, (), _W_1))).plus(_KS.s8(here, '\n')))
 
     def object_tag(self, w, t_):
         here = self._region_
         with here.reserve1(w, _W_2):
-            Result = here.query(w, WORKER.first_tag, (t_,), _W_2)
+            Result = here.query(w, _M_worker.WORKER.first_tag, (t_,), _W_2)
         return Result
 
     def process_tag(self, w, t_):
         here = self._region_
         with here.reserve1(w, _W_3):
-            Result = here.query(w, WORKER.process_tag, (t_,), _W_3)
+            Result = here.query(w, _M_worker.WORKER.process_tag, (t_,), _W_3)
         return Result
 
     def stamp_of(self, w, t_):
         here = self._region_
         Result = None
         with here.reserve1(w, _W_5):
-            here.leaf_call(w, WORKER.set_tag, (t_,))
-            Result = here.new(STRING_8)
-            Result.make_from_separate(here.query(w, WORKER.stamp.fget, (), _W_4))
+            here.leaf_call(w, _M_worker.WORKER.set_tag, (t_,))
+            Result = here.new(_L_string_8.STRING_8)
+            Result.make_from_separate(here.query(w, _M_worker.WORKER.stamp.fget, (), _W_4))
         return Result
 
     def same_board(self, w1, w2):
@@ -72,3 +72,5 @@ class SCOOP_ONCE_KEYS(SHARED_BOARD):
             Result = here.leaf_query(b_, _G_7, (), _W_8)
         return Result
 _S.register('SCOOP_ONCE_KEYS', SCOOP_ONCE_KEYS)
+import eiffel_base.string_8 as _L_string_8
+import scoop_once_keys.worker as _M_worker

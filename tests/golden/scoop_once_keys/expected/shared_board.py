@@ -11,10 +11,11 @@ class SHARED_BOARD(ANY):
     def board_once_(self, _once_):
         here = self._region_
         _once_.result = None
-        _once_.result = here.new_separate(TALLY_BOARD, TALLY_BOARD.default_create, ())
+        _once_.result = here.new_separate(_M_tally_board.TALLY_BOARD, _M_tally_board.TALLY_BOARD.default_create, ())
         return _once_.result
 
     @property
     def board(self):
         return _rt.once_process('SHARED_BOARD.board', SHARED_BOARD.board_once_, (self,))
 _S.register('SHARED_BOARD', SHARED_BOARD)
+import scoop_once_keys.tally_board as _M_tally_board

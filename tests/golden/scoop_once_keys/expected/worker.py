@@ -12,12 +12,12 @@ class WORKER(SHARED_BOARD):
     def work(self, n):
         here = self._region_
         b_ = self.board
-        here.command1(b_, TALLY_BOARD.add, (n,), _W_1)
+        here.command1(b_, _M_tally_board.TALLY_BOARD.add, (n,), _W_1)
 
     def own_board_once_(self, _once_):
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, TALLY_BOARD, None, 'default_create', ())
+        _once_.result = _S.create(here, _M_tally_board.TALLY_BOARD, None, 'default_create', ())
         return _once_.result
 
     @property
@@ -63,3 +63,4 @@ class WORKER(SHARED_BOARD):
         Result = self.own_board.count
         return Result
 _S.register('WORKER', WORKER)
+import scoop_once_keys.tally_board as _M_tally_board

@@ -14,7 +14,7 @@ class CLICKER(ANY):
         here = self._region_
         with here.reserve((t_, n), where=_W_1):
             self.tally = t_
-            self.name = _S.create(here, STRING_8, None, 'make_from_separate', (n,))
+            self.name = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (n,))
 
     def run(self):
         here = self._region_
@@ -29,5 +29,7 @@ class CLICKER(ANY):
 
     def click(self, t_):
         here = self._region_
-        here.command1(t_, TALLY.increment, (), _W_2)
+        here.command1(t_, _M_tally.TALLY.increment, (), _W_2)
 _S.register('CLICKER', CLICKER)
+import eiffel_base.string_8 as _L_string_8
+import scoop_passive.tally as _M_tally

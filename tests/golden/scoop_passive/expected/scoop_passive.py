@@ -19,16 +19,16 @@ class SCOOP_PASSIVE(ANY):
         t_ = None
         c1 = None
         c2 = None
-        t_ = here.new_passive(TALLY, TALLY.default_create, ())
-        c1 = here.new_separate(CLICKER, CLICKER.make, (t_, _KS.s8(here, 'c1')))
-        c2 = here.new_separate(CLICKER, CLICKER.make, (t_, _KS.s8(here, 'c2')))
+        t_ = here.new_passive(_M_tally.TALLY, _M_tally.TALLY.default_create, ())
+        c1 = here.new_separate(_M_clicker.CLICKER, _M_clicker.CLICKER.make, (t_, _KS.s8(here, 'c1')))
+        c2 = here.new_separate(_M_clicker.CLICKER, _M_clicker.CLICKER.make, (t_, _KS.s8(here, 'c2')))
         self.launch(c1)
         self.launch(c2)
         self.print_(_KS.s8(here, 'tally ').plus(_B.out_int(here, self.final_value(t_))).plus(_KS.s8(here, '\n')))
 
     def launch(self, c):
         here = self._region_
-        here.command1(c, CLICKER.run, (), _W_1)
+        here.command1(c, _M_clicker.CLICKER.run, (), _W_1)
 
     def final_value(self, t_):
         here = self._region_
@@ -36,3 +36,5 @@ class SCOOP_PASSIVE(ANY):
             Result = here.leaf_query(t_, _G_2, (), _W_3)
         return Result
 _S.register('SCOOP_PASSIVE', SCOOP_PASSIVE)
+import scoop_passive.clicker as _M_clicker
+import scoop_passive.tally as _M_tally

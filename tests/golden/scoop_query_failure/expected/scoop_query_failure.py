@@ -16,7 +16,7 @@ class SCOOP_QUERY_FAILURE(ANY):
     def make(self):
         here = self._region_
         g = None
-        g = here.new_separate(GAUGE, GAUGE.default_create, ())
+        g = here.new_separate(_M_gauge.GAUGE, _M_gauge.GAUGE.default_create, ())
         self.print_(_KS.s8(here, 'retried: ').plus(_B.out_int(here, self.read_with_retry(g))).plus(_KS.s8(here, '\n')))
         self.print_(_B.out_int(here, self.read(g, 5)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'never printed\n'))
@@ -29,11 +29,11 @@ class SCOOP_QUERY_FAILURE(ANY):
             while True:
                 try:
                     self.attempts = _t if (_t := (self.attempts + 1)) <= 2147483647 else _B.wrap_i32(_t)
-                    here.leaf_call(g, GAUGE.set, (7,))
+                    here.leaf_call(g, _M_gauge.GAUGE.set, (7,))
                     if self.attempts == 1:
-                        Result = here.leaf_query(g, GAUGE.checked_level, (0,), _W_2)
+                        Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (0,), _W_2)
                     else:
-                        Result = here.leaf_query(g, GAUGE.checked_level, (10,), _W_1)
+                        Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (10,), _W_1)
                     break
                 except Exception as _exception1:
                     _S.caught(here, _exception1)
@@ -45,6 +45,7 @@ class SCOOP_QUERY_FAILURE(ANY):
     def read(self, g, limit):
         here = self._region_
         with here.reserve1(g, _W_5):
-            Result = here.leaf_query(g, GAUGE.checked_level, (limit,), _W_4)
+            Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (limit,), _W_4)
         return Result
 _S.register('SCOOP_QUERY_FAILURE', SCOOP_QUERY_FAILURE)
+import scoop_query_failure.gauge as _M_gauge

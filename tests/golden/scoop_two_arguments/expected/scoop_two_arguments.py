@@ -24,9 +24,9 @@ class SCOOP_TWO_ARGUMENTS(ANY):
 
     def make(self):
         here = self._region_
-        self.a = here.new_separate(LOGGER, LOGGER.make, (1,))
-        self.b = here.new_separate(LOGGER, LOGGER.make, (2,))
-        self.p = here.new_separate(LOGGER, LOGGER.make, (3,))
+        self.a = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (1,))
+        self.b = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (2,))
+        self.p = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (3,))
         self.print_(_KS.s8(here, 'two processors\n'))
         self.both(self.a, self.b)
         self.print_(_KS.s8(here, 'the same processor twice\n'))
@@ -48,26 +48,26 @@ class SCOOP_TWO_ARGUMENTS(ANY):
     def both(self, x, y):
         here = self._region_
         with here.reserve((x, y), where=_W_4):
-            here.call(x, LOGGER.put, (11,))
-            here.call(y, LOGGER.put, (12,))
-            here.call(x, LOGGER.put, (13,))
+            here.call(x, _M_logger.LOGGER.put, (11,))
+            here.call(y, _M_logger.LOGGER.put, (12,))
+            here.call(x, _M_logger.LOGGER.put, (13,))
             self.print_(_KS.s8(here, 'both: logged three calls\n'))
             self.print_(_KS.s8(here, 'both: x has ').plus(_B.out_int(here, here.leaf_query(x, _G_1, (), _W_2))).plus(_KS.s8(here, ' entries\n')))
-            here.call(y, LOGGER.put, (14,))
+            here.call(y, _M_logger.LOGGER.put, (14,))
             self.print_(_KS.s8(here, 'both: y has ').plus(_B.out_int(here, here.leaf_query(y, _G_1, (), _W_3))).plus(_KS.s8(here, ' entries\n')))
 
     def chain(self, x, y):
         here = self._region_
         with here.reserve((x, y), where=_W_5):
-            here.call(y, LOGGER.put, (20,))
-            here.call(x, LOGGER.relay, (y, 21))
+            here.call(y, _M_logger.LOGGER.put, (20,))
+            here.call(x, _M_logger.LOGGER.relay, (y, 21))
             self.print_(_KS.s8(here, 'chain: relay returned\n'))
-            here.call(y, LOGGER.put, (22,))
+            here.call(y, _M_logger.LOGGER.put, (22,))
 
     def relay_unreserved(self, x):
         here = self._region_
         with here.reserve1(x, _W_6):
-            here.call(x, LOGGER.relay, (self.b, 23))
+            here.call(x, _M_logger.LOGGER.relay, (self.b, 23))
             self.print_(_KS.s8(here, 'relay_unreserved: logged\n'))
 
     def show(self, x):
@@ -78,16 +78,17 @@ class SCOOP_TWO_ARGUMENTS(ANY):
     def link(self, q):
         here = self._region_
         with here.reserve1(q, _W_9):
-            here.call(q, LOGGER.set_peer, (self.b,))
+            here.call(q, _M_logger.LOGGER.set_peer, (self.b,))
 
     def start_fill(self, q):
         here = self._region_
-        here.command1(q, LOGGER.fill, (3,), _W_10)
+        here.command1(q, _M_logger.LOGGER.fill, (3,), _W_10)
 
     def consume(self, x, y):
         here = self._region_
         with here.reserve((x, y), where=_W_12, pre=_PRE_14, pre_args=(here, self, x, y)):
-            here.call(x, LOGGER.put, (31,))
-            here.call(y, LOGGER.put, (32,))
+            here.call(x, _M_logger.LOGGER.put, (31,))
+            here.call(y, _M_logger.LOGGER.put, (32,))
             self.print_(_KS.s8(here, 'consume: y has ').plus(_B.out_int(here, here.leaf_query(y, _G_1, (), _W_11))).plus(_KS.s8(here, ' entries\n')))
 _S.register('SCOOP_TWO_ARGUMENTS', SCOOP_TWO_ARGUMENTS)
+import scoop_two_arguments.logger as _M_logger

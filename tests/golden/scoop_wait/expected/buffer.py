@@ -16,7 +16,7 @@ class BUFFER(ANY):
     def make(self, n):
         here = self._region_
         self.capacity = n
-        self.items = _S.create(here, ARRAYED_QUEUE, (_T_1,), 'make', (n,))
+        self.items = _S.create(here, _L_arrayed_queue.ARRAYED_QUEUE, (_T_1,), 'make', (n,))
     capacity = 0
 
     @property
@@ -65,3 +65,4 @@ class BUFFER(ANY):
         if not self.count <= self.capacity:
             _S.assertion_failed('invariant', 'within_capacity', _W_5)
 _S.register('BUFFER', BUFFER)
+import eiffel_base.arrayed_queue as _L_arrayed_queue

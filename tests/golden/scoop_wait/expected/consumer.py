@@ -7,7 +7,7 @@ _W_2 = ('CONSUMER', 'take', 'tests/golden/scoop_wait/consumer.e', 49)
 _W_3 = ('CONSUMER', 'take', 'tests/golden/scoop_wait/consumer.e', 50)
 _W_4 = ('CONSUMER', 'take', 'tests/golden/scoop_wait/consumer.e', 46)
 _W_5 = ('CONSUMER', 'take', 'tests/golden/scoop_wait/consumer.e', 47)
-_PRE_6 = ((lambda here, self, b_: not here.leaf_query(b_, BUFFER.is_empty.fget, (), _W_5), (0,), 'something', _W_5),)
+_PRE_6 = ((lambda here, self, b_: not here.leaf_query(b_, _M_buffer.BUFFER.is_empty.fget, (), _W_5), (0,), 'something', _W_5),)
 
 class CONSUMER(ANY):
     """Eiffel class CONSUMER (tests/golden/scoop_wait/consumer.e)."""
@@ -36,8 +36,9 @@ class CONSUMER(ANY):
     def take(self, b_):
         here = self._region_
         with here.reserve1(b_, _W_4, _PRE_6, (here, self, b_)):
-            self.total = _t if -2147483648 <= (_t := (self.total + here.leaf_query(b_, BUFFER.item.fget, (), _W_2))) <= 2147483647 else _B.wrap_i32(_t)
-            self.print_(_KS.s8(here, 'got ').plus(_B.out_int(here, here.leaf_query(b_, BUFFER.item.fget, (), _W_3))).plus(_KS.s8(here, '\n')))
-            here.leaf_call(b_, BUFFER.remove, ())
+            self.total = _t if -2147483648 <= (_t := (self.total + here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_2))) <= 2147483647 else _B.wrap_i32(_t)
+            self.print_(_KS.s8(here, 'got ').plus(_B.out_int(here, here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_3))).plus(_KS.s8(here, '\n')))
+            here.leaf_call(b_, _M_buffer.BUFFER.remove, ())
             self.taken = _t if (_t := (self.taken + 1)) <= 2147483647 else _B.wrap_i32(_t)
 _S.register('CONSUMER', CONSUMER)
+import scoop_wait.buffer as _M_buffer

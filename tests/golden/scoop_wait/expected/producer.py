@@ -5,7 +5,7 @@ from eiffel_base.any import ANY
 _W_1 = ('PRODUCER', 'make', 'tests/golden/scoop_wait/producer.e', 10)
 _W_2 = ('PRODUCER', 'store', 'tests/golden/scoop_wait/producer.e', 39)
 _W_3 = ('PRODUCER', 'store', 'tests/golden/scoop_wait/producer.e', 40)
-_PRE_4 = ((lambda here, self, b_, v: not here.leaf_query(b_, BUFFER.is_full.fget, (), _W_3), (0,), 'room', _W_3),)
+_PRE_4 = ((lambda here, self, b_, v: not here.leaf_query(b_, _M_buffer.BUFFER.is_full.fget, (), _W_3), (0,), 'room', _W_3),)
 
 class PRODUCER(ANY):
     """Eiffel class PRODUCER (tests/golden/scoop_wait/producer.e)."""
@@ -29,6 +29,7 @@ class PRODUCER(ANY):
     def store(self, b_, v):
         here = self._region_
         with here.reserve1(b_, _W_2, _PRE_4, (here, self, b_, v)):
-            here.leaf_call(b_, BUFFER.put, (v,))
+            here.leaf_call(b_, _M_buffer.BUFFER.put, (v,))
             self.print_(_KS.s8(here, 'put ').plus(_B.out_int(here, v)).plus(_KS.s8(here, '\n')))
 _S.register('PRODUCER', PRODUCER)
+import scoop_wait.buffer as _M_buffer

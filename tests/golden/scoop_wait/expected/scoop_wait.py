@@ -8,7 +8,7 @@ _G_3 = _S.getter('total')
 _W_4 = ('SCOOP_WAIT', 'total_of', 'tests/golden/scoop_wait/scoop_wait.e', 44)
 _W_5 = ('SCOOP_WAIT', 'total_of', 'tests/golden/scoop_wait/scoop_wait.e', 41)
 _W_6 = ('SCOOP_WAIT', 'total_of', 'tests/golden/scoop_wait/scoop_wait.e', 42)
-_PRE_7 = ((lambda here, self, c: here.leaf_query(c, CONSUMER.is_done.fget, (), _W_6), (0,), 'finished', _W_6),)
+_PRE_7 = ((lambda here, self, c: here.leaf_query(c, _M_consumer.CONSUMER.is_done.fget, (), _W_6), (0,), 'finished', _W_6),)
 _G_8 = _S.getter('largest_count')
 _W_9 = ('SCOOP_WAIT', 'respected', 'tests/golden/scoop_wait/scoop_wait.e', 49)
 _G_10 = _S.getter('capacity')
@@ -24,9 +24,9 @@ class SCOOP_WAIT(ANY):
         buffer = None
         p = None
         c = None
-        buffer = here.new_separate(BUFFER, BUFFER.make, (2,))
-        p = here.new_separate(PRODUCER, PRODUCER.make, (buffer, 6))
-        c = here.new_separate(CONSUMER, CONSUMER.make, (buffer, 6))
+        buffer = here.new_separate(_M_buffer.BUFFER, _M_buffer.BUFFER.make, (2,))
+        p = here.new_separate(_M_producer.PRODUCER, _M_producer.PRODUCER.make, (buffer, 6))
+        c = here.new_separate(_M_consumer.CONSUMER, _M_consumer.CONSUMER.make, (buffer, 6))
         self.start_consumer(c)
         self.start_producer(p)
         self.print_(_KS.s8(here, 'total ').plus(_B.out_int(here, self.total_of(c))).plus(_KS.s8(here, '\n')))
@@ -34,11 +34,11 @@ class SCOOP_WAIT(ANY):
 
     def start_producer(self, p):
         here = self._region_
-        here.command1(p, PRODUCER.run, (), _W_1)
+        here.command1(p, _M_producer.PRODUCER.run, (), _W_1)
 
     def start_consumer(self, c):
         here = self._region_
-        here.command1(c, CONSUMER.run, (), _W_2)
+        here.command1(c, _M_consumer.CONSUMER.run, (), _W_2)
 
     def total_of(self, c):
         here = self._region_
@@ -52,3 +52,6 @@ class SCOOP_WAIT(ANY):
             Result = here.leaf_query(b_, _G_8, (), _W_9) <= here.leaf_query(b_, _G_10, (), _W_9) and here.leaf_query(b_, _G_8, (), _W_9) >= 1
         return Result
 _S.register('SCOOP_WAIT', SCOOP_WAIT)
+import scoop_wait.buffer as _M_buffer
+import scoop_wait.consumer as _M_consumer
+import scoop_wait.producer as _M_producer

@@ -28,7 +28,7 @@ class LAZY_PARTS(ANY):
         here = self._region_
         Result = None
         self.print_(_KS.s8(here, '(body of parts runs) '))
-        Result = here.new(ARRAYED_LIST)
+        Result = here.new(_L_arrayed_list.ARRAYED_LIST)
         Result._gen_ = (_T_1,)
         Result.make(2)
         return Result
@@ -36,3 +36,4 @@ class LAZY_PARTS(ANY):
     count = 0
     label = None
 _S.register('LAZY_PARTS', LAZY_PARTS)
+import eiffel_base.arrayed_list as _L_arrayed_list

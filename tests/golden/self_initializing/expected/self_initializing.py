@@ -14,11 +14,11 @@ class SELF_INITIALIZING(ANY):
         a = None
         b_ = None
         h = None
-        a = here.new(LAZY_PARTS)
+        a = here.new(_M_lazy_parts.LAZY_PARTS)
         a.make()
         self.print_(_KS.s8(here, 'first read: ').plus(a.name).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'second read: ').plus(a.name).plus(_KS.s8(here, '\n')))
-        b_ = here.new(LAZY_PARTS)
+        b_ = here.new(_M_lazy_parts.LAZY_PARTS)
         b_.make_named(_KS.s8(here, 'given'))
         self.print_(_KS.s8(here, 'set by creation: ').plus(b_.name).plus(_KS.s8(here, '\n')))
         a.parts.extend(1)
@@ -29,8 +29,10 @@ class SELF_INITIALIZING(ANY):
             self.print_(_KS.s8(here, 'label: ').plus(l).plus(_KS.s8(here, '\n')))
         else:
             self.print_(_KS.s8(here, 'label: Void\n'))
-        h = here.new(HOLDER)
+        h = here.new(_M_holder.HOLDER)
         h._gen_ = (_T_1,)
         h.default_create()
         self.print_(_KS.s8(here, 'expanded actual generic: ').plus(_B.out_int(here, h.content)).plus(_KS.s8(here, '\n')))
 _S.register('SELF_INITIALIZING', SELF_INITIALIZING)
+import self_initializing.holder as _M_holder
+import self_initializing.lazy_parts as _M_lazy_parts

@@ -22,7 +22,7 @@ class ADDER(THREAD):
     def turns_once_(self, _once_):
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, CELL, (_T_1,), 'put', (0,))
+        _once_.result = _S.create(here, _L_cell.CELL, (_T_1,), 'put', (0,))
         return _once_.result
 
     @property
@@ -40,3 +40,4 @@ class ADDER(THREAD):
             i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
         self.turns_seen = self.turns.item
 _S.register('ADDER', ADDER)
+import eiffel_base.cell as _L_cell

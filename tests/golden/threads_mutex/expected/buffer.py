@@ -10,8 +10,8 @@ class BUFFER(ANY):
 
     def make(self):
         here = self._region_
-        self.mutex = _S.create(here, MUTEX, None, 'make', ())
-        self.changed = _S.create(here, CONDITION_VARIABLE, None, 'make', ())
+        self.mutex = _S.create(here, _L_mutex.MUTEX, None, 'make', ())
+        self.changed = _S.create(here, _L_condition_variable.CONDITION_VARIABLE, None, 'make', ())
     mutex = None
     changed = None
     item = 0
@@ -38,3 +38,5 @@ class BUFFER(ANY):
         self.mutex.unlock()
         return Result
 _S.register('BUFFER', BUFFER)
+import eiffel_base.condition_variable as _L_condition_variable
+import eiffel_base.mutex as _L_mutex

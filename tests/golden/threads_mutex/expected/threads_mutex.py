@@ -24,20 +24,20 @@ class THREADS_MUTEX(ANY):
         mutex = None
         adders = None
         control = None
-        counter = here.new(SHARED_COUNTER)
+        counter = here.new(_M_shared_counter.SHARED_COUNTER)
         counter.default_create()
-        mutex = here.new(MUTEX)
+        mutex = here.new(_L_mutex.MUTEX)
         mutex.make()
-        adders = here.new(ARRAYED_LIST)
+        adders = here.new(_L_arrayed_list.ARRAYED_LIST)
         adders._gen_ = (_T_1,)
         adders.make(4)
         for i in range(1, 4 + 1):
-            adders.extend(_S.create(here, ADDER, None, 'make__adder', (counter, mutex, _t if -2147483648 <= (_t := (250 * i)) <= 2147483647 else _B.wrap_i32(_t))))
+            adders.extend(_S.create(here, _M_adder.ADDER, None, 'make__adder', (counter, mutex, _t if -2147483648 <= (_t := (250 * i)) <= 2147483647 else _B.wrap_i32(_t))))
         self.print_(_KS.s8(here, 'launchable before: ').plus(_B.out_bool(here, adders.first.is_launchable)).plus(_KS.s8(here, '\n')))
         for a in _S.cursors(adders):
             a.item.launch()
         self.print_(_KS.s8(here, 'launchable after: ').plus(_B.out_bool(here, adders.first.is_launchable)).plus(_KS.s8(here, '\n')))
-        control = here.new(THREAD_CONTROL)
+        control = here.new(_L_thread_control.THREAD_CONTROL)
         control.default_create()
         control.join_all()
         self.print_(_KS.s8(here, 'counter: ').plus(_B.out_int(here, counter.value)).plus(_KS.s8(here, '\n')))
@@ -50,11 +50,11 @@ class THREADS_MUTEX(ANY):
         mutex = None
         gate = None
         prober = None
-        mutex = here.new(MUTEX)
+        mutex = here.new(_L_mutex.MUTEX)
         mutex.make()
-        gate = here.new(SEMAPHORE)
+        gate = here.new(_L_semaphore.SEMAPHORE)
         gate.make(0)
-        prober = here.new(PROBER)
+        prober = here.new(_M_prober.PROBER)
         prober.make__prober(mutex, gate)
         mutex.lock()
         prober.launch()
@@ -74,9 +74,9 @@ class THREADS_MUTEX(ANY):
         buffer = None
         consumer = None
         i = 0
-        buffer = here.new(BUFFER)
+        buffer = here.new(_M_buffer.BUFFER)
         buffer.make()
-        consumer = here.new(CONSUMER)
+        consumer = here.new(_M_consumer.CONSUMER)
         consumer.make__consumer(buffer, 100)
         consumer.launch()
         i = 1
@@ -89,8 +89,8 @@ class THREADS_MUTEX(ANY):
     def working(self):
         here = self._region_
         worker = None
-        worker = here.new(WORKER_THREAD)
-        worker.make__worker_thread(_S.new_agent(here, PROCEDURE, (_T_2,), _S.dispatcher('record', False), [self, _KS.s8(here, 'worker ran')], ()))
+        worker = here.new(_L_worker_thread.WORKER_THREAD)
+        worker.make__worker_thread(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_2,), _S.dispatcher('record', False), [self, _KS.s8(here, 'worker ran')], ()))
         worker.launch()
         worker.join()
         self.print_(self.log.plus(_KS.s8(here, '\n')))
@@ -101,3 +101,14 @@ class THREADS_MUTEX(ANY):
         here = self._region_
         self.log.append__string_8(_KS.s8(here, ' ').plus(s_))
 _S.register('THREADS_MUTEX', THREADS_MUTEX)
+import threads_mutex.adder as _M_adder
+import eiffel_base.arrayed_list as _L_arrayed_list
+import threads_mutex.buffer as _M_buffer
+import threads_mutex.consumer as _M_consumer
+import eiffel_base.mutex as _L_mutex
+import threads_mutex.prober as _M_prober
+import eiffel_base.procedure as _L_procedure
+import eiffel_base.semaphore as _L_semaphore
+import threads_mutex.shared_counter as _M_shared_counter
+import eiffel_base.thread_control as _L_thread_control
+import eiffel_base.worker_thread as _L_worker_thread

@@ -20,8 +20,9 @@ class UNCAUGHT_EXCEPTION(ANY):
     def level_two(self, n):
         here = self._region_
         e = None
-        e = here.new(DEVELOPER_EXCEPTION)
+        e = here.new(_L_developer_exception.DEVELOPER_EXCEPTION)
         e.default_create()
         e.set_description(_KS.s8(here, 'gave up at level ').plus(_B.out_int(here, n)))
         e.raise_()
 _S.register('UNCAUGHT_EXCEPTION', UNCAUGHT_EXCEPTION)
+import eiffel_base.developer_exception as _L_developer_exception

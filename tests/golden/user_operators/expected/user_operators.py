@@ -15,19 +15,22 @@ class USER_OPERATORS(ANY):
         c = None
         m = None
         r = None
-        a = here.new(VEC)
+        a = here.new(_M_vec.VEC)
         a.make(1, 2)
-        b_ = here.new(VEC)
+        b_ = here.new(_M_vec.VEC)
         b_.make(3, 4)
         c = a.plus(b_)
         self.print_(c.out.plus(_KS.s8(here, ' ')).plus(a.opposite.out).plus(_KS.s8(here, ' ')).plus(a.scaled(3).out).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.dot(b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_less(b_))).plus(_KS.s8(here, ' ')).plus(b_.max(a).out).plus(_KS.s8(here, '\n')))
-        m = here.new(MATRIX)
+        m = here.new(_M_matrix.MATRIX)
         m.make(2)
         m.put(5, 1, 2)
         m.put(7, 2, 1)
         self.print_(_B.out_int(here, m.item(1, 2)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, m.item(2, 1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, m.item(2, 2))).plus(_KS.s8(here, '\n')))
-        r = here.new(RATIONAL)
+        r = here.new(_M_rational.RATIONAL)
         r.make(1, 3)
-        r = r.plus(_S.create(here, RATIONAL, None, 'make', (1, 6)))
-        self.print_(r.out.plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(r, _S.create(here, RATIONAL, None, 'make', (1, 2))))).plus(_KS.s8(here, '\n')))
+        r = r.plus(_S.create(here, _M_rational.RATIONAL, None, 'make', (1, 6)))
+        self.print_(r.out.plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(r, _S.create(here, _M_rational.RATIONAL, None, 'make', (1, 2))))).plus(_KS.s8(here, '\n')))
 _S.register('USER_OPERATORS', USER_OPERATORS)
+import user_operators.matrix as _M_matrix
+import user_operators.rational as _M_rational
+import user_operators.vec as _M_vec
