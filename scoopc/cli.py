@@ -315,6 +315,18 @@ def _add_robot_commands(commands) -> None:
     lsp.add_argument("--stdio", action="store_true", help="talk over stdin and stdout (the default and only way)")
     lsp.set_defaults(handler=_command_lsp)
 
+    cache_ = commands.add_parser(
+        "cache",
+        help="show or clean scoopc's cache of compiled libraries and programs",
+        description="scoopc keeps the compiled standard library and compiled programs in its cache "
+        "folder ($SCOOPC_CACHE_DIR, else ~/.cache/scoopc). `info` shows what it holds; `clean` removes "
+        "the entries of other scoopc versions, leftovers of interrupted runs and, past the size limit "
+        "($SCOOPC_CACHE_MAX, default 500M), the least recently used programs (`--all`: everything).",
+    )
+    cache_.add_argument("action", choices=("info", "clean"), help="info or clean")
+    cache_.add_argument("--all", action="store_true", help="with clean: remove everything scoopc cached")
+    cache_.set_defaults(handler=_command_cache)
+
     sim = commands.add_parser(
         "sim",
         help="run the simulator as a ROS 2 (DDS) node",
@@ -502,6 +514,23 @@ def _show_failure(outcome) -> None:
         print("---- its output ----")
         print(outcome.output.rstrip("\n"))
     print()
+
+
+def _command_cache(args: argparse.Namespace) -> int:
+    from .driver import cache  # deferred: only this command needs it (start-up)
+    from .semantics.library import cache_dir  # deferred: as above
+
+    if args.all and args.action != "clean":
+        raise UsageError("--all goes with `scoopc cache clean`")
+    limit = cache.cache_limit()
+    if args.action == "clean":
+        removed = cache.clean(everything=args.all)
+        freed = sum(entry.size for entry in removed)
+        print(
+            f"scoopc: removed {len(removed)} cache entr{'y' if len(removed) == 1 else 'ies'} ({cache.size_text(freed)})"
+        )
+    print(cache.describe(cache.entries(), cache_dir(), limit))
+    return Exit.OK
 
 
 def _command_msg(args: argparse.Namespace) -> int:

@@ -273,6 +273,19 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Use an actual type that conforms to the constraint, or loosen the constraint.",
     ),
+    "VTGC(3)": _x(
+        """The creation procedures a constraint lists (`G -> A create make end`) must be procedures
+        of the constraint: each name, after the constraint's own renaming, must be a feature of
+        exactly one of the constraining types, so that `create x.make` on a G knows what it calls
+        (EiffelStudio's code; ECMA-367-2 numbers the rule VTGC, later editions VGGC).""",
+        """
+        class POOL [G -> RESOURCE create open end]   -- RESOURCE has `make`, not `open`
+        """,
+        """
+        class POOL [G -> RESOURCE create make end]
+        """,
+        "Name a creation procedure the constraint class has, or add it to that class.",
+    ),
     "VTAT(1)": _x(
         """In an anchored type `like x`, the anchor `x` must be a query of the class, an argument or a
         local of the enclosing routine, or `Current`.""",
@@ -919,8 +932,10 @@ EXPLANATIONS: dict[str, Explanation] = {
     "VEVI": _x(
         """Void safety: a variable of an attached type must hold an object before it is read. An
         attached local or `Result` must be set on every path before its first use (and `Result`
-        before the function returns), and each creation procedure must set every attached
-        attribute, before it reads it.""",
+        before the function returns, reported at its `end`), and each creation procedure must set
+        every attached attribute before it reads it, also in the routines it calls. `Current` may
+        be handed out before every attribute is set, but then no qualified call may follow (it
+        could reach the unset attribute through that reference) until they all are.""",
         """
         name: STRING
             do
@@ -959,6 +974,19 @@ EXPLANATIONS: dict[str, Explanation] = {
         small := {INTEGER_16} 200
         """,
         "Choose a type large enough for the value, or a value within the type's range.",
+    ),
+    "VQMC(3)": _x(
+        """An integer constant attribute must hold a value of its declared type: INTEGER_8 holds
+        -128 .. 127, INTEGER_32 (INTEGER) -2147483648 .. 2147483647, NATURAL_8 0 .. 255, and so on.
+        A literal that no integer type holds at all (beyond 18446744073709551615, or below
+        -9223372036854775808) is a syntax error already.""",
+        """
+        Limit: INTEGER_8 = 200
+        """,
+        """
+        Limit: INTEGER_16 = 200
+        """,
+        "Declare the constant with a type large enough for its value, or change the value.",
     ),
     "ONCE-KEY": _x(
         """The key of a once routine says how often its body runs: plain `once` once per processor,
@@ -1057,8 +1085,10 @@ EXPLANATIONS: dict[str, Explanation] = {
     "FORMAL-TRAITOR": _x(
         """A warning, not an error. In a call on a separate target, a value whose type is a formal
         generic `G` is passed to a non-separate formal argument, or a `G` result of the call is
-        used as non-separate. EiffelStudio accepts both (it applies VUAR(3) and result type
-        adaptation only to a generic declared `reference G`), but if some actual generic
+        then used as non-separate (attached to a non-separate entity or argument, or the target
+        of a call; a result kept in a separate entity is fine). EiffelStudio accepts both (it
+        applies VUAR(3) and result type adaptation only to a generic declared `reference G`), but
+        if some actual generic
         parameter is a reference type, a non-separate reference crosses processors (a traitor).""",
         """
         class NODE [G]  ...  put (v: G) ...

@@ -25,8 +25,9 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
   header or library, a compiler error).
 - ONCE-KEY: a once key other than "PROCESS", "THREAD" or "OBJECT".
 - FORMAL-TRAITOR (a warning): a value of an unmarked formal generic type `G` passed to a
-  non-separate formal in a call on a separate target, or a `G` result of such a call used as
-  non-separate. EiffelStudio accepts both (it applies VUAR(3) and result adaptation to
+  non-separate formal in a call on a separate target, or a `G` result of such a call then used as
+  non-separate (attached to a non-separate entity or argument, or a call's target). EiffelStudio
+  accepts both (it applies VUAR(3) and result adaptation to
   `reference G` only); if an actual generic is a reference type, the value is a traitor.
 
 The validity codes are ECMA-367's as EiffelStudio prints them; for SCOOP, EiffelStudio's
@@ -93,6 +94,10 @@ MESSAGES: dict[str, Message] = {
     "VTCG": Message(
         "actual generic {actual} does not conform to the constraint {constraint} of {formal}",
         "use a type that conforms to {constraint}",
+    ),
+    "VTGC(3)": Message(
+        "`{name}` in the creation constraint of {formal} is {how}",
+        "list a procedure of exactly one constraining type, by its name after the constraint's renaming",
     ),
     "VTAT(1)": Message(
         "anchor `{anchor}` of `like {anchor}` is not a query, argument or local",
@@ -220,6 +225,10 @@ MESSAGES: dict[str, Message] = {
     "VWMQ": Message(
         "the constant {constant} is not a value of {type}",
         "use a value within the type's range, or a larger type such as INTEGER_64",
+    ),
+    "VQMC(3)": Message(
+        "the integer constant {value} is not a value of {type} ({low} to {high})",
+        "use a value within that range, or declare the constant with a larger type such as INTEGER_64",
     ),
     "VJAR": Message("source of type {source} cannot be assigned to a target of type {target}: {reason}", "{hint}"),
     "VJAW": Message(

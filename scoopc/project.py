@@ -142,6 +142,14 @@ def collect(paths: list[str], target: str | None = None) -> Project:
             raise UsageError(f"no such file or directory: {raw}")
         if path.is_dir():
             _add_cluster(project, path, recursive=True)
+            for ecf in sorted(path.glob("*.ecf")):
+                if not any(Path(other).resolve() == ecf.resolve() for other in paths):
+                    _note(
+                        project,
+                        ecf,
+                        f"{raw} is read as a cluster: its {ecf.name} (libraries, externals, settings) is not read; "
+                        f"give {ecf} to use it",
+                    )
         elif path.suffix.lower() == ".e":
             project.add_file(path)
         elif path.suffix.lower() == ".ecf":

@@ -16,7 +16,12 @@ from scoopc.exits import Exit
 from harness import ROOT
 
 SAMPLES = ROOT / "samples"
-PLAIN = sorted(p for p in SAMPLES.iterdir() if p.is_dir() and any(p.glob("*.e")) and not (p / "world.yaml").exists())
+# a sample with an .ecf (its C externals, say) is given as its .ecf, as its README says
+PLAIN = sorted(
+    next(iter(p.glob("*.ecf")), p)
+    for p in SAMPLES.iterdir()
+    if p.is_dir() and any(p.glob("*.e")) and not (p / "world.yaml").exists()
+)
 ROBOT = sorted(p for p in SAMPLES.iterdir() if (p / "world.yaml").exists())
 
 BROKEN = """class

@@ -9,7 +9,8 @@ from scoopc import messages
 
 ROOT = Path(__file__).resolve().parents[1]
 ROW = re.compile(r"^\| (?P<code>[A-Z0-9_()\-]+) \| (?P<status>enforced|warning|not enforced) \| (?P<rest>.*) \|$")
-NOT_VALIDITY = re.compile(r"^(SYNTAX.*|SOURCE|ECF.*)$")  # not validity: syntax, files, .ecf projects
+# not validity: syntax, files, .ecf projects, building C externals (tests/externals)
+NOT_VALIDITY = re.compile(r"^(SYNTAX.*|SOURCE|ECF.*|EXTERNAL-BUILD)$")
 
 
 def table_rows() -> dict:

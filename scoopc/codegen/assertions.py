@@ -127,7 +127,7 @@ class InheritedAssertions:
         report.append(
             P.expr_stmt(
                 P.call(
-                    "S.assertion_failed",
+                    "_S.assertion_failed",
                     [P.const("precondition"), P.const(tag), self.in_context(context, lambda: self.where(group[0]))],
                 )
             )

@@ -50,6 +50,8 @@ def declared_name(feature) -> str:
 class Calls:
     # --- unqualified and qualified calls ---------------------------------------------------------
     def x_UnqualifiedCall(self, node):
+        if node in self.tables.rewrites:
+            return self.x(self.tables.rewrites[node])  # `x (a)`: x's "()" alias
         entity = self.tables.entities.get(node)
         if entity is not None and entity.kind != "attribute":
             value = P.name(self.local_name(entity.name))
@@ -65,6 +67,8 @@ class Calls:
         return self.call_feature(node, None, P.name("self"), feature, node.arguments)
 
     def x_QualifiedCall(self, node):
+        if node in self.tables.rewrites:
+            return self.x(self.tables.rewrites[node])  # `t.x (a)`: x's "()" alias
         target = self.x(node.target)
         feature = self.tables.features.get(node)
         if feature is None:
@@ -85,7 +89,7 @@ class Calls:
         ty = self.type_of(node.type)
         if feature.kind == "constant":
             return P.attr(self.class_ref(ty.name), self.py_name(feature))
-        holder = P.call("S.static_target", [P.name("here"), self.class_ref(ty.name)])
+        holder = P.call("_S.static_target", [P.name("here"), self.class_ref(ty.name)])
         return self.call_feature(node, None, holder, feature, node.arguments, static_type=ty)
 
     def x_Precursor(self, node):
@@ -108,7 +112,7 @@ class Calls:
 
     def tuple_item(self, node, target, index: int):
         if node in self.tables.separate_calls or (self.tables.types.get(node.target) or Ty("X")).separate:
-            return P.call("here.query", [target, P.dotted("S.tuple_item"), P.tup([P.const(index)])])
+            return P.call("here.query", [target, P.dotted("_S.tuple_item"), P.tup([P.const(index)])])
         return ast.Subscript(P.attr(target, "_items"), P.const(index), ast.Load())
 
     # --- the call itself ---------------------------------------------------------------------------
@@ -141,10 +145,10 @@ class Calls:
             # own versions, by its static class (kernel/basic_dispatch.py)
             if self.is_property(feature) or feature.kind in ("attribute", "constant"):
                 return P.call(
-                    "B.query_as", [P.const(target_ty.name), target, P.const(self.py_name(feature)), P.name("here")]
+                    "_B.query_as", [P.const(target_ty.name), target, P.const(self.py_name(feature)), P.name("here")]
                 )
             return P.call(
-                "B.call_as",
+                "_B.call_as",
                 [P.const(target_ty.name), target, P.const(self.py_name(feature)), P.tup(args), P.name("here")],
             )
         if (
@@ -156,11 +160,11 @@ class Calls:
             if self.is_property(feature) or feature.kind in ("attribute", "constant"):
                 if target_ty.is_formal and feature.name in KIND_QUERIES:
                     return P.call(
-                        "S.formal_query",
+                        "_S.formal_query",
                         [target, P.const(self.py_name(feature)), P.name("here"), self.type_desc(target_ty)],
                     )
-                return P.call("B.query", [target, P.const(self.py_name(feature)), P.name("here")])
-            return P.call("B.call", [target, P.const(self.py_name(feature)), P.tup(args), P.name("here")])
+                return P.call("_B.query", [target, P.const(self.py_name(feature)), P.name("here")])
+            return P.call("_B.call", [target, P.const(self.py_name(feature)), P.tup(args), P.name("here")])
         if (
             target_node is not None
             and self.assertions == "all"
@@ -168,7 +172,7 @@ class Calls:
             and target_ty.name in self.program.invariant_classes
             and feature.kind not in ("attribute", "constant")
         ):
-            return P.call("S.call_checked", [target, P.const(self.py_name(feature, owner)), P.tup(args)])
+            return P.call("_S.call_checked", [target, P.const(self.py_name(feature, owner)), P.tup(args)])
         return self.plain_call(target, feature, args, owner)
 
     def plain_call(self, target, feature, args, owner=None):
@@ -204,8 +208,8 @@ class Calls:
         if info is None or info.is_expanded:
             return value
         if source.is_formal:  # the actual generic says (at run time)
-            return P.call("S.box_formal", [value, self.type_desc(source)])
-        return P.call("S.box", [P.const(source.name), value])
+            return P.call("_S.box_formal", [value, self.type_desc(source)])
+        return P.call("_S.box", [P.const(source.name), value])
 
     def boxed_arguments(self, arguments, args, feature, target_ty):
         if feature is None or not any(
@@ -253,7 +257,7 @@ class Calls:
             if feature is None and getattr(node, "procedure", None) is not None:
                 feature = self.constraint_creator(ty, node.procedure.key)
             name = self.py_name(feature) if feature is not None else "default_create"
-            return P.call("S.create_formal", [P.name("here"), self.type_desc(ty), P.const(name), P.tup(args)])
+            return P.call("_S.create_formal", [P.name("here"), self.type_desc(ty), P.const(name), P.tup(args)])
         return self.new_object(ty, feature, args, separate=ty.separate, passive=passive)
 
     def constraint_creator(self, ty: Ty, name: str):
@@ -280,7 +284,7 @@ class Calls:
             return P.call(maker, [cls, routine, P.tup(args)] + extra)
         invariant = self.assertions == "all" and self.program_has_invariant(info)
         return P.call(
-            "S.create",
+            "_S.create",
             [P.name("here"), cls, gen if gen is not None else P.const(None), P.const(creator), P.tup(args)]
             + ([P.const(True)] if invariant else []),
         )
@@ -290,7 +294,7 @@ class Calls:
 
     def new_tuple_object(self, ty: Ty):
         """`create t` of a TUPLE type: its items are the defaults of its item types."""
-        return P.call("S.new_default_tuple", [P.name("here"), self.generics_desc(ty)])
+        return P.call("_S.new_default_tuple", [P.name("here"), self.generics_desc(ty)])
 
     def program_has_invariant(self, info) -> bool:
         """Is there an invariant to check after creating an `info` object? (The library runs
@@ -302,10 +306,10 @@ class Calls:
         """`f (a, b)` on an agent: `f.call ([a, b])` / `f.item ([a, b])`."""
         feature = self.tables.features.get(call_node)
         items = [self.argument(a) for a in call_node.arguments]
-        operands = P.call("S.new_tuple", [P.name("here"), P.lst(items), P.tup([])])
+        operands = P.call("_S.new_tuple", [P.name("here"), P.lst(items), P.tup([])])
         name = self.py_name(feature)
         if (self.agent_type_of(node) or Ty("X")).separate:
-            helper = "S.squery" if feature.is_query else "S.scall"
+            helper = "_S.squery" if feature.is_query else "_S.scall"
             extra = [self.where(call_node)] if feature.is_query else []
             return P.call(helper, [P.name("here"), agent, P.const(name), P.tup([operands]), P.const(True)] + extra)
         return P.call(P.attr(agent, name), [operands])
@@ -334,9 +338,9 @@ class Calls:
                 opened.append(index)
             else:
                 slots.append(self.argument(operand))
-        fn = P.call("S.dispatcher", [P.const(self.py_name(feature)), P.const(self.is_property(feature))])
+        fn = P.call("_S.dispatcher", [P.const(self.py_name(feature)), P.const(self.is_property(feature))])
         return P.call(
-            "S.new_agent",
+            "_S.new_agent",
             [
                 P.name("here"),
                 self.class_ref(ty.name),
@@ -364,7 +368,7 @@ class Calls:
                 else:
                     slots.append(self.argument(operand))
         return P.call(
-            "S.new_agent",
+            "_S.new_agent",
             [
                 P.name("here"),
                 self.class_ref(ty.name),
@@ -382,12 +386,12 @@ class Calls:
         if ty.is_formal:
             if formals is not None:
                 return formals(ty.formal)
-            return P.call("T.formal", [P.name("self"), P.const(self.info.name), P.const(ty.formal)])
+            return P.call("_T.formal", [P.name("self"), P.const(self.info.name), P.const(ty.formal)])
         if ty.name == "<Current>":
-            return P.call("T.of", [P.name("self")])
+            return P.call("_T.of", [P.name("self")])
         key = self.universe.canonical(ty.name) if self.universe.get(ty.name) is None else ty.name
         generics = [self.type_desc(g, formals) for g in ty.generics]
-        call = P.call("T.t", [P.const(key), P.tup(generics), P.const(bool(ty.attached))])
+        call = P.call("_T.t", [P.const(key), P.tup(generics), P.const(bool(ty.attached))])
         if formals is not None or any(not _constant_desc(g) for g in generics):
             return call
         return self.module.constant("T", call, key=("type", str(ty), ty.attached))

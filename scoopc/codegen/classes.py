@@ -16,9 +16,11 @@ from .layout import impl_id, lookup
 from .names import ONCE_CELL, class_name, eiffel_class_name
 from .routines import RoutineGen, local_identifier
 
+# The generated module's own names (these, its constants `_W_1`, ..., the externals' modules
+# `_X_...`) start with an underscore, which no Eiffel identifier can: a class named S or W_1 is safe.
 HEADER_IMPORTS = [
-    "import scoopc.runtime as rt",
-    "from scoopc.kernel import basic as B, strings as KS, support as S, types as T",
+    "import scoopc.runtime as _rt",
+    "from scoopc.kernel import basic as _B, strings as _KS, support as _S, types as _T",
 ]
 
 
@@ -88,13 +90,14 @@ class ClassGen:
             )
         ]
         stmts += [ast.parse(line).body[0] for line in HEADER_IMPORTS]
-        stmts += self.module.import_lines(self.layout.bases, top=True)
-        stmts += [ast.Import([ast.alias(f"scoopc.kernel.ext.{m}", f"X_{m}")]) for m in sorted(self.externals_used)]
+        stmts += self.module.import_lines(set(self.layout.bases) | self.module.ancestors, top=True)
+        stmts += [ast.Import([ast.alias(f"scoopc.kernel.ext.{m}", f"_X_{m}")]) for m in sorted(self.externals_used)]
         stmts += user_external_imports(self.user_externals, self.program.options)
         stmts += self.module.constants
         stmts.append(cls)
         stmts += self.module.functions
-        stmts.append(P.expr_stmt(P.call("S.register", [P.const(self.info.name), P.name(class_name(self.info.name))])))
+        stmts.append(P.expr_stmt(P.call("_S.register", [P.const(self.info.name), P.name(class_name(self.info.name))])))
+        stmts += self.module.module_imports()
         module = ast.Module(stmts, [])
         _stamp_statements(module, 1)
         return module
@@ -124,7 +127,7 @@ class ClassGen:
             return []  # inlined at each call (kernel.basic)
         if how == "alias":
             if feature.kind == "attribute":
-                return [P.assign(P.name(pyname), P.call("S.alias_attribute", [P.const(primary)]))]
+                return [P.assign(P.name(pyname), P.call("_S.alias_attribute", [P.const(primary)]))]
             return [P.assign(P.name(pyname), P.name(primary))]
         kind = feature.kind
         if kind == "attribute":
@@ -144,22 +147,22 @@ class ClassGen:
             fn = P.function(f"{pyname}_init_", ["self"], gen.routine_body(body, [], result))
             if result.is_formal:
                 value = P.call(
-                    "S.SelfInitialisingFormal",
+                    "_S.SelfInitialisingFormal",
                     [P.name(f"{pyname}_init_"), P.const(pyname), P.const(self.info.name), P.const(result.formal)],
                 )
             else:
-                value = P.call("S.SelfInitialising", [P.name(f"{pyname}_init_"), P.const(pyname)])
+                value = P.call("_S.SelfInitialising", [P.name(f"{pyname}_init_"), P.const(pyname)])
             return [P.at(fn, feature.decl.span), P.assign(P.name(pyname), value)]
         if result is not None and result.is_formal:
             return [
                 P.assign(
                     P.name(pyname),
-                    P.call("S.FormalDefault", [P.const(self.info.name), P.const(result.formal), P.const(pyname)]),
+                    P.call("_S.FormalDefault", [P.const(self.info.name), P.const(result.formal), P.const(pyname)]),
                 )
             ]
         info = self.program.universe.get(result.name) if result is not None else None
         if info is not None and info.is_expanded and info.name not in BASIC:
-            return [P.assign(P.name(pyname), P.call("S.ExpandedDefault", [gen.type_desc(result), P.const(pyname)]))]
+            return [P.assign(P.name(pyname), P.call("_S.ExpandedDefault", [gen.type_desc(result), P.const(pyname)]))]
         return [P.at(P.assign(P.name(pyname), gen.default_value(result)), feature.decl.span)]
 
     def self_initialising(self, result) -> bool:
@@ -217,9 +220,9 @@ class ClassGen:
         args = P.tup([P.name(p) for p in params])
         target = P.attr(P.name(class_name(self.info.name)), body_name)
         if "PROCESS" in keys:
-            value = P.call("rt.once_process", [key, target, args])
+            value = P.call("_rt.once_process", [key, target, args])
         elif "OBJECT" in keys:
-            value = P.call("rt.once_object", [P.name("self"), key, target, args])
+            value = P.call("_rt.once_object", [P.name("self"), key, target, args])
         else:
             value = P.call(P.attr(P.attr(P.name("self"), "_region_"), "once"), [key, target, args])
         outer = P.at(P.function(pyname, params, [ast.Return(value)], decorators), feature.decl.span)
@@ -240,9 +243,9 @@ class ClassGen:
             value = user
         elif found:
             self.externals_used.add(module)
-            value = P.attr(P.name(f"X_{module}"), fname)
+            value = P.attr(P.name(f"_X_{module}"), fname)
         else:
-            value = P.call("S.missing_external", [P.const(self.info.name), P.const(fname)])
+            value = P.call("_S.missing_external", [P.const(self.info.name), P.const(fname)])
         checks = self.external_precondition(feature, body)
         if checks:
             # The precondition is the generated code's, as for any routine (EiffelBase's
@@ -258,7 +261,7 @@ class ClassGen:
             else:
                 body = checks + [ast.Return(call)]
             decorators = [P.name("property")] if property_ else []
-            fn = P.function(pyname, list(params), body, decorators + [P.dotted("S.guard")])
+            fn = P.function(pyname, list(params), body, decorators + [P.dotted("_S.guard")])
             return [P.at(fn, feature.decl.span)]
         if property_:
             value = P.call("property", [value])
@@ -279,14 +282,14 @@ class ClassGen:
         if spec.language == "python":
             self.user_externals.add("KX")
             target = P.const(externals.python_alias(self.info.name, feature.name, inner.alias))
-            binding = P.call("KX.python_external", [P.name("__name__"), name, target, kinds, result])
+            binding = P.call("_KX.python_external", [P.name("__name__"), name, target, kinds, result])
         elif spec.language in ("c", "c++"):
             self.user_externals.update(("KX", spec.language))
             cx = C_MODULE_ALIAS[spec.language]
             symbol = externals.c_symbol(self.info.name, feature.name)
             alias = P.const("inline" if spec.inline else inner.alias or feature.name)
             args = [P.attr(P.name(cx), "lib"), P.attr(P.name(cx), "ffi"), P.const(symbol), name, alias, kinds, result]
-            binding = P.call("KX.c_external", args)
+            binding = P.call("_KX.c_external", args)
         else:
             return None
         constant = f"_external_{pyname}"  # made once, when the module loads
@@ -316,20 +319,20 @@ class ClassGen:
         gen = RoutineGen(self.program, self.module, self.info, None, "invariant")
         body = [P.assign(P.name("here"), P.attr(P.name("self"), "_region_"))]
         for parent in self.layout.bases:
-            body.append(P.expr_stmt(P.call("S.parent_invariant", [P.name(class_name(parent)), P.name("self")])))
+            body.append(P.expr_stmt(P.call("_S.parent_invariant", [P.name(class_name(parent)), P.name("self")])))
         body += [gen.assertion(c, "invariant") for c in clauses]
         fn = P.function("_invariant_", ["self"], body)
         return P.at(fn, self.info.decl.span)
 
 
-C_MODULE_ALIAS = {"c": "CX_c", "c++": "CX_cpp"}
+C_MODULE_ALIAS = {"c": "_CX_c", "c++": "_CX_cpp"}
 
 
 def user_external_imports(used: set, options) -> list:
     """The imports of a class with externals of its own: the kernel's binder, the cffi modules."""
     found = []
     if "KX" in used:
-        found.append(ast.ImportFrom("scoopc.kernel", [ast.alias("externals", "KX")], 0))
+        found.append(ast.ImportFrom("scoopc.kernel", [ast.alias("externals", "_KX")], 0))
     modules = dict(options.c_modules)
     for language in ("c", "c++"):
         if language in used:

@@ -52,22 +52,47 @@ class ModuleContext:
         self.program = program
         self.info = info
         self.parents: list[str] = []  # keys imported at the top (base classes)
-        self.others: set[str] = set()  # keys imported at the bottom
+        self.ancestors: set[str] = set()  # keys of other ancestors it names (imported by name at the top)
+        self.others: set[str] = set()  # keys of the other classes it uses, whose modules it imports
         self.constants: list[ast.stmt] = []  # module-level assignments (positions, clause tables, types)
         self._const_names: dict = {}
         self.counter = 0
 
     def class_ref(self, key: str) -> ast.expr:
-        if key != self.info.name and key not in self.parents:
-            self.others.add(key)
-        return P.name(class_name(key))
+        """The class itself and its ancestors by name (imported by name at the top: a class's
+        ancestors are defined before it); any other class through its module
+        (`_bounded_buffer.BOUNDED_BUFFER`), imported whole at the bottom, after the class is defined:
+        classes use each other in cycles (ANY uses OPERATING_ENVIRONMENT, an heir of ANY), and a
+        module imported whole is found even while it is still loading (the name is looked up when
+        the code runs)."""
+        if key == self.info.name or key in self.parents:
+            return P.name(class_name(key))
+        if key in self.info.all_ancestors:
+            self.ancestors.add(key)
+            return P.name(class_name(key))
+        self.others.add(key)
+        return P.attr(P.name(self.module_alias(key)), class_name(key))
+
+    def module_alias(self, key: str) -> str:
+        """`_M_<module>` for a class of the same package; `_L_<module>` for a library class used by a
+        program (module names are lower case: these never meet each other, the module's other names
+        or the functions' temporaries, `_t`, `_agent_1`, ...)."""
+        own = self.program.package_of(key) == self.program.package_of(self.info.name)
+        return f"_M_{module_name(key)}" if own else f"_L_{module_name(key)}"
+
+    def module_imports(self) -> list[ast.stmt]:
+        """`import package.module as _module` for every other class used (in key order)."""
+        found = {}
+        for key in sorted(self.others):
+            found.setdefault(self.module_alias(key), f"{self.program.package_of(key)}.{module_name(key)}")
+        return [ast.Import([ast.alias(path, alias)]) for alias, path in found.items()]
 
     def constant(self, prefix: str, value: ast.expr, key=None) -> ast.Name:
         """A module-level constant (interned by `key` when given)."""
         if key is not None and key in self._const_names:
             return P.name(self._const_names[key])
         self.counter += 1
-        ident = f"{prefix}_{self.counter}"
+        ident = f"_{prefix}_{self.counter}"  # the module's own names start with `_`: no Eiffel name does
         self.constants.append(P.assign(P.name(ident), value))
         if key is not None:
             self._const_names[key] = ident

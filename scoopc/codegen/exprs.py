@@ -76,8 +76,8 @@ class Expressions:
             maker = "i32" if ty.name.endswith("32") else "i8"
         if node.once:
             key = self.module.constant("ONCE_STRING", P.call("object", []))
-            return P.call("S.once_string", [P.name("here"), key, P.const(node.value), P.dotted("KS." + maker)])
-        return P.call("KS." + maker, [P.name("here"), P.const(node.value)])
+            return P.call("_S.once_string", [P.name("here"), key, P.const(node.value), P.dotted("_KS." + maker)])
+        return P.call("_KS." + maker, [P.name("here"), P.const(node.value)])
 
     def x_TypedConstant(self, node):
         return self.x(node.constant)
@@ -92,19 +92,19 @@ class Expressions:
         return P.const(0)
 
     def x_ManifestType(self, node):
-        return P.call("S.type_object", [P.name("here"), self.type_desc(self.type_of(node.type))])
+        return P.call("_S.type_object", [P.name("here"), self.type_desc(self.type_of(node.type))])
 
     def x_TupleExpression(self, node):
         ty = self.type_of(node)
         items = [self.copied(item, self.x(item)) for item in node.items]
-        return P.call("S.new_tuple", [P.name("here"), P.lst(items), self.generics_desc(ty)])
+        return P.call("_S.new_tuple", [P.name("here"), P.lst(items), self.generics_desc(ty)])
 
     def x_ManifestArray(self, node):
         ty = self.type_of(node)
         element = ty.generics[0] if ty.generics else None
         items = [self.reattached(item, self.copied(item, self.x(item)), element) for item in node.items]
         return P.call(
-            "S.manifest_array", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.lst(items)]
+            "_S.manifest_array", [P.name("here"), self.class_ref(ty.name), self.generics_desc(ty), P.lst(items)]
         )
 
     # --- entities ------------------------------------------------------------------------------
@@ -150,11 +150,11 @@ class Expressions:
         if isinstance(node.right, syntax.Void) or isinstance(node.left, syntax.Void):
             return P.compare(left, ast.IsNot() if negate else ast.Is(), right)
         if node.operator in ("~", "/~") or self.is_user_expanded(left_ty) or self.is_user_expanded(right_ty):
-            test = P.call("B.equal", [left, right])  # `=` on expanded values compares them
+            test = P.call("_B.equal", [left, right])  # `=` on expanded values compares them
         elif self.is_basic(left_ty) or self.is_basic(right_ty):
             return P.compare(left, ast.NotEq() if negate else ast.Eq(), right)
         elif self.may_hold_basic(left_ty) or self.may_hold_basic(right_ty):
-            test = P.call("B.same", [left, right])
+            test = P.call("_B.same", [left, right])
         else:
             return P.compare(left, ast.IsNot() if negate else ast.Is(), right)
         return P.not_(test) if negate else test
@@ -227,7 +227,7 @@ class Expressions:
         if node.else_part is not None:
             result = self.x(node.else_part)
         else:
-            result = P.call("S.bad_inspect", [P.name(subject), self.where(node)])
+            result = P.call("_S.bad_inspect", [P.name(subject), self.where(node)])
         first = True
         tests = []
         subject_value, text = self.inspect_subject(node)
@@ -253,7 +253,7 @@ class Expressions:
         ty = self.type_of(node.type)
         desc = self.type_desc(ty)
         if node.local is None:
-            return P.call("S.conforms", [value, desc])
+            return P.call("_S.conforms", [value, desc])
         return P.boolop(
             ast.And(),
             [P.is_not_none(value), P.call(P.attr(desc, "accepts"), [P.name(self.local_name(node.local.key))])],
@@ -266,12 +266,12 @@ class Expressions:
         source = self.iteration_source(iteration)
         if node.until is not None:  # stop before the first position where `until` holds
             stop = P.lambda_([var], P.not_(self.x(node.until)))
-            source = P.call("S.take_while", [stop, source])
+            source = P.call("_S.take_while", [stop, source])
         comp = ast.GeneratorExp(body, [ast.comprehension(P.name(var, store=True), source, [], 0)])
         return P.call("all" if node.quantifier == "all" else "any", [comp])
 
     def iteration_source(self, iteration) -> ast.expr:
-        helper = "S.cursors" if iteration.cursor_mode else "S.items"
+        helper = "_S.cursors" if iteration.cursor_mode else "_S.items"
         return P.call(helper, [self.x(iteration.expression)])
 
     # --- creation expressions ------------------------------------------------------------------

@@ -38,12 +38,12 @@ class Instructions:
             return value
         info = self.universe.get(ty.name)
         if info is not None and info.is_expanded:
-            return P.call("S.copy_expanded", [value])
+            return P.call("_S.copy_expanded", [value])
         return value
 
     def s_AssignmentAttempt(self, node):
         ty = self.tables.types.get(node.target) or self.entity_type(node.target)
-        value = P.call("S.attempt", [self.x(node.source), self.type_desc(ty)])
+        value = P.call("_S.attempt", [self.x(node.source), self.type_desc(ty)])
         return [P.assign(self.target(node.target), value)]
 
     def entity_type(self, target):
@@ -73,7 +73,7 @@ class Instructions:
             if isinstance(target, syntax.QualifiedCall) and self.tuple_label(target) is not None:
                 index = self.tuple_label(target)
                 holder = self.x(target.target)
-                return [P.expr_stmt(P.call("S.tuple_put", [holder, P.const(index), self.x(node.source)]))]
+                return [P.expr_stmt(P.call("_S.tuple_put", [holder, P.const(index), self.x(node.source)]))]
             fail("assigner call without an assigner", node.span)
         if isinstance(target, syntax.BracketExpression):
             owner, arguments = target.target, target.arguments
@@ -87,7 +87,7 @@ class Instructions:
             return [
                 P.expr_stmt(
                     P.call(
-                        "S.scall",
+                        "_S.scall",
                         [P.name("here"), receiver, P.const(self.py_name(assigner)), P.tup(args), P.const(True)],
                     )
                 )
@@ -149,7 +149,7 @@ class Instructions:
         if creator is not None:
             out.append(P.expr_stmt(P.call(P.attr(P.name(target.id), creator), args)))
         if self.assertions == "all" and self.program_has_invariant(info):
-            out.append(P.expr_stmt(P.call("S.check_invariant", [P.name(target.id)])))
+            out.append(P.expr_stmt(P.call("_S.check_invariant", [P.name(target.id)])))
         return out
 
     # --- control -------------------------------------------------------------------------------------
@@ -166,7 +166,7 @@ class Instructions:
         if node.else_part is not None:
             orelse = self.block(node.else_part)
         else:
-            orelse = [P.expr_stmt(P.call("S.bad_inspect", [P.name(subject), self.where(node)]))]
+            orelse = [P.expr_stmt(P.call("_S.bad_inspect", [P.name(subject), self.where(node)]))]
         for part in reversed(node.when_parts):
             tests = [self.choice(P.name(subject), c, text) for c in part.choices]
             orelse = [P.at(P.if_(P.boolop(ast.Or(), tests), self.block(part.then_part), orelse), part.span)]
@@ -178,7 +178,7 @@ class Instructions:
         value = self.x(node.expression)
         ty = self.tables.types.get(node.expression)
         if ty is not None and not ty.is_formal and "STRING" in ty.name:
-            return P.call("S.inspect_text", [value, self.where(node)]), True
+            return P.call("_S.inspect_text", [value, self.where(node)]), True
         return value, False
 
     def choice(self, subject, choice, text: bool = False):
@@ -213,12 +213,12 @@ class Instructions:
         variant = node.variant
         tag = [P.const(variant.tag.text)] if variant.tag is not None else []
         first = [
-            P.assign(P.name(name), P.call("S.variant_start", [self.x(variant.expression), self.where(variant)] + tag))
+            P.assign(P.name(name), P.call("_S.variant_start", [self.x(variant.expression), self.where(variant)] + tag))
         ]
         step = [
             P.assign(
                 P.name(name),
-                P.call("S.variant_step", [P.name(name), self.x(variant.expression), self.where(variant)] + tag),
+                P.call("_S.variant_step", [P.name(name), self.x(variant.expression), self.where(variant)] + tag),
             )
         ]
         return checks, (first, step)
@@ -240,7 +240,7 @@ class Instructions:
         if not iteration.cursor_mode:
             # `across s is x` (and `⟳ x: s ¦ ... ⟲`) is `across s as c` with each `x` read as
             # `c.item` at the point of use, as the unfolded `new_cursor` loop reads it
-            source = P.call("S.cursors", [self.x(iteration.expression)])
+            source = P.call("_S.cursors", [self.x(iteration.expression)])
             body = [_ItemReads(var).visit(stmt) for stmt in body]
         loop = ast.For(P.name(var, store=True), source, body or [ast.Pass()], [], None)
         return out + [loop]
@@ -273,7 +273,7 @@ class Instructions:
     # --- assertions ----------------------------------------------------------------------------------
     def assertion(self, clause, kind: str):
         tag = clause.tag.text if clause.tag is not None else None
-        failure = P.call("S.assertion_failed", [P.const(kind), P.const(tag), self.where(clause)])
+        failure = P.call("_S.assertion_failed", [P.const(kind), P.const(tag), self.where(clause)])
         return P.at(P.if_(P.not_(self.x(clause.expression)), [P.expr_stmt(failure)]), clause.span)
 
 

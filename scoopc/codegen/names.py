@@ -9,6 +9,7 @@ before heir) keeps it and the other is qualified with its class: `f__b`.
 
 from __future__ import annotations
 
+import hashlib
 import keyword
 
 from ..semantics.types import ALIASES
@@ -22,15 +23,10 @@ def py_identifier(name: str) -> str:
     return name + "_" if name in RESERVED or name.startswith("_") else name
 
 
-# Names every generated module imports (HEADER_IMPORTS of classes.py): an Eiffel class with one
-# of them (EiffelStudio's partree example has a class S) gets a trailing underscore in Python.
-HEADER_NAMES = frozenset({"B", "KS", "S", "T", "P", "rt", "ast"})
-
-
 def class_name(key: str) -> str:
-    """The Python class of an Eiffel class key (`CELL@BASE` is the library's CELL)."""
-    name = key.split("@")[0]
-    return name + "_" if name in HEADER_NAMES else name
+    """The Python class of an Eiffel class key (`CELL@BASE` is the library's CELL): its Eiffel name,
+    which never meets the generated module's own names (they start with `_`, classes.HEADER_IMPORTS)."""
+    return key.split("@")[0]
 
 
 def eiffel_class_name(key: str) -> str:
@@ -38,8 +34,16 @@ def eiffel_class_name(key: str) -> str:
     return key.split("@")[0]
 
 
+MODULE_NAME_MAX = 100  # characters: file systems allow 255 bytes per name; `.py`, `.pyc` tags come on top
+
+
 def module_name(key: str) -> str:
-    return eiffel_class_name(key).lower()
+    """The module (file) of a class: its name in lower case; a very long name is cut, with a digest
+    of the whole name after it to keep it unique."""
+    name = eiffel_class_name(key).lower()
+    if len(name) <= MODULE_NAME_MAX:
+        return name
+    return f"{name[: MODULE_NAME_MAX - 17]}_{hashlib.sha256(name.encode()).hexdigest()[:16]}"
 
 
 def seed_class(seed: str) -> str:

@@ -153,7 +153,7 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
         if body.rescue is None:
             return instructions
         caught = self.temp("exception")
-        rescue = [P.expr_stmt(P.call("S.caught", [P.name("here"), P.name(caught)]))]
+        rescue = [P.expr_stmt(P.call("_S.caught", [P.name("here"), P.name(caught)]))]
         rescue += self.block(body.rescue) + [ast.Raise(None, None)]
         handler = ast.ExceptHandler(P.dotted("Exception"), caught, rescue)
         attempt = ast.Try(instructions + [ast.Break()], [handler], [], [])
@@ -195,7 +195,8 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
                     self.olds[node] = name
                     out.append(
                         P.at(
-                            P.assign(P.name(name), P.call("S.old", [P.lambda_([], self.x(node.expression))])), node.span
+                            P.assign(P.name(name), P.call("_S.old", [P.lambda_([], self.x(node.expression))])),
+                            node.span,
                         )
                     )
         return out

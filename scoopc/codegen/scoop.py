@@ -3,7 +3,7 @@ whole program (closed world), and the choice of entry point for each separate ca
 reservation (docs/RUNTIME.md sections 2-3, "Choosing an entry point").
 
 Facts, per routine version (a declaration, identified by its class and first name):
-- leaf (`@rt.leaf`): no loop (nor `across`, nor `retry`), no separate call, no reservation
+- leaf (`@_rt.leaf`): no loop (nor `across`, nor `retry`), no separate call, no reservation
   (separate argument or separate block), no creation of a processor, no `once`, no external
   call except short host operations that never block (SAFE_EXTERNALS), no agent call, and
   every routine it may call is a leaf: for a call on a target of static class C, every

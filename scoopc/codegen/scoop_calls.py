@@ -1,13 +1,13 @@
 """Codegen, SCOOP entry points: the runtime entry point chosen for each separate call and
 reservation from the facts of scoop.py (docs/RUNTIME.md section 3, "Choosing an entry point"),
-the `@rt.leaf` decorations, and `across` over an integer interval as a Python range.
+the `@_rt.leaf` decorations, and `across` over an integer interval as a Python range.
 
 Every fast form is emitted only where its facts hold statically; otherwise the general form:
 - a separate call is bound to `C.f` at compile time when the universe has one version of `f`
   for the target's static class and its heirs and the target is never Void (void-safe program,
   attached type); it is `leaf_call`/`leaf_query` when that version is a leaf and no actual
   argument can pass locks (basic types or Void only), else `call`/`query`. Otherwise the
-  version is looked up on the target at run time (`S.scall`, `S.squery`).
+  version is looked up on the target at run time (`_S.scall`, `_S.squery`).
 - a routine (or separate block) with one separate argument `x`, no precondition clause left to
   evaluate and a body that is exactly one command on `x` whose arguments cannot pass locks is
   `command1`; one argument otherwise `reserve1`; several `reserve` (module-level clause tables).
@@ -60,7 +60,7 @@ def routine_ref(gen, version) -> ast.expr:
     """The Python function of one version, callable as f(target, *args)."""
     name = gen.py_name(version)
     if version.kind in ("attribute", "constant"):
-        return gen.module.constant("G", P.call("S.getter", [P.const(name)]), key=("getter", name))
+        return gen.module.constant("G", P.call("_S.getter", [P.const(name)]), key=("getter", name))
     function = P.attr(gen.class_ref(version.written_in), name)
     if version.is_query and not version.arguments:
         return P.attr(function, "fget")
@@ -70,8 +70,8 @@ def routine_ref(gen, version) -> ast.expr:
 def separate_call(gen, node, target, feature, args) -> ast.expr:
     """A call on a controlled separate target: statically bound to the one version the
     universe has when it can be (`leaf_call`/`leaf_query` when that version is a leaf and no
-    argument can pass locks, else `call`/`query`); otherwise looked up at run time (S.scall,
-    S.squery). Commands a `command1` could replace are remembered for `reserved`."""
+    argument can pass locks, else `call`/`query`); otherwise looked up at run time (_S.scall,
+    _S.squery). Commands a `command1` could replace are remembered for `reserved`."""
     here = P.name("here")
     target_node, arg_nodes = _operands(node)
     ty = gen.tables.types.get(target_node) if target_node is not None else None
@@ -88,10 +88,10 @@ def separate_call(gen, node, target, feature, args) -> ast.expr:
         passing = P.const(bool(gen.tables.lock_passing.get(node)))
         name = P.const(gen.py_name(feature))
         if feature.is_query:
-            return P.call("S.squery", [here, target, name, P.tup(args), passing, gen.where(node)])
-        call = P.call("S.scall", [here, target, name, P.tup(args), passing])
+            return P.call("_S.squery", [here, target, name, P.tup(args), passing, gen.where(node)])
+        call = P.call("_S.scall", [here, target, name, P.tup(args), passing])
         if attached and values and isinstance(target, ast.Name):
-            routine = P.call("S.routine_of", [P.name(target.id), name])
+            routine = P.call("_S.routine_of", [P.name(target.id), name])
             _commands(gen)[id(call)] = (target.id, routine, P.tup(args))
         return call
     routine = routine_ref(gen, version)
@@ -161,7 +161,7 @@ def _unobservable(gen, obj, name, body) -> bool:
     return _only_stored(obj, body) and not any(_real_call(node) for s in body for node in ast.walk(s))
 
 
-_HARMLESS = {("S", "assertion_failed")}
+_HARMLESS = {("_S", "assertion_failed")}
 
 
 def _real_call(node) -> bool:
@@ -170,7 +170,7 @@ def _real_call(node) -> bool:
         return False
     func = node.func
     if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name):
-        if (func.value.id, func.attr) in _HARMLESS or (func.value.id == "B" and func.attr.startswith("wrap_")):
+        if (func.value.id, func.attr) in _HARMLESS or (func.value.id == "_B" and func.attr.startswith("wrap_")):
             return False
     return True
 
@@ -196,7 +196,7 @@ def _only_stored(obj, body) -> bool:
 
 
 def finish_module(program, info, module: ast.Module) -> None:
-    """The last touches on a class's module: `@rt.leaf` on its leaves; no `here = ...` in a
+    """The last touches on a class's module: `@_rt.leaf` on its leaves; no `here = ...` in a
     function that does not use it (a leaf command runs in a few hundred nanoseconds)."""
     for stmt in module.body:
         functions = stmt.body if isinstance(stmt, ast.ClassDef) else [stmt]
@@ -221,7 +221,7 @@ def _drop_unused_here(function: ast.FunctionDef) -> None:
 
 
 def decorate_leaves(program, info, module: ast.Module) -> None:
-    """`@rt.leaf` on every routine of a program's class (not the library's) that is a leaf."""
+    """`@_rt.leaf` on every routine of a program's class (not the library's) that is a leaf."""
     if info.from_library:
         return
     facts = analysis(program)
@@ -243,7 +243,7 @@ def decorate_leaves(program, info, module: ast.Module) -> None:
         if isinstance(stmt, ast.ClassDef):
             for member in stmt.body:
                 if isinstance(member, ast.FunctionDef) and member.name in leaves:
-                    member.decorator_list.append(P.dotted("rt.leaf"))
+                    member.decorator_list.append(P.dotted("_rt.leaf"))
 
 
 # --- `across a |..| b as i`: a Python range --------------------------------------------------------

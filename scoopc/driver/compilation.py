@@ -30,7 +30,7 @@ from ..project import Project, collect
 from ..semantics import Checked as SemanticsChecked
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root
-from . import externals
+from . import cache, externals
 from .library import Library, compiled_library
 from .packages import (
     BASE_PACKAGE,
@@ -248,6 +248,10 @@ class Compilation:
             self.require_clean()
             self.rebuild_library |= not use_cache  # no cache at all: the library is compiled again too
             found = self._cache(folder, key)
+            cache.tidy(keep=folder)
+        else:
+            cache.touch(folder / "program.json")
+        cache.touch(found.library)
         ensure_bytecode(found.library)
         return found
 
@@ -279,7 +283,7 @@ def package_name(root_key: str) -> str:
     """The package `scoopc compile` writes for a root class: its name in lower case, unless that
     would shadow a module Python or scoopc needs (`json`, `threading`, `eiffel_base`, ...), then
     with `_program` after it."""
-    name = root_key.lower()
+    name = module_name(root_key)
     taken = name in sys.stdlib_module_names or name in (BASE_PACKAGE, "scoopc", "program") or keyword.iskeyword(name)
     return f"{name}_program" if taken else name
 

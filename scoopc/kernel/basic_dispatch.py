@@ -153,7 +153,7 @@ def _compile(spec):
         defaults=[],
     )
     tree = ast.fix_missing_locations(ast.Expression(ast.Lambda(args, body)))
-    return eval(compile(tree, "<scoopc.kernel.basic>", "eval"), {"B": B})
+    return eval(compile(tree, "<scoopc.kernel.basic>", "eval"), {"_B": B})
 
 
 def _make_table(kind):

@@ -2,10 +2,10 @@
 the code generator. Semantics and sources: scoopc/kernel/basic.py.
 
 Each feature is a list of templates over the names X (Current), Y, Z (the arguments), R (the
-region, `here` by default) and B (the module scoopc.kernel.basic). The first template whose
+region, `here` by default) and _B (the module scoopc.kernel.basic). The first template whose
 guard holds and that evaluates every non-trivial operand at most once is used (an operand that
 is a name or a constant may be repeated); the last one always applies. An operand a template
-does not use is still evaluated (`B.seq (x, result)`) unless it is a name or a constant.
+does not use is still evaluated (`_B.seq (x, result)`) unless it is a name or a constant.
 The nodes returned have no positions: run `ast.fix_missing_locations` on the module.
 """
 
@@ -80,7 +80,7 @@ def _clone(node):
 
 
 def _b(name):
-    return ast.Attribute(ast.Name("B", ast.Load()), name, ast.Load())
+    return ast.Attribute(ast.Name("_B", ast.Load()), name, ast.Load())
 
 
 def _constant(node):
@@ -192,12 +192,12 @@ def _integer(name, bits, signed):
             "high": f"(_t := {e}) <= {high}",
             "low": f"{low} <= (_t := {e})",
         }[check]
-        return f"(_t if {test} else B.wrap_{p}(_t))"
+        return f"(_t if {test} else _B.wrap_{p}(_t))"
 
     t = {
         "item": "X",
         "hash_code": "X & 2147483647",
-        "sign": [(None, "(X > 0) - (X < 0)"), (None, "B.isign(X)")] if signed else "(1 if X > 0 else 0)",
+        "sign": [(None, "(X > 0) - (X < 0)"), (None, "_B.isign(X)")] if signed else "(1 if X > 0 else 0)",
         "one": "1",
         "zero": "0",
         "is_less": "X < Y",
@@ -205,48 +205,48 @@ def _integer(name, bits, signed):
         "is_greater": "X > Y",
         "is_greater_equal": "X >= Y",
         "is_equal": "X == Y",
-        "three_way_comparison": [(None, "(X > Y) - (X < Y)"), (None, "B.cmp(X, Y)")],
-        "max": [(None, "(X if X >= Y else Y)"), (None, "B.imax(X, Y)")],
-        "min": [(None, "(X if X <= Y else Y)"), (None, "B.imin(X, Y)")],
+        "three_way_comparison": [(None, "(X > Y) - (X < Y)"), (None, "_B.cmp(X, Y)")],
+        "max": [(None, "(X if X >= Y else Y)"), (None, "_B.imax(X, Y)")],
+        "min": [(None, "(X if X <= Y else Y)"), (None, "_B.imin(X, Y)")],
         "divisible": "Y != 0",
-        "exponentiable": "B.exponentiable(X, Y)",
+        "exponentiable": "_B.exponentiable(X, Y)",
         "is_hashable": "X != 0",
         "is_valid_character_8_code": "0 <= X <= 255" if signed else "X <= 255",
         "is_valid_character_32_code": "0 <= X <= 1114111" if signed else "X <= 1114111",
         "plus": [(_y_nonnegative, wrap("X + Y", "high")), (_y_negative, wrap("X + Y", "low")), (None, wrap("X + Y"))],
         "minus": [(_y_nonnegative, wrap("X - Y", "low")), (_y_negative, wrap("X - Y", "high")), (None, wrap("X - Y"))],
         "product": wrap("X * Y"),
-        "quotient": [(_y_nonzero, "X / Y"), (_y_name, "(X / Y if Y else B.fdiv(X, Y))"), (None, "B.fdiv(X, Y)")]
+        "quotient": [(_y_nonzero, "X / Y"), (_y_name, "(X / Y if Y else _B.fdiv(X, Y))"), (None, "_B.fdiv(X, Y)")]
         if bits < 64
-        else "B.fquot(X, Y)",  # x / 0 is an infinity, as in C
+        else "_B.fquot(X, Y)",  # x / 0 is an infinity, as in C
         "identity": "X",
-        "power": "B.power(X, Y)",
-        "interval": "B.interval(R, X, Y)",
+        "power": "_B.power(X, Y)",
+        "interval": "_B.interval(R, X, Y)",
         "to_boolean": "X != 0",
-        "to_real": "B.r32(X + 0.0)" if bits < 64 else "B.i2r32(X)",
+        "to_real": "_B.r32(X + 0.0)" if bits < 64 else "_B.i2r32(X)",
         "to_double": "X + 0.0",
-        "to_character_8": "B.chr(X & 255)",
-        "to_character_32": "B.chr(X)",  # C casts
-        "to_hex_string": f"B.hex_string(R, X, {bits})",
-        "to_hex_character": "B.HEX_DIGITS[X]",
+        "to_character_8": "_B.chr(X & 255)",
+        "to_character_32": "_B.chr(X)",  # C casts
+        "to_hex_string": f"_B.hex_string(R, X, {bits})",
+        "to_hex_character": "_B.HEX_DIGITS[X]",
         "bit_and": "X & Y",
         "bit_or": "X | Y",
         "bit_xor": "X ^ Y",
         "bit_not": "~X" if signed else f"X ^ {(1 << bits) - 1}",
-        "bit_shift": f"B.shift_{p}(X, Y)",
+        "bit_shift": f"_B.shift_{p}(X, Y)",
         "bit_shift_left": wrap("X << Y"),
         "bit_shift_right": "X >> Y",
         "bit_test": "(X >> Y) & 1 != 0",
-        "set_bit": f"B.set_bit_{p}(X, Y, Z)",
-        "set_bit_with_mask": f"B.set_bit_mask_{p}(X, Y, Z)",
-        "out": "B.out_int(R, X)",
+        "set_bit": f"_B.set_bit_{p}(X, Y, Z)",
+        "set_bit_with_mask": f"_B.set_bit_mask_{p}(X, Y, Z)",
+        "out": "_B.out_int(R, X)",
     }
     t["to_real_32"], t["to_real_64"] = t["to_real"], t["to_double"]
     if signed:
-        t["abs"] = [(None, f"(X if X >= 0 else {wrap('-X', 'high')})"), (None, f"B.abs_{p}(X)")]
+        t["abs"] = [(None, f"(X if X >= 0 else {wrap('-X', 'high')})"), (None, f"_B.abs_{p}(X)")]
         t["opposite"] = wrap("-X", "high")
-        t["integer_quotient"] = [(_y_positive, "(X // Y if X >= 0 else -(-X // Y))"), (None, f"B.idiv_{p}(X, Y)")]
-        t["integer_remainder"] = [(_y_positive, "(X % Y if X >= 0 else -(-X % Y))"), (None, f"B.irem_{p}(X, Y)")]
+        t["integer_quotient"] = [(_y_positive, "(X // Y if X >= 0 else -(-X // Y))"), (None, f"_B.idiv_{p}(X, Y)")]
+        t["integer_remainder"] = [(_y_positive, "(X % Y if X >= 0 else -(-X % Y))"), (None, f"_B.irem_{p}(X, Y)")]
     else:
         t["unapplicable_opposite"] = "X"
         t["integer_quotient"] = "X // Y"
@@ -267,84 +267,84 @@ _REAL_COMPARISONS = {
         (_y_const, "not (X >= Y)"),
         (_x_const, "X < Y"),
         (None, "(X < Y or (X != X and Y == Y))"),
-        (None, "B.flt(X, Y)"),
+        (None, "_B.flt(X, Y)"),
     ],
     "is_less_equal": [
         (_y_const, "not (X > Y)"),
         (_x_const, "X <= Y"),
         (None, "(X <= Y or X != X)"),
-        (None, "B.fle(X, Y)"),
+        (None, "_B.fle(X, Y)"),
     ],
     "is_greater": [
         (_y_const, "X > Y"),
         (_x_const, "not (X <= Y)"),
         (None, "(X > Y or (Y != Y and X == X))"),
-        (None, "B.fgt(X, Y)"),
+        (None, "_B.fgt(X, Y)"),
     ],
     "is_greater_equal": [
         (_y_const, "X >= Y"),
         (_x_const, "not (X < Y)"),
         (None, "(X >= Y or Y != Y)"),
-        (None, "B.fge(X, Y)"),
+        (None, "_B.fge(X, Y)"),
     ],
     "is_equal": [
         (_y_const, "X == Y"),
         (_x_const, "X == Y"),
         (None, "(X == Y or (X != X and Y != Y))"),
-        (None, "B.feq(X, Y)"),
+        (None, "_B.feq(X, Y)"),
     ],
 }
 
 
 def _real(bits):
     single = bits == 32
-    rnd = (lambda e: f"B.r32({e})") if single else (lambda e: e)  # noqa: E731
+    rnd = (lambda e: f"_B.r32({e})") if single else (lambda e: e)  # noqa: E731
     t = {
         "item": "X",
-        "hash_code": "B.trunc32(X) & 2147483647",
-        "sign": "B.fsign(X)",
+        "hash_code": "_B.trunc32(X) & 2147483647",
+        "sign": "_B.fsign(X)",
         "one": "1.0",
         "zero": "0.0",
-        "nan": "B.NAN",
-        "negative_infinity": "B.NEG_INF",
-        "positive_infinity": "B.POS_INF",
+        "nan": "_B.NAN",
+        "negative_infinity": "_B.NEG_INF",
+        "positive_infinity": "_B.POS_INF",
         "ieee_is_equal": "X == Y",
-        "three_way_comparison": "B.fcmp(X, Y)",
-        "max": "B.fmax(X, Y)",
-        "min": "B.fmin(X, Y)",
+        "three_way_comparison": "_B.fcmp(X, Y)",
+        "max": "_B.fmax(X, Y)",
+        "min": "_B.fmin(X, Y)",
         "divisible": "Y != 0.0",
-        "exponentiable": "B.exponentiable(X, Y)",
+        "exponentiable": "_B.exponentiable(X, Y)",
         "is_hashable": "X != 0.0",
-        "is_nan": [(None, "X != X"), (None, "B.isnan(X)")],
-        "is_negative_infinity": "X == B.NEG_INF",
-        "is_positive_infinity": "X == B.POS_INF",
-        "abs": [(None, "(X if X > 0 else -X)"), (None, "B.fabs(X)")],
+        "is_nan": [(None, "X != X"), (None, "_B.isnan(X)")],
+        "is_negative_infinity": "X == _B.NEG_INF",
+        "is_positive_infinity": "X == _B.POS_INF",
+        "abs": [(None, "(X if X > 0 else -X)"), (None, "_B.fabs(X)")],
         "plus": rnd("X + Y"),
         "minus": rnd("X - Y"),
         "product": rnd("X * Y"),
         "quotient": [
             (_y_nonzero, rnd("X / Y")),
-            (_y_name, rnd("(X / Y if Y else B.fdiv(X, Y))")),
-            (None, rnd("B.fdiv(X, Y)")),
+            (_y_name, rnd("(X / Y if Y else _B.fdiv(X, Y))")),
+            (None, rnd("_B.fdiv(X, Y)")),
         ],
-        "power": "B.power(X, Y)",
+        "power": "_B.power(X, Y)",
         "identity": "X",
         "opposite": "-X",
-        "truncated_to_integer": "B.trunc32(X)",
-        "truncated_to_integer_64": "B.trunc64(X)",
-        "ceiling": "B.trunc32(B.fceil(X))",
-        "floor": "B.trunc32(B.ffloor(X))",
-        "rounded": "B.rounded(X)",
-        f"ceiling_real_{bits}": "B.fceil(X)",
-        f"floor_real_{bits}": "B.ffloor(X)",
-        f"rounded_real_{bits}": "B.rounded_real_32(X)" if single else "B.rounded_real(X)",
-        "out": "B.out_r32(R, X)" if single else "B.out_r64(R, X)",
+        "truncated_to_integer": "_B.trunc32(X)",
+        "truncated_to_integer_64": "_B.trunc64(X)",
+        "ceiling": "_B.trunc32(_B.fceil(X))",
+        "floor": "_B.trunc32(_B.ffloor(X))",
+        "rounded": "_B.rounded(X)",
+        f"ceiling_real_{bits}": "_B.fceil(X)",
+        f"floor_real_{bits}": "_B.ffloor(X)",
+        f"rounded_real_{bits}": "_B.rounded_real_32(X)" if single else "_B.rounded_real(X)",
+        "out": "_B.out_r32(R, X)" if single else "_B.out_r64(R, X)",
     }
     t.update(_REAL_COMPARISONS)
     if single:
         t["to_double"] = t["to_real_64"] = "X"
     else:
-        t["truncated_to_real"] = "B.r32(X)"
+        t["truncated_to_real"] = "_B.r32(X)"
     return t
 
 
@@ -360,7 +360,7 @@ _BOOLEAN = {
     "disjuncted_exclusive": "X ^ Y",
     "implication": "not X or Y",
     "negated": "not X",
-    "out": "B.out_bool(R, X)",
+    "out": "_B.out_bool(R, X)",
 }
 
 _CLASSIFY = (
@@ -379,7 +379,7 @@ _CLASSIFY = (
 
 
 def _character(wide):
-    code = "B.ord(X)"
+    code = "_B.ord(X)"
     t = {
         "item": "X",
         "code": code,
@@ -390,46 +390,46 @@ def _character(wide):
         "is_greater": "X > Y",
         "is_greater_equal": "X >= Y",
         "is_equal": "X == Y",
-        "three_way_comparison": [(None, "(X > Y) - (X < Y)"), (None, "B.cmp(X, Y)")],
-        "max": [(None, "(X if X >= Y else Y)"), (None, "B.imax(X, Y)")],
-        "min": [(None, "(X if X <= Y else Y)"), (None, "B.imin(X, Y)")],
-        "difference": "B.ord(X) - B.ord(Y)",
+        "three_way_comparison": [(None, "(X > Y) - (X < Y)"), (None, "_B.cmp(X, Y)")],
+        "max": [(None, "(X if X >= Y else Y)"), (None, "_B.imax(X, Y)")],
+        "min": [(None, "(X if X <= Y else Y)"), (None, "_B.imin(X, Y)")],
+        "difference": "_B.ord(X) - _B.ord(Y)",
         "to_character_32": "X",
-        "to_hexa_digit": "B.hexa_value(X)",
+        "to_hexa_digit": "_B.hexa_value(X)",
     }
     if wide:
         t.update(
             {
-                "plus": "B.chr(B.ord(X) + Y)",
-                "minus": "B.chr(B.ord(X) - Y)",
-                "next": "B.chr(B.ord(X) + 1)",
-                "previous": "B.chr(B.ord(X) - 1)",
-                "to_character_8": "B.chr(B.ord(X) & 255)",
-                "as_upper": "B.upper32(X)",
-                "as_lower": "B.lower32(X)",
+                "plus": "_B.chr(_B.ord(X) + Y)",
+                "minus": "_B.chr(_B.ord(X) - Y)",
+                "next": "_B.chr(_B.ord(X) + 1)",
+                "previous": "_B.chr(_B.ord(X) - 1)",
+                "to_character_8": "_B.chr(_B.ord(X) & 255)",
+                "as_upper": "_B.upper32(X)",
+                "as_lower": "_B.lower32(X)",
                 "is_digit": "'0' <= X <= '9'",
-                "is_hexa_digit": "X in B.C8_HEXA",
+                "is_hexa_digit": "X in _B.C8_HEXA",
                 "is_character_8": "X <= '\\xff'",
-                "out": "B.out_c32(R, X)",
+                "out": "_B.out_c32(R, X)",
             }
         )
         for prop in _CLASSIFY:
-            t.setdefault("is_" + prop, f"B.is_{prop}32(X)")
+            t.setdefault("is_" + prop, f"_B.is_{prop}32(X)")
     else:
         t.update(
             {
-                "plus": "B.chr((B.ord(X) + Y) & 255)",
-                "minus": "B.chr((B.ord(X) - Y) & 255)",
-                "next": "B.chr((B.ord(X) + 1) & 255)",
-                "previous": "B.chr((B.ord(X) - 1) & 255)",
+                "plus": "_B.chr((_B.ord(X) + Y) & 255)",
+                "minus": "_B.chr((_B.ord(X) - Y) & 255)",
+                "next": "_B.chr((_B.ord(X) + 1) & 255)",
+                "previous": "_B.chr((_B.ord(X) - 1) & 255)",
                 "to_character_8": "X",
-                "as_upper": "B.UPPER8[X]",
-                "as_lower": "B.LOWER8[X]",
-                "out": "B.out_c8(R, X)",
+                "as_upper": "_B.UPPER8[X]",
+                "as_lower": "_B.LOWER8[X]",
+                "out": "_B.out_c8(R, X)",
             }
         )
         for prop in _CLASSIFY:
-            t["is_" + prop] = f"X in B.C8_{'HEXA' if prop == 'hexa_digit' else prop.upper()}"
+            t["is_" + prop] = f"X in _B.C8_{'HEXA' if prop == 'hexa_digit' else prop.upper()}"
     t["upper"], t["lower"] = t["as_upper"], t["as_lower"]
     return t
 
@@ -442,17 +442,17 @@ _POINTER = {
     "is_equal": "X == Y",
     "plus": "X + Y",
     "to_integer_32": _wrap_text("X", 32, True),
-    "out": "B.out_pointer(R, X)",
+    "out": "_B.out_pointer(R, X)",
 }
 
 # ANY's built-ins on any target (a basic value or an object): through the dynamic dispatch.
 _ANY = {
-    name: f"B.query(X, {name!r}, R)"
+    name: f"_B.query(X, {name!r}, R)"
     for name in ("generator", "generating_type", "tagged_out", "twin", "standard_twin", "deep_twin")
 }
 _ANY.update(
     {
-        name: f"B.call(X, {name!r}, (Y,), R)"
+        name: f"_B.call(X, {name!r}, (Y,), R)"
         for name in ("conforms_to", "same_type", "standard_is_equal", "is_deep_equal", "copy", "standard_copy")
     }
 )

@@ -241,13 +241,13 @@ _CLAUSES: dict = {}  # code object of a precondition clause -> its frame, filled
 def _clause_of(frame) -> tuple | None:
     """(class, "routine, wait condition" or "routine, precondition", file:line) when `frame` runs
     a precondition clause of a routine with separate arguments: generated modules keep those in
-    `PRE_n` tables of (clause, separate arguments it queries, tag, (class, routine, file, line))."""
+    `_PRE_n` tables of (clause, separate arguments it queries, tag, (class, routine, file, line))."""
     module = frame.f_globals
     key = module.get("__name__", "")
     if key not in _CLAUSES:
         table = {}
         for name, value in list(module.items()):
-            if name.startswith("PRE_") and isinstance(value, tuple):
+            if name.startswith("_PRE_") and isinstance(value, tuple):
                 for clause in value:
                     predicate, queried, _tag, (cls, routine, path, line) = clause
                     what = "wait condition" if queried else "precondition"

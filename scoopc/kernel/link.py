@@ -1,6 +1,5 @@
-"""Loading a compiled package: import its modules parents first, then give every module the
-names of the classes it may use (a generated module refers to other classes by their plain
-names, `ARRAY`, `STRING_8`; importing them module by module would make import cycles)."""
+"""Loading a compiled package: import its modules parents first (each generated module imports
+the classes it uses itself: its ancestors by name at the top, the others' modules at the bottom)."""
 
 from __future__ import annotations
 
@@ -20,25 +19,20 @@ _LIBRARY_LEAVES: set = set()  # "CLASS.routine" of the program loaded in this pr
 
 
 def load(package: str, modules: list[str], uses: tuple[str, ...] = ()) -> dict:
-    """Import `package`'s modules in order; inject into each the classes of `uses` (packages
-    loaded before, e.g. the standard library) and of this package (which take precedence)."""
+    """Import the packages of `uses` (e.g. the standard library), then `package`'s modules in
+    order; {class name: class} of the package's own classes."""
     if package in _LOADED:
         return _LOADED[package]
     if uses:  # a program (the library itself uses nothing)
         _read_library_leaves(package)
-    names: dict = {}
     for other in uses:
-        names.update(importlib.import_module(other).CLASSES_BY_NAME)
+        importlib.import_module(other)
     loaded = [importlib.import_module(f"{package}.{m}") for m in modules]
     own = {}
     for module in loaded:
         for key, value in vars(module).items():
             if isinstance(value, type) and getattr(value, "__module__", None) == module.__name__:
                 own[key] = value
-    names.update(own)
-    for module in loaded:
-        for key, value in names.items():
-            module.__dict__.setdefault(key, value)
     _LOADED[package] = own
     return own
 
@@ -73,7 +67,7 @@ def _read_library_leaves(package: str) -> None:
 def is_leaf_routine(cls: type, name: str) -> bool:
     """Is routine `name` of (generated) class `cls` a leaf (no loop, no separate call, nothing
     that blocks: scoopc.codegen.scoop) in the loaded program? A program's own routine says so
-    by its `@rt.leaf` mark; a library routine by the program's list of library leaves."""
+    by its `@_rt.leaf` mark; a library routine by the program's list of library leaves."""
     for owner in cls.__mro__:
         function = owner.__dict__.get(name)
         if function is not None:

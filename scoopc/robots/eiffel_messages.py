@@ -83,6 +83,81 @@ def eiffel_type(desc: tuple) -> str:
     return f"ARRAY [{eiffel_type(detail[0])}]"
 
 
+INTEGER_RANGES = {
+    "byte": (-(2**7), 2**7 - 1),
+    "char": (0, 2**8 - 1),
+    "int8": (-(2**7), 2**7 - 1),
+    "uint8": (0, 2**8 - 1),
+    "int16": (-(2**15), 2**15 - 1),
+    "uint16": (0, 2**16 - 1),
+    "int32": (-(2**31), 2**31 - 1),
+    "uint32": (0, 2**32 - 1),
+    "int64": (-(2**63), 2**63 - 1),
+    "uint64": (0, 2**64 - 1),
+}
+MAX_DEFINITION_BYTES = 1 << 20
+
+
+def read_definition(path: str, what: str) -> str:
+    """The text of a .msg or .srv file given with --file: a readable UTF-8 text file, or a usage error."""
+    try:
+        if not os.path.isfile(path):
+            raise UsageError(f"{path} is not a {what} file")
+        if os.path.getsize(path) > MAX_DEFINITION_BYTES:
+            raise UsageError(f"{path} is larger than 1 MiB: not a {what} definition")
+        with open(path, encoding="utf-8") as source:
+            text = source.read()
+    except OSError as problem:
+        raise UsageError(f"cannot read {path}: {problem.strerror}") from None
+    except UnicodeDecodeError:
+        raise UsageError(f"{path} is not a text file (UTF-8): not a {what} definition") from None
+    if "\0" in text:
+        raise UsageError(f"{path} holds NUL bytes: not a {what} definition")
+    return text
+
+
+def _field_problem(name: str, desc: tuple) -> str | None:
+    kind, detail = desc
+    if kind == BASE:
+        bound = detail[1]
+        return f"field `{name}`: a string bound must be positive, not {bound}" if bound < 0 else None
+    if kind == NAME:
+        return None
+    element, size = detail
+    if size < 0:
+        kind_name = "array size" if kind == ARRAY else "sequence bound"
+        return f"field `{name}`: the {kind_name} must not be negative, not {size}"
+    return _field_problem(name, element)
+
+
+def _constant_problem(name: str, base: str, value) -> str | None:
+    if base in INTEGER_RANGES:
+        low, high = INTEGER_RANGES[base]
+        if not low <= int(value) <= high:
+            return f"constant `{name}`: {value} is not a value of {base} ({low} to {high})"
+    return None
+
+
+def check_definitions(typename: str, store) -> None:
+    """Refuse (a usage error) a definition whose classes would not check: an unknown message type
+    used by a field, an integer constant out of its type's range, a negative array size or bound."""
+    try:
+        typenames = ros_messages.nested_types(typename, store)
+    except KeyError as problem:
+        raise UsageError(f"{typename} uses an {problem.args[0]} (give its definition too)") from None
+    for each in typenames:
+        problems = [_field_problem(name, desc) for name, desc in ros_messages.fields(each, store)]
+        problems += [_constant_problem(*const) for const in ros_messages.constants(each, store)]
+        found = [p for p in problems if p is not None]
+        if found:
+            raise UsageError(f"{each}: " + "; ".join(found))
+
+
+def check_output(output: str) -> None:
+    if os.path.exists(output) and not os.path.isdir(output):
+        raise UsageError(f"-o {output} names a file, not a folder: give a folder for the .e files")
+
+
 def _default(type_: str) -> str:
     if type_ in DEFAULTS:
         return DEFAULTS[type_]
@@ -269,11 +344,7 @@ def _command_srv(args, srvtype: str, distro: str) -> int:
     the `.srv` given with --file) and of the message types they use."""
     extra = ()
     if args.file:
-        try:
-            with open(args.file, encoding="utf-8") as source:
-                extra = ((srvtype, source.read()),)
-        except OSError as problem:
-            raise UsageError(f"cannot read {args.file}: {problem.strerror}") from None
+        extra = ((srvtype, read_definition(args.file, ".srv")),)
     elif srvtype not in ros_messages.SRV_DEFINITIONS:
         known = ", ".join(sorted(ros_messages.SRV_DEFINITIONS))
         raise UsageError(f"unknown ROS 2 service type `{srvtype}` (give its .srv with --file; known: {known})")
@@ -281,9 +352,36 @@ def _command_srv(args, srvtype: str, distro: str) -> int:
         store = ros_messages.service_store(distro, extra)
     except Exception as problem:  # rosbags' parser errors
         raise UsageError(f"{args.file}: not a valid .srv definition: {problem}") from None
+    for half in ("Request", "Response"):
+        check_definitions(f"{srvtype}_{half}", store)
     written = []
     for half in ("Request", "Response"):
         written += generate(f"{srvtype}_{half}", args.output, store, include_library=args.all)
+    for path in written:
+        print(path)
+    return 0
+
+
+def _command_action(args, actiontype: str, distro: str) -> int:
+    """`scoopc msg pkg/action/Name`: the classes of its goal, result and feedback (a known action of
+    the distribution, or the `.action` given with --file) and of the message types they use."""
+    extra = ()
+    if args.file:
+        try:
+            with open(args.file, encoding="utf-8") as source:
+                extra = ((actiontype, source.read()),)
+        except OSError as problem:
+            raise UsageError(f"cannot read {args.file}: {problem.strerror}") from None
+    elif distro not in ros_messages.ACTION_DEFINITIONS.get(actiontype, {}):
+        known = ", ".join(sorted(ros_messages.ACTION_DEFINITIONS))
+        raise UsageError(f"unknown ROS 2 action type `{actiontype}` (give its .action with --file; known: {known})")
+    try:
+        store = ros_messages.action_store(distro, extra)
+    except Exception as problem:  # rosbags' parser errors
+        raise UsageError(f"{args.file}: not a valid .action definition: {problem}") from None
+    written = []
+    for part in ("Goal", "Result", "Feedback"):
+        written += generate(f"{actiontype}_{part}", args.output, store, include_library=args.all)
     for path in written:
         print(path)
     return 0
@@ -302,21 +400,26 @@ def command_msg(args) -> int:
     if not typename:
         raise UsageError("`scoopc msg` needs a type name (pkg/msg/Name), or --file with --type")
     if re.fullmatch(r"\w+/srv/\w+", typename):
+        check_output(args.output)
         return _command_srv(args, typename, distro)
+    if re.fullmatch(r"\w+/action/\w+", typename):
+        check_output(args.output)
+        return _command_action(args, typename, distro)
     if not re.fullmatch(r"\w+/msg/\w+", typename):
-        raise UsageError(f"`{typename}` is not a ROS 2 message or service type name (pkg/msg/Name, pkg/srv/Name)")
+        raise UsageError(
+            f"`{typename}` is not a ROS 2 message, service or action type name (pkg/msg/Name, pkg/srv/Name, "
+            "pkg/action/Name)"
+        )
+    check_output(args.output)
     if args.file:
-        try:
-            with open(args.file, encoding="utf-8") as source:
-                text = source.read()
-        except OSError as problem:
-            raise UsageError(f"cannot read {args.file}: {problem.strerror}") from None
+        text = read_definition(args.file, ".msg")
         try:
             store = ros_messages.store_with({typename: text})
         except Exception as problem:  # rosbags' parser errors
             raise UsageError(f"{args.file}: not a valid .msg definition: {problem}") from None
     if not ros_messages.has_type(typename, store):
         raise UsageError(f"unknown ROS 2 message type `{typename}` (give its definition with --file)")
+    check_definitions(typename, store)
     written = generate(typename, args.output, store, include_library=args.all)
     for path in written:
         print(path)

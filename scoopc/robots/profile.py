@@ -3,8 +3,8 @@ DIFF_DRIVE_ROBOT.`make_from_profile` (topic names, the velocity command's type, 
 read and checked before the program starts. Input: a path; output: a `Profile`, or a
 `ProfileError` naming the file, line, column and the key's path (`topics.cmd_vel.qos.depth`).
 
-The schema is our own, a few lines per key, over PyYAML's node tree (which keeps each value's
-position); docs/ROBOTS.md shows the format."""
+The schema is written in scoopc/robots/yamlschema.py's small language (shared with world files), over
+PyYAML's node tree (which keeps each value's position); docs/ROBOTS.md shows the format."""
 
 from __future__ import annotations
 
@@ -12,7 +12,8 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import yaml
+from . import yamlschema
+from .yamlschema import Map, Number, SchemaError, Text
 
 #: the topics a profile may name, with the message types each may carry (the first is the default)
 TOPIC_TYPES = {
@@ -25,7 +26,7 @@ RELIABILITIES = ("reliable", "best_effort")
 _NAME = re.compile(r"^/?[A-Za-z_][A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*$")  # ROS 2 topic name rules
 
 
-class ProfileError(ValueError):
+class ProfileError(SchemaError):
     """A profile that cannot be used: `str()` is `file:line:col: key.path: what is wrong`."""
 
 
@@ -64,108 +65,46 @@ class Profile:
         return writers, readers
 
 
-class _Checker:
-    def __init__(self, path: str):
-        self.path = path
-
-    def fail(self, node, where: str, text: str):
-        mark = node.start_mark
-        raise ProfileError(f"{self.path}:{mark.line + 1}:{mark.column + 1}: {where}: {text}")
-
-    def mapping(self, node, where: str, allowed) -> dict:
-        """{key: (key node, value node)} of a mapping whose keys are among `allowed`."""
-        if not isinstance(node, yaml.MappingNode):
-            self.fail(node, where, "must be a mapping (key: value lines)")
-        found = {}
-        for key, value in node.value:
-            name = key.value if isinstance(key, yaml.ScalarNode) else None
-            here = f"{where}.{name}" if where else str(name)
-            if name not in allowed:
-                self.fail(key, here, f"unknown key (expected one of: {', '.join(allowed)})")
-            if name in found:
-                self.fail(key, here, "given twice")
-            found[name] = (key, value)
-        return found
-
-    def scalar(self, node, where: str):
-        if not isinstance(node, yaml.ScalarNode):
-            self.fail(node, where, "must be a single value")
-        return yaml.safe_load(yaml.serialize(node))
-
-    def positive_number(self, node, where: str) -> float:
-        value = self.scalar(node, where)
-        if isinstance(value, bool) or not isinstance(value, (int, float)) or not value > 0:
-            self.fail(node, where, f"must be a number greater than 0, not {node.value!r}")
-        return float(value)
-
-    def text(self, node, where: str, choices=None) -> str:
-        value = self.scalar(node, where)
-        if not isinstance(value, str) or not value:
-            self.fail(node, where, f"must be a text, not {node.value!r}")
-        if choices is not None and value not in choices:
-            self.fail(node, where, f"must be one of {', '.join(choices)}, not {value!r}")
-        return value
+def _topic_schema(types: tuple) -> Map:
+    keys = {
+        "name": Text(pattern=_NAME.pattern, pattern_says="not a ROS 2 topic name"),
+        "type": Text(choices=types),
+        "qos": Map({"reliability": Text(choices=RELIABILITIES), "depth": Number(low=1, high=10000, whole=True)}),
+    }
+    if len(types) == 1:
+        del keys["type"]
+    return Map(keys)
 
 
-def _topic(check: _Checker, key: str, node, where: str) -> TopicSpec:
-    types = TOPIC_TYPES[key]
-    allowed = ("name", "type", "qos") if len(types) > 1 else ("name", "qos")
-    entries = check.mapping(node, where, allowed)
-    spec = TopicSpec(key, types[0])
-    if "name" in entries:
-        spec.name = check.text(entries["name"][1], f"{where}.name")
-        if not _NAME.match(spec.name):
-            check.fail(entries["name"][1], f"{where}.name", f"not a ROS 2 topic name: {spec.name!r}")
-    if "type" in entries:
-        spec.type = check.text(entries["type"][1], f"{where}.type", types)
-    if "qos" in entries:
-        qos = check.mapping(entries["qos"][1], f"{where}.qos", ("reliability", "depth"))
-        if "reliability" in qos:
-            spec.reliability = check.text(qos["reliability"][1], f"{where}.qos.reliability", RELIABILITIES)
-        if "depth" in qos:
-            value_node = qos["depth"][1]
-            depth = check.scalar(value_node, f"{where}.qos.depth")
-            if isinstance(depth, bool) or not isinstance(depth, int) or not 1 <= depth <= 10000:
-                check.fail(value_node, f"{where}.qos.depth", f"must be a whole number from 1 to 10000, not {depth!r}")
-            spec.depth = depth
-    return spec
+SCHEMA = Map(
+    {
+        "name": Text(),
+        "limits": Map({"max_linear": Number(above=0.0), "max_angular": Number(above=0.0)}),
+        "topics": Map({key: _topic_schema(types) for key, types in TOPIC_TYPES.items()}),
+    },
+    description="A scoopc robot profile, robot.yaml (docs/ROBOTS.md)",
+)
 
 
 def parse(text: str, path: str) -> Profile:
     """The profile in `text` (read from `path`, which error messages name)."""
-    check = _Checker(path)
-    try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
-    except yaml.MarkedYAMLError as e:
-        mark = e.problem_mark or e.context_mark
-        where = f"{path}:{mark.line + 1}:{mark.column + 1}" if mark else path
-        raise ProfileError(f"{where}: not valid YAML: {e.problem or e.context}") from None
-    profile = Profile(path)
+    data = yamlschema.load(text, SCHEMA, yamlschema.Reader(path, ProfileError))
+    profile = Profile(path, name=data.get("name", ""))
+    limits = data.get("limits", {})
+    profile.max_linear, profile.max_angular = limits.get("max_linear"), limits.get("max_angular")
     profile.topics = {key: TopicSpec(key, types[0]) for key, types in TOPIC_TYPES.items()}
-    if root is None:
-        return profile
-    entries = check.mapping(root, "", ("name", "limits", "topics"))
-    if "name" in entries:
-        profile.name = check.text(entries["name"][1], "name")
-    if "limits" in entries:
-        limits = check.mapping(entries["limits"][1], "limits", ("max_linear", "max_angular"))
-        if "max_linear" in limits:
-            profile.max_linear = check.positive_number(limits["max_linear"][1], "limits.max_linear")
-        if "max_angular" in limits:
-            profile.max_angular = check.positive_number(limits["max_angular"][1], "limits.max_angular")
-    if "topics" in entries:
-        for key, (_, node) in check.mapping(entries["topics"][1], "topics", tuple(TOPIC_TYPES)).items():
-            profile.topics[key] = _topic(check, key, node, f"topics.{key}")
+    for key, given in data.get("topics", {}).items():
+        qos = given.get("qos", {})
+        spec = TopicSpec(given.get("name", key), given.get("type", TOPIC_TYPES[key][0]))
+        spec.reliability, spec.depth = qos.get("reliability"), qos.get("depth")
+        profile.topics[key] = spec
     return profile
 
 
 def load(path) -> Profile:
     """The profile in file `path` (ProfileError when it cannot be read or is not valid)."""
-    try:
-        text = Path(path).read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as e:
-        raise ProfileError(f"{path}: cannot read the robot profile: {e.strerror or e}") from None
-    return parse(text, str(path))
+    reader = yamlschema.Reader(str(path), ProfileError)
+    return parse(yamlschema.read_text(path, reader, "robot profile"), str(path))
 
 
 def find(program_paths, given=None) -> str | None:

@@ -235,6 +235,11 @@ def service_store(distro: str, extra: tuple = ()):
     """A type store of `distro` with every service type of SRV_DEFINITIONS (and `extra`, pairs of
     (srv type, definition)) registered as `<pkg>/srv/<Name>_Request` and `_Response`."""
     store = get_typestore(DISTROS[distro])
+    _register_services(store, extra)
+    return store
+
+
+def _register_services(store, extra: tuple = ()) -> None:
     found: dict = {}
     for srvtype, text in (*SRV_DEFINITIONS.items(), *extra):
         package, _, name = srvtype.split("/")
@@ -246,5 +251,96 @@ def service_store(distro: str, extra: tuple = ()):
                     for key, v in parsed.items()
                 }
             )
+    store.register(found)
+
+
+# ---- action types ----------------------------------------------------------------------------------
+
+_NAV2_GOAL = "geometry_msgs/PoseStamped pose\nstring behavior_tree\n"
+_NAV2_FEEDBACK = (
+    "geometry_msgs/PoseStamped current_pose\nbuiltin_interfaces/Duration navigation_time\n"
+    "builtin_interfaces/Duration estimated_time_remaining\nint16 number_of_recoveries\nfloat32 distance_remaining\n"
+)
+_NAV2_CODES = "uint16 NONE=0\n"
+#: `.action` definitions known to scoopc, per distribution (comments left out): nav2_msgs'
+#: NavigateToPose (ros-navigation/navigation2, branches humble and jazzy; Lyrical: main as of
+#: Lyrical's release, 2026-05-22, nav2 having no lyrical branch) and example_interfaces' Fibonacci
+ACTION_DEFINITIONS = {
+    "nav2_msgs/action/NavigateToPose": {
+        "humble": _NAV2_GOAL + "---\nstd_msgs/Empty result\n---\n" + _NAV2_FEEDBACK,
+        "jazzy": _NAV2_GOAL + "---\n" + _NAV2_CODES + "uint16 error_code\nstring error_msg\n---\n" + _NAV2_FEEDBACK,
+        "lyrical": _NAV2_GOAL
+        + "---\n"
+        + _NAV2_CODES
+        + "uint16 UNKNOWN=9000\nuint16 FAILED_TO_LOAD_BEHAVIOR_TREE=9001\nuint16 TF_ERROR=9002\nuint16 TIMEOUT=9003\n"
+        + "uint16 error_code\nstring error_msg\n---\n"
+        + _NAV2_FEEDBACK
+        + "float32 position_tracking_error\nfloat32 heading_tracking_error\n",
+    },
+    "example_interfaces/action/Fibonacci": dict.fromkeys(
+        DISTROS, "int32 order\n---\nint32[] sequence\n---\nint32[] sequence\n"
+    ),
+}
+#: the service action_msgs/srv/CancelGoal of every action (ros2/rcl_interfaces, action_msgs)
+CANCEL_GOAL = "action_msgs/srv/CancelGoal"
+SRV_DEFINITIONS[CANCEL_GOAL] = (
+    "GoalInfo goal_info\n---\nint8 ERROR_NONE=0\nint8 ERROR_REJECTED=1\nint8 ERROR_UNKNOWN_GOAL_ID=2\n"
+    "int8 ERROR_GOAL_TERMINATED=3\nint8 return_code\nGoalInfo[] goals_canceling\n"
+)
+
+
+def action_definition(actiontype: str, distro: str) -> str:
+    """The `.action` text of a known action type in `distro` (KeyError if unknown)."""
+    return ACTION_DEFINITIONS[actiontype][distro]
+
+
+def action_types(actiontype: str) -> dict[str, str]:
+    """The message types of an action and their roles, as rosidl derives them
+    (rosidl_parser/definition.py, class Action): goal, result, feedback, the send_goal and
+    get_result services' requests and responses, and the feedback message."""
+    return {
+        role: f"{actiontype}_{suffix}"
+        for role, suffix in (
+            ("goal", "Goal"),
+            ("result", "Result"),
+            ("feedback", "Feedback"),
+            ("send_goal_request", "SendGoal_Request"),
+            ("send_goal_response", "SendGoal_Response"),
+            ("get_result_request", "GetResult_Request"),
+            ("get_result_response", "GetResult_Response"),
+            ("feedback_message", "FeedbackMessage"),
+        )
+    }
+
+
+@cache
+def action_store(distro: str, extra: tuple = ()):
+    """A type store of `distro` with every service of SRV_DEFINITIONS and every action of
+    ACTION_DEFINITIONS (and `extra`, pairs of (action type, definition)): each action's goal,
+    result and feedback from its definition, and the types rosidl derives from them."""
+    store = get_typestore(DISTROS[distro])
+    _register_services(store)
+    uuid, time = (NAME, "unique_identifier_msgs/msg/UUID"), (NAME, "builtin_interfaces/msg/Time")
+    known = tuple((name, texts[distro]) for name, texts in ACTION_DEFINITIONS.items() if distro in texts)
+    found: dict = {}
+    for actiontype, text in (*known, *extra):
+        package, _, name = actiontype.split("/")
+        names = action_types(actiontype)
+        for role, part in zip(("goal", "result", "feedback"), split_srv(text)):
+            parsed = get_types_from_msg(part, f"{package}/msg/{name}_{role.capitalize()}")
+            found.update(
+                {
+                    key.replace("/msg/", "/action/", 1) if key.endswith(f"{name}_{role.capitalize()}") else key: v
+                    for key, v in parsed.items()
+                }
+            )
+        found[names["send_goal_request"]] = ([], [("goal_id", uuid), ("goal", (NAME, names["goal"]))])
+        found[names["send_goal_response"]] = ([], [("accepted", (BASE, ("bool", 0))), ("stamp", time)])
+        found[names["get_result_request"]] = ([], [("goal_id", uuid)])
+        found[names["get_result_response"]] = (
+            [],
+            [("status", (BASE, ("int8", 0))), ("result", (NAME, names["result"]))],
+        )
+        found[names["feedback_message"]] = ([], [("goal_id", uuid), ("feedback", (NAME, names["feedback"]))])
     store.register(found)
     return store

@@ -261,7 +261,8 @@ def _load(make, where):
     try:
         return make()
     except WorldError as e:
-        raise RobotError(f"{where}: {e}") from None
+        text = str(e)
+        raise RobotError(text if text.startswith(where) else f"{where}: {text}") from None
 
 
 def _prefix(namespace):

@@ -168,10 +168,12 @@ class _Endpoint:
 
 class ServiceServer(_Endpoint):
     """Answers `service` (absolute name) of type `srvtype` (`std_srvs/srv/Trigger`): `handler(request)`
-    returns the response message; it runs on the server's thread, one request at a time."""
+    returns the response message; it runs on the server's thread, one request at a time.
+    `deferred=True`: `handler(request, reply)` returns nothing and the response is sent by calling
+    `reply(response)`, then or later, from any thread (an action's get_result)."""
 
-    def __init__(self, bus, service: str, srvtype: str, handler, store=None):
-        self.handler = handler
+    def __init__(self, bus, service: str, srvtype: str, handler, store=None, deferred: bool = False):
+        self.handler, self.deferred = handler, deferred
         super().__init__(bus, service, srvtype, True, store)
 
     def new_response(self, **fields):
@@ -180,8 +182,16 @@ class ServiceServer(_Endpoint):
     def _received(self, data: bytes, info) -> None:
         guid, seq, body = parse_request(data)
         request = cdr.deserialize(body, self.request_type, self.store)
-        response = self.handler(request)
-        self._wait_for_client(info.publication_handle)
+        handle = info.publication_handle
+        if self.deferred:
+            self.handler(request, lambda response: self._reply(handle, guid, seq, response))
+        else:
+            self._reply(handle, guid, seq, self.handler(request))
+
+    def _reply(self, handle, guid: int, seq: int, response) -> None:
+        if self._closed:
+            return
+        self._wait_for_client(handle)
         self._write(guid, seq, response, self.response_type)
 
     def _wait_for_client(self, handle) -> None:
@@ -222,6 +232,7 @@ class ServiceClient(_Endpoint):
         self._lock = threading.Lock()
         self._seq = 0  # [_lock]
         self._replies: dict = {}  # [_lock] seq -> reply message, or None while waiting
+        self._later: dict = {}  # [_lock] seq -> callback of call_async
         self._arrived = threading.Condition(self._lock)
         super().__init__(bus, service, srvtype, False, store)
         self.guid = self.writer.get_instance_handle() & ((1 << 64) - 1)
@@ -240,6 +251,14 @@ class ServiceClient(_Endpoint):
                 return False
             time.sleep(0.005)
         return True
+
+    def call_async(self, request, callback) -> None:
+        """Send a request; `callback(reply)` runs on the client's thread when the reply comes."""
+        with self._lock:
+            self._seq += 1
+            seq = self._seq
+            self._later[seq] = callback
+        self._write(self.guid, seq, request, self.request_type)
 
     def call(self, request, timeout: float | None = 10.0):
         with self._lock:
@@ -262,6 +281,11 @@ class ServiceClient(_Endpoint):
         guid, seq, body = parse_request(data)
         if guid != self.guid:
             return  # another client's reply
+        with self._lock:
+            callback = self._later.pop(seq, None)
+        if callback is not None:
+            callback(cdr.deserialize(body, self.response_type, self.store))
+            return
         with self._arrived:
             if seq in self._replies:
                 self._replies[seq] = cdr.deserialize(body, self.response_type, self.store)

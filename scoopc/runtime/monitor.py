@@ -68,6 +68,18 @@ def _describe(blk: Block) -> str:
     return f"{blk.proc!r} in {where} sleeps"
 
 
+def _suspended(blk: Block) -> str:
+    """The other end of a cycle within one thread: a processor that waits for `blk`'s processor
+    while its thread runs that processor's calls (the client runs a supplier's pending calls
+    itself rather than hand them over), and that `blk` now waits for."""
+    on = blk.on
+    assert isinstance(on, Session), "a sync or turn Block is on a Session"
+    waiting = on.proc
+    top = _top_frame(waiting)
+    where = f" in {fmt_where(top)}" if top is not None else ""
+    return f"{waiting!r}{where} waits for {blk.proc!r}, whose calls its thread runs meanwhile"
+
+
 def snapshot(rt: Runtime) -> tuple[dict[Exec, Block], bool]:
     """(blocks, all_waiting, quiet_otherwise) read under glock."""
     with rt.glock:
@@ -92,7 +104,10 @@ def find_deadlock(rt: Runtime) -> tuple[frozenset[Block], list[str]] | None:
         if ex in path:
             cycle = path[path.index(ex) :]
             lines = ["deadlock: a cycle of synchronous calls"]
-            lines += ["  " + _describe(blocks[e]) for e in cycle]
+            for e in cycle:
+                lines.append("  " + _describe(blocks[e]))
+                if edges[e] is e:  # the supplier it waits for is suspended on this very thread
+                    lines.append("  " + _suspended(blocks[e]))
             return frozenset(blocks[e] for e in cycle), lines
     kinds = {blk.kind for blk in blocks.values()}
     if stuck and "wait" in kinds and "sleep" not in kinds:

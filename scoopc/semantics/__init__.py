@@ -11,7 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from .. import diagnostics
-from . import ancestors, body, flatten, roots, signatures, universe as universe_module
+from . import ancestors, body, contracts, flatten, roots, signatures, universe as universe_module
 from .tables import Tables
 
 VOID_LEVELS = {"none": 0, "conformance": 1, "initialization": 2, "transitional": 3, "complete": 3, "all": 3}
@@ -43,6 +43,7 @@ def prepare(trees, found: list, base=None, scoop: bool = True, visible=None):
         if not info.failed:
             signatures.check_redeclarations(universe, info, _reporter(universe, found, info))
             signatures.check_joins(universe, info, _reporter(universe, found, info))
+            signatures.check_constraint_creators(universe, info, _reporter(universe, found, info))
     return universe, order
 
 
@@ -72,6 +73,9 @@ def check(
         if info.failed or (info.from_library and not library_bodies):
             continue
         body.check_class(universe, info, tables, found, level)
+    for info in checked:  # after every class: an inherited precondition's calls are recorded
+        if not info.failed and not info.from_library:
+            contracts.check_inherited_preconditions(universe, info, tables, found)
     if root is not None:
         roots.check_root(universe, root[0], root[1], _reporter(universe, found, None))
     unique = list({(d.code, d.span, d.message): d for d in found}.values())

@@ -92,7 +92,7 @@ class AgentChecks:
             declare_routine_entities(self, node.arguments, node.body.locals, arguments, self.resolve_type)
             self.result_type = result
             self.result_context = "an inline agent without a result type"
-            self.check_routine_body(node.body, result, node.span)
+            self.check_routine_body(node.body, result)
         finally:
             self.leave_nested(saved)
         if node.actuals is not None:

@@ -10,9 +10,10 @@ from __future__ import annotations
 from contextlib import contextmanager
 
 from .. import diagnostics, syntax
-from . import contracts, onces, scoop, walk
+from . import contracts, initialization, onces, scoop
 from .agents import AgentChecks
 from .calls import CallChecks
+from .conformance import manifest_fits
 from .creation import CreationChecks
 from .expressions import ExpressionChecks
 from .features import member_signature
@@ -20,7 +21,8 @@ from .flow import UNREACHABLE, Facts
 from .instructions import InstructionChecks
 from .resolve import Scopes, clashes, declare_routine_entities
 from .typeresolve import TypeResolver
-from .values import Value, meet
+from .types import RANGES
+from .values import Value, manifest_kind, meet
 
 
 class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, InstructionChecks):
@@ -166,9 +168,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.result_type = own.result
         self.result_context = "a procedure" if not feature.is_query else "this feature"
         if isinstance(decl, syntax.Constant):
-            value = self.expr(decl.value, own.result)
-            if value is not None and own.result is not None:
-                self.expect(decl.value, value, own.result, "VJAR")
+            self.check_constant(decl, own.result)
             return
         body = decl.body
         if body is None:
@@ -176,9 +176,22 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         locals_ = body.locals
         declare_routine_entities(self, feature.arguments, locals_, own.arguments, self.resolve_type)
         onces.check_once(self, feature, own.result)
-        self.check_routine_body(body, own.result, feature.fname.name.span)
+        self.check_routine_body(body, own.result)
 
-    def check_routine_body(self, body, result, name_span) -> None:
+    def check_constant(self, decl, ty) -> None:
+        value = self.expr(decl.value, ty)
+        if value is None or ty is None:
+            return
+        kind = manifest_kind(decl.value)
+        integer = kind is not None and kind[0] == "integer" and ty.name in RANGES
+        if integer and not manifest_fits("integer", kind[1], ty):
+            # EiffelStudio: an integer constant outside its type's range is VQMC(3), not a VJAR
+            low, high = RANGES[ty.name]
+            self.report("VQMC(3)", decl.value.span, value=kind[1], type=str(ty), low=low, high=high)
+            return
+        self.expect(decl.value, value, ty, "VJAR")
+
+    def check_routine_body(self, body, result) -> None:
         saved = (self.result_type, self.result_context)
         self.result_type, self.result_context = None, "a precondition (it is evaluated before the body)"
         contracts.check_precondition(self, body.precondition)
@@ -195,7 +208,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             ):
                 self.report(
                     "VEVI",
-                    name_span,
+                    initialization.end_keyword(body.span),
                     name="Result",
                     where="is not given a value on every path to the end of the routine",
                 )
@@ -207,28 +220,12 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
             self.instructions(body.rescue)
             self.in_rescue = False
 
-    def _creating(self) -> bool:
-        """Is the routine being checked a creation procedure of this class, written in it? Its
-        attached attributes are then unset at its start (VEVI at a read before they are set)."""
-        feature, creators = self.feature, self.info.creators
-        if (
-            feature is None
-            or self.in_agent
-            or feature.written_in != self.info.name
-            or self.info.is_deferred
-            or self.info.is_expanded
-        ):
-            return False
-        return feature.name in creators if creators is not None else feature.name == "default_create"
-
     def _unset_at_start(self, locals_, result) -> frozenset:
         names = set()
         for decl in locals_:
             entity = self.scopes.lookup(decl.name.key)
             if entity is not None and entity.kind == "local" and self._needs_value(entity.ty):
                 names.add(entity.name)
-        if self.void_level >= 2 and self._creating():
-            names.update(_required_attributes(self.universe, self.info))
         if result is not None and self._needs_value(result):
             names.add("result")
         return frozenset(names)
@@ -273,85 +270,4 @@ def check_class(universe, info, tables, found, void_level: int) -> None:
         if feature.written_in == info.name:
             checker.check_feature(feature)
     checker.check_invariant()
-    if void_level >= 2:
-        check_attribute_initialization(universe, info, found)
-
-
-def check_attribute_initialization(universe, info, found) -> None:
-    """VEVI: every attached reference attribute is set by each creation procedure (directly or by
-    routines of the class it calls), unless it has an `attribute` body that initialises it. A
-    routine written in another class (an inherited creation procedure, a Precursor) is trusted to
-    set that class's attributes: the class itself is checked for them."""
-    if info.is_deferred or info.is_expanded or info.from_library:
-        return
-    required = _required_attributes(universe, info)
-    if not required:
-        return
-    creators = info.creators if info.creators is not None else {"default_create": None}
-    for name in creators:
-        feature = info.features.get(name)
-        if feature is None:
-            continue
-        missing = sorted(required - _set_by(universe, info, feature, set()))
-        if missing:
-            span = _creator_span(info, name)
-            found.append(
-                diagnostics.make(
-                    "VEVI",
-                    span,
-                    name=", ".join(missing),
-                    where=f"{'is' if len(missing) == 1 else 'are'} not set by the creation procedure `{name}`",
-                )
-            )
-
-
-def _required_attributes(universe, info) -> set:
-    names = set()
-    for feature in info.features.values():
-        if feature.kind != "attribute" or feature.decl.body is not None:
-            continue
-        result = feature.signature.result if feature.signature is not None else None
-        if result is not None and result.attached and not result.is_formal and not scoop.is_expanded(universe, result):
-            names.add(feature.name)
-    return names
-
-
-def _set_by(universe, info, feature, visiting: set) -> set:
-    if (feature.written_in, feature.name) in visiting or not feature.is_routine:
-        return set()
-    visiting.add((feature.written_in, feature.name))
-    if feature.written_in != info.name:
-        owner = universe.get(feature.written_in)
-        return {n for n, f in owner.features.items() if f.kind == "attribute"} if owner is not None else set()
-    names = set()
-    body = feature.decl.body.body
-    if not isinstance(body, syntax.InternalBody):
-        return names
-
-    def visit(node):
-        if isinstance(node, (syntax.Assignment, syntax.CreationInstruction)) and isinstance(
-            node.target, syntax.UnqualifiedCall
-        ):
-            names.add(node.target.name.key)
-        if isinstance(node, (syntax.UnqualifiedCall, syntax.Precursor)):
-            callee = (
-                info.features.get(node.name.key)
-                if isinstance(node, syntax.UnqualifiedCall)
-                else next((p for _, p in feature.precursors), None)
-            )
-            if callee is not None and callee.is_routine:
-                names.update(_set_by(universe, info, callee, visiting))
-        for child in walk.children(node):
-            visit(child)
-
-    for instruction in body.instructions:
-        visit(instruction)
-    return names
-
-
-def _creator_span(info, name: str):
-    for clause in info.decl.creation_clauses:
-        for ident in clause.procedures:
-            if ident.key == name:
-                return ident.span
-    return info.decl.name.span
+    initialization.check_creation_procedures(universe, info, found, void_level)

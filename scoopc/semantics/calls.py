@@ -5,8 +5,7 @@ VDPR(1), VDPR(2), and the SCOOP rules through scoop.py. Records the feature of e
 
 from __future__ import annotations
 
-from dataclasses import replace
-
+from .. import syntax
 from . import scoop, suggest, walk
 from .conformance import base_type
 from .features import member_signature
@@ -29,8 +28,6 @@ class CallChecks:
         feature = self.info.features.get(name)
         if feature is not None and self.in_precondition:
             self.precondition_export(feature, node.name.span)
-        if feature is not None and self.facts and self.facts.unset:
-            self.attribute_use(node, feature)
         if feature is not None and node.arguments and not feature.arguments and feature.is_query:
             value = self.call_feature(node, None, Value(self.current), feature, (), node.name.span)
             return None if value is None else self.agent_call(node, value, as_instruction)
@@ -47,9 +44,18 @@ class CallChecks:
         return value
 
     def agent_call(self, node, agent: Value, as_instruction: bool) -> Value | None:
-        """`f (a, b)` where f is an agent: its "()" feature applied to the tuple [a, b]."""
+        """`f (a, b)` where f is an agent: its "()" feature applied to the tuple [a, b]; where f is
+        of another class, its "()" alias called with a and b (EiffelStudio's
+        `look_for_parenthesis_alias`)."""
         base = base_type(self.universe, agent.ty, self.info)
         info = self.universe.get(base.name)
+        if info is not None and not _is_agent_class(info):
+            inner = syntax.UnqualifiedCall(node.name, (), node.name.span)
+            for table in (self.tables.features, self.tables.entities):
+                if node in table:
+                    table[inner] = table.pop(node)
+            self.tables.types[inner] = agent.ty
+            return self.parenthesis_call(node, inner, agent, node.arguments, as_instruction)
         feature = next(iter(info.aliases.get("()", ())), None) if info is not None else None
         if feature is None:
             self.report("VWOE", node.span, operator="()", type=str(agent.ty))
@@ -74,6 +80,24 @@ class CallChecks:
             return None
         return Value(NONE)
 
+    def parenthesis_call(self, node, inner, target: Value, arguments, as_instruction: bool) -> Value | None:
+        """`x (a)` as `x.f (a)` where `f` has the alias "()" in the class of `x`: checked as that
+        call, which the code generator compiles in place of `node`."""
+        base = base_type(self.universe, target.ty, self.info)
+        info = self.universe.get(base.name)
+        feature = next(iter(info.aliases.get("()", ())), None) if info is not None else None
+        if feature is None:
+            self.report("VUAR(1)", node.span, expected=0, given=len(arguments))
+            self.evaluate(arguments)
+            return None
+        name = syntax.Identifier(feature.text, feature.name, node.span)
+        outer = syntax.QualifiedCall(inner, name, arguments, node.span)
+        self.tables.rewrites[node] = outer
+        value = self.call_on(outer, inner, target, name, arguments, as_instruction)
+        if value is not None:
+            self.tables.types[outer] = value.ty
+        return value
+
     def entity_value(self, node, entity) -> Value | None:
         if entity.ty is None:
             return None
@@ -90,6 +114,7 @@ class CallChecks:
 
     def call_on(self, node, target_node, target: Value, name, arguments, as_instruction=False) -> Value | None:
         ty = target.ty
+        scoop.foreign_use(self, target, "is the target of a non-separate call here")
         if ty.is_none or (not ty.attached and self.void_level >= 3 and not scoop.is_expanded(self.universe, ty)):
             self.report("VUTA(2)", target_node.span, target=walk.describe(target_node), type=str(ty))
             if ty.is_none:
@@ -118,6 +143,14 @@ class CallChecks:
             self.evaluate(arguments)
             return None
         current = ty.with_marks(attached=True) if ty.is_formal else None  # `like Current` is G, not its constraint
+        if arguments and feature.is_query and not feature.arguments and not _returns_agent(self, base, feature):
+            inner = syntax.QualifiedCall(target_node, name, (), name.span)
+            value = self.call_feature(inner, target_node, Value(base, target.handler), feature, (), name.span)
+            if value is None:
+                self.evaluate(arguments)
+                return None
+            self.tables.types[inner] = value.ty
+            return self.parenthesis_call(node, inner, value, arguments, as_instruction)
         return self.call_feature(
             node,
             target_node,
@@ -164,6 +197,8 @@ class CallChecks:
         """Arguments, exports and result of a call of `feature` on `target` (target_node None:
         the call is on Current, unqualified)."""
         self.tables.features[node] = feature
+        if self.in_precondition and target_node is not None:
+            self.precondition_export(feature, name_span)
         signature = member_signature(self.universe, target.ty, feature, current)
         separate = target.ty.separate and target_node is not None
         if separate:
@@ -248,6 +283,8 @@ class CallChecks:
         assignment writes (its kind shapes the hint)."""
         reason = self.meets(node, value, target)
         if reason is None:
+            if value.foreign is not None and not target.separate and not scoop.is_expanded(self.universe, target):
+                scoop.foreign_use(self, value, f"is attached to an entity of non-separate type {target}")
             return True
         if reason == "separate":
             scoop.separate_mismatch(self, code, node, value.ty, target, written)
@@ -269,34 +306,17 @@ class CallChecks:
             )
         return False
 
-    def attribute_use(self, node, feature) -> None:
-        """VEVI in a creation procedure: an attached attribute read before the procedure sets it
-        (reported at the read); a routine it calls sets the attributes that routine assigns."""
-        from .body import _set_by  # deferred: a cycle (scoopc.semantics.body imports this module)
-
-        if feature.kind == "attribute":
-            self.use_entity(node.name, feature.name)
-        elif feature.is_routine:
-            done = _set_by(self.universe, self.info, feature, set())
-            if done & self.facts.unset:
-                self.facts = replace(self.facts, unset=self.facts.unset - done)
-
     def precondition_export(self, feature, span) -> None:
         """VAPE (ECMA-367's Precondition Export rule): a feature called unqualified in the
         precondition of the routine being checked is available to every class the routine is
         available to (a client must be able to test the precondition it has to meet)."""
         routine = self.feature
-        if routine is None or self.in_agent or feature.exports is None:
+        if routine is None or self.in_agent:
             return
-        clients = routine.exports if routine.exports is not None else frozenset({"ANY"})
-        for client in sorted(clients):
-            info = self.universe.get(client)
-            if client == "NONE" or info is None:
-                continue
-            if not any(name == client or name in info.ancestors for name in feature.exports):
-                listed = ", ".join(sorted(feature.exports)) or "NONE"
-                self.report("VAPE", span, name=feature.text, routine=routine.text, client=client, exports=listed)
-                return
+        client = export_gap(self.universe, routine, feature)
+        if client is not None:
+            listed = ", ".join(sorted(feature.exports)) or "NONE"
+            self.report("VAPE", span, name=feature.text, routine=routine.text, client=client, exports=listed)
 
     def available(self, feature) -> bool:
         if feature.exports is None:
@@ -358,8 +378,6 @@ class CallChecks:
             self.report("VDPR(1)", node.span, name=self.feature.text if self.feature else "?")
             self.evaluate(node.arguments)
             return None
-        if self.facts and self.facts.unset:
-            self.attribute_use(node, effective[0][1])
         return self.call_feature(
             node, None, Value(self.current), effective[0][1], node.arguments, node.span, as_instruction
         )
@@ -370,6 +388,35 @@ class CallChecks:
 
 
 AGENT_CLASSES = ("ROUTINE", "PROCEDURE", "FUNCTION", "PREDICATE")
+
+
+def export_gap(universe, routine, feature) -> str | None:
+    """A client `routine` is available to and `feature` is not (ECMA-367's Precondition Export
+    rule, EiffelStudio's `export_status.is_subset`), or None."""
+    if feature.exports is None:
+        return None
+    clients = routine.exports if routine.exports is not None else frozenset({"ANY"})
+    for client in sorted(clients):
+        info = universe.get(client)
+        if client == "NONE" or info is None:
+            continue
+        if not any(name == client or name in info.ancestors for name in feature.exports):
+            return client
+    return None
+
+
+def _is_agent_class(info) -> bool:
+    return info.name in AGENT_CLASSES or any(name in info.ancestors for name in AGENT_CLASSES)
+
+
+def _returns_agent(ctx, base, feature) -> bool:
+    """Is the result of `feature` (a query without arguments) an agent? `x.f (a)` is then left to
+    the agent rules."""
+    result = member_signature(ctx.universe, base, feature).result
+    if result is None:
+        return True
+    info = ctx.universe.get(base_type(ctx.universe, result, ctx.info).name)
+    return info is None or _is_agent_class(info)
 
 
 def _no_operands(formal) -> bool:

@@ -5,7 +5,9 @@ postconditions (where `old` is allowed), class invariants (no `Result`). Every c
 
 from __future__ import annotations
 
-from . import scoop
+from .. import diagnostics, syntax
+from . import scoop, walk
+from .calls import export_gap
 
 
 def assertions(ctx, clauses):
@@ -53,3 +55,49 @@ def check_invariant(ctx, clauses) -> None:
     for clause in clauses:
         if clause.expression is not None:
             ctx.boolean(clause.expression)
+
+
+def check_inherited_preconditions(universe, info, tables, found: list) -> None:
+    """VAPE in the preconditions a redeclared routine inherits: each feature they call must be
+    available to every client of the redeclared version (EiffelStudio checks them in the heir,
+    `process_inherited_assertions`). Reported where the inherited precondition calls it."""
+    for feature in info.features.values():
+        if feature.written_in != info.name or not feature.precursors:
+            continue
+        by_seed = {s: f for f in info.features.values() for s in f.seeds()}
+        for version in _versions(feature):
+            body = version.body
+            owner = universe.get(version.written_in)
+            if body is None or body.precondition is None or owner is None or owner.from_library:
+                continue
+            for clause in body.precondition.clauses:
+                _check_clause(universe, feature, clause.expression, tables, by_seed, found)
+
+
+def _versions(feature):
+    pending, seen = [p for _, p in feature.precursors], []
+    while pending:
+        version = pending.pop()
+        if all(version is not s for s in seen):
+            seen.append(version)
+            pending.extend(p for _, p in version.precursors)
+    return seen
+
+
+def _check_clause(universe, routine, node, tables, by_seed, found) -> None:
+    if node is None or isinstance(node, (syntax.CreationExpression, syntax.InlineAgent)):
+        return
+    called = tables.features.get(node)
+    if called is not None and isinstance(node, (syntax.UnqualifiedCall, syntax.QualifiedCall)):
+        if isinstance(node, syntax.UnqualifiedCall):
+            called = by_seed.get(called.seed, called)  # the heir's version, with the heir's exports
+        client = export_gap(universe, routine, called)
+        if client is not None:
+            listed = ", ".join(sorted(called.exports)) or "NONE"
+            found.append(
+                diagnostics.make(
+                    "VAPE", node.name.span, name=called.text, routine=routine.text, client=client, exports=listed
+                )
+            )
+    for child in walk.children(node):
+        _check_clause(universe, routine, child, tables, by_seed, found)

@@ -65,4 +65,11 @@ class CreationChecks:
                 cls=self.info.formals[ty.formal],
                 procedures=", ".join(allowed) or "none",
             )
+        elif procedure is not None:
+            # the constraint's procedure (through its renaming): what runs, and its arguments
+            base, feature = self._find_feature(ty, procedure)
+            if feature is not None:
+                self.tables.features[node] = feature
+                self.actuals(node, arguments, member_signature(self.universe, base, feature).arguments, None)
+                return
         self.evaluate(arguments)

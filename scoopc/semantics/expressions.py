@@ -11,7 +11,7 @@ from .. import syntax
 from . import scoop, walk
 from .conformance import conforms, manifest_fits
 from .tables import Entity
-from .types import BOOLEAN, CHARACTER, INTEGER, NONE, POINTER, REAL_64, STRING, Ty
+from .types import BOOLEAN, CHARACTER, INTEGER, NONE, POINTER, RANGES, REAL_64, STRING, Ty
 from .values import UNCONTROLLED, Value
 
 BOOLEAN_OPERATORS = ("and then", "or else", "implies")
@@ -38,7 +38,11 @@ class ExpressionChecks:
 
     # --- constants -----------------------------------------------------------------------
     def e_ManifestInteger(self, node, expected=None):
-        return Value(INTEGER)
+        # EiffelStudio types a literal INTEGER_32 when it fits, else INTEGER_64, else NATURAL_64
+        for name in ("INTEGER_32", "INTEGER_64", "NATURAL_64"):
+            if node.value <= RANGES[name][1]:
+                return Value(INTEGER if name == "INTEGER_32" else Ty(name))
+        return Value(INTEGER)  # beyond every type: the parser reported it
 
     def e_ManifestReal(self, node, expected=None):
         return Value(REAL_64)
@@ -196,6 +200,8 @@ class ExpressionChecks:
         operand = self.expr(node.operand)
         if operand is None:
             return None
+        if node.operator == "-" and isinstance(node.operand, syntax.ManifestInteger) and node.operand.value == 2**63:
+            operand = Value(Ty("INTEGER_64"))  # -9223372036854775808: INTEGER_64's minimum, not a NATURAL_64 negated
         return self.operator_call(node, node.operand, operand, node.operator, [], node.span)
 
     def operator_call(self, node, target_node, target: Value, op: str, arguments, where) -> Value | None:

@@ -39,6 +39,7 @@ def flatten(universe, info, report) -> None:
                 table[name] = chosen
     table.update(own)
     _check_alias_clashes(own, table, report)
+    _check_inherited_alias_clashes(info, own, table, report)
     _check_selection(info, table, report)
     info.features = table
     info.aliases = _aliases(table)
@@ -307,6 +308,34 @@ def _check_alias_clashes(own: dict, table: dict, report) -> None:
                     + (" with as many arguments" if code == "VFAV(1)" else ""),
                 )
                 break
+
+
+def _check_inherited_alias_clashes(info, own: dict, table: dict, report) -> None:
+    """Two features the class inherits under different names with one alias (and, for an
+    operator, one number of arguments): VFAV(1), (2) or (3) in the heir, as EiffelStudio's
+    INHERIT_TABLE.check_alias_name_conflict reports it while it builds the heir's feature table
+    (a rename or an undefinition in the inherit clause resolves it). Reported at the class name."""
+    seen: dict = {}
+    for feature in table.values():
+        if feature.name in own:
+            continue
+        for alias in feature.aliases:
+            name = alias.lower()
+            code = {"[]": "VFAV(2)", "()": "VFAV(3)"}.get(name, "VFAV(1)")
+            if code == "VFAV(1)" and not feature.is_query:
+                continue  # VFAV(1) of the parent's own text
+            key = (name, len(feature.arguments) if code == "VFAV(1)" else None)
+            other = seen.setdefault(key, feature)
+            if other is not feature and other.name != feature.name:
+                report(
+                    code,
+                    info.decl.name.span,
+                    name=feature.text,
+                    operator=alias,
+                    problem=f"the inherited `{other.text}` has this alias too"
+                    + (" with as many arguments" if code == "VFAV(1)" else "")
+                    + "; rename one of them in the inherit clause",
+                )
 
 
 def _check_creators(info, report) -> None:

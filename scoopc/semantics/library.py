@@ -31,6 +31,11 @@ def cache_dir() -> Path:
     return Path(base) / "scoopc"
 
 
+def library_key() -> str:
+    """The key of the current library's declarations cache (`stdlib-<key>.pickle`)."""
+    return _key(stdlib_files())
+
+
 def _key(files: list[Path]) -> str:
     digest = hashlib.sha256(f"{__version__}:{CACHE_FORMAT}".encode())
     for path in files:

@@ -172,17 +172,26 @@ def adapt_result(ctx, call_node, result: Ty, target: Value) -> Value:
         return Value(result, UNCONTROLLED)
     if result.is_formal and _formal_mark(ctx.info, result.formal) != "reference":
         # EiffelStudio does not make an unmarked formal generic result separate (G may be
-        # expanded); partree relies on it. We follow and warn (docs/LANGUAGE.md).
-        ctx.warn(
-            "FORMAL-TRAITOR",
-            call_node.span,
-            what="this result",
-            formal=str(result),
-            how="comes from a call on a separate target and is used as non-separate",
-            risk="this processor would hold a non-separate reference to an object of another one",
-        )
-        return Value(result)
+        # expanded); partree relies on it. We follow, and warn where the value is then used as
+        # non-separate (`foreign_use`, docs/LANGUAGE.md).
+        return Value(result, None, call_node) if _formal_mark(ctx.info, result.formal) != "expanded" else Value(result)
     return Value(result.with_marks(separate=True), target.handler)
+
+
+def foreign_use(ctx, value: Value, how: str) -> None:
+    """FORMAL-TRAITOR where a `G` result of a separate call is used as non-separate: attached to
+    a non-separate entity or argument, or the target of a call (if an actual generic for G is a
+    reference type, that is a reference to another processor's object)."""
+    if value.foreign is None:
+        return
+    ctx.warn(
+        "FORMAL-TRAITOR",
+        value.foreign.span,
+        what="this result",
+        formal=str(value.ty),
+        how=f"comes from a call on a separate target and {how}",
+        risk="this processor would use a non-separate reference to an object of another one",
+    )
 
 
 def check_separate_argument(ctx, argument: syntax.SeparateArgument, value: Value | None, clashes: bool) -> bool:
@@ -229,7 +238,9 @@ def wait_arguments(ctx, clause: syntax.AssertionClause) -> tuple[str, ...]:
     makes the clause a wait condition when one of them was newly reserved by the call."""
     names: set[str] = set()
     separate_formals = {
-        e.name for e in ctx.scopes.frames[0].values() if e.kind == "argument" and e.ty is not None and e.ty.separate
+        e.name
+        for e in ctx.scopes.frames[0].values()
+        if e.kind == "argument" and e.ty is not None and (e.ty.separate or separate_by_constraint(ctx, e.ty))
     }
 
     def visit(node):

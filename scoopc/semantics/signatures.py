@@ -9,7 +9,7 @@ from __future__ import annotations
 from .. import syntax
 from .conformance import conforms
 from .features import CURRENT, Feature, Signature, member_signature
-from .typeresolve import TypeResolver
+from .typeresolve import TypeResolver, constraint_old_name
 from .types import Ty
 
 
@@ -141,3 +141,29 @@ def _same(universe, info, a: Signature, b: Signature) -> bool:
         (x is None) == (y is None) and (x is None or (_loose(universe, x, y, info) and _loose(universe, y, x, info)))
         for x, y in pairs
     )
+
+
+def check_constraint_creators(universe, info, report) -> None:
+    """VTGC(3) (ECMA-367-2's Generic Constraint rule, condition 3, as EiffelStudio numbers it):
+    each name in a formal's creation constraint (`G -> A create make end`) is the final name, after
+    the constraint's renaming, of a feature of exactly one of its constraining types."""
+    for index, formal in enumerate(info.decl.formal_generics):
+        bounds = info.constraints[index] if index < len(info.constraints) else ()
+        if not formal.creators or not bounds or any(b.is_formal for b in bounds):
+            continue  # a constraint that is another formal: its own constraint decides
+        renames = info.constraint_renames[index] if index < len(info.constraint_renames) else {}
+        for name in formal.creators:
+            having = [b for b in bounds if _constraint_has(universe, b, renames.get(b.name, {}), name.key)]
+            if len(having) != 1:
+                listed = ", ".join(str(b) for b in (having or bounds))
+                how = f"a feature of several of its constraints ({listed})" if having else f"not a feature of {listed}"
+                report("VTGC(3)", name.span, name=name.text, formal=formal.name.text, how=how)
+
+
+def _constraint_has(universe, bound: Ty, renames: dict, key: str) -> bool:
+    """Has the constraint type `bound` a feature named `key` once its renaming is applied?"""
+    info = universe.get(bound.name)
+    if info is None:
+        return True  # an unknown class is reported elsewhere
+    old = constraint_old_name(renames, key)
+    return old is not None and old in info.features

@@ -137,7 +137,20 @@ class TypeResolver:
         if info is None or info.is_expanded or not info.features:
             return []
         creators = info.creators if info.creators is not None else {"default_create": None}
-        return [name for name in wanted if name not in creators]
+        bounds = target.constraints[index] if index < len(target.constraints) else ()
+        renames = target.constraint_renames[index] if index < len(target.constraint_renames) else {}
+        missing = []
+        for name in wanted:
+            # the actual provides the constraint's own name of the procedure (before renaming);
+            # a name no constraint has is the generic class's VTGC(3), not this actual's fault
+            olds = {constraint_old_name(renames.get(b.name, {}), name) for b in bounds if not b.is_formal}
+            known = {o for o in olds if o is not None and self._has(bounds, o)}
+            if known and not known & set(creators):
+                missing.append(name)
+        return missing
+
+    def _has(self, bounds, name: str) -> bool:
+        return any((i := self.universe.get(b.name)) is not None and name in i.features for b in bounds)
 
     def _tuple_type(self, node: syntax.TupleType) -> Ty | None:
         generics = tuple(self.resolve(g) for g in node.generics)
@@ -230,3 +243,8 @@ def _anchor_text(anchor) -> str:
     if isinstance(anchor, syntax.StaticCall):
         return f"{{...}}.{anchor.name.text}"
     return "?"
+
+
+def constraint_old_name(renames: dict, key: str):
+    """The constraint class's own name of `key` under a constraint's `rename` clause."""
+    return renames.get(key, None if key in renames.values() else key)

@@ -16,6 +16,7 @@ UNCONTROLLED = "?"
 class Value(NamedTuple):
     ty: Ty
     handler: str | None = None  # None: not separate; a name: controlled through it; "?": not controlled
+    foreign: object = None  # a `G` result of a separate call (its call node): a traitor if used as non-separate
 
     @property
     def controlled(self) -> bool:

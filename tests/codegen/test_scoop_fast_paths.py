@@ -134,13 +134,13 @@ def program(tmp_path_factory):
 
 def routine(text: str, name: str) -> str:
     """The source of one generated method, with its decorators."""
-    match = re.search(rf"((?:    @[\w.]+\n)*)    def {name}\(.*?(?=\n    (?:@|def |\w+ = )|\nS\.register)", text, re.S)
+    match = re.search(rf"((?:    @[\w.]+\n)*)    def {name}\(.*?(?=\n    (?:@|def |\w+ = )|\n_S\.register)", text, re.S)
     assert match, f"no routine {name}"
     return match.group(0)
 
 
 def is_leaf(text: str, name: str) -> bool:
-    return "@rt.leaf" in routine(text, name).split("def ")[0]
+    return "@_rt.leaf" in routine(text, name).split("def ")[0]
 
 
 def test_the_program_still_does_what_it_says(program):
@@ -171,53 +171,53 @@ def test_short_library_routines_count_as_leaves_but_are_never_decorated(program)
     assert "with here.reserve" not in routine(box, "keep")
     base = Path(program[0].library) / "eiffel_base"
     assert (base / "_scoop_facts.json").exists()
-    assert not any("@rt.leaf" in p.read_text() for p in base.glob("*.py"))
+    assert not any("@_rt.leaf" in p.read_text() for p in base.glob("*.py"))
 
 
 def test_one_separate_command_is_command1_statically_bound(program):
     text = program[1]["fast.py"]
-    assert "here.command1(c, COUNTER.increment, (), W_" in routine(text, "inc")
+    assert "here.command1(c, _M_counter.COUNTER.increment, (), _W_" in routine(text, "inc")
 
 
 def test_leaf_calls_and_queries_inside_a_reservation(program):
     text = program[1]["fast.py"]
     body = routine(text, "add_twice")
-    assert "with here.reserve1(c, W_" in body
-    assert "here.leaf_call(c, COUNTER.add, (n,))" in body
-    assert "here.leaf_call(c, COUNTER.add_square, (n,))" in body
+    assert "with here.reserve1(c, _W_" in body
+    assert "here.leaf_call(c, _M_counter.COUNTER.add, (n,))" in body
+    assert "here.leaf_call(c, _M_counter.COUNTER.add_square, (n,))" in body
     show = routine(text, "show")
-    assert "here.leaf_query(c, G_" in show  # an attribute: a getter
-    assert "here.query(c, COUNTER.factorial, (4,)" in show  # not a leaf: the general query
+    assert "here.leaf_query(c, _G_" in show  # an attribute: a getter
+    assert "here.query(c, _M_counter.COUNTER.factorial, (4,)" in show  # not a leaf: the general query
 
 
 def test_a_precondition_is_a_clause_table_not_command1(program):
     text = program[1]["fast.py"]
-    assert "with here.reserve1(c, W_" in routine(text, "guarded") and "PRE_" in routine(text, "guarded")
-    assert re.search(r"PRE_\d+ = \(\(lambda here, self, c: here\.leaf_query\(c, G_\d+, \(\), W_\d+\) > 0", text)
+    assert "with here.reserve1(c, _W_" in routine(text, "guarded") and "_PRE_" in routine(text, "guarded")
+    assert re.search(r"_PRE_\d+ = \(\(lambda here, self, c: here\.leaf_query\(c, _G_\d+, \(\), _W_\d+\) > 0", text)
 
 
 def test_a_reference_argument_takes_the_general_call(program):
     body = routine(program[1]["fast.py"], "give")
-    assert "here.call(c, COUNTER.register, (" in body and "command1" not in body
+    assert "here.call(c, _M_counter.COUNTER.register, (" in body and "command1" not in body
 
 
 def test_several_versions_are_bound_at_run_time(program):
     body = routine(program[1]["fast.py"], "step_it")
-    assert "here.command1(b_, S.routine_of(b_, 'step'), (), W_" in body and "BASE_ITEM.step" not in body
+    assert "here.command1(b_, _S.routine_of(b_, 'step'), (), _W_" in body and "BASE_ITEM.step" not in body
 
 
 def test_several_separate_arguments_reserve_together(program):
     body = routine(program[1]["fast.py"], "fill")
-    assert "here.reserve((box, c), where=W_" in body
-    assert "here.leaf_call(box, BOX.put, (7,))" in body
-    assert "here.call(box, BOX.keep, (c,))" in body  # c may pass locks
+    assert "here.reserve((box, c), where=_W_" in body
+    assert "here.leaf_call(box, _M_box.BOX.put, (7,))" in body
+    assert "here.call(box, _M_box.BOX.keep, (c,))" in body  # c may pass locks
 
 
 def test_across_an_integer_interval_is_a_range(program):
     text = routine(program[1]["fast.py"], "make")
-    assert "for i in range(1, 3 + 1):" in text and "print_(B.out_int(here, i))" in text
+    assert "for i in range(1, 3 + 1):" in text and "print_(_B.out_int(here, i))" in text
     assert "for k_ in range(4, 5 + 1):" in text
-    assert "for i in S.cursors(B.interval(here, 6, 7)):" in text  # `i` itself is used
+    assert "for i in _S.cursors(_B.interval(here, 6, 7)):" in text  # `i` itself is used
 
 
 def test_a_program_with_its_own_expanded_class_has_no_leaves(tmp_path):
@@ -229,7 +229,7 @@ def test_a_program_with_its_own_expanded_class_has_no_leaves(tmp_path):
         "\tn: INTEGER\n\tp: POINT\n\tset (v: INTEGER) do n := v end\nend\n"
     )
     compiled, texts = compile_program(folder, tmp_path / "out", "none")
-    assert "@rt.leaf" not in texts["exp.py"]
+    assert "@_rt.leaf" not in texts["exp.py"]
 
 
 # --- library leaves: the transport listeners' routines a program may run as leaves -----------------

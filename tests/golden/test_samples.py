@@ -114,6 +114,12 @@ def check_checksums(out: str) -> None:
     assert matching(out, r"Checksummed (\d+) blocks of (\d+) bytes$") == [("4", "50000")]
 
 
+def check_navigate_to_pose(out: str) -> None:
+    # without a ROS 2 robot there is no Nav2 server: the goal is refused at once, and said so
+    # (the run against a stand-in server is tests/robots/test_ros2_robots.py's)
+    assert [line.split("] ", 1)[-1] for line in out.splitlines()] == ["no action server /navigate_to_pose"]
+
+
 CHECKS = {name[len("check_") :]: fn for name, fn in globals().items() if name.startswith("check_")}
 
 

@@ -62,7 +62,7 @@ def compiled(cls, feature, count, form):
             defaults=[],
         )
         tree = ast.fix_missing_locations(ast.Expression(ast.Lambda(args, expr)))
-        fn = _COMPILED[key] = eval(compile(tree, "<test>", "eval"), {"B": B})
+        fn = _COMPILED[key] = eval(compile(tree, "<test>", "eval"), {"_B": B})
     return fn
 
 
@@ -72,7 +72,7 @@ def ev(cls, feature, *values, form="name", region="HERE"):
     if form == "const":
         expr = B.inline(cls, feature, ast.Constant(values[0]), [ast.Constant(v) for v in values[1:]])
         code = compile(ast.fix_missing_locations(ast.Expression(expr)), "<test>", "eval")
-        return eval(code, {"B": B, "here": region})
+        return eval(code, {"_B": B, "here": region})
     counter = [0] * len(values)
 
     def once(i, value):

@@ -350,7 +350,7 @@ def test_nested_signed_arithmetic_shares_its_temporary_safely(v):
             )
         )
     )
-    fn = eval(compile(tree, "<t>", "eval"), {"B": B})
+    fn = eval(compile(tree, "<t>", "eval"), {"_B": B})
     a, b, c, d = v
     assert fn(a, b, c, d) == ref_wrap((a + b) * (c - d) - a, 32, True)
     assert ev("INTEGER_64", "plus", 2**63 - 1, 1) == -(2**63)

@@ -137,7 +137,7 @@ def test_character_32_classification_is_unicode():
 
 def boolean(feature, left, right_node):
     expr = B.inline("BOOLEAN", feature, ast.Constant(left), [right_node])
-    return eval(compile(ast.fix_missing_locations(ast.Expression(expr)), "<t>", "eval"), {"B": B, "boom": boom})
+    return eval(compile(ast.fix_missing_locations(ast.Expression(expr)), "<t>", "eval"), {"_B": B, "boom": boom})
 
 
 def boom():

@@ -1,6 +1,7 @@
 """`scoopc msg`: generated Eiffel message classes pass `scoopc check`; the generic bridge converts both ways."""
 
 import numpy as np
+import pytest
 
 from scoopc import cli, kernel
 from scoopc.robots import eiffel_bridge, eiffel_messages, ros_messages
@@ -107,3 +108,88 @@ def test_service_classes(tmp_path, capsys, monkeypatch):
     capsys.readouterr()
     assert cli.main(["msg", "nope/srv/Missing"]) == 2
     assert "unknown ROS 2 service type `nope/srv/Missing`" in capsys.readouterr().err
+
+
+def test_action_classes(tmp_path, capsys, monkeypatch):
+    """`scoopc msg pkg/action/Name` writes the goal, result and feedback classes for the distribution
+    (samples/navigate_to_pose has Jazzy's output); an .action of one's own with --file; an unknown
+    action is a usage error naming the known ones."""
+    from pathlib import Path
+
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    sample = Path(__file__).parents[2] / "samples" / "navigate_to_pose"
+    assert cli.main(["msg", "nav2_msgs/action/NavigateToPose", "-o", str(tmp_path / "jazzy")]) == 0
+    written = sorted(p.name for p in (tmp_path / "jazzy").iterdir())
+    assert written == [
+        "builtin_interfaces_duration.e",
+        "nav2_msgs_navigate_to_pose_feedback.e",
+        "nav2_msgs_navigate_to_pose_goal.e",
+        "nav2_msgs_navigate_to_pose_result.e",
+    ]
+    for name in written:
+        assert (tmp_path / "jazzy" / name).read_text() == (sample / name).read_text()
+    previous = ros_messages.distro()
+    try:
+        humble = ["msg", "nav2_msgs/action/NavigateToPose", "--ros-distro", "humble", "-o", str(tmp_path / "h")]
+        assert cli.main(humble) == 0
+    finally:
+        ros_messages.use_distro(previous)  # `scoopc msg` chose the process's distribution
+    assert "result_value: STD_MSGS_EMPTY" in (tmp_path / "h" / "nav2_msgs_navigate_to_pose_result.e").read_text()
+    action = tmp_path / "Dock.action"
+    action.write_text("string dock_id\n---\nbool docked\n---\nfloat32 distance\n")
+    out = tmp_path / "own"
+    assert cli.main(["msg", "--file", str(action), "--type", "my_pkg/action/Dock", "-o", str(out)]) == 0
+    assert "docked: BOOLEAN" in (out / "my_pkg_dock_result.e").read_text()
+    assert 'Ros_type: STRING = "my_pkg/action/Dock_Feedback"' in (out / "my_pkg_dock_feedback.e").read_text()
+    assert cli.main(["check", "--format", "short", str(out)]) == 0, capsys.readouterr().err
+    capsys.readouterr()
+    assert cli.main(["msg", "nope/action/Missing"]) == 2
+    assert "unknown ROS 2 action type `nope/action/Missing`" in capsys.readouterr().err
+
+
+def _msg(tmp_path, text, *more, name="Thing.msg", binary=False):
+    definition = tmp_path / name
+    definition.write_bytes(text) if binary else definition.write_text(text)
+    return cli.main(["msg", "--file", str(definition), "--type", "my_pkg/msg/Thing", *more])
+
+
+@pytest.mark.parametrize(
+    ("text", "binary", "says"),
+    [
+        ("int32 x\nfoo_msgs/Unknown y\n", False, "unknown ROS 2 message type `foo_msgs/msg/Unknown`"),
+        (b"\x00\x01\xff\xfe", True, "is not a text file (UTF-8)"),
+        (b"int32 x\n\x00\n", True, "holds NUL bytes"),
+        ("int8 A=300\n", False, "constant `A`: 300 is not a value of int8 (-128 to 127)"),
+        ("uint8 B=-1\n", False, "constant `B`: -1 is not a value of uint8"),
+        ("uint64 C=18446744073709551616\n", False, "constant `C`: 18446744073709551616 is not a value of uint64"),
+        ("int32[-1] arr\n", False, "the array size must not be negative, not -1"),
+        ("int32[<=-2] seq\n", False, "the sequence bound must not be negative, not -2"),
+    ],
+)
+def test_msg_refuses_a_definition_whose_classes_would_not_check(tmp_path, capsys, text, binary, says):
+    assert _msg(tmp_path, text, "-o", str(tmp_path / "out"), binary=binary) == 2
+    err = capsys.readouterr().err
+    assert says in err and "Traceback" not in err
+    assert not (tmp_path / "out").exists() or not any((tmp_path / "out").iterdir())
+
+
+def test_msg_output_must_be_a_folder(tmp_path, capsys):
+    existing = tmp_path / "existing.e"
+    existing.write_text("keep me")
+    assert _msg(tmp_path, "int32 x\n", "-o", str(existing)) == 2
+    assert "names a file, not a folder" in capsys.readouterr().err
+    assert existing.read_text() == "keep me"
+    assert cli.main(["msg", "std_srvs/srv/SetBool", "-o", str(existing)]) == 2
+
+
+def test_msg_constants_at_their_bounds_give_classes_that_check(tmp_path, capsys):
+    text = "".join(
+        f"{base} {name}_LOW={low}\n{base} {name}_HIGH={high}\n" for name, (base, (low, high)) in enumerate_bases()
+    )
+    assert _msg(tmp_path, text + "int32[0] empty\n", "-o", str(tmp_path / "out")) == 0
+    capsys.readouterr()
+    assert cli.main(["check", "--format", "short", str(tmp_path / "out")]) == 0, capsys.readouterr().err
+
+
+def enumerate_bases():
+    return [(f"C{i}", item) for i, item in enumerate(eiffel_messages.INTEGER_RANGES.items())]

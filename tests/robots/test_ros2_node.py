@@ -4,11 +4,13 @@ graph) sees the node, names its endpoints, and decodes ros_discovery_info with t
 Gid (24 bytes in Humble, 16 from Jazzy on). The processes `scoopc run` and `scoopc sim` are checked
 in tests/robots/test_ros2_robots.py (slow)."""
 
-import random
 import sys
+import threading
 import time
 from pathlib import Path
 
+import domains  # tests/robots/domains.py: a DDS domain per test
+import numpy as np
 import pytest
 
 pytest.importorskip("cyclonedds")
@@ -34,7 +36,7 @@ def _until(predicate, timeout=TIMEOUT):
 
 @pytest.mark.parametrize("distro, size", [("humble", 24), ("jazzy", 16)])
 def test_a_graph_reader_sees_the_node_and_names_its_endpoints(distro, size, monkeypatch):
-    monkeypatch.setenv("ROS_DOMAIN_ID", str(random.randint(100, 200)))
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(domains.next_domain()))
     monkeypatch.setenv(backends.ENV, "dds")
     previous = ros_messages.distro()
     ros_messages.use_distro(distro)
@@ -68,7 +70,7 @@ def test_a_graph_reader_sees_the_node_and_names_its_endpoints(distro, size, monk
 
 def test_a_bare_dds_participant_is_not_a_node(monkeypatch):
     """Without the graph node (DdsBus alone) the endpoints belong to no node, as before issue 17."""
-    monkeypatch.setenv("ROS_DOMAIN_ID", str(random.randint(100, 200)))
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(domains.next_domain()))
     bus = dds.DdsBus()
     twin = rmw_twin.Node("jazzy")
     reader = rmw_twin.GraphReader(twin)
@@ -98,7 +100,7 @@ def test_node_names_and_namespaces():
 
 @pytest.fixture
 def bus_and_twin(monkeypatch):
-    monkeypatch.setenv("ROS_DOMAIN_ID", str(random.randint(100, 200)))
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(domains.next_domain()))
     bus = dds.DdsBus()
     twin = rmw_twin.Node(bus.distro)
     yield bus, twin
@@ -222,3 +224,139 @@ def test_each_parameter_operation_from_a_stock_node(bus_and_twin):
     ]
     typing = client("get_parameter_types", "rcl_interfaces/srv/GetParameterTypes")
     assert list(typing.call(typing.new_request(names=["nav.mode", "x"]), TIMEOUT).types) == [4, 0]
+
+
+# -- actions, both ways: feedback, cancel and result ---------------------------------------------------------
+
+
+def _fibonacci(order):
+    sequence = [0, 1]
+    while len(sequence) < order + 1:
+        sequence.append(sequence[-1] + sequence[-2])
+    return sequence[: order + 1]
+
+
+def test_an_action_of_a_stock_server_with_feedback_cancel_and_result(monkeypatch):
+    """Our ActionClient against the twin's action server (rcl_action's names, types and QoS)."""
+    from scoopc.robots import actions
+
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(domains.next_domain()))
+    bus = dds.DdsBus()
+    twin = rmw_twin.Node(bus.distro)
+    release = {}
+
+    def execute(goal):  # Fibonacci, one number per feedback; waits for the test before the last
+        for n in range(1, int(goal.goal.order) + 1):
+            if goal.cancel_requested:
+                goal.finish(5, sequence=np.array(_fibonacci(n - 1), dtype=np.int32))
+                return
+            goal.publish_feedback(sequence=np.array(_fibonacci(n), dtype=np.int32))
+            if n == 2:
+                release.setdefault(goal.id, threading.Event()).wait(TIMEOUT)
+        goal.finish(4, sequence=np.array(_fibonacci(int(goal.goal.order)), dtype=np.int32))
+
+    try:
+        server = rmw_twin.TwinActionServer(twin, "example_interfaces/action/Fibonacci", "/fib", execute)
+        client = actions.ActionClient(bus, "/fib", "example_interfaces/action/Fibonacci")
+        assert client.wait_for_server(TIMEOUT)
+        statuses, feedback = [], []
+        goal = client.send_goal(
+            client.new_goal(order=4),
+            TIMEOUT,
+            on_feedback=lambda f: feedback.append(list(f.sequence)),
+            on_status=statuses.append,
+        )
+        assert goal.accepted and server.events == [("goal", goal.id)]
+        assert _until(lambda: len(feedback) == 2)
+        release.setdefault(goal.id, threading.Event()).set()
+        assert goal.done.wait(TIMEOUT)
+        assert goal.status == actions.SUCCEEDED and list(goal.result.sequence) == [0, 1, 1, 2, 3]
+        assert feedback == [[0, 1], [0, 1, 1], [0, 1, 1, 2], [0, 1, 1, 2, 3]]
+        assert statuses[0] == actions.ACCEPTED and statuses[-1] == actions.SUCCEEDED
+        # a goal cancelled while it runs ends CANCELED, its result what the server made of it
+        second = client.send_goal(client.new_goal(order=5), TIMEOUT)
+        assert _until(lambda: second.feedback is not None and len(second.feedback.sequence) == 3)
+        replies = []
+        second.cancel(replies.append)
+        assert _until(lambda: replies) == [actions.CANCEL_NONE]
+        release.setdefault(second.id, threading.Event()).set()
+        assert second.done.wait(TIMEOUT)
+        assert second.status == actions.CANCELED and list(second.result.sequence) == [0, 1, 1]
+        assert ("cancel", second.id) in server.events
+    finally:
+        for event in release.values():
+            event.set()
+        twin.close()
+        bus.close()
+
+
+def test_our_action_server_to_a_stock_client(monkeypatch):
+    """The twin's action client against our ActionServer: status on the transient-local status
+    topic, feedback by goal id, a cancel request, results, an unknown goal's result."""
+    from scoopc.robots import actions
+
+    monkeypatch.setenv("ROS_DOMAIN_ID", str(domains.next_domain()))
+    bus = dds.DdsBus()
+    twin = rmw_twin.Node(bus.distro)
+    go = threading.Event()
+
+    def run(goal):
+        goal.execute()
+        for n in range(1, int(goal.goal.order) + 1):
+            if goal.status == actions.CANCELING:
+                goal.canceled(server.new_result(sequence=np.array(_fibonacci(n - 1), dtype=np.int32)))
+                return
+            goal.publish_feedback(server.new_feedback(sequence=np.array(_fibonacci(n), dtype=np.int32)))
+            go.wait(TIMEOUT)
+        goal.succeed(server.new_result(sequence=np.array(_fibonacci(int(goal.goal.order)), dtype=np.int32)))
+
+    workers = []
+
+    def accepted(goal):  # each goal on a thread of the test's own, joined at the end
+        workers.append(threading.Thread(target=run, args=(goal,)))
+        workers[-1].start()
+
+    server = actions.ActionServer(bus, "/fib", "example_interfaces/action/Fibonacci", on_accepted=accepted)
+    try:
+        client = rmw_twin.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
+        first = client.send_goal(order=3)
+        go.set()
+        done = client.result(first)
+        assert (done.status, list(done.result.sequence)) == (actions.SUCCEEDED, [0, 1, 1, 2])
+        assert [list(f.sequence) for f in client.feedback_of(first)] == [[0, 1], [0, 1, 1], [0, 1, 1, 2]]
+        assert _until(lambda: client.statuses_of(first)[-1:] == [actions.SUCCEEDED])
+        go.clear()
+        second = client.send_goal(order=4)
+        assert _until(lambda: client.feedback_of(second))
+        cancel = client.cancel(second)
+        assert cancel.return_code == actions.CANCEL_NONE and bytes(cancel.goals_canceling[0].goal_id.uuid) == second
+        go.set()
+        done = client.result(second)
+        assert done.status == actions.CANCELED
+        assert client.cancel(second).return_code == actions.CANCEL_TERMINATED
+        assert client.result(bytes(16)).status == actions.UNKNOWN
+        assert actions.CANCELING in client.statuses_of(second)
+    finally:
+        go.set()
+        for worker in workers:
+            worker.join()
+        twin.close()
+        server.close()
+        bus.close()
+
+
+@pytest.mark.slow  # compiles a program
+def test_an_action_client_off_dds_says_why_it_cannot_send():
+    """On a transport without a DDS participant (here `--robot none`) `is_available` is False and
+    `send_goal` raises an Eiffel exception that names what is needed."""
+    import io
+
+    import scoopc
+
+    out, err = io.StringIO(), io.StringIO()
+    result = scoopc.run([Path(__file__).parent / "programs" / "action_off_dds"], robot="none", stdout=out, stderr=err)
+    assert result.status == 3 and out.getvalue() == "available False\n", err.getvalue()
+    assert (
+        "ROS_ACTION_CLIENT /fib: ROS 2 actions need a ROS 2 robot over DDS (scoopc run --robot ros2)" in err.getvalue()
+    )
+    assert "Traceback" not in err.getvalue()

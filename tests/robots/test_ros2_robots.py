@@ -7,7 +7,9 @@ clock, (3) ROS_LOCALHOST_ONLY / ROS_AUTOMATIC_DISCOVERY_RANGE / ROS_STATIC_PEERS
 missing battery topic, (7) silent topics are reported. Waits are on conditions; time limits only
 bound a broken run (the one negative discovery check, OFF, is bounded by a positive control)."""
 
+import json
 import os
+import re
 import subprocess
 import sys
 import threading
@@ -415,7 +417,11 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
             value = rmw_twin.new_message(twin.store, "rcl_interfaces/msg/ParameterValue", **value)
             return rmw_twin.new_message(twin.store, "rcl_interfaces/msg/Parameter", name=name, value=value)
 
-        speeds = [parameter("speed", type=2, integer_value=1), parameter("speed", type=3, double_value=0.1)]
+        speeds = [
+            parameter("speed", type=2, integer_value=1),
+            parameter("speed", type=3, double_value=0.1),
+            parameter("mode", type=4, string_value="bold"),  # ROS_PARAMETER [STRING]
+        ]
         deadline = time.monotonic() + 120
         while True:  # until the program, started, has declared it
             results = setting.call(setting.new_request(parameters=speeds), 120).results
@@ -425,6 +431,7 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
             time.sleep(0.1)
         assert [(r.successful, r.reason) for r in results] == [
             (False, "parameter speed is a double, not an integer"),
+            (True, ""),
             (True, ""),
         ]
         assert driver.wait_for(lambda s: len(s.messages) >= 5, TIMEOUT)
@@ -455,7 +462,7 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
         status, out, err = finish(run)
         assert status == 130, err
         said = "profile True stamped True max 0.29999999999999999 1.2 cmd /wheels/cmd odom /wheels/odom\n"
-        assert out == said + "speed 0.10000000000000001 after 1 change\n", out
+        assert out == said + "speed 0.10000000000000001 after 1 change, mode bold\n", out
         assert "robot profile" in err and "robot.yaml" in err
         heard = [line for line in err.splitlines() if line.startswith("scoopc: heard ")]
         assert len(heard) == 1 and "nothing on /scan" in heard[0], err  # the laser of the profile: none here
@@ -487,6 +494,105 @@ def test_a_program_calls_a_stock_service_and_serves_one(env, tmp_path):
         status, out, err = finish(run, 120)
         assert status == 0, err
         assert out == "trigger: hi\nserved data=True\n", err
+    finally:
+        if run is not None and run.poll() is None:
+            run.kill()
+        twin.close()
+
+
+# -- issue 17: the NavigateToPose sample against a stand-in Nav2 server in another process ---------------------
+
+
+def _navigate_server(env, steps, period):
+    server = subprocess.Popen(
+        [
+            sys.executable,
+            str(Path(__file__).parent / "rmw_twin.py"),
+            "navigate",
+            "--steps",
+            str(steps),
+            "--period",
+            str(period),
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        env=env,
+    )
+    assert server.stdout.readline().strip() == '{"ready": true}', server.stderr.read()
+    return server
+
+
+def _events(server):
+    server.kill()
+    out, _ = server.communicate()
+    return [json.loads(line) for line in out.splitlines()]
+
+
+@pytest.mark.slow
+def test_the_navigate_to_pose_sample_reaches_its_goal(env, tmp_path):
+    server = _navigate_server(env, steps=5, period=0.1)
+    try:
+        run = scoopc(
+            env, "run", str(ROOT / "samples" / "navigate_to_pose"), "--robot", "ros2", "--", "3", "4", cwd=tmp_path
+        )
+        status, out, err = finish(run, 180)
+        assert status == 0, err
+        assert out.splitlines()[0] == "goal sent: 3 4"
+        reached = re.fullmatch(r"goal reached after (\d+) feedback messages, (\S+) m remaining", out.splitlines()[1])
+        assert reached and 1 <= int(reached[1]) <= 5 and float(reached[2]) in (4.0, 3.0, 2.0, 1.0, 0.0), out
+    finally:
+        events = _events(server)
+    assert events == [{"goal": [3.0, 4.0], "frame": "map"}, {"succeeded": 5}]
+
+
+@pytest.mark.slow
+def test_the_navigate_to_pose_sample_cancels_its_goal_when_the_stop_signaler_fires(env, tmp_path):
+    server = _navigate_server(env, steps=1000, period=0.05)
+    try:
+        run = scoopc(
+            env,
+            "run",
+            str(ROOT / "samples" / "navigate_to_pose"),
+            "--robot",
+            "ros2",
+            "--",
+            "1",
+            "0",
+            "1.5",
+            cwd=tmp_path,
+        )
+        status, out, err = finish(run, 180)
+        assert status == 0, err
+        lines = out.splitlines()
+        assert lines[:2] == ["goal sent: 1 0", "stop requested: cancelling the goal"], out
+        assert lines[2].startswith("goal canceled after "), out
+    finally:
+        events = _events(server)
+    assert events[0] == {"goal": [1.0, 0.0], "frame": "map"} and "canceled" in events[1], events
+    assert 0 < events[1]["canceled"] < 1000
+
+
+@pytest.mark.slow
+def test_a_program_serves_an_action_to_a_stock_client(env, tmp_path):
+    """ROS_ACTION_SERVER in tests/robots/programs/action_server_ros2, against the twin's action client:
+    feedback and result of one goal, the cancel of another."""
+    twin = rmw_twin.Node("jazzy")
+    run = None
+    try:
+        run = scoopc(env, "run", str(PROGRAMS / "action_server_ros2"), "--robot", "ros2", cwd=tmp_path)
+        client = rmw_twin.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
+        first = client.send_goal(timeout=120, order=5)
+        done = client.result(first, TIMEOUT)
+        assert (done.status, list(done.result.sequence)) == (4, [0, 1, 1, 2, 3, 5])
+        assert [list(f.sequence) for f in client.feedback_of(first)] == [[0, 1, 1, 2, 3, 5][:n] for n in range(1, 7)]
+        second = client.send_goal(order=3)
+        cancel = client.cancel(second)
+        assert cancel.return_code == 0 and bytes(cancel.goals_canceling[0].goal_id.uuid) == second
+        assert client.result(second, TIMEOUT).status == 5
+        status, out, err = finish(run, 120)
+        assert status == 0, err
+        assert out == "goal 1: order 5, 6 feedback\ngoal 2: cancelled\n", err
     finally:
         if run is not None and run.poll() is None:
             run.kill()

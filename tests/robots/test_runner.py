@@ -33,14 +33,14 @@ def test_a_program_that_ends_ends_the_simulation(capsys):
     assert "scoopc: simulated 14." in err and "(the program ended)" in err
 
 
-def test_the_world_duration_stops_a_program_that_runs_on(capsys):
+def test_the_duration_asked_for_stops_a_program_that_runs_on(capsys):
     result = run_on_simulator(PROGRAMS / "run_forever", duration=12)
     out, err = capsys.readouterr()
     assert result.status == 0, err
     assert result.stopped_by == "duration"
     assert result.sim.time == pytest.approx(12.0)
     assert result.sim.robot().x == pytest.approx(0.6 + 0.1 * 12, abs=0.03)
-    assert "(the world's duration)" in err
+    assert "(the duration asked for)" in err
 
 
 def test_runs_on_the_virtual_clock_are_repeatable(capsys):
@@ -119,7 +119,7 @@ def test_a_malformed_world_is_reported(tmp_path, capsys):
     bad = tmp_path / "bad.yaml"
     bad.write_text("robots:\n  - {kind: tank}\n")
     assert cli.main(["run", str(PROGRAMS / "run_world"), "--no-png", "--world", str(bad)]) == 2
-    assert f"scoopc: error: {bad}: unknown robot kind 'tank'" in capsys.readouterr().err
+    assert f"scoopc: error: {bad}:2:12: robots[0].kind: must be one of thymio" in capsys.readouterr().err
 
 
 def test_programs_without_roboscoop_get_no_robot(capsys):

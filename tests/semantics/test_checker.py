@@ -568,3 +568,38 @@ def test_a_missing_parent_is_reported_once_not_in_its_heirs_and_clients(tmp_path
         },
     )
     assert codes(checked) == [("VTCT", 3)]
+
+
+def test_formal_traitor_warns_only_where_a_result_is_used_as_non_separate(tmp_path):
+    """FORMAL-TRAITOR on a `G` result of a separate call: not where it goes to a separate entity
+    or argument (no traitor), but where it is attached as non-separate or is a call's target."""
+    checked = check(
+        tmp_path,
+        {
+            "CELL": """\
+        class CELL [G]
+        feature
+            item: detachable G
+            put (v: G) do item := v end
+        end
+    """,
+            "RELAY": """\
+        class RELAY [G]
+        feature
+            keep (c: separate CELL [G]; other: separate CELL [G])
+                local
+                    far: detachable separate G
+                    near: detachable G
+                do
+                    far := c.item
+                    store (c.item)
+                    near := c.item
+                end
+            store (v: detachable separate G) do end
+        end
+    """,
+        },
+    )
+    assert codes(checked) == []
+    warnings = [(d.code, d.span.line) for d in checked.diagnostics]
+    assert warnings == [("FORMAL-TRAITOR", 10)]

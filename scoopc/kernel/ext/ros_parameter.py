@@ -28,16 +28,26 @@ def _checker(value):
     return None
 
 
+def _is_string(value) -> bool:
+    return hasattr(value, "_s")  # a STRING object of the kernel
+
+
+def _host(value):
+    """The parameter's value as the node keeps it: a STRING's text, else the basic value."""
+    return strings.text(value) if _is_string(value) else value
+
+
 def declare_parameter(current):
     node = _node()
     value = current.item
     name = strings.text(current.name)
-    if not isinstance(value, (bool, int, float)):
+    if not (isinstance(value, (bool, int, float)) or (_is_string(value) and strings.is8(value))):
         raise failure(
             current._region_,
             "DEVELOPER_EXCEPTION",
-            f"ROS_PARAMETER {name}: a parameter is a BOOLEAN, an INTEGER or a REAL_64",
+            f"ROS_PARAMETER {name}: a parameter is a BOOLEAN, an INTEGER, a REAL_64 or a STRING",
         )
+    value = _host(value)
     if node is None:
         return  # no ROS 2 node: the parameter keeps its value
     try:
@@ -58,10 +68,12 @@ def declare_parameter(current):
 
 
 def _on_change(current, value):
+    if isinstance(value, str):  # a STRING parameter: a new STRING in the parameter's region
+        value = strings.new_string_8(current._region_, value)
     current.on_change(value)
 
 
 def publish_item(current):
     node = _node()
     if node is not None:
-        node.set(strings.text(current.name), current.item, notify=False)
+        node.set(strings.text(current.name), _host(current.item), notify=False)

@@ -11,7 +11,16 @@ from lark import Token
 
 from ... import syntax as s
 from .base import BuilderBase
-from .literals import character_value, integer_value, real_value, string_value
+from .literals import (
+    LARGEST_INTEGER,
+    SMALLEST_INTEGER_NEGATED,
+    character_value,
+    integer_value,
+    real_value,
+    string_value,
+    too_large,
+    too_small,
+)
 
 
 def _arguments(actuals: tuple | None) -> tuple:
@@ -86,6 +95,13 @@ class ExpressionBuilder(BuilderBase):
 
     def unary(self, c: list) -> s.UnaryExpression:
         operator, operand = c
+        literal = isinstance(operand, s.ManifestInteger)
+        if operator.value == "-" and literal and operand.value > SMALLEST_INTEGER_NEGATED:
+            # a negative literal below INTEGER_64's minimum fits no integer type either
+            same_line = operand.span.end_line == operator.line
+            width = operand.span.end_column - operator.column if same_line else 1
+            self.report_at_offset(operator, 0, width, too_small(operand.text))
+            operand = s.ManifestInteger(0, operand.text, operand.span)
         return s.UnaryExpression(operator.value.lower(), operand, self.span(operator, operand))
 
     def old(self, c: list) -> s.Old:
@@ -97,6 +113,10 @@ class ExpressionBuilder(BuilderBase):
         value = integer_value(token.value)
         if value is None:
             self.report_at_offset(token, 0, len(token.value), f"`{token.value}` is not a valid integer")
+            value = 0
+        elif value > LARGEST_INTEGER:
+            # EiffelStudio's parser: a literal beyond NATURAL_64 fits no integer type (a syntax error)
+            self.report_at_offset(token, 0, len(token.value), too_large(token.value))
             value = 0
         return s.ManifestInteger(value, token.value, self.tspan(token))
 

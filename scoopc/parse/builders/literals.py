@@ -37,6 +37,19 @@ _CONTINUATION = re.compile(r"%[ \t]*\n[ \t]*%")
 Problem = tuple[int, int, str]
 
 
+LARGEST_INTEGER = 2**64 - 1  # NATURAL_64's maximum: no integer type holds a larger literal
+SMALLEST_INTEGER_NEGATED = 2**63  # -INTEGER_64's minimum
+
+
+def too_large(text: str) -> str:
+    """EiffelStudio's wording (EIFFEL_PARSER_SKELETON.report_integer_too_large_error)."""
+    return f"integer value {text} is too large for any integer type"
+
+
+def too_small(text: str) -> str:
+    return f"integer value -{text} is too small for any integer type"
+
+
 def integer_value(text: str) -> int | None:
     """The value of an integer literal (decimal, 0x hex, 0c octal, 0b binary); None if malformed."""
     digits = text.replace("_", "")

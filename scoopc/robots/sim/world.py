@@ -8,7 +8,9 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-import yaml
+
+from ..yamlschema import Reader, SchemaError, check_data, load, read_text
+from . import world_schema
 
 KINDS = {
     # kind: radius (m), max linear (m/s), max angular (rad/s), laser by default
@@ -19,8 +21,8 @@ KINDS = {
 }
 
 
-class WorldError(ValueError):
-    """A malformed world description."""
+class WorldError(SchemaError):
+    """A malformed world description: `file:line:col: key.path: what is wrong`."""
 
 
 @dataclass
@@ -74,14 +76,22 @@ class World:
 
     @classmethod
     def load(cls, path):
-        with open(path, encoding="utf-8") as f:
-            data = yaml.safe_load(f)
-        return cls.from_dict(data, default_name=str(path).rsplit("/", 1)[-1].rsplit(".", 1)[0])
+        """The world in file `path`, checked against its schema (a WorldError names the place)."""
+        reader = Reader(str(path), WorldError)
+        data = load(read_text(path, reader, "world file"), world_schema.WORLD, reader)
+        world_schema.check_places(data, reader)
+        return cls._build(data, default_name=str(path).rsplit("/", 1)[-1].rsplit(".", 1)[0])
 
     @classmethod
     def from_dict(cls, data, default_name="world"):
-        if not isinstance(data, dict):
-            raise WorldError("a world is a mapping")
+        """The world described by plain data (as a world file's), checked against the same schema."""
+        reader = Reader("the given world", WorldError, positions=False)
+        checked = check_data(data, world_schema.WORLD, reader)
+        world_schema.check_places(checked, reader)
+        return cls._build(checked, default_name)
+
+    @classmethod
+    def _build(cls, data, default_name):
         size = data.get("size", [5.0, 5.0])
         width, height = float(size[0]), float(size[1])
         segs, boxes, holes = [], [], []

@@ -1,8 +1,9 @@
 note
 	description: "[
 		A parameter of the program's ROS 2 node (`ros2 param list/get/set/describe'): a BOOLEAN, an
-		INTEGER or a REAL_64 named `name', declared with a default when created. `item' can be read
-		in wait conditions; a change from outside (`ros2 param set') arrives as an asynchronous
+		INTEGER, a REAL_64 or a STRING named `name', declared with a default when created
+		(`make_with_text' for a STRING made on another processor). `item' can be read in wait
+		conditions; a change from outside (`ros2 param set') arrives as an asynchronous
 		call on this object's processor (`change_count' counts them). Without a ROS 2 robot the
 		parameter just keeps its value.
 	]"
@@ -11,7 +12,8 @@ class
 	ROS_PARAMETER [G]
 
 create
-	make
+	make,
+	make_with_text
 
 feature {NONE} -- Initialization
 
@@ -24,6 +26,23 @@ feature {NONE} -- Initialization
 			declare_parameter
 		ensure
 			default_set: item = a_default
+		end
+
+	make_with_text (a_name, a_default, a_description: separate STRING)
+			-- STRING parameter `a_name', `a_default' first. (`make' cannot take a STRING made on
+			-- another processor: use this one to create a ROS_PARAMETER [STRING] as a separate object.)
+		local
+			l_text: STRING
+		do
+			create name.make_from_separate (a_name)
+			create description.make_from_separate (a_description)
+			create l_text.make_from_separate (a_default)
+			check
+				string_parameter: attached {G} l_text as l_item
+			then
+				item := l_item
+			end
+			declare_parameter
 		end
 
 feature -- Access

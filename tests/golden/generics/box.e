@@ -19,7 +19,8 @@ feature {NONE} -- Initialization
 
 feature -- Access
 
-	item: G
+	item: detachable G
+			-- Void (or the default of an expanded G) until set: `make_empty' leaves it unset.
 
 	has_item: BOOLEAN
 
@@ -35,7 +36,9 @@ feature -- Access
 
 	mapped (f: FUNCTION [G, G]): BOX [G]
 		do
-			create Result.make (f (item))
+			check attached item as i then
+				create Result.make (f (i))
+			end
 		end
 
 	replaced (v: G): like Current

@@ -2,7 +2,7 @@ class
 	BOOK
 
 create
-	make -- E: VEVI
+	make
 
 feature {NONE} -- Initialization
 
@@ -10,7 +10,7 @@ feature {NONE} -- Initialization
 			-- Create a book of `a_pages' pages.
 		do
 			pages := a_pages
-		end
+		end -- E: VEVI@3
 
 feature -- Access
 

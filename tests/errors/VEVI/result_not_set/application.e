@@ -17,12 +17,12 @@ feature -- Access
 	count: INTEGER
 			-- Number of items.
 
-	name: STRING -- E: VEVI
+	name: STRING
 			-- A word for `count'.
 		do
 			if count > 0 then
 				Result := "many"
 			end
-		end
+		end -- E: VEVI@3
 
 end

@@ -1,5 +1,5 @@
 class
-	FACTORY [G -> ANY create make end]
+	FACTORY [G -> PRODUCT create make end]
 
 feature -- Basic operations
 

@@ -1,6 +1,9 @@
 class
 	GADGET
 
+inherit
+	PRODUCT
+
 create
 	make_small
 

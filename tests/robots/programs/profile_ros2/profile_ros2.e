@@ -2,8 +2,8 @@ note
 	description: "[
 		A DIFF_DRIVE_ROBOT made from the robot profile beside it (robot.yaml: cmd_vel on /wheels/cmd
 		as TwistStamped, odometry on /wheels/odom read reliably, limits): says what the profile gave,
-		waits until its node's parameter `speed' (ROS_PARAMETER, 0 at first) is set from outside, then
-		drives at that speed every 50 ms until stopped (a ROS 2 run, ended by Ctrl-C).
+		waits until its node's parameters `speed' (ROS_PARAMETER [REAL_64], 0 at first) and `mode'
+		(ROS_PARAMETER [STRING]) are set from outside, then drives at that speed every 50 ms until stopped (a ROS 2 run, ended by Ctrl-C).
 	]"
 
 class
@@ -26,8 +26,9 @@ feature {NONE} -- Initialization
 			print (" max " + robot.max_linear.out + " " + robot.max_angular.out)
 			print (" cmd " + robot.topic ("cmd_vel") + " odom " + robot.topic ("odom") + "%N")
 			listen (robot.odometry)
+			create mode.make_with_text ("mode", "careful", "how to drive")
 			create speed.make ("speed", 0.0, "forward speed of the commands (m/s)")
-			wait_for_speed (speed)
+			wait_for_speed (speed, mode)
 			from until False loop
 				send (robot.drive, speed_of (speed))
 				(create {EXECUTION_ENVIRONMENT}).sleep (50_000_000)
@@ -39,12 +40,18 @@ feature {NONE} -- Implementation
 	speed: separate ROS_PARAMETER [REAL_64]
 			-- The node's parameter `speed'.
 
-	wait_for_speed (a_speed: separate ROS_PARAMETER [REAL_64])
-			-- Wait until a speed was set.
+	mode: separate ROS_PARAMETER [STRING]
+			-- The node's parameter `mode'.
+
+	wait_for_speed (a_speed: separate ROS_PARAMETER [REAL_64]; a_mode: separate ROS_PARAMETER [STRING])
+			-- Wait until a speed and a mode were set.
 		require
-			set: a_speed.item > 0.0
+			set: a_speed.item > 0.0 and a_mode.change_count > 0
+		local
+			l_mode: STRING
 		do
-			print ("speed " + a_speed.item.out + " after " + a_speed.change_count.out + " change%N")
+			create l_mode.make_from_separate (a_mode.item)
+			print ("speed " + a_speed.item.out + " after " + a_speed.change_count.out + " change, mode " + l_mode + "%N")
 		end
 
 	speed_of (a_speed: separate ROS_PARAMETER [REAL_64]): REAL_64

@@ -1,6 +1,7 @@
 note
 	description: "Alias rules (VFAV): unary and binary `-` share an operator, a `convert` mark on a %
-		%binary operator, one bracket and one parenthesis alias, a redefined alias."
+		%binary operator, one bracket and one parenthesis alias, a redefined alias, two inherited %
+		%features with one alias told apart by a rename in the inherit clause."
 
 class
 	APPLICATION
@@ -23,6 +24,7 @@ feature {NONE} -- Initialization
 			print ((Current + 1).out + " " + (Current - 1).out + " " + (- Current).out + "%N")
 			print (Current [2].out + "%N")
 			show (3)
+			print (((create {VECTOR}) + create {SUMMABLE}).generator + "%N")
 		end
 
 feature -- Access

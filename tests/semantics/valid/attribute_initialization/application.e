@@ -1,6 +1,7 @@
 note
 	description: "Creation procedures that set attached attributes before reading them: directly, on %
-		%every branch, or through a routine of the class they call (VEVI)."
+		%every branch, or through a routine of the class they call; `Current' passed to a creation procedure %
+		%that makes no qualified call; `Current' used in a qualified call once every attribute is set (VEVI)."
 
 class
 	APPLICATION
@@ -21,6 +22,18 @@ feature {NONE} -- Initialization
 				title := "short"
 			end
 			print (title + " " + label + "%N")
+			create child.make (Current)
+			create box.make ("boxed")
+			show
+			registry.extend (Current)
+			print (child.parent.name + " " + box.item + "%N")
+			print ((create {COUNT_HOLDER}.make).value)
+		end
+
+	show
+			-- Print `name', set before the creation procedure calls this.
+		do
+			print (name + "%N")
 		end
 
 	set_name (s: STRING)
@@ -36,6 +49,18 @@ feature -- Access
 
 	title: STRING
 			-- Set on both branches.
+
+	child: CHILD
+			-- Made with `Current' before `box' and `registry' are set: CHILD's `make' only stores it.
+
+	box: BOX [STRING]
+			-- Holds a formal generic attribute, set by its creation procedure.
+
+	registry: ARRAYED_LIST [ANY]
+			-- Self-initializing: `Current' may be added once the other attributes are set.
+		attribute
+			create Result.make (1)
+		end
 
 	label: STRING
 			-- Self-initializing: may be read at any time.

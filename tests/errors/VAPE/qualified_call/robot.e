@@ -1,0 +1,9 @@
+class
+	ROBOT
+
+feature {ARM} -- Status
+
+	is_calibrated: BOOLEAN
+			-- Only ARM may ask.
+
+end

@@ -1,0 +1,13 @@
+class
+	VECTOR -- E: VFAV(1)
+
+inherit
+	SUMMABLE
+	MERGEABLE
+
+feature -- Access
+
+	x: INTEGER
+			-- A coordinate.
+
+end

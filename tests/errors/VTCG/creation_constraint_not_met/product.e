@@ -1,0 +1,11 @@
+class
+	PRODUCT
+
+feature {NONE} -- Initialization
+
+	make
+			-- A product.
+		do
+		end
+
+end

@@ -1,0 +1,11 @@
+deferred class
+	WRITER
+
+feature {NONE} -- Initialization
+
+	make
+			-- Set up.
+		deferred
+		end
+
+end

@@ -1,0 +1,16 @@
+class
+	VECTOR
+
+inherit
+	SUMMABLE
+	MERGEABLE
+		rename
+			merged as merged_with alias "|+|"
+		end
+
+feature -- Access
+
+	x: INTEGER
+			-- A coordinate.
+
+end
