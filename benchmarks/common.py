@@ -106,9 +106,10 @@ def compile_benchmark(name, out_dir, assertions="none"):
     return info
 
 
-def run_compiled(build_dir, name, module, params):
+def run_compiled(build_dir, name, module, params, on_start=None):
     """Run the compiled dialect version of benchmark `name` once in this process (as
-    `scoopc run` does: the launcher, then rt.run_main); check its output; return its times."""
+    `scoopc run` does: the launcher, then rt.run_main); check its output; return its times.
+    `on_start(rt)`: attached to the run as `scoopc run` attaches `--live` (benchmarks/live_cost.py)."""
     with open(os.path.join(build_dir, name + ".json")) as f:
         info = json.load(f)
     for path in (info["base"], info["path"]):
@@ -124,7 +125,7 @@ def run_compiled(build_dir, name, module, params):
     argv = [info["root"].lower()] + module.program_args(**params)
     out = io.StringIO()
     start, cpu = time.perf_counter(), time.process_time()
-    status = launcher.main(root_cls, info["creator"], argv, stdout=out)
+    status = launcher.main(root_cls, info["creator"], argv, stdout=out, on_start=on_start)
     seconds, cpu = time.perf_counter() - start, time.process_time() - cpu
     if status != 0:
         raise CheckFailed(f"{name} compiled: exit status {status}")

@@ -90,18 +90,20 @@ def run(
     require_robot: bool = False,
     profile: PathLike | None = None,
     node_name: str | None = None,
+    status: float | None = None,
+    live: int | None = None,
 ) -> RunResult:
     """Compile (cached by content unless `cache` is false) and run a program in this process, as
     `scoopc run` does; `args` are the program's arguments. A Roboscoop program runs on the
     simulator unless `robot` says "ros2" or "none"; `png=True` draws the trajectory in
     runs/<root>/<n>/<root>.png. The result's `status` is the program's exit status."""
     compilation = Compilation(paths, target=target, root=root, assertions=assertions, progress=progress)
-    options = RunOptions(trace_processors, strict, virtual_clock, debug, stdout, stderr)
+    options = RunOptions(trace_processors, strict, virtual_clock, debug, stdout, stderr, status=status, live=live)
     robot_options = RobotOptions(
         robot,
         world,
         namespace,
-        realtime,
+        realtime or live is not None,
         duration,
         goal,
         png,

@@ -181,6 +181,23 @@ def _add_run_options(command: argparse.ArgumentParser) -> None:
     command.add_argument(
         "--no-cache", action="store_true", help="compile the program and the standard library again, even if cached"
     )
+    command.add_argument(
+        "--status",
+        nargs="?",
+        const=0.0,
+        type=_status_period,
+        metavar="N",
+        help="print the processors and the wait conditions waited on (on stderr) when the process gets "
+        "SIGUSR1, or every N seconds with N",
+    )
+    command.add_argument(
+        "--live",
+        type=_port,
+        metavar="PORT",
+        help="serve the running program to Foxglove on ws://localhost:PORT: processors, waits, events, the "
+        'robot and its topics (needs the live extra: pip install "scoopc[live]"; implies --realtime; '
+        "docs/LIVE.md)",
+    )
     robot = command.add_argument_group(
         "robots",
         "A program that uses Roboscoop (stdlib/roboscoop) runs on the in-process simulator unless "
@@ -334,6 +351,21 @@ def _non_negative(text: str) -> float:
     return value
 
 
+def _status_period(text: str) -> float:
+    try:
+        return _positive(text)
+    except argparse.ArgumentTypeError:
+        raise argparse.ArgumentTypeError(
+            f"not a number of seconds: {text!r} (without N, put --status after the program's paths)"
+        ) from None
+
+
+def _port(text: str) -> int:
+    if not text.isdigit() or not 1 <= int(text) <= 65535:
+        raise argparse.ArgumentTypeError(f"not a port (1 to 65535): {text!r}")
+    return int(text)
+
+
 def _positive(text: str) -> float:
     value = _non_negative(text)
     if value == 0:
@@ -415,12 +447,14 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
     from .robots.runner import RobotOptions  # deferred: the robot side (start-up)
 
     compilation = _compilation(args, root=args.root, assertions=args.assertions)
-    options = RunOptions(args.trace_processors, args.strict, args.virtual_clock, args.debug)
+    options = RunOptions(
+        args.trace_processors, args.strict, args.virtual_clock, args.debug, status=args.status, live=args.live
+    )
     robot = RobotOptions(
         args.robot,
         args.world,
         args.namespace,
-        args.realtime,
+        args.realtime or args.live is not None,
         args.duration,
         args.goal,
         None if args.no_png else (args.png or True),

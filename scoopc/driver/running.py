@@ -9,9 +9,11 @@ import os
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import TextIO
+from pathlib import Path
+from typing import TYPE_CHECKING, TextIO
 
 from ..codegen.names import class_name, module_name
+from ..exits import UsageError
 from ..kernel import launcher, link
 from ..results import RunResult
 from ..robots import runner
@@ -20,6 +22,10 @@ from ..runtime.sched import Runtime
 from ..runtime.stop_signals import stop_on_signals
 from .compilation import Compilation, CompiledProgram
 from .packages import BASE_PACKAGE, DamagedCache, ensure_on_path, remove_cached
+from .status import ClauseSource, StatusPrinter
+
+if TYPE_CHECKING:
+    from .live import Sampler
 
 
 @dataclass
@@ -32,6 +38,8 @@ class RunOptions:
     debug: bool = False  # Python tracebacks too
     stdout: TextIO | None = None  # where the program's output goes (default: sys.stdout)
     stderr: TextIO | None = None  # where failures and scoopc's reports go (default: sys.stderr)
+    status: float | None = None  # --status: the processors and waits on stderr on SIGUSR1 (0) or every N s
+    live: int | None = None  # --live PORT: serve the Foxglove WebSocket protocol (docs/LIVE.md)
 
 
 def run_compilation(
@@ -79,10 +87,16 @@ def run_program(
     root_cls = load_root(program)
     argv = [program.root.key.lower(), *args]
     sys.stdout.flush()
+    source = ClauseSource(program_paths)
+    kind = robot.robot or ("sim" if program.roboscoop else "none")
+    view = _sampler(options, source, robot.record if kind != "none" else None)
+    watch = _watchers(options, source, view)
 
     def launch(
         on_start: Callable[[Runtime], None] | None = None, virtual_clock: bool | None = options.virtual_clock
     ) -> int:
+        if watch:
+            on_start = _chained(on_start, watch)
         return launcher.main(
             root_cls,
             program.root.creator,
@@ -97,15 +111,58 @@ def run_program(
             stderr=options.stderr,
         )
 
-    kind = robot.robot or ("sim" if program.roboscoop else "none")
-    with stop_on_signals():  # SIGTERM and SIGHUP end a run the way Ctrl-C does
-        if kind == "none":
-            result = RunResult(launch())
-        else:
-            chosen = RobotOptions(**{**vars(robot), "robot": kind})
-            result = runner.run(chosen, launch, list(program_paths), program.root.key, stderr=options.stderr)
+    try:
+        with stop_on_signals():  # SIGTERM and SIGHUP end a run the way Ctrl-C does
+            if kind == "none":
+                result = RunResult(launch())
+            else:
+                chosen = RobotOptions(**{**vars(robot), "robot": kind})
+                result = runner.run(chosen, launch, list(program_paths), program.root.key, stderr=options.stderr)
+    finally:
+        if view is not None:
+            view.close()
     _quiet_if_reader_gone()
     return result
+
+
+def _sampler(options: RunOptions, source: ClauseSource, record: str | Path | None) -> Sampler | None:
+    """`--live PORT`: the server, started before the run (a port in use is a usage error); and with
+    `--record run.mcap`, the live channels in run.scoop.mcap beside it."""
+    if options.live is None and not record:
+        return None
+    if options.live is not None and not 1 <= options.live <= 65535:
+        raise UsageError(f"--live: not a port (1 to 65535): {options.live}")
+    from . import live, live_record  # deferred: start-up (only a live or recorded run samples the runtime)
+
+    sinks: list[live.Sink] = []
+    if options.live is not None:
+        sinks.append(live.FoxgloveServer(options.live, options.stderr))
+    if record:
+        sinks.append(live_record.JsonRecording(live_record.beside(record), options.stderr))
+    return live.Sampler(source, sinks)
+
+
+def _watchers(options: RunOptions, source: ClauseSource, view: Sampler | None) -> list[Callable[[Runtime], None]]:
+    """What `--status` and `--live` attach to the runtime when the run starts."""
+    found: list[Callable[[Runtime], None]] = []
+    if view is not None:
+        found.append(view.attach)
+    if options.status is not None:
+        found.append(StatusPrinter(options.status, source).attach)
+    return found
+
+
+Attach = Callable[[Runtime], None]  # a hook run when the runtime starts (`on_start`)
+
+
+def _chained(first: Attach | None, more: list[Attach]) -> Attach:
+    def on_start(rt: Runtime) -> None:  # ours first: the live view's wait for a client comes before the robot's clock
+        for attach in more:
+            attach(rt)
+        if first is not None:
+            first(rt)
+
+    return on_start
 
 
 def load_root(program: CompiledProgram) -> type:

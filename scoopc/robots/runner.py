@@ -112,6 +112,7 @@ class RobotSettings:
 ROS2_LIMITS = (0.2, 1.0)  # speed limits reported for a ROS 2 robot (m/s, rad/s)
 SERVICE = "robot"  # the RobotSettings' key in the runtime's services
 PARAMETERS = "parameters"  # the ParameterNode's key (ROS_PARAMETER; None without one)
+SIMULATOR_SERVICE = "simulator"  # the Simulator's key, in a simulated run (the live view draws its world)
 
 
 def settings_of(rt) -> RobotSettings:
@@ -334,6 +335,8 @@ def run_with_robot(
 
     def on_start(rt):
         rt.services[SERVICE] = settings
+        if sim is not None:
+            rt.services[SIMULATOR_SERVICE] = sim
         if driver is not None:
             driver.attach(rt)
         if extra_start is not None:

@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING
 
 from .errors import PASS_THROUGH, PreconditionViolation, sync_failure
 from .protocols import Args, Clause, Routine, Separate, Where
-from .sched import Block
+from .sched import Block, dirty_text
 from .session import IDLE, RUNNING, SCHEDULED, Session, close_locked, enqueue
 
 if TYPE_CHECKING:
@@ -199,6 +199,7 @@ class FastPaths:
             lock.acquire()
             s.dirty = e
             close_locked(p, s)
+            p.rt.note("dirty region", dirty_text(p, s, e))
             return
         lock.acquire()
         if not p.qoq:  # the common case of `close_locked`

@@ -193,7 +193,7 @@ class Monitor:
             return
         blocks, lines = found
         if self.previous is not None and self.previous == blocks:
-            self.rt.fail(_after_lost(self.rt, blocks) or "\n".join(lines))
+            self.rt.fail(_after_lost(self.rt, blocks) or "\n".join(lines), kind="deadlock")
             self.stopped.set()
             return
         self.previous = blocks

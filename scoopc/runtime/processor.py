@@ -22,7 +22,7 @@ from .errors import CREATION, PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_
 from .fast import FastPaths
 from .once import once_in
 from .protocols import Args, Call, Clause, OnceKey, OnceTable, Routine, Separate, Where
-from .sched import BUSY_CALLS, BUSY_QUANTUM_NS, Block
+from .sched import BUSY_CALLS, BUSY_QUANTUM_NS, Block, dirty_text
 from .session import IDLE, RUNNING, SCHEDULED, Session, close, drop_claim_locked  # noqa: F401
 
 if TYPE_CHECKING:
@@ -298,6 +298,7 @@ class Processor(FastPaths):
             lock.acquire()
             s.dirty = e
             lock.release()
+            p.rt.note("dirty region", dirty_text(p, s, e))
 
     def _query_now(
         self, p: Processor, s: Session, routine: Routine, target: Separate, args: Args, is_cmd: bool
@@ -352,6 +353,7 @@ class Processor(FastPaths):
                     except BaseException as e:
                         with p.lock:
                             s.dirty = e
+                        p.rt.note("dirty region", dirty_text(p, s, e))
                         return None
             try:
                 if passer is None:
@@ -479,6 +481,7 @@ class Processor(FastPaths):
                 if blk is None:
                     with self.lock:
                         s.dirty = e
+                    self.rt.note("dirty region", dirty_text(self, s, e))
                 else:
                     blk.error = sync_failure(self, e) if isinstance(e, Exception) else e
                     rt.unblock(blk)

@@ -48,6 +48,24 @@ BUSY_CALLS = 20
 BUSY_QUANTUM_NS = 10_000_000  # 10 ms
 
 
+class RunEvent:
+    """Something a live view shows in its log (snapshot.py): `kind` is "deadlock", "failure",
+    "lost exception" or "dirty region"; `at` the wall-clock time (seconds)."""
+
+    __slots__ = ("at", "kind", "text")
+
+    def __init__(self, kind: str, text: str, at: float) -> None:
+        self.kind = kind
+        self.text = text
+        self.at = at
+
+
+def dirty_text(proc: Processor, s: Session, e: BaseException) -> str:
+    """The event of a region made dirty for client `s.client` by the failure `e`."""
+    reserved = f", reservation at {fmt_where(s.where)}" if s.where is not None and s.where is not CREATION else ""
+    return f"{proc!r} is dirty for {s.client!r}{reserved}: an asynchronous call failed: {type(e).__name__}: {e}"
+
+
 class Exec:
     """One OS thread running processor code (a worker, the main thread, a client)."""
 
@@ -67,7 +85,7 @@ class Exec:
 class Block:
     """What a blocked thread waits for; a new one per episode, so identity marks progress."""
 
-    __slots__ = ("kind", "proc", "on", "where", "lock", "deadline", "exec", "value", "error", "what")
+    __slots__ = ("kind", "proc", "on", "where", "lock", "deadline", "exec", "value", "error", "what", "since")
     kind: str
     proc: Processor
     on: Session | tuple[Processor, ...] | None
@@ -78,6 +96,7 @@ class Block:
     value: object
     error: BaseException | None
     what: object
+    since: float
 
     def __init__(
         self,
@@ -189,6 +208,7 @@ class Runtime:
         self.sources = 0  # [g] open outside clients
         self.failures = []  # [g] (message, exception) run-time failures
         self.lost = set()  # [g] processors whose failed asynchronous call no client saw (reported)
+        self.events: list[RunEvent] = []  # [g] dirty regions, lost exceptions, failures (snapshot.py)
         self.stopping = False  # [g] set once; read racily as a fast check
         self.attention = False  # [g] stopping or permits.want_yield: one racy read
         #                                  at reservation entry instead of two
@@ -381,6 +401,7 @@ class Runtime:
         if blk.lock.acquire(False):
             return
         blk.exec = ex
+        blk.since = time.monotonic()  # for live views (snapshot.py): only a thread that really blocks pays it
         with self.glock:
             if blk.lock.acquire(False):
                 return
@@ -448,10 +469,17 @@ class Runtime:
         wake(blk.lock)
 
     # -- failures and stopping -------------------------------------------------------
-    def fail(self, message: str, exc: BaseException | None = None) -> None:
+    def fail(self, message: str, exc: BaseException | None = None, kind: str = "failure") -> None:
         with self.glock:
             self.failures.append((message, exc))
+            self.events.append(RunEvent(kind, message, time.time()))
         self.stop()
+
+    def note(self, kind: str, text: str) -> None:
+        """Record an event for live views (snapshot.py): rare ones only (a dirty region, a lost
+        exception); the run's failures are recorded by `fail`."""
+        with self.glock:
+            self.events.append(RunEvent(kind, text, time.time()))
 
     def report_lost(self, proc: Processor, s: Session) -> None:
         """[proc.lock held] An asynchronous call failed and no client ever saw it. A failed
@@ -464,6 +492,7 @@ class Runtime:
             again = proc in self.lost
             if s.where is CREATION:
                 self.lost.add(proc)
+        self.note("lost exception", f"exception lost on {proc!r} (client {s.client!r}): {detail}")
         if again:
             first, _, rest = detail.partition("\n")
             where = rest.split("\n", 1)[0].strip()

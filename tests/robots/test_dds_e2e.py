@@ -19,6 +19,8 @@ import pytest
 
 pytest.importorskip("cyclonedds")
 
+from foxglove_client import FoxgloveClient, free_port  # noqa: E402  (tests/foxglove_client.py)
+
 from scoopc.robots import dds, record, ros_messages  # noqa: E402
 
 pytestmark = pytest.mark.slow  # long: outside the quick selection (pytest -m "not slow")
@@ -287,3 +289,30 @@ def test_rate_benchmark_smoke(env):
         rf"baseline_median_hz={NUMBER} baseline_total_hz={NUMBER} ratio=\d+\.\d\d target_100hz=(met|MISSED)",
         lines[1],
     ), lines[1]
+
+
+def test_live_view_of_a_program_on_a_ros2_robot(env, node, bus, tmp_path):
+    """`--live` with `--robot ros2`: the /scoop channels and the run's ROS topics, with their
+    ROS 2 schemas, reach a Foxglove-protocol client."""
+    sim = node()
+    Odometry(bus).wait(lambda o: True)
+    port = free_port()
+    client = FoxgloveClient(port, {"/scoop/processors", "/robot1/cmd_vel", "/robot1/odom"})
+    run = subprocess.run(
+        [sys.executable, "-m", "scoopc", "run", str(PROGRAM), "--robot", "ros2", "--live", str(port)],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        timeout=120,
+    )
+    client.close()
+    assert run.returncode == 0, run.stderr
+    assert sim.stop() == 0, sim.stderr
+    assert any(p["class"] == "DDS_FORWARD" for m in client.on("/scoop/processors") for p in m["processors"])
+    topics = {c["topic"]: c for c in client.channels.values()}
+    assert (topics["/robot1/cmd_vel"]["encoding"], topics["/robot1/cmd_vel"]["schemaName"]) == (
+        "cdr",
+        "geometry_msgs/msg/Twist",
+    )
+    assert client.on("/robot1/cmd_vel") and client.on("/robot1/odom")

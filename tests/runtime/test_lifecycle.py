@@ -10,6 +10,7 @@ import time
 import pytest
 
 import scoopc.runtime as rt
+from scoopc.runtime import snapshot
 
 from rt_helpers import Cell, spawn
 
@@ -107,6 +108,9 @@ def test_cycle_of_synchronous_calls_is_reported_quickly(harness):
     assert "deadlock: a cycle of synchronous calls" in err
     for x, y in ((a, b), (b, a)):
         assert (f"{x._region_!r} in NODE.ping (ring.e:10) waits for the result of Cell.get on {y._region_!r}") in err
+    (event,) = [e for e in snapshot.events(h.rt) if e.kind == "deadlock"]  # what /scoop/events sends
+    assert event.text.startswith("deadlock: a cycle of synchronous calls")
+    assert event.text.count("NODE.ping (ring.e:10)") == 2
 
 
 def test_wait_condition_deadlock_is_reported_but_not_while_an_outside_client_is_open(harness):

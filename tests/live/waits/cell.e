@@ -1,0 +1,12 @@
+class CELL
+
+feature
+
+	value: INTEGER
+
+	set (v: INTEGER)
+		do
+			value := v
+		end
+
+end
