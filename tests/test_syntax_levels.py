@@ -127,3 +127,20 @@ def test_an_ecf_of_an_old_schema_without_the_option_has_that_release_s_default_l
     assert not parsed.has_errors and {d.severity for d in _obsolete(parsed.diagnostics)} == {"warning"}
     stated = collect([str(_library_project(tmp_path / "s", '<option syntax="standard"/>', _schema("1-5-0")))])
     assert stated.syntax_level(tmp_path / "s" / "old" / "old_style.e") == "standard"  # the option wins
+
+
+def test_the_application_s_schema_gives_the_void_safety_default(tmp_path):
+    # The same defaults: void safety none up to 1-10-0, transitional for 1-11-0 and 1-12-0, then
+    # complete (None); an option in the .ecf sets it whatever the schema.
+    for version, level in [("1-5-0", "none"), ("1-10-0", "none"), ("1-12-0", "transitional"), ("1-13-0", None)]:
+        ecf = tmp_path / f"{version}.ecf"
+        ecf.write_text(
+            f'<?xml version="1.0"?>\n<system {_schema(version)}name="a" uuid="00000000-0000-0000-0000-000000000006">'
+            '<target name="a"><root class="APP" feature="make"/><cluster name="a" location="app"/></target></system>'
+        )
+        (tmp_path / "app").mkdir(exist_ok=True)
+        (tmp_path / "app" / "app.e").write_text("class\n\tAPP\ncreate\n\tmake\nfeature\n\tmake\n\t\tdo\n\t\tend\nend\n")
+        assert collect([str(ecf)]).settings.void_safety == level, version
+    stated = tmp_path / "stated.ecf"
+    stated.write_text((tmp_path / "1-5-0.ecf").read_text().replace("<root", '<option void_safety="all"/><root'))
+    assert collect([str(stated)]).settings.void_safety == "all"
