@@ -168,6 +168,42 @@ CONCURRENCY_ORDER = ("thread", "none", "scoop")
 # EiffelStudio's syntax levels (EIFFEL_PARSER's obsolete_syntax, transitional_syntax, ecma_syntax
 # for `standard`, provisional_syntax); scoopc reads `provisional` as `standard`.
 SYNTAX_LEVELS = ("obsolete", "transitional", "standard", "provisional")
+# The syntax level of an .ecf with no `syntax` option, by its schema: the defaults of the
+# EiffelStudio release that wrote the schema (CONF_LOAD_PARSE_CALLBACKS.set_default_options,
+# Src/framework/configuration/parser/load/, and CONF_OPTION.make_6_3 / make_6_4 / make_7_0):
+# schemas 1-0-0 to 1-4-0 take EiffelStudio 6.3's, obsolete syntax; 1-5-0 to 1-8-0 take 6.4's,
+# transitional syntax; 1-9-0 and later standard syntax.
+_SCHEMA_SYNTAX = {
+    **dict.fromkeys(("1-0-0", "1-2-0", "1-3-0", "1-4-0"), "obsolete"),
+    **dict.fromkeys(("1-5-0", "1-6-0", "1-7-0", "1-8-0"), "transitional"),
+}
+# Void safety likewise (CONF_OPTION.make_6_3 to make_14_05): none up to schema 1-10-0
+# (EiffelStudio 7.0), transitional for 1-11-0 and 1-12-0 (7.3), complete from 1-13-0 (14.05).
+_SCHEMA_VOID_SAFETY = {
+    **dict.fromkeys(
+        ("1-0-0", "1-2-0", "1-3-0", "1-4-0", "1-5-0", "1-6-0", "1-7-0", "1-8-0", "1-9-0", "1-10-0"), "none"
+    ),
+    **dict.fromkeys(("1-11-0", "1-12-0"), "transitional"),
+}
+_SCHEMA_VERSION = re.compile(r"^http://www\.eiffel\.com/developers/xml/configuration-(\d+-\d+-\d+)$")
+
+
+def schema_syntax(system: ElementTree.Element) -> str:
+    """The syntax level of the .ecf whose root element is `system` when it sets none: the default
+    of the EiffelStudio release that wrote its schema (its `xmlns`)."""
+    return _SCHEMA_SYNTAX.get(_schema_version(system), "standard")
+
+
+def schema_void_safety(system: ElementTree.Element) -> str | None:
+    """The void-safety level of the application's .ecf `system` when its options set none (None:
+    today's default, complete)."""
+    return _SCHEMA_VOID_SAFETY.get(_schema_version(system))
+
+
+def _schema_version(system: ElementTree.Element) -> str:
+    """The version of the ECF schema `system` names in its `xmlns` ("1-5-0"), else ""."""
+    found = _SCHEMA_VERSION.match((system.get("xmlns") or "").strip())
+    return found.group(1) if found else ""
 
 
 def _check_library_concurrency(project: Project) -> None:
@@ -302,6 +338,9 @@ def _read_ecf(
     if chosen is None:
         return
     reader = _EcfReader(project, path, positions, chain + (path.resolve(),), library=bool(chain))
+    reader.syntax = schema_syntax(system)
+    if not chain:  # the application's schema gives the void-safety default its options may change
+        project.settings.void_safety = schema_void_safety(system)
     for element in _target_chain(chosen, targets):
         reader.read_target(element)
 

@@ -40,13 +40,13 @@ def test_at_the_standard_level_each_old_form_is_an_error_naming_the_setting():
     assert "`!T` is the obsolete spelling of `attached T`" in messages
 
 
-def _library_project(tmp_path, library_syntax: str) -> Path:
+def _library_project(tmp_path, library_syntax: str, schema: str = "") -> Path:
     library = tmp_path / "old"
     library.mkdir(parents=True)
     (library / "old_style.e").write_text((FOLDER / "old_style.e").read_text())
     (library / "old.ecf").write_text(
         f"""<?xml version="1.0" encoding="ISO-8859-1"?>
-<system name="old" uuid="00000000-0000-0000-0000-000000000003" library_target="old">
+<system {schema}name="old" uuid="00000000-0000-0000-0000-000000000003" library_target="old">
 	<target name="old">
 		{library_syntax}
 		<cluster name="old" location="."/>
@@ -104,3 +104,43 @@ def test_a_cluster_s_option_sets_the_level_of_its_files(tmp_path):
     assert project.settings.syntax is None and project.syntax_level(tmp_path / "old" / "old_style.e") == "obsolete"
     parsed = parse_project(project)
     assert not parsed.has_errors and {d.severity for d in _obsolete(parsed.diagnostics)} == {"warning"}
+
+
+def _schema(version: str) -> str:
+    return f'xmlns="http://www.eiffel.com/developers/xml/configuration-{version}" '
+
+
+def test_an_ecf_of_an_old_schema_without_the_option_has_that_release_s_default_level(tmp_path):
+    # EiffelStudio gives an .ecf with no syntax option the defaults of the release that wrote its
+    # schema: 1-0-0 to 1-4-0 obsolete, 1-5-0 to 1-8-0 transitional, later standard.
+    old_file = tmp_path / "{}" / "old" / "old_style.e"
+    for version, level in [
+        ("1-4-0", "obsolete"),
+        ("1-5-0", "transitional"),
+        ("1-8-0", "transitional"),
+        ("1-9-0", "standard"),
+        ("1-22-0", "standard"),
+    ]:
+        project = collect([str(_library_project(tmp_path / version, "", _schema(version)))])
+        assert project.syntax_level(Path(str(old_file).format(version))) == level, version
+    parsed = parse_project(collect([str(_library_project(tmp_path / "t", "", _schema("1-5-0")))]))
+    assert not parsed.has_errors and {d.severity for d in _obsolete(parsed.diagnostics)} == {"warning"}
+    stated = collect([str(_library_project(tmp_path / "s", '<option syntax="standard"/>', _schema("1-5-0")))])
+    assert stated.syntax_level(tmp_path / "s" / "old" / "old_style.e") == "standard"  # the option wins
+
+
+def test_the_application_s_schema_gives_the_void_safety_default(tmp_path):
+    # The same defaults: void safety none up to 1-10-0, transitional for 1-11-0 and 1-12-0, then
+    # complete (None); an option in the .ecf sets it whatever the schema.
+    for version, level in [("1-5-0", "none"), ("1-10-0", "none"), ("1-12-0", "transitional"), ("1-13-0", None)]:
+        ecf = tmp_path / f"{version}.ecf"
+        ecf.write_text(
+            f'<?xml version="1.0"?>\n<system {_schema(version)}name="a" uuid="00000000-0000-0000-0000-000000000006">'
+            '<target name="a"><root class="APP" feature="make"/><cluster name="a" location="app"/></target></system>'
+        )
+        (tmp_path / "app").mkdir(exist_ok=True)
+        (tmp_path / "app" / "app.e").write_text("class\n\tAPP\ncreate\n\tmake\nfeature\n\tmake\n\t\tdo\n\t\tend\nend\n")
+        assert collect([str(ecf)]).settings.void_safety == level, version
+    stated = tmp_path / "stated.ecf"
+    stated.write_text((tmp_path / "1-5-0.ecf").read_text().replace("<root", '<option void_safety="all"/><root'))
+    assert collect([str(stated)]).settings.void_safety == "all"
