@@ -27,10 +27,10 @@ feature {NONE} -- Initialization
 	make
 			-- Group with no sensor yet (add them with `add_range').
 		do
-			make_sensor
 			create readings.make (9)
 			create arrivals.make (9)
 			create names.make (9)
+			make_sensor -- last: its postcondition asks `is_stale', which reads them
 		ensure
 			empty: sensor_count = 0
 		end

@@ -81,11 +81,11 @@ feature {NONE} -- Initialization
 	make_unconnected
 			-- Signaler fed only by calls of `on_range' or `on_scan'; every sensor sees nothing.
 		do
-			make_sensor
 			create readings.make_filled (-1.0, 0, Sensor_count - 1)
 			create arrivals.make_filled (-1.0, 0, Sensor_count - 1)
 			create connected.make_filled (False, 0, Sensor_count - 1)
 			create ground_seen.make_filled (False, 0, 1)
+			make_sensor -- after them: its postcondition asks `is_stale', which reads them
 			obstacle_distance := 0.08
 			hole_distance := 0.05
 		end
