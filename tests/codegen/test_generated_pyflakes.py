@@ -8,11 +8,7 @@ from pathlib import Path
 import pytest
 from pyflakes import api, messages, reporter
 
-from scoopc import pipeline
-from scoopc.codegen.context import Options
-from scoopc.codegen.program import generate
-from scoopc.driver import BASE_PACKAGE, compiled_library
-from scoopc.project import collect
+from scoopc.driver import BASE_PACKAGE, Compilation, compiled_library
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -55,8 +51,8 @@ def test_the_golden_cases_expected_modules_name_nothing_undefined():
 @pytest.mark.slow
 @pytest.mark.parametrize("sample", sorted(p.name for p in (REPO / "samples").iterdir() if any(p.glob("*.e"))))
 def test_a_sample_names_nothing_undefined(sample):
-    checked = pipeline.check_project(collect([str(REPO / "samples" / sample)]))
-    assert not checked.has_errors
-    sem = checked.semantics
-    modules = generate(sem.universe, sem.tables, Options(), lambda info: not info.from_library)
+    folder = REPO / "samples" / sample
+    compilation = Compilation([next(iter(folder.glob("*.ecf")), folder)])  # a sample's .ecf names its C
+    assert not compilation.checked.has_errors
+    modules, _ = compilation.modules()
     assert undefined({name: ast.unparse(module) for name, (module, _) in modules.items()}) == []
