@@ -484,9 +484,14 @@ def test_a_program_calls_a_stock_service_and_serves_one(env, tmp_path):
     twin = rmw_twin.Node("jazzy")
     run = None
     try:
-        trigger = twin.create_service(
-            "std_srvs/srv/Trigger", "/twin/trigger", lambda request: trigger.new_response(success=True, message="hi")
-        )
+        made = threading.Event()  # a request may come before create_service has returned
+
+        def reply(request):
+            made.wait()
+            return trigger.new_response(success=True, message="hi")
+
+        trigger = twin.create_service("std_srvs/srv/Trigger", "/twin/trigger", reply)
+        made.set()
         run = scoopc(env, "run", str(PROGRAMS / "service_ros2"), "--robot", "ros2", cwd=tmp_path)
         enable = twin.create_client("std_srvs/srv/SetBool", "/svc/enable")
         reply = enable.call(enable.new_request(data=True), 120)

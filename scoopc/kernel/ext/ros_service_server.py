@@ -50,9 +50,11 @@ def start_serving(current):
         )
     source = rt.outside_client(f"service {name}")
     holder = {}
+    made = threading.Event()  # a request can come before ServiceServer(...) has returned
 
     def handle(request):
         pending = _Answer(request)
+        made.wait()
         server = holder["server"]
         source.call(current, _answer, (pending, server.store, server.response_type))
         if not pending.done.wait(ANSWER_WAIT) or pending.response is None:
@@ -64,6 +66,8 @@ def start_serving(current):
     except (TypeError, ValueError) as e:
         source.close()
         raise failure(current._region_, "DEVELOPER_EXCEPTION", f"ROS_SERVICE_SERVER: {e}") from None
+    finally:
+        made.set()
 
     def stop():
         holder["server"].close()
