@@ -61,6 +61,7 @@ def cli_main(capsys, *argv):
     return status, out, err
 
 
+@pytest.mark.slow  # every sample, checked twice: the full run's, not the quick selection's
 @pytest.mark.parametrize("sample", PLAIN + ROBOT, ids=lambda p: p.name)
 def test_check_agrees_with_the_command_line(sample, capsys):
     result = scoopc.check([sample])
@@ -70,6 +71,7 @@ def test_check_agrees_with_the_command_line(sample, capsys):
     assert [str(d) for d in result.diagnostics] == err.splitlines()
 
 
+@pytest.mark.slow  # every plain sample, run twice
 @pytest.mark.parametrize("sample", PLAIN, ids=lambda p: p.name)
 def test_run_agrees_with_the_command_line(sample, capsys):
     out, err = io.StringIO(), io.StringIO()
