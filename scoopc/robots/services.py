@@ -121,7 +121,9 @@ class _Endpoint:
         self.wake = GuardCondition(bus.participant)
         self.waitset.attach(self.condition)
         self.waitset.attach(self.wake)
-        self._closed = False
+        self._closed = False  # no more requests or replies taken
+        self._gone = threading.Lock()  # held while writing and while deleting the DDS entities
+        self._deleted = False  # [_gone]
         self._thread = threading.Thread(target=self._run, name=f"service {service}", daemon=True)
         self._thread.start()
         bus.owned.append(self)
@@ -146,7 +148,11 @@ class _Endpoint:
                         log.exception("service %s", self.service)
 
     def _write(self, guid: int, seq: int, msg, typename: str) -> None:
-        ret = ddspy_write(self.writer._ref, request_bytes(guid, seq, cdr.serialize(msg, typename, self.store)))
+        data = request_bytes(guid, seq, cdr.serialize(msg, typename, self.store))
+        with self._gone:
+            if self._deleted:  # a reply computed after close: its client hears nothing, as in rmw
+                return
+            ret = ddspy_write(self.writer._ref, data)
         if ret < 0:
             raise RuntimeError(f"DDS write on service {self.service} failed ({ret})")
 
@@ -156,11 +162,13 @@ class _Endpoint:
         self._closed = True
         self.wake.set(True)
         if self._thread is not threading.current_thread():
-            self._thread.join()
-        self.waitset.detach(self.condition)
-        self.waitset.detach(self.wake)
-        for entity in (self.condition, self.wake, self.waitset, self.reader, self.writer, *self.topics):
-            entity.__del__()
+            self._thread.join()  # a request being answered is answered first
+        with self._gone:
+            self._deleted = True
+            self.waitset.detach(self.condition)
+            self.waitset.detach(self.wake)
+            for entity in (self.condition, self.wake, self.waitset, self.reader, self.writer, *self.topics):
+                entity.__del__()
         if self in self.bus.owned:
             self.bus.owned.remove(self)
             self.bus._entities_changed()
@@ -189,7 +197,7 @@ class ServiceServer(_Endpoint):
             self._reply(handle, guid, seq, self.handler(request))
 
     def _reply(self, handle, guid: int, seq: int, response) -> None:
-        if self._closed:
+        if self._deleted:
             return
         self._wait_for_client(handle)
         self._write(guid, seq, response, self.response_type)
@@ -204,7 +212,7 @@ class ServiceServer(_Endpoint):
         if wanted is None:
             return
         deadline = time.monotonic() + REPLY_WAIT
-        while time.monotonic() < deadline and not self._closed:
+        while time.monotonic() < deadline and not self._deleted:
             for h in self.writer.get_matched_subscriptions():
                 try:
                     if _userdata_value(self.writer.get_matched_subscription_data(h), "clientid") == wanted:

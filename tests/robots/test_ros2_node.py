@@ -135,6 +135,29 @@ def test_a_service_both_ways_with_a_stock_node(bus_and_twin):
         silent.call(silent.new_request(), 0.2)
 
 
+def test_a_server_closed_while_answering_still_sends_that_reply(bus_and_twin):
+    """close() during a handler (the program's `close' right after its answer counted): the reply of
+    the request in progress goes out before the endpoints are deleted; it was dropped."""
+    import threading
+
+    from scoopc.robots import services
+
+    bus, twin = bus_and_twin
+    closer = []
+
+    def answer(request):
+        closer.append(threading.Thread(target=server.close))
+        closer[0].start()
+        assert _until(lambda: server._closed)  # close has begun: it waits for this reply
+        return server.new_response(success=True, message="last")
+
+    server = services.ServiceServer(bus, "/robot1/last", "std_srvs/srv/Trigger", answer)
+    client = twin.create_client("std_srvs/srv/Trigger", "/robot1/last")
+    assert client.call(client.new_request(), TIMEOUT).message == "last"
+    closer[0].join(TIMEOUT)
+    assert not closer[0].is_alive() and server._deleted
+
+
 def test_the_wire_format_is_the_request_header_then_the_message():
     from scoopc.robots import cdr, services
 

@@ -4,10 +4,12 @@ A scoopc.robots.services.ServiceServer on the process's transport. Each request,
 DDS thread, becomes an ASYNCHRONOUS call of `answer' on the Eiffel server's processor, logged by
 an outside client of the runtime (`rt.outside_client`), as subscriptions deliver messages; the
 DDS thread waits for that call's result (the response) and sends it. A failing `answer' is told
-on stderr and the request gets no response (the client's call times out)."""
+on stderr and the request gets no response (the client's call times out). `close' (or the end of
+the run) sends the response of a request already answered before it closes."""
 
 import sys
 import threading
+import time
 
 import scoopc.runtime as rt
 from scoopc.kernel import strings
@@ -51,13 +53,18 @@ def start_serving(current):
     source = rt.outside_client(f"service {name}")
     holder = {}
     made = threading.Event()  # a request can come before ServiceServer(...) has returned
+    closing = threading.Event()  # close() joins this thread: an answer queued after it never comes
 
     def handle(request):
         pending = _Answer(request)
         made.wait()
         server = holder["server"]
         source.call(current, _answer, (pending, server.store, server.response_type))
-        if not pending.done.wait(ANSWER_WAIT) or pending.response is None:
+        deadline = time.monotonic() + ANSWER_WAIT
+        while not pending.done.wait(0.05):
+            if closing.is_set() or time.monotonic() >= deadline:
+                break
+        if pending.response is None:
             raise RuntimeError(f"no answer from the server's processor for {name}")
         return pending.response
 
@@ -70,7 +77,8 @@ def start_serving(current):
         made.set()
 
     def stop():
-        holder["server"].close()
+        closing.set()
+        holder["server"].close()  # after the reply to a request already answered
         source.close()
 
     current._service_stop = stop
