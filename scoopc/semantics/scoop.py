@@ -121,7 +121,7 @@ def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, written=None
         target=str(target),
         actual=str(source),
         formal=str(target),
-        reason="it is separate and the target is not",
+        reason="it is separate and the formal is not" if code == "VUAR(2)" else "it is separate and the target is not",
         **hint,
         **extra,
     )
