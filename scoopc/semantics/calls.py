@@ -245,7 +245,7 @@ class CallChecks:
             if value is None or formal is None:
                 continue
             if separate_target is not None:
-                if not scoop.check_actual(self, actual, value, formal, separate_target):
+                if not scoop.check_actual(self, actual, value, formal):
                     continue
                 formal = formal.with_marks(separate=True)
             self.expect(actual, value, formal, "VUAR(2)")
