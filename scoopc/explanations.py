@@ -627,7 +627,8 @@ EXPLANATIONS: dict[str, Explanation] = {
         """Each actual argument must conform (or convert) to the type of its formal argument. In
         void-safe code a detachable actual cannot be passed to an attached formal, and with SCOOP a
         separate actual cannot be passed to a non-separate formal: the object may belong to another
-        processor.""",
+        processor. That holds even for a value read from the call's own target (`x.f (x.g)`), as in
+        EiffelStudio: the rule looks at separateness, not at which processor the value is on.""",
         """
         -- show (s: STRING);  name: detachable STRING
         p.move ("one", 2)

@@ -56,8 +56,9 @@ end
 """
 
 # Under SCOOP: VUAR(3) (a non-separate STRING to a separate object), VUTA(3) (`b.show` on an
-# attribute), VJAR (`plain := b`), V1SE (a separate block over a non-separate local), VFFD(8);
-# under thread and none, none of them.
+# attribute), VJAR (`plain := b`, and `boxes := many`: an actual generic parameter keeps its
+# separateness), V1SE (a separate block over a non-separate local), VFFD(8); under thread and
+# none, none of them.
 SEPARATE_APP = """class
 	APP
 
@@ -69,10 +70,14 @@ feature
 	make
 		local
 			plain: BOX
+			many: ARRAYED_LIST [separate BOX]
+			boxes: ARRAYED_LIST [BOX]
 		do
 			create b.make ("one")
 			b.show
 			plain := b
+			create many.make (1)
+			boxes := many
 			separate plain as p do
 				p.show
 			end
@@ -141,7 +146,8 @@ def test_separate_means_nothing_in_a_thread_or_none_system(tmp_path, capability)
 def test_the_same_program_as_a_scoop_system_breaks_scoop_rules(tmp_path):
     ecf = _concurrency_project(tmp_path, '<capability><concurrency support="scoop"/></capability>')
     result = scoopc.check([str(ecf)])
-    assert sorted(d.code for d in result.diagnostics if d.is_error) == ["V1SE", "VFFD(8)", "VJAR", "VUAR(3)", "VUTA(3)"]
+    codes = sorted(d.code for d in result.diagnostics if d.is_error)
+    assert codes == ["V1SE", "VFFD(8)", "VJAR", "VJAR", "VUAR(3)", "VUTA(3)"]
 
 
 def test_a_library_that_does_not_support_the_system_concurrency_is_named_in_a_warning(tmp_path):

@@ -245,7 +245,7 @@ class CallChecks:
             if value is None or formal is None:
                 continue
             if separate_target is not None:
-                if not scoop.check_actual(self, actual, value, formal, separate_target):
+                if not scoop.check_actual(self, actual, value, formal):
                     continue
                 formal = formal.with_marks(separate=True)
             self.expect(actual, value, formal, "VUAR(2)")
@@ -289,11 +289,12 @@ class CallChecks:
         if reason == "separate":
             scoop.separate_mismatch(self, code, node, value.ty, target, written)
         else:
-            detail = (
-                "it may be Void (detachable) and the target is attached"
-                if reason == "detachable"
-                else "it does not conform and no conversion applies"
-            )
+            detail = {
+                "detachable": "it may be Void (detachable) and the target is attached",
+                "separate-generic": "an actual generic parameter of it is separate where the "
+                + ("formal's" if code == "VUAR(2)" else "target's")
+                + " is not",
+            }.get(reason, "it does not conform and no conversion applies")
             self.report(
                 code,
                 node.span,
@@ -426,4 +427,6 @@ def _no_operands(formal) -> bool:
 def _hint(reason: str) -> str:
     if reason == "detachable":
         return "test it first: `if attached x as l_x then ... end`, or declare the target `detachable`"
+    if reason == "separate-generic":
+        return "declare that actual generic parameter `separate` in the target's type too"
     return ""

@@ -60,7 +60,8 @@ def conforms(universe, source: Ty, target: Ty, context=None) -> bool:
 
 
 def why_not(universe, source: Ty, target: Ty, context=None) -> str | None:
-    """None when `source` conforms to `target`; else "separate", "detachable" or "type"."""
+    """None when `source` conforms to `target`; else "separate", "detachable", "separate-generic"
+    (only the separateness of an actual generic parameter is in the way) or "type"."""
     if source.is_none:
         expanded = (info := universe.get(target.name)) is not None and info.is_expanded
         return (
@@ -69,8 +70,10 @@ def why_not(universe, source: Ty, target: Ty, context=None) -> str | None:
             else ("type" if expanded else "detachable")
         )
     if source.separate and not target.separate and universe.scoop:  # EiffelStudio: is_processor_attachable_to
-        return "separate" if _class_conforms(universe, source, target, context) else "type"
+        return "separate" if _class_conforms(universe, source, target, context, generic_separateness=False) else "type"
     if not _class_conforms(universe, source, target, context):
+        if universe.scoop and _class_conforms(universe, source, target, context, generic_separateness=False):
+            return "separate-generic"
         return "type"
     if universe.void_safe and target.attached and not source.attached and not _is_expanded(universe, source):
         return "detachable"
@@ -82,7 +85,11 @@ def _is_expanded(universe, ty: Ty) -> bool:
     return info is not None and info.is_expanded and not ty.is_formal
 
 
-def _class_conforms(universe, source: Ty, target: Ty, context, visiting: frozenset = frozenset()) -> bool:
+def _class_conforms(
+    universe, source: Ty, target: Ty, context, visiting: frozenset = frozenset(), generic_separateness: bool = True
+) -> bool:
+    """Whether the class of `source` conforms to that of `target` with conforming actual generic
+    parameters; `generic_separateness` False: the parameters' separateness left aside."""
     if source.is_none:  # NONE conforms to every reference type
         return not _is_expanded(universe, target)
     if source.is_formal or target.is_formal:
@@ -99,7 +106,8 @@ def _class_conforms(universe, source: Ty, target: Ty, context, visiting: frozens
         return _constraint_conforms(universe, source, target, context, visiting | {source.formal})
     if target.name == "TUPLE" and source.name == "TUPLE":
         return len(source.generics) >= len(target.generics) and all(
-            _generic_conforms(universe, s, t, context) for s, t in zip(source.generics, target.generics)
+            _generic_conforms(universe, s, t, context, generic_separateness)
+            for s, t in zip(source.generics, target.generics)
         )
     seen = ancestor(universe, source, target.name)
     if seen is None:
@@ -108,15 +116,17 @@ def _class_conforms(universe, source: Ty, target: Ty, context, visiting: frozens
         return True
     if len(seen.generics) != len(target.generics):
         return False
-    return all(_generic_conforms(universe, s, t, context) for s, t in zip(seen.generics, target.generics))
+    return all(
+        _generic_conforms(universe, s, t, context, generic_separateness) for s, t in zip(seen.generics, target.generics)
+    )
 
 
-def _generic_conforms(universe, source: Ty, target: Ty, context) -> bool:
+def _generic_conforms(universe, source: Ty, target: Ty, context, generic_separateness: bool = True) -> bool:
     if target.is_formal or source.is_formal:
-        return _class_conforms(universe, source, target, context)
-    if source.separate and not target.separate:
-        return False
-    return _class_conforms(universe, source, target, context)
+        return _class_conforms(universe, source, target, context, generic_separateness=generic_separateness)
+    if source.separate and not target.separate and universe.scoop and generic_separateness:
+        return False  # EiffelStudio: GEN_TYPE_A.valid_generic, is_processor_attachable_to (SCOOP systems only)
+    return _class_conforms(universe, source, target, context, generic_separateness=generic_separateness)
 
 
 def _constraint_conforms(universe, source: Ty, target: Ty, context, visiting: frozenset) -> bool:

@@ -43,11 +43,13 @@ def separate_by_constraint(ctx, ty: Ty | None) -> bool:
     return bool(bounds) and all(bound.separate for bound in bounds)
 
 
-def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> bool:
+def check_actual(ctx, actual_node, actual: Value, formal: Ty) -> bool:
     """The separate-argument rules at a call on a separate target (Gobo VUAR-3G/4G):
     VUAR(4) expanded actual with non-separate references; VUAR(3) a non-separate reference
     passed to a non-separate reference formal (it would be a traitor on the supplier's side);
-    VUAR(2) a separate actual on another processor passed to a non-separate formal."""
+    VUAR(2) a separate actual passed to a non-separate formal, even one on the target's own
+    processor (`x.f (x.g)`), as EiffelStudio's `argument_compatibility_error`: its conformance
+    check knows no processors, only separateness."""
     if is_expanded(ctx.universe, formal) or is_expanded(ctx.universe, actual.ty):
         if has_non_separate_references(ctx.universe, actual.ty):
             ctx.report("VUAR(4)", actual_node.span, type=str(actual.ty))
@@ -74,8 +76,6 @@ def check_actual(ctx, actual_node, actual: Value, formal: Ty, target: Value) -> 
             return True
         ctx.report("VUAR(3)", actual_node.span, actual=describe(actual_node), type=str(formal))
         return False
-    if actual.handler is not None and actual.handler != UNCONTROLLED and actual.handler == target.handler:
-        return True
     ctx.report(
         "VUAR(2)",
         actual_node.span,
@@ -121,7 +121,7 @@ def separate_mismatch(ctx, code: str, node, source: Ty, target: Ty, written=None
         target=str(target),
         actual=str(source),
         formal=str(target),
-        reason="it is separate and the target is not",
+        reason="it is separate and the formal is not" if code == "VUAR(2)" else "it is separate and the target is not",
         **hint,
         **extra,
     )

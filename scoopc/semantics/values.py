@@ -53,7 +53,7 @@ def manifest_kind(node) -> tuple[str, object] | None:
 def meet(universe, node, value: Value, target: Ty, context, tables) -> str | None:
     """None when `value` (of expression `node`) may be attached to an entity of type `target`:
     conformance, a manifest constant typed by context, or a conversion (recorded); else the
-    reason: "separate", "detachable" or "type"."""
+    reason: "separate", "detachable", "separate-generic" or "type"."""
     reason = why_not(universe, value.ty, target, context)
     if reason is None:
         return None

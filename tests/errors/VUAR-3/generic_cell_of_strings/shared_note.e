@@ -30,7 +30,7 @@ feature -- Basic operations
 			l_text := "moved"
 			a_note.put (l_text) -- E: VUAR(3)
 			a_shared.put (l_text)
-			a_note.put (a_note.item)
+			a_note.put (a_note.item) -- E: VUAR(2)
 			print (a_note.item.count)
 		end
 

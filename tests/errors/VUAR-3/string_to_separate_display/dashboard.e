@@ -29,7 +29,7 @@ feature -- Basic operations
 			a_display.show (a_text) -- E: VUAR(3)
 			a_display.show_copy (a_text)
 			a_display.show_copy ("ready")
-			a_display.show (a_display.title)
+			a_display.show (a_display.title) -- E: VUAR(2)
 			a_display.set_brightness (80)
 		end
 
