@@ -5,10 +5,10 @@ bound to the C wrappers the driver built with cffi (docs/LANGUAGE.md, Externals)
 Each external is one function made here when its class loads; a call converts the arguments
 (`kind`s of scoopc.semantics.externals: basic types as they are, strings as Python text, ARRAY
 and SPECIAL of numbers as numpy arrays copied in and back), runs the host function through the
-runtime (scoopc.runtime.externals: the processor is marked inside the external and lets the
-others run), and converts the result back. A Python exception escaping the host function becomes
-an EXTERNAL_FAILURE, EiffelStudio's exception for a failed external, with the Python exception
-as its cause (shown by `--debug`).
+runtime (scoopc.runtime.externals: the processor is marked inside the external and, when the
+external is `blocking`, lets the others run), and converts the result back. A Python exception
+escaping the host function becomes an EXTERNAL_FAILURE, EiffelStudio's exception for a failed
+external, with the Python exception as its cause (shown by `--debug`).
 """
 
 from __future__ import annotations
@@ -34,9 +34,10 @@ _PASSED_THROUGH = (EiffelFailure, ContractViolation, EiffelRuntimeError, Shutdow
 
 
 # --- binding ----------------------------------------------------------------------------------------
-def python_external(package: str, feature: str, target: str, arguments: tuple, result):
+def python_external(package: str, feature: str, target: str, arguments: tuple, result, blocking: bool = False):
     """The method for `feature` ("CLASS.name"), bound to `target` ("module.function" or
-    "module.Class.method") of the user's modules, found in the program's package first."""
+    "module.Class.method") of the user's modules, found in the program's package first; a
+    `blocking` one lets the other processors run while it runs (scoopc.runtime.externals)."""
     found: list = []
 
     def resolve():
@@ -50,19 +51,19 @@ def python_external(package: str, feature: str, target: str, arguments: tuple, r
 
     def external(current, *args):
         fn = found[0] if found else _resolving(current, feature, target, resolve)
-        return _call(current, feature, f"Python {target}", fn, arguments, result, args, None)
+        return _call(current, feature, f"Python {target}", fn, arguments, result, args, None, blocking)
 
     external.__name__ = feature.split(".")[-1]
     external.__qualname__ = feature
     return external
 
 
-def c_external(lib, ffi, symbol: str, feature: str, alias: str, arguments: tuple, result):
+def c_external(lib, ffi, symbol: str, feature: str, alias: str, arguments: tuple, result, blocking: bool = False):
     """The method for `feature` bound to the C wrapper `symbol` of the cffi module (lib, ffi)."""
     fn = getattr(lib, symbol)
 
     def external(current, *args):
-        return _call(current, feature, f"C {alias}", fn, arguments, result, args, ffi)
+        return _call(current, feature, f"C {alias}", fn, arguments, result, args, ffi, blocking)
 
     external.__name__ = feature.split(".")[-1]
     external.__qualname__ = feature
@@ -116,12 +117,12 @@ def _resolving(current, feature, target, resolve):
 
 
 # --- calling ----------------------------------------------------------------------------------------
-def _call(current, feature, what, fn, kinds, result, args, ffi):
+def _call(current, feature, what, fn, kinds, result, args, ffi, blocking):
     region = getattr(current, "_region_", None)
     keep: list = []
     try:
         values = [_to_host(kind, value, keep, ffi) for kind, value in zip(kinds, args)]
-        value = rt_externals.call(region, feature, what, fn, values)
+        value = rt_externals.call(region, feature, what, fn, values, blocking)
         for back in keep:
             back()
         return None if result is None else _from_host(region, result, value, ffi)
