@@ -40,6 +40,12 @@ def test_a_failing_python_external_is_an_external_failure():
     assert "in FAILING.make (failing.e:16)" in err and "Traceback" not in err
 
 
+def test_numbers_reach_python_as_views_of_the_eiffel_items():
+    result, out, err = run(HERE / "views")
+    assert result.status == Exit.OK, err
+    assert out == (HERE / "views" / "expected.out").read_text()
+
+
 def test_only_a_blocking_external_gives_up_its_run_permit():
     result, out, err = run(HERE / "permits")
     assert result.status == Exit.OK, err
