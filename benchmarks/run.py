@@ -47,6 +47,11 @@ def parse_args(argv):
     size.add_argument("--smoke", action="store_true", help="tiny sizes, one run: for tests")
     parser.add_argument("--unpinned", action="store_true", help="do not pin to one CPU (shows the multi-core picture)")
     parser.add_argument(
+        "--no-unpinned-figure",
+        action="store_true",
+        help="after a pinned run, skip measuring the compiled versions against threading again on every CPU",
+    )
+    parser.add_argument(
         "--only",
         nargs="+",
         metavar="NAME",
@@ -108,14 +113,26 @@ def child_main(name, variant, size, build=None):
 # --- parent side: orchestration and report ------------------------------------
 
 
+ALL_CPUS = []  # the CPUs the run had before pinning, given back for the unpinned figure
+
+
 def pin(unpinned):
     if unpinned:
         return "unpinned"
     if not hasattr(os, "sched_setaffinity"):
         return "unpinned (no sched_setaffinity on this platform)"
-    cpu = min(os.sched_getaffinity(0))
+    ALL_CPUS[:] = sorted(os.sched_getaffinity(0))
+    cpu = ALL_CPUS[0]
     os.sched_setaffinity(0, {cpu})
     return f"pinned to cpu {cpu}"
+
+
+def unpin():
+    """Give back every CPU (children inherit it); False when the run was never pinned."""
+    if not ALL_CPUS or len(ALL_CPUS) < 2:
+        return False
+    os.sched_setaffinity(0, set(ALL_CPUS))
+    return True
 
 
 def failure_line(stderr):
@@ -178,29 +195,67 @@ def report_benchmark(name, size, repeats, stat, build=None):
     per_op = "/".join(f"{1e6 * best[v] / module.ops(**params):.2f}" for v in shown)
     ratio = best["scoop"] / best["baseline"]
     line = f"{name} {describe(params)} {times} ratio={ratio:.2f}"
-    compiled = None
+    compiled = against_threads = None
     if build is not None:
         compiled = best["compiled"] / best["scoop"]
-        line += f" compiled_ratio={best['compiled'] / best['baseline']:.2f} compiled_vs_api={compiled:.2f}"
+        against_threads = best["compiled"] / best["baseline"]
+        line += f" compiled_ratio={against_threads:.2f} compiled_vs_api={compiled:.2f}"
     line += f" us_per_op={per_op} cpu_ratio={cpu['scoop'] / max(cpu['baseline'], 1e-9):.2f}"
     print(line, flush=True)
-    return ratio, compiled
+    return ratio, compiled, against_threads
 
 
 def geomean(values):
     return math.exp(sum(math.log(v) for v in values) / len(values))
 
 
+# The targets of compiled programs against hand-written threading, pinned to one core.
+COMPILED_WORST_TARGET, COMPILED_GEOMEAN_TARGET = 1.5, 1.0
+
+
 def report_geomean(ratios, failed):
-    """ratios: [(scoop/baseline, compiled/scoop or None)] of the benchmarks that ran."""
+    """ratios: {name: (scoop/baseline, compiled/scoop or None, compiled/baseline or None)} of the
+    benchmarks that ran."""
     if failed or not ratios:
         print(f"geomean_ratio=nan failed={','.join(failed) or 'none run'}")
         return
-    line = f"geomean_ratio={geomean([r for r, _ in ratios]):.2f}"
-    compiled = [c for _, c in ratios if c is not None]
+    line = f"geomean_ratio={geomean([r[0] for r in ratios.values()]):.2f}"
+    compiled = [r[1] for r in ratios.values() if r[1] is not None]
     if compiled:
         line += f" compiled_vs_api_geomean={geomean(compiled):.2f} compiled_vs_api_max={max(compiled):.2f}"
     print(line)
+    against = {name: r[2] for name, r in ratios.items() if r[2] is not None}
+    if against:
+        print(compiled_summary("compiled against threads", against))
+
+
+def compiled_summary(title, against):
+    """One line: the geomean and the worst of compiled/threads ratios, and whether the targets hold."""
+    mean = geomean(list(against.values()))
+    worst = max(against, key=against.get)
+    met = mean <= COMPILED_GEOMEAN_TARGET and against[worst] <= COMPILED_WORST_TARGET
+    return (
+        f"{title}: compiled_geomean={mean:.2f} compiled_worst={against[worst]:.2f} ({worst})  "
+        f"target each <= {COMPILED_WORST_TARGET}, geomean <= {COMPILED_GEOMEAN_TARGET}: {'met' if met else 'MISSED'}"
+    )
+
+
+def report_unpinned(names, size, repeats, stat, builds):
+    """The compiled versions against threading again on every CPU: the multi-core picture."""
+    against = {}
+    for name in names:
+        build = builds.get(name)
+        if build is None or isinstance(build, RunFailed):
+            continue
+        try:
+            summary = measure(name, size, repeats, stat, ("baseline", "compiled"), build)
+        except RunFailed as failure:
+            print(f"unpinned {name} FAILED {failure}", flush=True)
+            continue
+        against[name] = summary["compiled"]["seconds"] / summary["baseline"]["seconds"]
+    if against:
+        detail = " ".join(f"{name}={ratio:.2f}" for name, ratio in against.items())
+        print(f"{compiled_summary(f'unpinned, {len(ALL_CPUS)} cpus', against)}  [{detail}]", flush=True)
 
 
 def compile_all(names, folder, assertions):
@@ -271,14 +326,19 @@ def main(argv=None):
     print_header(size, repeats, args.stat, pin(args.unpinned))
     selected = args.only or BENCHMARKS + ["micro"]
     names = [n for n in BENCHMARKS if n in selected]
-    ratios, failed = [], []
+    ratios, failed = {}, []
     with tempfile.TemporaryDirectory(prefix="scoopc-bench-") as folder:
         builds = {} if args.no_compiled or not names else compile_all(names, folder, args.assertions)
         for name in names:
             ratio = report_benchmark(name, size, repeats, args.stat, builds.get(name))
-            ratios.append(ratio) if ratio is not None else failed.append(name)
-    if names:
-        report_geomean(ratios, failed)
+            if ratio is None:
+                failed.append(name)
+            else:
+                ratios[name] = ratio
+        if names:
+            report_geomean(ratios, failed)
+        if builds and not args.no_unpinned_figure and unpin():
+            report_unpinned(names, size, repeats, args.stat, builds)
     if "micro" in selected and not report_micro(size, repeats, args.stat):
         failed.append("micro")
     return 1 if failed else 0

@@ -254,11 +254,29 @@ class Analysis:
         return found
 
     def _library_facts(self, key: str):
-        # a user class that shadows a library class changes what the library's routines call
-        entry = None if self.universe.shadowed else (self._library or {}).get(key)
+        """A library version's saved facts, in this program's names: the library was compiled
+        alone, so a library class that a user class shadows (MUTEX, kept as MUTEX@BASE here) is
+        named as the library named it; its name, in the key, the callees and the seeds, is
+        translated."""
+        shadowed = self.universe.shadowed
+        if shadowed:
+            library_name = {ours: theirs for theirs, ours in shadowed.items()}
+            cls, _, name = key.rpartition(".")
+            key = f"{library_name.get(cls, cls)}.{name}"
+        entry = (self._library or {}).get(key)
         if entry is None:
             return None
-        return entry[0], [tuple(c[:2]) + ((c[2] if c[0] == "v" else frozenset(c[2])),) for c in entry[1]]
+        if not shadowed:
+            return entry[0], [tuple(c[:2]) + ((c[2] if c[0] == "v" else frozenset(c[2])),) for c in entry[1]]
+
+        def ours(dotted: str) -> str:
+            cls, _, name = dotted.rpartition(".")
+            return f"{shadowed.get(cls, cls)}.{name}"
+
+        return entry[0], [
+            (kind, shadowed.get(cls, cls), what if kind == "v" else frozenset(ours(seed) for seed in what))
+            for kind, cls, what in (tuple(c) for c in entry[1])
+        ]
 
 
 # --- the facts of one routine's body -------------------------------------------------------------

@@ -29,6 +29,12 @@ COMPILED_LINE = re.compile(
     rf"\(assertions=none; the standard library: {NUMBER} s, compiled once or cached\)$"
 )
 GEOMEAN_LINE = re.compile(rf"geomean_ratio={NUMBER} compiled_vs_api_geomean={NUMBER} compiled_vs_api_max={NUMBER}")
+SUMMARY = (
+    rf"compiled_geomean=({NUMBER}) compiled_worst=({NUMBER}) \((\w+)\)  "
+    rf"target each <= 1\.5, geomean <= 1\.0: (met|MISSED)"
+)
+COMPILED_SUMMARY_LINE = re.compile(rf"^compiled against threads: {SUMMARY}$")
+UNPINNED_LINE = re.compile(rf"^unpinned, (\d+) cpus: {SUMMARY}  \[((?:\w+={NUMBER} ?)+)\]$")
 MICRO_LINE = re.compile(rf"^micro (\w+) scoop_us={NUMBER} baseline_us={NUMBER} ratio={NUMBER}  \(.+\)$")
 MICRO_KEYS = [
     "async_command",
@@ -74,8 +80,26 @@ def test_geomean_line(smoke):
     assert GEOMEAN_LINE.fullmatch(smoke[7]), smoke
 
 
+def test_compiled_against_threads_geomean_and_worst(smoke):
+    match = COMPILED_SUMMARY_LINE.match(smoke[8])
+    assert match, smoke
+    compiled = {line.split()[0]: float(re.search(rf"compiled_ratio=({NUMBER})", line).group(1)) for line in smoke[2:7]}
+    assert match.group(3) == max(compiled, key=compiled.get)
+    assert float(match.group(2)) == compiled[match.group(3)]
+    assert (match.group(4) == "met") == (float(match.group(1)) <= 1.0 and float(match.group(2)) <= 1.5)
+
+
+def test_a_pinned_run_ends_with_the_unpinned_figure(smoke):
+    if len(os.sched_getaffinity(0)) < 2:
+        pytest.skip("one CPU: there is no unpinned figure")
+    match = UNPINNED_LINE.match(smoke[9])
+    assert match, smoke
+    assert int(match.group(1)) == len(os.sched_getaffinity(0))
+    assert [item.split("=")[0] for item in match.group(6).split()] == NAMES
+
+
 def test_micro_lines(smoke):
-    micro = [MICRO_LINE.match(line) for line in smoke[8:]]
+    micro = [MICRO_LINE.match(line) for line in smoke[8:] if line.startswith("micro ")]
     assert all(micro), smoke
     assert [m.group(1) for m in micro] == MICRO_KEYS
 
@@ -87,7 +111,7 @@ def test_only_and_unpinned_select():
     assert "unpinned" in lines[0]
     assert COMPILED_LINE.match(lines[1]).group(1) == "1"
     assert BENCH_LINE.match(lines[2]).group(1) == "mutex"
-    assert GEOMEAN_LINE.fullmatch(lines[3]) and len(lines) == 4
+    assert GEOMEAN_LINE.fullmatch(lines[3]) and COMPILED_SUMMARY_LINE.match(lines[4]) and len(lines) == 5
 
 
 def test_no_compiled_keeps_the_hand_written_variants_only():
