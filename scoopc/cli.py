@@ -9,6 +9,7 @@ import argparse
 import sys
 import traceback
 from collections.abc import Callable, Sequence
+from pathlib import Path
 
 from . import diagnostics
 from .exits import Exit, SourceErrors, UsageError
@@ -162,7 +163,8 @@ def _add_assertions_option(command: argparse.ArgumentParser) -> None:
     )
 
 
-def _add_run_options(command: argparse.ArgumentParser) -> None:
+def _add_run_options(command: argparse.ArgumentParser, compiled: bool = False) -> None:
+    """`scoopc run`'s options; `compiled`: those a compiled program takes (no cache to skip)."""
     command.add_argument(
         "--trace-processors",
         action="store_true",
@@ -178,9 +180,10 @@ def _add_run_options(command: argparse.ArgumentParser) -> None:
         help="run `sleep` and timers on a virtual clock that jumps ahead when every "
         "processor waits (fast runs of programs that sleep)",
     )
-    command.add_argument(
-        "--no-cache", action="store_true", help="compile the program and the standard library again, even if cached"
-    )
+    if not compiled:
+        command.add_argument(
+            "--no-cache", action="store_true", help="compile the program and the standard library again, even if cached"
+        )
     command.add_argument(
         "--status",
         nargs="?",
@@ -434,19 +437,33 @@ def _command_compile(args: argparse.Namespace) -> int:
     finally:
         _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
     program = compilation.compile_to(args.output)
+    robot = f" (on the simulator; `python -m {program.package} --help` for the robot options)"
     print(
         f"scoopc: wrote {program.folder / program.package} and {program.folder / 'eiffel_base'}; run it with: "
-        f"cd {program.folder} && python -m {program.package}",
+        f"cd {program.folder} && python -m {program.package}{robot if program.roboscoop else ''}",
         file=sys.stderr,
     )
     return Exit.OK
 
 
 def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
-    from .driver import RunOptions, run_compilation  # deferred: the code generator (start-up)
-    from .robots.runner import RobotOptions  # deferred: the robot side (start-up)
+    from .driver import run_compilation  # deferred: the code generator (start-up)
 
     compilation = _compilation(args, root=args.root, assertions=args.assertions)
+    options, robot = _run_options(args)
+    try:
+        compilation.cached_program(use_cache=not args.no_cache)
+    finally:
+        if compilation.was_checked:  # checked now, not taken from the cache
+            _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
+    return run_compilation(compilation, program_args, options, robot).status
+
+
+def _run_options(args: argparse.Namespace):
+    """The run options and the robot options `_add_run_options` parsed: (RunOptions, RobotOptions)."""
+    from .driver import RunOptions  # deferred: the code generator (start-up)
+    from .robots.runner import RobotOptions  # deferred: the robot side (start-up)
+
     options = RunOptions(
         args.trace_processors, args.strict, args.virtual_clock, args.debug, status=args.status, live=args.live
     )
@@ -467,12 +484,7 @@ def _command_run(args: argparse.Namespace, program_args: Sequence[str]) -> int:
         profile=args.profile,
         node_name=args.node_name,
     )
-    try:
-        compilation.cached_program(use_cache=not args.no_cache)
-    finally:
-        if compilation.was_checked:  # checked now, not taken from the cache
-            _render(compilation.checked.diagnostics, compilation.checked.line_text, args.format)
-    return run_compilation(compilation, program_args, options, robot).status
+    return options, robot
 
 
 def _command_lsp(args: argparse.Namespace) -> int:
@@ -569,18 +581,27 @@ def _progress() -> Callable[[str], None] | None:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    argv = list(sys.argv[1:] if argv is None else argv)
-    program_args: list[str] = []
-    if "--" in argv:
-        split = argv.index("--")
-        argv, program_args = argv[:split], argv[split + 1 :]
+    argv, program_args = _program_arguments(list(sys.argv[1:] if argv is None else argv))
     args = build_parser().parse_args(argv)
     if program_args and args.command != "run":
         build_parser().error("arguments after `--` are for `scoopc run` only")
+    if args.command == "run":
+        return _reported(lambda: args.handler(args, program_args))
+    return _reported(lambda: args.handler(args))
+
+
+def _program_arguments(argv: list[str]) -> tuple[list[str], list[str]]:
+    """(the options, the program's arguments: those after `--`)."""
+    if "--" not in argv:
+        return argv, []
+    split = argv.index("--")
+    return argv[:split], argv[split + 1 :]
+
+
+def _reported(command: Callable[[], int]) -> int:
+    """Run a command; a failure becomes its message on stderr and its exit code."""
     try:
-        if args.command == "run":
-            return int(args.handler(args, program_args))
-        return int(args.handler(args))
+        return int(command())
     except SourceErrors:
         return Exit.SOURCE  # the diagnostics are on stderr already
     except UsageError as problem:
@@ -596,6 +617,47 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("scoopc: internal error (a bug in scoopc; please report it with the input):", file=sys.stderr)
         traceback.print_exc()
         return Exit.INTERNAL
+
+
+# ---- compiled programs ---------------------------------------------------------------------------
+
+
+def run_compiled(main_file: str, program: dict, argv: Sequence[str] | None = None) -> int:
+    """`python -m PACKAGE [OPTIONS] [-- ARGS]`: the run of a Roboscoop program `scoopc compile`
+    wrote, from its `__main__.py` (`main_file`, in the package's folder; `program`: its root class,
+    creation procedure, classes shadowing the library's, the scoopc version that compiled it). It
+    takes `scoopc run`'s run and robot options, its own arguments after `--`, and runs with a robot
+    as `scoopc run` runs it: on the simulator unless `--robot ros2`, in the world.yaml (and with the
+    robot.yaml) `scoopc compile` put beside the package."""
+    folder = Path(main_file).resolve().parent
+    parser = _Parser(
+        prog=f"python -m {folder.name}",
+        description=f"Run {program['root']}, compiled by scoopc, with a robot: the built-in simulator unless "
+        "`--robot ros2` (docs/ROBOTS.md). Arguments after `--` go to the program.",
+    )
+    _add_run_options(parser, compiled=True)
+    argv, program_args = _program_arguments(list(sys.argv[1:] if argv is None else argv))
+    args = parser.parse_args(argv)
+    if program.get("version") != __version__:
+        print(
+            f"scoopc: note: {folder.name} was compiled by scoopc {program.get('version')} and runs on scoopc "
+            f"{__version__}; if it fails, compile it again",
+            file=sys.stderr,
+        )
+    return _reported(lambda: _run_compiled(folder, program, args, program_args))
+
+
+def _run_compiled(folder: Path, program: dict, args: argparse.Namespace, program_args: list[str]) -> int:
+    from .driver import CompiledProgram, Root, run_program  # deferred: start-up (the run only)
+    from .driver.packages import DamagedCache  # deferred: as above
+
+    options, robot = _run_options(args)
+    root = Root(program["root"], program["creator"])
+    compiled = CompiledProgram(folder.parent, folder.name, root, folder.parent, program["shadowed"], True)
+    try:
+        return run_program(compiled, program_args, options, robot, [str(folder)]).status
+    except DamagedCache as damage:
+        raise UsageError(f"the compiled program does not load ({damage}): compile it again") from None
 
 
 if __name__ == "__main__":

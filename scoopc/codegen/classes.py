@@ -282,14 +282,15 @@ class ClassGen:
         if spec.language == "python":
             self.user_externals.add("KX")
             target = P.const(externals.python_alias(self.info.name, feature.name, inner.alias))
-            binding = P.call("_KX.python_external", [P.name("__name__"), name, target, kinds, result])
+            args = [P.name("__name__"), name, target, kinds, result]
+            binding = P.call("_KX.python_external", args, {"blocking": P.const(spec.blocking)})
         elif spec.language in ("c", "c++"):
             self.user_externals.update(("KX", spec.language))
             cx = C_MODULE_ALIAS[spec.language]
             symbol = externals.c_symbol(self.info.name, feature.name)
             alias = P.const("inline" if spec.inline else inner.alias or feature.name)
             args = [P.attr(P.name(cx), "lib"), P.attr(P.name(cx), "ffi"), P.const(symbol), name, alias, kinds, result]
-            binding = P.call("_KX.c_external", args)
+            binding = P.call("_KX.c_external", args, {"blocking": P.const(spec.blocking)})
         else:
             return None
         constant = f"_external_{pyname}"  # made once, when the module loads

@@ -27,9 +27,11 @@ from ..codegen.program import generate
 from ..exits import SourceErrors, UsageError
 from ..kernel.link import LIBRARY_LEAVES_FILE
 from ..project import Project, collect
+from ..robots.profile import beside_program
 from ..semantics import Checked as SemanticsChecked
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root
+from ..version import __version__
 from . import cache, externals
 from .library import Library, compiled_library
 from .packages import (
@@ -194,16 +196,18 @@ class Compilation:
         sem = self.semantics
         modules, leaves = self.modules(package)
         folder = out / package
-        write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).", (BASE_PACKAGE,))
+        doc = f"A program compiled by scoopc (root class {self.root.key})."
+        write_modules(folder, modules, doc, (BASE_PACKAGE,), _no_scoopc(package))
         (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
-        (folder / "__main__.py").write_text(_main_text(package, self.root, dict(sem.universe.shadowed)))
+        compiled = CompiledProgram(
+            out, package, self.root, self.library.path, dict(sem.universe.shadowed), uses_roboscoop(self.project.files)
+        )
+        (folder / "__main__.py").write_text(_main_text(compiled))
         externals.copy_python_modules(self.checked.externals, folder)
         for module in self.c_modules:
             shutil.copy2(module, folder / module.name)
         outdir.mark(folder)
-        return CompiledProgram(
-            out, package, self.root, self.library.path, dict(sem.universe.shadowed), uses_roboscoop(self.project.files)
-        )
+        return compiled
 
     def compile_to(self, out: PathLike) -> CompiledProgram:
         """`scoopc compile -o OUT`: OUT/<root> and OUT/eiffel_base, replacing only what scoopc wrote
@@ -217,6 +221,12 @@ class Compilation:
         for folder in (out / package, library):
             outdir.clear(folder)
         compiled = self.write_package(out, package)
+        if compiled.roboscoop:  # its run looks for them beside the package, as `scoopc run` does beside the sources
+            for name in ("world.yaml", "robot.yaml"):
+                found = beside_program(self.paths, name)
+                if found is not None:
+                    shutil.copy2(found, out / package / name)
+            outdir.mark(out / package)
         shutil.copytree(
             self.library.path / BASE_PACKAGE, library, ignore=shutil.ignore_patterns("__pycache__", outdir.MARKER)
         )
@@ -298,15 +308,37 @@ def _read_cached(folder: Path) -> CompiledProgram | None:
     return found if whole else None
 
 
-def _main_text(package: str, root: Root, shadowed: dict[str, str]) -> str:
+def _main_text(program: CompiledProgram) -> str:
+    """The `__main__` of a compiled program. A Roboscoop program is run by scoopc as `scoopc run`
+    runs it, with a robot and the run and robot options (cli.run_compiled); any other program is
+    started by the launcher alone (a faster start: the driver is not loaded), with its arguments."""
+    root = program.root
+    if program.roboscoop:
+        facts = {"root": root.key, "creator": root.creator, "shadowed": program.shadowed, "version": __version__}
+        return (
+            f'"""Run the program: python -m {program.package} [OPTIONS] [-- ARGS] (the options: --help)."""\n'
+            f"import sys\n\n"
+            f"from scoopc.cli import run_compiled\n\n"
+            f"if __name__ == '__main__':\n"
+            f"    sys.exit(run_compiled(__file__, {facts!r}))\n"
+        )
     return (
-        f'"""Run the program: python -m {package} [ARGS]."""\n'
+        f'"""Run the program: python -m {program.package} [ARGS]."""\n'
         f"import sys\n\n"
         f"from scoopc.kernel import launcher\n\n"
         f"if __name__ == '__main__':\n"
-        f"    from {package}.{module_name(root.key)} import {class_name(root.key)}\n"
+        f"    from {program.package}.{module_name(root.key)} import {class_name(root.key)}\n"
         f"    sys.exit(launcher.main({class_name(root.key)}, {root.creator!r}, sys.argv, "
-        f"shadowed={shadowed!r}))\n"
+        f"shadowed={program.shadowed!r}))\n"
+    )
+
+
+def _no_scoopc(package: str) -> str:
+    """What a compiled program says when the Python that runs it cannot import scoopc."""
+    return (
+        f"{package}: error: this program was compiled by scoopc {__version__} and runs on scoopc's runtime, "
+        "which this Python cannot import ({}); install scoopc (pip install scoopc) or run it with the Python "
+        "that has scoopc\n"
     )
 
 

@@ -101,15 +101,29 @@ def program_key(sources: list[Path], extra: str) -> str:
 
 
 def write_modules(
-    folder: Path, modules: dict[str, tuple[ast.Module, str]], init_doc: str, uses: tuple[str, ...] = ()
+    folder: Path,
+    modules: dict[str, tuple[ast.Module, str]],
+    init_doc: str,
+    uses: tuple[str, ...] = (),
+    no_scoopc: str | None = None,
 ) -> None:
     """Write the modules of one package (readable Python text) and its __init__, which loads
-    them parents first (scoopc.kernel.link)."""
+    them parents first (scoopc.kernel.link). With `no_scoopc`, a Python that cannot import scoopc
+    gets that message (`{}`: the import error) on stderr and exit code 2 instead of a traceback."""
     folder.mkdir(parents=True, exist_ok=True)
     order = [name[:-3] for name in modules]
+    load = "from scoopc.kernel import link\n"
+    if no_scoopc is not None:
+        load = (
+            "try:\n"
+            "    from scoopc.kernel import link\n"
+            "except ImportError as missing:  # scoopc is the program's runtime: say so, without a traceback\n"
+            "    import sys\n\n"
+            f"    sys.stderr.write({no_scoopc!r}.format(missing))\n"
+            "    raise SystemExit(2) from None\n"
+        )
     (folder / "__init__.py").write_text(
-        f'"""{init_doc}"""\nfrom scoopc.kernel import link\n\n'
-        f"CLASSES_BY_NAME = link.load(__name__, {order!r}, uses={uses!r})\n"
+        f'"""{init_doc}"""\n{load}\nCLASSES_BY_NAME = link.load(__name__, {order!r}, uses={uses!r})\n'
     )
     lines: dict[str, list[object]] = {}
     for filename, (module, source) in modules.items():

@@ -4,11 +4,11 @@ bound to the C wrappers the driver built with cffi (docs/LANGUAGE.md, Externals)
 
 Each external is one function made here when its class loads; a call converts the arguments
 (`kind`s of scoopc.semantics.externals: basic types as they are, strings as Python text, ARRAY
-and SPECIAL of numbers as numpy arrays copied in and back), runs the host function through the
-runtime (scoopc.runtime.externals: the processor is marked inside the external and lets the
-others run), and converts the result back. A Python exception escaping the host function becomes
-an EXTERNAL_FAILURE, EiffelStudio's exception for a failed external, with the Python exception
-as its cause (shown by `--debug`).
+and SPECIAL of numbers as numpy views of their items, BOOLEAN's copied in and back), runs the
+host function through the runtime (scoopc.runtime.externals: the processor is marked inside the
+external and, when the external is `blocking`, lets the others run), and converts the result back. A Python exception
+escaping the host function becomes an EXTERNAL_FAILURE, EiffelStudio's exception for a failed
+external, with the Python exception as its cause (shown by `--debug`).
 """
 
 from __future__ import annotations
@@ -16,6 +16,7 @@ from __future__ import annotations
 import importlib
 import operator
 import sys
+from array import array
 from pathlib import Path
 
 from ..runtime import Shutdown, externals as rt_externals
@@ -29,14 +30,19 @@ _BOUNDS = {f"INTEGER_{n}": (-(2 ** (n - 1)), 2 ** (n - 1) - 1) for n in (8, 16, 
 _BOUNDS |= {f"NATURAL_{n}": (0, 2**n - 1) for n in (8, 16, 32, 64)}
 _DTYPES = {k: v.lower() for k, v in (("REAL_32", "float32"), ("REAL_64", "float64"), ("BOOLEAN", "bool"))}
 _DTYPES |= {f"INTEGER_{n}": f"int{n}" for n in (8, 16, 32, 64)} | {f"NATURAL_{n}": f"uint{n}" for n in (8, 16, 32, 64)}
+# array.array kinds of the numeric items kept in a buffer numpy views (BOOLEAN's are copied)
+_TYPECODES = {f"INTEGER_{n}": c for n, c in ((8, "b"), (16, "h"), (32, "i"), (64, "q"))}
+_TYPECODES |= {f"NATURAL_{n}": c for n, c in ((8, "B"), (16, "H"), (32, "I"), (64, "Q"))}
+_TYPECODES |= {"REAL_32": "f", "REAL_64": "d"}
 # Exceptions that are Eiffel's already (raised by Eiffel code the external called back) or the runtime's.
 _PASSED_THROUGH = (EiffelFailure, ContractViolation, EiffelRuntimeError, Shutdown)
 
 
 # --- binding ----------------------------------------------------------------------------------------
-def python_external(package: str, feature: str, target: str, arguments: tuple, result):
+def python_external(package: str, feature: str, target: str, arguments: tuple, result, blocking: bool = False):
     """The method for `feature` ("CLASS.name"), bound to `target` ("module.function" or
-    "module.Class.method") of the user's modules, found in the program's package first."""
+    "module.Class.method") of the user's modules, found in the program's package first; a
+    `blocking` one lets the other processors run while it runs (scoopc.runtime.externals)."""
     found: list = []
 
     def resolve():
@@ -50,19 +56,19 @@ def python_external(package: str, feature: str, target: str, arguments: tuple, r
 
     def external(current, *args):
         fn = found[0] if found else _resolving(current, feature, target, resolve)
-        return _call(current, feature, f"Python {target}", fn, arguments, result, args, None)
+        return _call(current, feature, f"Python {target}", fn, arguments, result, args, None, blocking)
 
     external.__name__ = feature.split(".")[-1]
     external.__qualname__ = feature
     return external
 
 
-def c_external(lib, ffi, symbol: str, feature: str, alias: str, arguments: tuple, result):
+def c_external(lib, ffi, symbol: str, feature: str, alias: str, arguments: tuple, result, blocking: bool = False):
     """The method for `feature` bound to the C wrapper `symbol` of the cffi module (lib, ffi)."""
     fn = getattr(lib, symbol)
 
     def external(current, *args):
-        return _call(current, feature, f"C {alias}", fn, arguments, result, args, ffi)
+        return _call(current, feature, f"C {alias}", fn, arguments, result, args, ffi, blocking)
 
     external.__name__ = feature.split(".")[-1]
     external.__qualname__ = feature
@@ -116,14 +122,17 @@ def _resolving(current, feature, target, resolve):
 
 
 # --- calling ----------------------------------------------------------------------------------------
-def _call(current, feature, what, fn, kinds, result, args, ffi):
+def _call(current, feature, what, fn, kinds, result, args, ffi, blocking):
     region = getattr(current, "_region_", None)
     keep: list = []
     try:
-        values = [_to_host(kind, value, keep, ffi) for kind, value in zip(kinds, args)]
-        value = rt_externals.call(region, feature, what, fn, values)
-        for back in keep:
-            back()
+        values: list | None = [_to_host(kind, value, keep, ffi) for kind, value in zip(kinds, args)]
+        try:
+            value = rt_externals.call(region, feature, what, fn, values, blocking)
+        finally:
+            values = None  # the host's views of Eiffel's items end with the call (see _array_in)
+            for back in keep:
+                back()
         return None if result is None else _from_host(region, result, value, ffi)
     except _PASSED_THROUGH:
         raise
@@ -152,19 +161,43 @@ def _to_host(kind, value, keep: list, ffi):
 
 
 def _array_in(kind, value, keep: list, ffi):
-    """A numpy copy of an ARRAY's or SPECIAL's items; what the host writes into it is copied back
-    after the call (SPECIAL keeps its items in a Python list, which numpy cannot view)."""
+    """The items of an ARRAY or SPECIAL for the host: for a basic numeric type, a numpy array (or a
+    C pointer) that is a view of the SPECIAL's items, which move into an `array.array` the first
+    time (ext/special.py); for BOOLEAN, a numpy copy whose items are copied back after the call."""
     import numpy  # deferred: start-up (only programs passing arrays to externals need numpy)
 
     container, item = kind.split(":")
     special = value.area if container == "ARRAY" else value
-    array = numpy.array(special._items, dtype=_DTYPES[item])
+    code = _TYPECODES.get(item)
+    if code is None:
+        return _array_copy(special, item, keep, ffi, numpy)
+    items = special._items
+    if type(items) is not array:
+        items = special._items = array(code, items)
+    keep.append(lambda: _release(special, items))
+    view = numpy.frombuffer(items, dtype=_DTYPES[item])
+    return view if ffi is None else ffi.from_buffer(f"{_c_item(item)}[]", view)
+
+
+def _release(special, items) -> None:
+    """After the call: when the host kept a view of the items (a buffer export is still alive,
+    so the array cannot grow), the SPECIAL goes on with a copy of its own, as EiffelStudio's C
+    externals must not keep a SPECIAL's address past the call."""
+    try:
+        items.append(0)
+        del items[-1]
+    except BufferError:
+        special._items = array(items.typecode, items)
+
+
+def _array_copy(special, item, keep: list, ffi, numpy):
+    array_ = numpy.array(special._items, dtype=_DTYPES[item])
 
     def back():
-        special._items[:] = array.tolist()
+        special._items[:] = array_.tolist()
 
     keep.append(back)
-    return array if ffi is None else ffi.from_buffer(f"{_c_item(item)}[]", array)
+    return array_ if ffi is None else ffi.from_buffer(f"{_c_item(item)}[]", array_)
 
 
 def _c_item(item: str) -> str:
@@ -234,9 +267,9 @@ def _array_out(region, kind, value):
         special = create(region, CLASSES["SPECIAL"], gen, "make_filled", (default, len(items)))
         special._items[:] = items
         return special
-    array = create(region, CLASSES["ARRAY"], gen, "make_filled", (default, 1, len(items)))
-    array.area._items[:] = items
-    return array
+    made = create(region, CLASSES["ARRAY"], gen, "make_filled", (default, 1, len(items)))
+    made.area._items[:] = items
+    return made
 
 
 # --- failures ---------------------------------------------------------------------------------------

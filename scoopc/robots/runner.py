@@ -227,6 +227,7 @@ def _tick(holder):
 def find_world(program_paths, world=None):
     """The world to simulate: `world` (path, dict or World), else world.yaml beside the program,
     else the built-in arena. Returns (World, where it came from)."""
+    from .profile import beside_program  # deferred: start-up (loads only when a world is looked for)
     from .sim.world import (  # deferred: start-up (scoopc.robots.sim.world loads only when this is used)
         World,
         WorldError,
@@ -237,11 +238,7 @@ def find_world(program_paths, world=None):
     if isinstance(world, dict):
         return _load(lambda: World.from_dict(world), "the given world"), "the given world"
     if world is None:
-        for p in program_paths or ():
-            folder = Path(p) if Path(p).is_dir() else Path(p).parent
-            if (folder / "world.yaml").is_file():
-                world = folder / "world.yaml"
-                break
+        world = beside_program(program_paths, "world.yaml")
     if world is None:
         return World.from_dict(DEFAULT_WORLD), "the built-in arena"
     path = Path(world)

@@ -1,9 +1,13 @@
 """Processors inside externals: the runtime's side of the program's own externals (user Python
 functions, C and C++ code; scoopc/kernel/externals.py).
 
-An external runs on its object's processor, on the thread that runs that processor. While it
-runs, the thread gives up its run permit (permits.py), so the other processors run at once
-instead of after a slice or two (a C call also releases the GIL: cffi does); the thread is
+An external runs on its object's processor, on the thread that runs that processor. A blocking
+external (EiffelStudio's `external "C blocking ..."`, which generates EIF_ENTER_C / EIF_EXIT_C
+around the call so that the other threads never wait for it) gives up the thread's run permit
+(permits.py) while it runs, so the other processors run at once instead of after a slice or two;
+an external not marked blocking keeps its permit, as EiffelStudio keeps such a thread in Eiffel
+mode: no hand-over, and the others wait for it as for Eiffel code that computes (about 10 ms,
+then they take an extra permit). A C call releases the GIL either way (cffi does). The thread is
 recorded as inside the external (`Runtime.inside`, read by `inside_externals`): the live dump
 and the deadlock report name it, and the live view (scoopc's `/scoop/processors`) can show it.
 
@@ -50,9 +54,16 @@ class InsideExternal:
         return f"{self.proc!r} is inside external {self.feature} ({self.what}) for {seconds:.1f} s"
 
 
-def call(proc: Processor | None, feature: str, what: str, fn: Callable[..., object], args: Sequence[object]) -> object:
+def call(
+    proc: Processor | None,
+    feature: str,
+    what: str,
+    fn: Callable[..., object],
+    args: Sequence[object],
+    blocking: bool = True,
+) -> object:
     """Run `fn(*args)`, the host function of external `feature`, on the calling thread, which runs
-    `proc`: marked inside the external and without its run permit meanwhile."""
+    `proc`: marked inside the external meanwhile, and without its run permit when `blocking`."""
     ex = proc.exec if proc is not None else None
     if proc is None or ex is None:
         return fn(*args)
@@ -62,8 +73,8 @@ def call(proc: Processor | None, feature: str, what: str, fn: Callable[..., obje
         _watch_interrupts(rt)
     with rt.glock:
         rt.inside[ex] = record
-        had_permit = ex.permit
-        spawn = rt._release_permit_locked(ex)
+        had_permit = blocking and ex.permit
+        spawn = rt._release_permit_locked(ex) if blocking else None
     if spawn is not None:
         spawn.thread.start()
     try:

@@ -52,7 +52,7 @@ class ExternalSpec:
 
 
 def parse_spec(text: str) -> ExternalSpec:
-    """EiffelStudio's external language forms: `Python`, `built_in`, `C [blocking] [inline]
+    """EiffelStudio's external language forms: `Python [blocking]`, `built_in`, `C [blocking] [inline]
     [signature (T, ...)[: R]] [use H, ...]`, the older `C [blocking] [(T, ...)[: R]] [| H, ...]`
     and `C++ inline [use H, ...]`. ValueError (the reason) for anything else."""
     words = text.strip()
@@ -61,11 +61,11 @@ def parse_spec(text: str) -> ExternalSpec:
         raise ValueError(f'unknown external language "{text}": scoopc knows "C", "C++", "Python" and "built_in"')
     language = head.group(0).lower()
     rest = words[head.end() :].strip()
+    blocking, rest = _keyword(rest, "blocking") if language != "built_in" else (False, rest)
     if language in ("python", "built_in"):
         if rest:
             raise ValueError(f'nothing may follow "{head.group(0)}" in an external language, found "{rest}"')
-        return ExternalSpec(language)
-    blocking, rest = _keyword(rest, "blocking")
+        return ExternalSpec(language, blocking=blocking)
     inline, rest = _keyword(rest, "inline")
     other = re.match(r"(?i)(macro|struct|dll|dllwin|class|delete|new|static|data_member)\b", rest)
     if other is not None:

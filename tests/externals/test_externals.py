@@ -40,6 +40,26 @@ def test_a_failing_python_external_is_an_external_failure():
     assert "in FAILING.make (failing.e:16)" in err and "Traceback" not in err
 
 
+def test_numbers_reach_python_as_views_of_the_eiffel_items():
+    result, out, err = run(HERE / "views")
+    assert result.status == Exit.OK, err
+    assert out == (HERE / "views" / "expected.out").read_text()
+
+
+def test_only_a_blocking_external_gives_up_its_run_permit():
+    result, out, err = run(HERE / "permits")
+    assert result.status == Exit.OK, err
+    assert out == "root: blocking False, not blocking True\nworker: blocking False, not blocking True\n"
+
+
+@pytest.mark.slow  # builds C with cffi
+def test_a_c_external_is_bound_blocking_as_its_language_string_says(tmp_path):
+    scoopc.compile([HERE / "c_rendezvous" / "rendezvous.ecf"], tmp_path / "out")
+    text = (tmp_path / "out" / "rendezvous" / "worker.py").read_text()
+    bindings = [line for line in text.splitlines() if "_KX.c_external" in line]
+    assert [("wait_flag" in line, "blocking=True" in line) for line in bindings] == [(True, True), (False, False)]
+
+
 def test_the_python_trace_is_shown_under_debug():
     result, _, err = run(HERE / "failing", debug=True)
     assert result.status == Exit.RUNTIME
@@ -107,6 +127,7 @@ def test_a_missing_compiler_is_named(tmp_path, monkeypatch):
     ("text", "spec"),
     [
         ("Python", ExternalSpec("python")),
+        ("Python blocking", ExternalSpec("python", blocking=True)),
         ("C", ExternalSpec("c")),
         (
             "C signature (DOUBLE): DOUBLE use <math.h>",
@@ -126,6 +147,7 @@ def test_language_strings(text, spec):
     ("text", "reason"),
     [
         ("Fortran", "unknown external language"),
+        ("built_in blocking", 'nothing may follow "built_in"'),
         ("C macro use <x.h>", '"C macro" form of external is not supported'),
         ("C++", '"C++ inline" form only'),
         ("C inline signature (int): int", "takes its types from the routine's signature"),

@@ -2,6 +2,8 @@
 and scoopc/kernel/tuples.py, called directly on fake objects laid out as codegen_spec.md says.
 The agent classes' are in test_agents.py."""
 
+from array import array
+
 import pytest
 
 import scoopc.kernel as kernel
@@ -244,6 +246,25 @@ def test_special_copy(region):
     assert s.count == 2
     special.copy(s, s)  # copying itself changes nothing
     assert s._items == [1, 2]
+
+
+def test_items_kept_in_a_buffer(region):
+    """A SPECIAL of numbers passed to an external keeps its items in an array.array (a buffer
+    numpy views): every feature works on it as on a list, and with a list-backed SPECIAL."""
+    s = new_special(region, 6, items=[1, 2])
+    s._items = array("i", s._items)
+    special.fill_with(s, 7, 2, 3)
+    listed = new_special(region, 3, items=[4, 5, 6])
+    special.copy_data(s, listed, 1, 4, 2)
+    assert list(s._items) == [1, 2, 7, 7, 5, 6] and type(s._items) is array
+    special.copy_data(listed, s, 0, 0, 2)  # a run of the buffer into a list
+    special.fill_with_default(s, 5, 5)
+    assert listed._items == [1, 2, 6] and list(s._items) == [1, 2, 7, 7, 5, 0]
+    special.keep_head(s, 3)
+    special.extend(s, 9)
+    assert [special.item(s, i) for i in range(s.count)] == [1, 2, 7, 9]
+    special.wipe_out(s)
+    assert (s.count, s.capacity) == (0, 6)
 
 
 # --- TUPLE ---------------------------------------------------------------------------------

@@ -21,6 +21,7 @@ pytest.importorskip("cyclonedds")
 
 from foxglove_client import FoxgloveClient, free_port  # noqa: E402  (tests/foxglove_client.py)
 
+import scoopc  # noqa: E402
 from scoopc.robots import dds, record, ros_messages  # noqa: E402
 
 pytestmark = pytest.mark.slow  # long: outside the quick selection (pytest -m "not slow")
@@ -175,12 +176,19 @@ def test_sim_node_driven_over_dds(node, bus):
     assert clocks == sorted(clocks) and len(clocks) > 10
 
 
-def test_compiled_program_drives_the_sim_node_with_robot_ros2(env, node, bus, tmp_path):
+@pytest.mark.parametrize("how", ["scoopc run", "compile -o"])
+def test_compiled_program_drives_the_sim_node_with_robot_ros2(env, node, bus, tmp_path, how):
+    """`scoopc run --robot ros2`, and the output of `scoopc compile -o` run with `--robot ros2`."""
+    if how == "scoopc run":
+        command = ["scoopc", "run", str(PROGRAM), "--robot", "ros2"]
+    else:
+        assert scoopc.compile([PROGRAM], tmp_path / "out").status == 0
+        command, tmp_path = ["dds_forward", "--robot", "ros2"], tmp_path / "out"
     sim = node()
     odom = Odometry(bus)
     odom.wait(lambda o: True)
     run = subprocess.run(
-        [sys.executable, "-m", "scoopc", "run", str(PROGRAM), "--robot", "ros2"],
+        [sys.executable, "-m", *command],
         capture_output=True,
         text=True,
         env=env,

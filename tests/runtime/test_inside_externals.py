@@ -1,5 +1,6 @@
-"""A processor inside an external (scoopc.runtime.externals): it gives up its run permit, the
-live dump and `inside_externals` name it, and it is marked no longer once the external returns."""
+"""A processor inside an external (scoopc.runtime.externals): a blocking one gives up its run
+permit, one not marked blocking keeps it; the live dump and `inside_externals` name it, and it is
+marked no longer once the external returns."""
 
 from __future__ import annotations
 
@@ -29,6 +30,22 @@ def test_inside_an_external_is_seen_and_the_permit_is_free():
     assert seen["permit"] is False
     assert seen["inside"] == [("APP.f", "C f")]
     assert "inside external: P1(ROOT) is inside external APP.f (C f) for" in seen["dump"]
+
+
+def test_an_external_not_marked_blocking_keeps_the_permit():
+    runtime, root = rt.start()
+    seen = {}
+
+    def host():
+        seen["permit"] = root.exec.permit
+        seen["inside"] = [r.feature for r in rt.inside_externals(runtime)]
+
+    try:
+        externals.call(root, "APP.f", "C f", host, [], blocking=False)
+        assert rt.inside_externals(runtime) == [] and root.exec.permit
+    finally:
+        rt.finish(runtime, root)
+    assert seen == {"permit": True, "inside": ["APP.f"]}
 
 
 def test_an_exception_leaves_the_external():

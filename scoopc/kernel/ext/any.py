@@ -3,6 +3,8 @@ by scoopc.kernel.basic): reflection, copying and comparison, `tagged_out`."""
 
 from __future__ import annotations
 
+from array import array
+
 from .. import types as T
 from ..strings import new_string_8
 from ..support import type_object
@@ -28,6 +30,10 @@ def same_type(current, other):
     return other is not None and T.of(current) is T.of(other)
 
 
+# A SPECIAL's items: a list, or an array.array for numbers passed to an external (ext/special.py).
+_SEQUENCES = (list, array)
+
+
 def _fields(obj) -> dict:
     return {k: v for k, v in obj.__dict__.items() if k != "_region_"}
 
@@ -44,7 +50,7 @@ def standard_is_equal(current, other):
 def _same_value(a, b) -> bool:
     if a is b:
         return True
-    if isinstance(a, list) and isinstance(b, list):
+    if isinstance(a, _SEQUENCES) and isinstance(b, _SEQUENCES):
         return len(a) == len(b) and all(_same_value(x, y) for x, y in zip(a, b))
     if hasattr(a, "_region_") or hasattr(b, "_region_"):
         return False
@@ -64,7 +70,7 @@ def standard_copy(current, other):
     for name in _fields(current):  # a field `other` never set holds its class default
         if name not in theirs and not name.startswith("_"):
             theirs[name] = getattr(type(other), name, None)
-    current.__dict__.update({k: (list(v) if isinstance(v, list) else v) for k, v in theirs.items()})
+    current.__dict__.update({k: (v[:] if isinstance(v, _SEQUENCES) else v) for k, v in theirs.items()})
     current._region_ = region
 
 
@@ -94,6 +100,8 @@ def deep_twin(current):
 def _deep(value, memo):
     if isinstance(value, list):
         return [_deep(v, memo) for v in value]
+    if isinstance(value, array):
+        return value[:]  # numbers only
     if not hasattr(value, "_region_") or not hasattr(type(value), "_key_"):
         return value
     found = memo.get(id(value))
@@ -113,7 +121,7 @@ def is_deep_equal(current, other):
 def _deep_equal(a, b, seen) -> bool:
     if a is b:
         return True
-    if isinstance(a, list) and isinstance(b, list):
+    if isinstance(a, _SEQUENCES) and isinstance(b, _SEQUENCES):
         return len(a) == len(b) and all(_deep_equal(x, y, seen) for x, y in zip(a, b))
     if hasattr(type(a), "_key_") and hasattr(type(b), "_key_"):
         if type(a) is not type(b):

@@ -3,7 +3,9 @@
 Representation (docs codegen_spec.md): `_items`, a Python list whose length is `count` (slots
 beyond `count` do not exist in the host); `_cap`, the capacity; `_gen_[0]`, the TypeDesc of T
 (`.default(region)` gives T's default value, a fresh object made in `region` for a user
-expanded type).
+expanded type). A SPECIAL of a basic numeric type once passed to an external keeps its items in
+an `array.array` instead (scoopc.kernel.externals: the external's numpy array is a view of it),
+which every function here accepts as well.
 
 Preconditions (special.e's) are checked by the generated code when one of these functions
 raises: so each refuses, with IndexError or ValueError, every input its precondition excludes
@@ -11,7 +13,14 @@ raises: so each refuses, with IndexError or ValueError, every input its precondi
 caller sees the precondition violation, never the host's exception.
 """
 
+from array import array
+
 _IMMUTABLE = (int, float, str, bool, type(None))
+
+
+def _like(items, values: list):
+    """`values` as a run that can replace a slice of `items` (an `array.array` takes only its own kind)."""
+    return values if type(items) is list else array(items.typecode, values)
 
 
 def _new_like(current, items, cap):
@@ -94,7 +103,7 @@ def fill_with(current, v, start_index, end_index):
     if n == 0:
         return
     _check_room(current, max(len(items), end_index + 1))
-    items[start_index : end_index + 1] = [v] * n
+    items[start_index : end_index + 1] = _like(items, [v] * n)
 
 
 def fill_with_default(current, start_index, end_index):
@@ -116,7 +125,7 @@ def fill_with_default(current, start_index, end_index):
     else:
         values = [first]
         values.extend(desc.default(region) for _ in range(n - 1))
-    items[start_index : end_index + 1] = values
+    items[start_index : end_index + 1] = _like(items, values)
 
 
 def copy_data(current, other, source_index, destination_index, n):
@@ -131,7 +140,8 @@ def copy_data(current, other, source_index, destination_index, n):
             f"SPECIAL.copy_data: {n} items from {source_index} not in a source of count {len(other._items)}"
         )
     _check_room(current, destination_index + n)
-    items[destination_index : destination_index + n] = other._items[source_index : source_index + n]
+    run = other._items[source_index : source_index + n]
+    items[destination_index : destination_index + n] = run if type(run) is type(items) else _like(items, list(run))
 
 
 def move_data(current, source_index, destination_index, n):
@@ -181,7 +191,7 @@ def aliased_resized_area(current, n):
 
 def wipe_out(current):
     """Put no slot in use (capacity unchanged)."""
-    current._items.clear()
+    del current._items[:]
 
 
 # --- Duplication ---
