@@ -31,6 +31,7 @@ feature
 			print_counts
 			print_comparisons
 			print_inspections
+			print_utf_conversions
 		end
 
 	print_counts
@@ -91,6 +92,24 @@ feature
 			else
 				print ("STRING_32 other%N")
 			end
+		end
+
+	print_utf_conversions
+			-- EiffelBase's UTF_CONVERTER between the bytes of a STRING_8 and the characters of a STRING_32.
+		local
+			u: UTF_CONVERTER
+			s, bad: STRING
+			w: STRING_32
+		do
+			s := "héllo ∀ 😀"
+			w := u.utf_8_string_8_to_string_32 (s)
+			print (s.count.out + " " + w.count.out + " " + w.item (2).code.out + " " + w.item (9).code.out + "%N")
+			print ({UTF_CONVERTER}.string_32_to_utf_8_string_8 (w).same_string (s))
+			print (" " + u.utf_8_bytes_count (w, 1, w.count).out + " ")
+			create bad.make_filled ('%/233/', 1)
+			print (u.is_valid_utf_8_string_8 (s).out + " " + u.is_valid_utf_8_string_8 (bad).out + "%N")
+			print (w)
+			print ("%N")
 		end
 
 end
