@@ -201,3 +201,12 @@ def test_console_input_is_bytes_and_output_gives_them_back(region, monkeypatch):
     M.put_string(out, K.new_string_8(region, "caf\xe9"))
     M.put_character(out, "\xe9")
     assert region.out == ["é", "caf\udce9", "\udce9"]  # surrogate escapes: the runtime writes the bytes
+
+
+def test_console_input_from_a_byte_stream_keeps_bytes_that_are_not_utf8(region, monkeypatch):
+    stdin = io.TextIOWrapper(io.BytesIO(b"caf\xe9\n\xfe"), encoding="utf-8")  # strict: text reads would fail
+    monkeypatch.setattr(sys, "stdin", stdin)
+    inp = console(region, C.make_open_stdin, "stdin")
+    M.read_line(inp)
+    M.read_character(inp)
+    assert last(inp) == "caf\xe9" and M.last_character(inp) == "\xfe"

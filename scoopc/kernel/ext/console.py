@@ -30,10 +30,21 @@ class StdinChan:
             self.stream, self.pb, self.eof = sys.stdin, "", False
 
     def _read(self, n):
-        """At most `n` characters of the stream as the 8-bit characters of their UTF-8 bytes
-        (more than `n` when some are not ASCII)."""
+        """At most `n` bytes of the stream, one character each: from its byte buffer when it has
+        one (any bytes, UTF-8 or not), else `n` characters of a text stream as their UTF-8 bytes."""
         stream = self.stream
-        return strings.utf8_bytes(stream.read(n)) if stream is not None else ""
+        if stream is None:
+            return ""
+        raw = getattr(stream, "buffer", None)
+        if raw is not None:
+            return raw.read(n).decode("latin-1")
+        return strings.utf8_bytes(stream.read(n))
+
+    def _line(self):
+        raw = getattr(self.stream, "buffer", None)
+        if raw is not None:
+            return raw.readline().decode("latin-1")
+        return strings.utf8_bytes(self.stream.readline())
 
     def getc(self):
         if self.eof:
@@ -55,7 +66,7 @@ class StdinChan:
         data, self.pb = self.pb, ""
         i = data.find("\n")
         if i < 0 and self.stream is not None:
-            data += strings.utf8_bytes(self.stream.readline())
+            data += self._line()
             i = data.find("\n")
         if i < 0:
             self.eof = True
