@@ -6,6 +6,7 @@ from __future__ import annotations
 import ast
 
 from .. import syntax
+from ..kernel.strings import utf8_bytes
 from ..semantics.types import BASIC, Ty
 from . import pyast as P
 from .context import fail
@@ -24,6 +25,14 @@ INTEGER_KINDS = (
 INTEGER_BITS = {name: int(name.rsplit("_", 1)[1]) for name in INTEGER_KINDS}
 # Classes a value of a basic type conforms to: calls on them may meet a Python int/float/str/bool.
 BASIC_ANCESTORS = frozenset({"ANY", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "NUMERIC", "DEBUG_OUTPUT"})
+WIDE_STRINGS = frozenset({"STRING_32", "READABLE_STRING_32", "IMMUTABLE_STRING_32"})
+
+
+def manifest_text(value: str, wide: bool) -> str:
+    """The characters a manifest string holds: a 32-bit string its code points, an 8-bit one
+    the UTF-8 bytes of its text, as EiffelStudio keeps them (its scanner builds a manifest string
+    in UTF-8, `%/code/` included; STRING_32 manifests are decoded from it)."""
+    return value if wide else utf8_bytes(value)
 
 
 class Expressions:
@@ -69,15 +78,15 @@ class Expressions:
 
     def x_ManifestString(self, node):
         ty = self.tables.types.get(node)
-        maker = (
-            "s32" if ty is not None and ty.name in ("STRING_32", "READABLE_STRING_32", "IMMUTABLE_STRING_32") else "s8"
-        )
+        wide = ty is not None and ty.name in WIDE_STRINGS
+        maker = "s32" if wide else "s8"
         if ty is not None and ty.name.startswith("IMMUTABLE_STRING"):
-            maker = "i32" if ty.name.endswith("32") else "i8"
+            maker = "i32" if wide else "i8"
+        value = P.const(manifest_text(node.value, wide))
         if node.once:
             key = self.module.constant("ONCE_STRING", P.call("object", []))
-            return P.call("_S.once_string", [P.name("here"), key, P.const(node.value), P.dotted("_KS." + maker)])
-        return P.call("_KS." + maker, [P.name("here"), P.const(node.value)])
+            return P.call("_S.once_string", [P.name("here"), key, value, P.dotted("_KS." + maker)])
+        return P.call("_KS." + maker, [P.name("here"), value])
 
     def x_TypedConstant(self, node):
         return self.x(node.constant)

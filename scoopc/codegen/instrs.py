@@ -9,6 +9,7 @@ from .. import syntax
 from ..semantics.types import BASIC
 from . import pyast as P
 from .context import fail
+from .exprs import WIDE_STRINGS, manifest_text
 from .scoop_calls import interval_across
 
 _VALUE_COPIES = frozenset({"copy", "standard_copy", "deep_copy"})
@@ -172,27 +173,29 @@ class Instructions:
             orelse = [P.at(P.if_(P.boolop(ast.Or(), tests), self.block(part.then_part), orelse), part.span)]
         return out + orelse
 
-    def inspect_subject(self, node) -> tuple[ast.expr, bool]:
-        """The value an inspect compares, and whether it is a string's text: strings are
-        inspected by value (their characters), as EiffelStudio does, never by identity."""
+    def inspect_subject(self, node) -> tuple[ast.expr, str]:
+        """The value an inspect compares, and for a string its kind ("8" or "32"; "" for other
+        types): strings are inspected by value (their characters), as EiffelStudio does, never by
+        identity."""
         value = self.x(node.expression)
         ty = self.tables.types.get(node.expression)
         if ty is not None and not ty.is_formal and "STRING" in ty.name:
-            return P.call("_S.inspect_text", [value, self.where(node)]), True
-        return value, False
+            return P.call("_S.inspect_text", [value, self.where(node)]), ("32" if ty.name in WIDE_STRINGS else "8")
+        return value, ""
 
-    def choice(self, subject, choice, text: bool = False):
+    def choice(self, subject, choice, text: str = ""):
         lower = self.choice_value(choice.lower, text)
         if choice.upper is None:
             return P.compare(subject, ast.Eq(), lower)
         return ast.Compare(lower, [ast.LtE(), ast.LtE()], [subject, self.choice_value(choice.upper, text)])
 
-    def choice_value(self, node, text: bool):
-        """A `when` value; for a string subject, the characters of the string it denotes."""
+    def choice_value(self, node, text: str):
+        """A `when` value; for a string subject (`text` is "8" or "32", its kind), the characters
+        of the string it denotes, as the subject holds them."""
         if not text:
             return self.x(node)
         if isinstance(node, syntax.ManifestString):
-            return P.const(node.value)
+            return P.const(manifest_text(node.value, text == "32"))
         return P.attr(self.x(node), "_s")
 
     def s_Loop(self, node):

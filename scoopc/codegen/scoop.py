@@ -9,7 +9,8 @@ Facts, per routine version (a declaration, identified by its class and first nam
   every routine it may call is a leaf: for a call on a target of static class C, every
   version of the feature in C and in every class that inherits from C (the closed world).
   Recursion is not a leaf (least fixpoint). A program with an expanded class of its own has
-  no leaves (default values would run its creation procedures unseen).
+  no leaves (default values would run its creation procedures unseen); a library's expanded class
+  whose default value runs no code (UTF_CONVERTER) does not count.
 - single implementation: the universe has one version of a feature for a static class and
   all its descendants, so a separate call can name the Python function (`C.f`) at compile
   time instead of looking it up on the target at run time.
@@ -141,7 +142,9 @@ class Analysis:
                 self.heirs.setdefault(ancestor, set()).add(info.name)
         self._by_seed: dict[str, dict] = {}  # class -> seed -> its features with that seed
         self._own: dict[str, dict] = {}  # class -> first name -> version declared there
-        self.closed = not any(i.is_expanded and i.name not in BASIC for i in universe.classes.values())
+        self.closed = not any(
+            i.is_expanded and i.name not in BASIC and not _default_runs_nothing(i) for i in universe.classes.values()
+        )
         self._library = library_facts
         self._versions: dict = {}
         self._local: dict = {}
@@ -360,6 +363,19 @@ def only_stored(analysis: Analysis, body, name: str) -> bool:
                 stored += 1
         pending.extend(children(node))
     return uses == stored
+
+
+def _default_runs_nothing(info) -> bool:
+    """An expanded class of the standard library whose default value runs no code: no parent but
+    ANY, no creation clause, no attribute, no invariant (UTF_CONVERTER); it takes no leaf away."""
+    decl = info.decl
+    return (
+        info.from_library
+        and not decl.inherit_clauses
+        and not decl.creation_clauses
+        and not decl.invariant
+        and not any(isinstance(f, syntax.Attribute) for clause in decl.feature_clauses for f in clause.features)
+    )
 
 
 def _expanded(universe, ty) -> bool:

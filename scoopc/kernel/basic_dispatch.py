@@ -15,7 +15,7 @@ import ast
 from . import basic_ops as B
 from .basic_inline import specs
 from .boxes import KINDS as BOXES
-from .strings import text as string_text
+from .strings import bytes_text, text as string_text
 from .types import of, t
 
 _KINDS = {bool: "BOOLEAN", int: "INTEGER_32", float: "REAL_64", str: "CHARACTER_8"}
@@ -214,4 +214,4 @@ def _print(region, o):
         text = B.out_text(o)
     else:
         text = string_text(o.out)
-    region.print(text)
+    region.print(text if text.isascii() else bytes_text(text))

@@ -144,10 +144,10 @@ def _to_host(kind, value, keep: list, ffi):
     if value is None or kind == "OBJECT":
         return value
     if kind.startswith("STRING"):
-        text = KS.text(value)
         if ffi is None:
-            return text
-        return ffi.new("char[]", text.encode("utf-8"))  # alive while `values` holds it
+            return KS.shown(value)  # an 8-bit string's bytes read as UTF-8
+        data = KS.raw_bytes(value._s) if KS.is8(value) else value._s.encode("utf-8", "surrogatepass")
+        return ffi.new("char[]", data)  # alive while `values` holds it
     if kind.startswith(("ARRAY:", "SPECIAL:")):
         return _array_in(kind, value, keep, ffi)
     if ffi is not None:
@@ -245,14 +245,20 @@ def _address(value, ffi):
 
 
 def _string(region, kind, value, ffi):
+    """A new string from the host's: bytes (Python's, or C's `char *`) become a STRING_8's
+    characters one for one, a STRING_32's by UTF-8; a Python `str` is a STRING_32's characters
+    and a STRING_8's UTF-8 bytes."""
     if ffi is not None and isinstance(value, ffi.CData):
         if value == ffi.NULL:
             return None
-        value = ffi.string(value).decode("utf-8", "replace")
-    elif isinstance(value, (bytes, bytearray)):
-        value = bytes(value).decode("latin-1" if kind == "STRING_8" else "utf-8", "replace")
+        value = ffi.string(value)
+    if isinstance(value, (bytes, bytearray)):
+        data = bytes(value)
+        if kind == "STRING_8":
+            return KS.new_string_8(region, data.decode("latin-1"))
+        return KS.new_string_32(region, data.decode("utf-8", "replace"))
     text = str(value)
-    return KS.new_string_8(region, KS.to_8(text)) if kind == "STRING_8" else KS.new_string_32(region, text)
+    return KS.new_string_8_of(region, text) if kind == "STRING_8" else KS.new_string_32(region, text)
 
 
 def _array_out(region, kind, value):

@@ -181,10 +181,10 @@ def describe_error(error) -> str:
 
 def _exception_text(exception) -> str:
     try:
-        from .strings import text  # deferred: optional (its absence is handled below)
+        from .strings import shown  # deferred: optional (its absence is handled below)
 
         message = exception.message
-        tag = text(message) if message is not None else ""
+        tag = shown(message) if message is not None else ""
         return f"{type(exception)._key_}" + (f": {tag}" if tag else "")
     except Exception:  # noqa: BLE001 - a report must not fail
         return type(exception).__name__

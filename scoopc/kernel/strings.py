@@ -4,6 +4,10 @@
 Storage model (every STRING_8, STRING_32, IMMUTABLE_STRING_8, IMMUTABLE_STRING_32 object):
 - `_s`   : a Python `str`, exactly the characters (`count` = len(_s)); never mutated in place by
            anyone who can observe it (see `append_text`), so reading `_s` is one attribute load.
+           An 8-bit string's characters are bytes (codes 0..255), as EiffelStudio's: text from
+           outside (a UTF-8 source's manifest string, a file, the console, a ROS message) is
+           kept as its UTF-8 bytes, so `"é"` has count 2, and output writes those bytes as they
+           are (`utf8_bytes` in, `shown` out). A 32-bit string's characters are code points.
 - `_cap` : `capacity`, kept as EiffelBase computes it (make (n) gives n, appends grow by
            `max (capacity // 2, 5)`, `resize`/`grow`/`trim` set it); always >= len(_s) when read
            through `capacity`.
@@ -76,8 +80,71 @@ def s32(region, text):
 
 
 def text(obj) -> str:
-    """The characters of any string object."""
+    """The characters of any string object, each code as a Python character (a STRING_8's
+    bytes as U+0000..U+00FF): EiffelBase's view of a READABLE_STRING_GENERAL as "a sequence of
+    Unicode characters" (PATH.make_from_string: file names, environment variables)."""
     return obj._s
+
+
+def utf8_bytes(t: str) -> str:
+    """Python text as an 8-bit string holds it: its UTF-8 bytes, one character each (what
+    EiffelStudio's scanner keeps of a manifest string, EIFFEL_SCANNER_SKELETON's
+    `append_code_point_to_utf8`). Bytes smuggled in as surrogates (surrogateescape) are
+    restored; a lone surrogate code is encoded as EiffelStudio does, in three bytes."""
+    if t.isascii():
+        return t
+    try:
+        return t.encode("utf-8").decode("latin-1")
+    except UnicodeEncodeError:  # surrogates
+        return _mixed(t)
+
+
+def _mixed(t: str) -> str:
+    out = []
+    for c in t:
+        code = ord(c)
+        if 0xDC80 <= code <= 0xDCFF:  # a byte that was not UTF-8 (surrogateescape)
+            out.append(chr(code - 0xDC00))
+        else:
+            out.append(c.encode("utf-8", "surrogatepass").decode("latin-1"))
+    return "".join(out)
+
+
+def bytes_text(s: str) -> str:
+    """The Python text of 8-bit characters read as UTF-8 bytes; a byte that is no part of a
+    UTF-8 sequence becomes a surrogate (surrogateescape), so `utf8_bytes` and the output
+    streams (scoopc.runtime.output) give the same bytes back. A character beyond 255 (none
+    should be in an 8-bit string) is kept as it is."""
+    if s.isascii():
+        return s
+    try:
+        data = s.encode("latin-1")
+    except UnicodeEncodeError:
+        return s
+    return data.decode("utf-8", "surrogateescape")
+
+
+def raw_bytes(s: str) -> bytes:
+    """The bytes of 8-bit characters, for a file or a C external (a character beyond 255,
+    which no 8-bit string should hold, as its UTF-8 bytes)."""
+    try:
+        return s.encode("latin-1")
+    except UnicodeEncodeError:
+        return b"".join(c.encode("latin-1") if c <= "\xff" else c.encode("utf-8", "surrogatepass") for c in s)
+
+
+def shown(obj) -> str:
+    """The Python text that writing `obj` shows: an 8-bit string's bytes read as UTF-8, a
+    32-bit string's characters (for messages: exception descriptions, names of ROS topics)."""
+    s = obj._s
+    if s.isascii():
+        return s
+    return bytes_text(s) if is8(obj) else s
+
+
+def new_string_8_of(region, t: str):
+    """A new STRING_8 holding Python text `t` as its UTF-8 bytes."""
+    return _new("STRING_8", region, utf8_bytes(t))
 
 
 def like(cur, s, cap=None):

@@ -169,7 +169,8 @@ class _Source:
 
 
 def _encode_string(out: bytearray, value: str) -> None:
-    data = value.encode("utf-8")
+    # surrogate escapes: bytes of a program's STRING_8 that are not UTF-8, sent as they are
+    data = value.encode("utf-8", "surrogateescape")
     out += bytes(-(len(out) - 4) % 4)
     out += struct.pack("<I", len(data) + 1)
     out += data
@@ -182,7 +183,7 @@ def _decode_string(data, pos: int, order: str = "<"):
     pos += 4
     if pos + length > len(data):
         raise ValueError("CDR data ends early")
-    text = bytes(data[pos : pos + length - 1]).decode("utf-8") if length else ""
+    text = bytes(data[pos : pos + length - 1]).decode("utf-8", "surrogateescape") if length else ""
     return text, pos + length
 
 

@@ -43,7 +43,7 @@ def _host(desc: tuple, value: Any, store) -> Any:
         if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings  # deferred: start-up (loaded on first use only)
 
-            return strings.text(value)
+            return strings.shown(value)  # the bytes of a STRING_8, a ROS string's UTF-8
         return value
     if kind == NAME:
         return to_message(value, detail, store)
@@ -78,7 +78,7 @@ def _eiffel(desc: tuple, value: Any, region, store) -> Any:
         if detail[0] in ros_messages.STRING_TYPES:
             from ..kernel import strings  # deferred: start-up (loaded on first use only)
 
-            return strings.new_string_8(region, value)
+            return strings.new_string_8_of(region, value)  # its UTF-8 bytes, one character each
         if detail[0] == "bool":
             return bool(value)
         return float(value) if detail[0].startswith("float") else int(value)

@@ -1,5 +1,8 @@
 """Untorn program output: one print call writes its text whole; with processor tracing,
-every output line carries the tag of the processor that wrote it."""
+every output line carries the tag of the processor that wrote it.
+
+Text may carry bytes that are not UTF-8 as surrogate escapes (a program's 8-bit strings are
+bytes, written as they are): on a stream over bytes they are written as those bytes."""
 
 from __future__ import annotations
 
@@ -41,14 +44,14 @@ class Output:
         if self.broken:
             return
         try:
-            self.stream.write(text)
+            write_text(self.stream, text)
         except BrokenPipeError:
             self.broken = True
 
     def write_other(self, stream: TextIO, text: str) -> None:
         """Write `text` whole on another stream (stderr) under the same lock, and flush it."""
         with self.lock:
-            stream.write(text)
+            write_text(stream, text)
             try:
                 stream.flush()
             except (OSError, ValueError):
@@ -73,3 +76,19 @@ class Output:
                 self.stream.flush()
             except (OSError, ValueError):
                 pass
+
+
+def write_text(stream: TextIO, text: str) -> None:
+    """Write `text` on `stream`; surrogate escapes go out as the bytes they stand for, through
+    the stream's byte buffer when it has one (its own error handler may be strict, or replace
+    them)."""
+    if not text.isascii():
+        try:
+            text.encode("utf-8")
+        except UnicodeEncodeError:
+            buffer = getattr(stream, "buffer", None)
+            if buffer is not None:
+                stream.flush()
+                buffer.write(text.encode("utf-8", "surrogateescape"))
+                return
+    stream.write(text)

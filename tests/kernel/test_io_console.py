@@ -185,3 +185,28 @@ def test_with_the_real_runtime_stdout_and_stderr_are_the_runs():
         kernel.CLASSES.update(saved)
     assert status == 0
     assert out.getvalue() == "to out\n" and err.getvalue() == "to err\n"
+
+
+def test_console_input_is_bytes_and_output_gives_them_back(region, monkeypatch):
+    """EiffelStudio reads and writes the console as bytes: "é" read is two characters (UTF-8 C3 A9)
+    and written back is the same two bytes; a byte that is not UTF-8 goes out as itself."""
+    inp = stdin_console(region, monkeypatch, "é∀\nçx")
+    M.read_line(inp)
+    assert last(inp) == "\xc3\xa9\xe2\x88\x80"
+    M.read_character(inp)
+    M.read_stream(inp, 2)
+    assert M.last_character(inp) == "\xc3" and last(inp) == "\xa7x" and M.bytes_read(inp) == 2
+    out = console(region, C.make_open_stdout, "stdout")
+    M.put_string(out, K.new_string_8(region, "\xc3\xa9"))
+    M.put_string(out, K.new_string_8(region, "caf\xe9"))
+    M.put_character(out, "\xe9")
+    assert region.out == ["é", "caf\udce9", "\udce9"]  # surrogate escapes: the runtime writes the bytes
+
+
+def test_console_input_from_a_byte_stream_keeps_bytes_that_are_not_utf8(region, monkeypatch):
+    stdin = io.TextIOWrapper(io.BytesIO(b"caf\xe9\n\xfe"), encoding="utf-8")  # strict: text reads would fail
+    monkeypatch.setattr(sys, "stdin", stdin)
+    inp = console(region, C.make_open_stdin, "stdin")
+    M.read_line(inp)
+    M.read_character(inp)
+    assert last(inp) == "caf\xe9" and M.last_character(inp) == "\xfe"

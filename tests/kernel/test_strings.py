@@ -228,7 +228,7 @@ def test_out_is_a_new_string_8():
     s = K.s8(R, "text")
     o = g.out(s)
     assert type(o) is S8 and o is not s and o._s == "text" and o._region_ is R
-    assert g.out(K.s32(R, "\u20ac1"))._s == "\u20ac1"  # EiffelStudio: UTF-8 bytes; here the characters, printed alike
+    assert g.out(K.s32(R, "\u20ac1"))._s == "\xe2\x82\xac1"  # READABLE_STRING_32.out: its UTF-8 bytes, as EiffelStudio
     assert type(g.out(K.new_immutable_32(R, "i"))) is S8
 
 

@@ -89,6 +89,26 @@ def test_bridge_round_trip_on_the_object_model():
     assert eiffel_bridge.typename_of_class("GEOMETRY_MSGS_TWIST") == "geometry_msgs/msg/Twist"
 
 
+def test_a_string_field_carries_the_bytes_of_a_string_8_one_to_one(monkeypatch):
+    """ROS strings are UTF-8 and a STRING_8 holds bytes: a message's text arrives as its UTF-8
+    bytes ("é" has count 2, as in EiffelStudio) and the bytes of a STRING_8 go out unchanged, even
+    those that are not UTF-8, through the CDR on the wire and back."""
+    from scoopc.kernel import strings
+    from scoopc.robots import cdr
+
+    _fake_classes("std_msgs/msg/String")
+    monkeypatch.setitem(kernel.CLASSES, "STRING_8", type("STRING_8", (), {"_conforms_": ("STRING_8",)}))
+    text = "h\u00e9llo \u2200 \U0001f600"
+    obj = eiffel_bridge.from_message(ros_messages.new("std_msgs/msg/String", data=text), _Region())
+    assert obj.data._s == "h\xc3\xa9llo \xe2\x88\x80 \xf0\x9f\x98\x80" and len(obj.data._s) == 15
+    assert eiffel_bridge.to_message(obj).data == text
+    obj.data = strings.new_string_8(_Region(), "caf\xe9 \xc3\xa9")  # a byte that is not UTF-8, then "é"
+    wire = cdr.serialize(eiffel_bridge.to_message(obj), "std_msgs/msg/String")
+    assert b"caf\xe9 \xc3\xa9\x00" in bytes(wire)
+    back = eiffel_bridge.from_message(cdr.deserialize(wire, "std_msgs/msg/String"), _Region())
+    assert back.data._s == "caf\xe9 \xc3\xa9"
+
+
 def test_service_classes(tmp_path, capsys, monkeypatch):
     """`scoopc msg pkg/srv/Name` writes the request and response classes (those of
     tests/robots/programs/service_ros2 are its output); a .srv of one's own with --file; an unknown

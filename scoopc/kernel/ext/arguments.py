@@ -14,7 +14,8 @@ def argument_count(current):
 
 
 def i_th_argument(current, i):
-    """A new STRING_8 holding the `i`-th argument (the command name for 0)."""
+    """A new STRING_8 holding the `i`-th argument (the command name for 0): its bytes, as C's
+    `argv` has them (ARGUMENTS_32 has its characters)."""
     if i < 0:
         raise IndexError(f"argument index {i} is negative")
-    return strings.new_string_8(current._region_, PROGRAM[i])
+    return strings.new_string_8_of(current._region_, PROGRAM[i])

@@ -4,12 +4,14 @@ console object specially (scoopc.kernel.ext.io_medium).
 
 Output goes through the runtime (`Processor.print` for the standard output, `print_error` for
 the standard error): one `put_...` call is written whole. Input reads `sys.stdin` at call
-time through `STDIN`, shared by every console object of every region, as C's `stdin`.
+time through `STDIN`, shared by every console object of every region, as C's `stdin`, one
+character per byte of its UTF-8 text (EiffelStudio reads bytes).
 """
 
 import sys
 import threading
 
+from scoopc.kernel import strings
 from scoopc.kernel.ext import io_medium as M
 
 
@@ -28,18 +30,31 @@ class StdinChan:
             self.stream, self.pb, self.eof = sys.stdin, "", False
 
     def _read(self, n):
+        """At most `n` bytes of the stream, one character each: from its byte buffer when it has
+        one (any bytes, UTF-8 or not), else `n` characters of a text stream as their UTF-8 bytes."""
         stream = self.stream
-        return stream.read(n) if stream is not None else ""
+        if stream is None:
+            return ""
+        raw = getattr(stream, "buffer", None)
+        if raw is not None:
+            return raw.read(n).decode("latin-1")
+        return strings.utf8_bytes(stream.read(n))
+
+    def _line(self):
+        raw = getattr(self.stream, "buffer", None)
+        if raw is not None:
+            return raw.readline().decode("latin-1")
+        return strings.utf8_bytes(self.stream.readline())
 
     def getc(self):
         if self.eof:
             return ""
-        if self.pb:
-            c, self.pb = self.pb[0], self.pb[1:]
-            return c
-        c = self._read(1)
-        if not c:
-            self.eof = True
+        if not self.pb:
+            self.pb = self._read(1)
+            if not self.pb:
+                self.eof = True
+                return ""
+        c, self.pb = self.pb[0], self.pb[1:]
         return c
 
     def unget(self, text):
@@ -51,7 +66,7 @@ class StdinChan:
         data, self.pb = self.pb, ""
         i = data.find("\n")
         if i < 0 and self.stream is not None:
-            data += self.stream.readline()
+            data += self._line()
             i = data.find("\n")
         if i < 0:
             self.eof = True
@@ -69,6 +84,7 @@ class StdinChan:
                 self.eof = True
                 break
             data += more
+        data, self.pb = data[:n], data[n:] + self.pb
         return data, len(data)
 
 

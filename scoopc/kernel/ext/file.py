@@ -15,22 +15,14 @@ from scoopc.kernel import strings
 from scoopc.kernel.ext import io_medium as M
 
 
-def _utf8_length(b):
-    if 0xC2 <= b <= 0xDF:
-        return 2
-    if 0xE0 <= b <= 0xEF:
-        return 3
-    if 0xF0 <= b <= 0xF4:
-        return 4
-    return 1
-
-
 def decode(data):
-    return bytes(data).decode("utf-8", "surrogateescape")
+    """Bytes read as 8-bit characters, one each."""
+    return bytes(data).decode("latin-1")
 
 
 def encode(text):
-    return text.encode("utf-8", "surrogateescape")
+    """8-bit characters as the bytes they are."""
+    return strings.raw_bytes(text)
 
 
 class FileChan:
@@ -51,20 +43,11 @@ class FileChan:
         return True
 
     def getc(self):
-        """The next character (one UTF-8 sequence, or one byte), or '' at the end."""
+        """The next character (one byte), or '' at the end."""
         if self.eof or not self._fill(1):
             self.eof = True
             return ""
-        n = _utf8_length(self.pb[0])
-        if n > 1 and self._fill(n):
-            try:
-                c = bytes(self.pb[:n]).decode("utf-8")
-            except UnicodeDecodeError:
-                n = 1
-            else:
-                del self.pb[:n]
-                return c
-        c = decode(self.pb[:1])
+        c = chr(self.pb[0])
         del self.pb[:1]
         return c
 

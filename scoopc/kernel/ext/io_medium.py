@@ -23,12 +23,15 @@ Behaviour follows EiffelBase (FILE, PLAIN_TEXT_FILE, CONSOLE and the C run-time'
 * `read_character` at the end gives '%/255/' (C's EOF as a character).
 * `last_string` is one object per medium, refilled by every read, when the string helpers offer
   `set_text(obj, text)`; otherwise each read makes a new STRING_8.
-Files are byte streams: text crosses as UTF-8, bytes that are not UTF-8 being kept as
-surrogate escapes (copying a file reproduces it byte for byte); `count`, `position`, `go`,
-`move`, `read_stream` count bytes. Console output goes through the runtime
-(`Processor.print` / `print_error`: one `put_...` call is never torn); console input reads
-`sys.stdin` at call time, under a lock, with the standard output flushed first (a prompt
-shows before the program waits).
+Media are byte streams, as EiffelStudio's: a STRING_8's characters are bytes (see
+scoopc/kernel/strings.py), written as they are and read one character per byte, so a file
+copied through `read_line`/`put_string` is reproduced byte for byte and `"é"` read from a UTF-8
+file has count 2; `count`, `position`, `go`, `move`, `read_stream` count bytes. Console output
+goes through the runtime (`Processor.print` / `print_error`: one `put_...` call is never torn)
+as text: the bytes read as UTF-8, a byte that is not UTF-8 as a surrogate escape, which the
+runtime's output writes back as that byte. Console input reads `sys.stdin` at call time, under a
+lock, with the standard output flushed first (a prompt shows before the program waits), and
+takes its UTF-8 bytes.
 """
 
 from scoopc.kernel import strings
@@ -132,7 +135,10 @@ class _Reading:
 
 
 def write(current, text):
+    """Write 8-bit characters `text` (bytes) on the medium."""
     console = getattr(current, "_console", None)
+    if console is not None and not text.isascii():
+        text = strings.bytes_text(text)
     if console == "stdout":
         current._region_.print(text)
         return
@@ -297,7 +303,7 @@ new_line = put_new_line
 
 
 def put_string(current, s):
-    text = text_of(s)
+    text = s._s
     if text:
         write(current, text)
 

@@ -328,7 +328,7 @@ def copy(current, other):
 
 
 def out(current):
-    """New STRING_8 with the characters. EiffelStudio's READABLE_STRING_32.out is the UTF-8 encoding
-    (UTF_CONVERTER.string_32_to_utf_8_string_8); our strings hold characters and are written in
-    UTF-8, so keeping the characters prints the same bytes (never '%U' for a code beyond 255)."""
-    return K.new_string_8(current._region_, current._s)
+    """New STRING_8: a copy of an 8-bit string's characters; a 32-bit string's UTF-8 encoding, as
+    EiffelStudio's READABLE_STRING_32.out (UTF_CONVERTER.string_32_to_utf_8_string_8)."""
+    s = current._s
+    return K.new_string_8(current._region_, s if K.is8(current) else K.utf8_bytes(s))

@@ -115,5 +115,5 @@ def profile_topic(current, namespace, name):
 
 def report(current, text):
 
-    sys.stderr.write(f"scoopc: {strings.text(text)}\n")
+    sys.stderr.write(f"scoopc: {strings.shown(text)}\n")
     sys.stderr.flush()

@@ -33,8 +33,9 @@ def _is_string(value) -> bool:
 
 
 def _host(value):
-    """The parameter's value as the node keeps it: a STRING's text, else the basic value."""
-    return strings.text(value) if _is_string(value) else value
+    """The parameter's value as the node keeps it: a STRING's text (its bytes read as UTF-8),
+    else the basic value."""
+    return strings.shown(value) if _is_string(value) else value
 
 
 def declare_parameter(current):
@@ -51,7 +52,7 @@ def declare_parameter(current):
     if node is None:
         return  # no ROS 2 node: the parameter keeps its value
     try:
-        node.declare(name, value, strings.text(current.description), check=_checker(value))
+        node.declare(name, value, strings.shown(current.description), check=_checker(value))
     except ValueError as e:
         raise failure(current._region_, "DEVELOPER_EXCEPTION", f"ROS_PARAMETER: {e}") from None
     source = rt.outside_client(f"parameter {name}")
@@ -69,7 +70,7 @@ def declare_parameter(current):
 
 def _on_change(current, value):
     if isinstance(value, str):  # a STRING parameter: a new STRING in the parameter's region
-        value = strings.new_string_8(current._region_, value)
+        value = strings.new_string_8_of(current._region_, value)
     current.on_change(value)
 
 

@@ -20,6 +20,7 @@ feature
 			print (a [3].out + "%N")
 			print (larger (3, 9).out + " " + is_positive (-2).out + " " + upper ('q').out + "%N")
 			print (describe ("abc") + "%N")
+			print (byte_count ("é").out + " " + byte_count_32 ({STRING_32} "é").out + " " + e_acute.count.out + " " + e_acute_32.count.out + "%N")
 			print ((address /= default_pointer).out + "%N")
 		end
 
@@ -34,6 +35,10 @@ feature -- Externals
 	is_positive (x: INTEGER): BOOLEAN external "C inline" alias "$x > 0" end
 	upper (c: CHARACTER): CHARACTER external "C inline use <ctype.h>" alias "return (char) toupper ($c);" end
 	describe (s: STRING): STRING external "C inline use <string.h>" alias "return strlen ($s) == 3 ? %"three%" : %"other%";" end
+	byte_count (s: STRING): INTEGER external "C inline use <string.h>" alias "return (int) strlen ($s);" end
+	byte_count_32 (s: STRING_32): INTEGER external "C inline use <string.h>" alias "return (int) strlen ($s);" end
+	e_acute: STRING external "C inline" alias "return %"\xc3\xa9%";" end
+	e_acute_32: STRING_32 external "C inline" alias "return %"\xc3\xa9%";" end
 	address: POINTER external "C inline use <stdlib.h>" alias "return (void *) &malloc;" end
 
 end

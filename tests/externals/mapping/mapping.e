@@ -19,6 +19,7 @@ feature
 			print (negate (True).out + " " + next_char ('a').out + " " + natural_max.out + "%N")
 			print (greet ("Eiffel") + " ")
 			print (greet_32 ({STRING_32} "Ω").count.out + " " + greet_32 ({STRING_32} "Ω").item (7).code.out + "%N")
+			print (greet ("é").count.out + " " + text_length ("é").out + " " + text_length_32 ({STRING_32} "é").out + "%N")
 			a := <<1.0, 2.0, 3.0>>
 			scale (a, 2.0)
 			print (a [1].out + " " + a [3].out + " " + total (a).out + "%N")
@@ -48,6 +49,8 @@ feature -- Externals
 	natural_max: NATURAL_8 external "Python" alias "mapping_mod.natural_max" end
 	greet (s: STRING): STRING external "Python" alias "mapping_mod.greet" end
 	greet_32 (s: STRING_32): STRING_32 external "Python" alias "mapping_mod.greet" end
+	text_length (s: STRING): INTEGER external "Python" alias "builtins.len" end
+	text_length_32 (s: STRING_32): INTEGER external "Python" alias "builtins.len" end
 	scale (a: ARRAY [REAL_64]; f: REAL_64) external "Python" alias "mapping_mod.scale" end
 	total (a: ARRAY [REAL_64]): REAL_64 external "Python" alias "numpy.sum" end
 	special_sum (s: SPECIAL [INTEGER_32]): INTEGER external "Python" alias "mapping_mod.special_sum" end

@@ -2,6 +2,9 @@
 import scoopc.runtime as _rt
 from scoopc.kernel import basic as _B, strings as _KS, support as _S, types as _T
 from eiffel_base.any import ANY
+_W_1 = ('UNICODE_STRINGS', 'print_inspections', 'tests/golden/unicode_strings/unicode_strings.e', 83)
+_W_2 = ('UNICODE_STRINGS', 'print_inspections', 'tests/golden/unicode_strings/unicode_strings.e', 89)
+_T_3 = _T.t('UTF_CONVERTER', (), True)
 
 class UNICODE_STRINGS(ANY):
     """Eiffel class UNICODE_STRINGS (tests/golden/unicode_strings/unicode_strings.e)."""
@@ -12,15 +15,91 @@ class UNICODE_STRINGS(ANY):
         here = self._region_
         s_ = None
         u = None
-        s_ = _KS.s8(here, 'héllo ∀x 😀')
+        s_ = _KS.s8(here, 'hÃ©llo â\x88\x80x ð\x9f\x98\x80')
         u = _KS.s32(here, 'héllo ∀x 😀')
         self.print_(s_)
+        self.print_(_KS.s8(here, '\n'))
+        self.print_(s_.count)
         self.print_(_KS.s8(here, '\n'))
         self.print_(u.count)
         self.print_(_KS.s8(here, '\n'))
         self.print_(u)
         self.print_(_KS.s8(here, '\n'))
+        self.print_(u.out.count)
+        self.print_(_KS.s8(here, '\n'))
         self.print_(_KS.s32(here, '∀'))
         self.print_(_KS.s8(here, '\n'))
-        self.io.put_string(_KS.s8(here, '∀\n'))
+        self.io.put_string(_KS.s8(here, 'â\x88\x80\n'))
+        self.print_counts()
+        self.print_comparisons()
+        self.print_inspections()
+        self.print_utf_conversions()
+
+    def print_counts(self):
+        here = self._region_
+        s_ = None
+        u = None
+        s_ = _KS.s8(here, 'Ã©')
+        u = _KS.s32(here, 'é')
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, u.count)).plus(_KS.s8(here, '\n')))
+        self.print_(_B.out_int(here, _B.ord(s_.item__readable_string_8(1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(s_.item__readable_string_8(2)))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(u.item(1)))).plus(_KS.s8(here, '\n')))
+        s_ = _KS.s8(here, 'Ã©')
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(s_.item__readable_string_8(1)))).plus(_KS.s8(here, '\n')))
+        s_ = _KS.s8(here, 'â\x88\x80')
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, '\n')))
+        self.print_(_B.out_int(here, s_.to_string_32.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, u.as_string_8.count)).plus(_KS.s8(here, '\n')))
+        s_ = _KS.s8(here, 'aÃ©b')
+        self.print_(s_.substring(2, 3))
+        self.print_(_KS.s8(here, ' ').plus(_B.out_int(here, s_.substring(2, 3).count)).plus(_KS.s8(here, '\n')))
+
+    def print_comparisons(self):
+        here = self._region_
+        s_ = None
+        u = None
+        s_ = _KS.s8(here, 'Ã©')
+        u = _KS.s32(here, 'é')
+        self.print_(s_.same_string(u))
+        self.print_(_KS.s8(here, ' '))
+        self.print_(s_.same_string(u.out))
+        self.print_(_KS.s8(here, ' '))
+        self.print_(_B.equal(s_, u.out))
+        self.print_(_KS.s8(here, ' '))
+        self.print_(u.same_string__readable_string_32(_KS.s32(here, 'é')))
+        self.print_(_KS.s8(here, '\n'))
+
+    def print_inspections(self):
+        here = self._region_
+        s_ = None
+        u = None
+        s_ = _KS.s8(here, 'Ã©')
+        u = _KS.s32(here, 'é')
+        _inspect1 = _S.inspect_text(s_, _W_1)
+        if _inspect1 == 'Ã©':
+            self.print_(_KS.s8(here, 'STRING_8 Ã©\n'))
+        else:
+            self.print_(_KS.s8(here, 'STRING_8 other\n'))
+        _inspect2 = _S.inspect_text(u, _W_2)
+        if _inspect2 == 'é':
+            self.print_(_KS.s8(here, 'STRING_32 Ã©\n'))
+        else:
+            self.print_(_KS.s8(here, 'STRING_32 other\n'))
+
+    def print_utf_conversions(self):
+        here = self._region_
+        u = _T_3.default(here)
+        s_ = None
+        bad = None
+        w = None
+        s_ = _KS.s8(here, 'hÃ©llo â\x88\x80 ð\x9f\x98\x80')
+        w = u.utf_8_string_8_to_string_32(s_)
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, w.count)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w.item(2)))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w.item(9)))).plus(_KS.s8(here, '\n')))
+        self.print_(_S.static_target(here, _L_utf_converter.UTF_CONVERTER).string_32_to_utf_8_string_8(w).same_string__readable_string_8(s_))
+        self.print_(_KS.s8(here, ' ').plus(_B.out_int(here, u.utf_8_bytes_count(w, 1, w.count))).plus(_KS.s8(here, ' ')))
+        bad = here.new(_L_string_8.STRING_8)
+        bad.make_filled('é', 1)
+        self.print_(_B.out_bool(here, u.is_valid_utf_8_string_8(s_)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, u.is_valid_utf_8_string_8(bad))).plus(_KS.s8(here, '\n')))
+        self.print_(w)
+        self.print_(_KS.s8(here, '\n'))
 _S.register('UNICODE_STRINGS', UNICODE_STRINGS)
+import eiffel_base.string_8 as _L_string_8
+import eiffel_base.utf_converter as _L_utf_converter
