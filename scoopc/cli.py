@@ -562,10 +562,39 @@ def _render(found: list, line_text: Callable[[str, int], str], style: str, check
 
 
 def _progress() -> Callable[[str], None] | None:
-    """Progress lines on stderr for long steps, on a terminal only (stderr stays clean otherwise)."""
-    if not sys.stderr.isatty():
-        return None
-    return lambda message: print(f"scoopc: {message}", file=sys.stderr, flush=True)
+    """Progress of long steps on stderr, on a terminal only (stderr stays clean otherwise)."""
+    return ProgressBar(sys.stderr) if sys.stderr.isatty() else None
+
+
+class ProgressBar:
+    """One line of stderr, rewritten in place: a step's title, its stage (2/4 generating Python)
+    and a bar of how far the stage has gone (progress.Steps draws through `bar`)."""
+
+    WIDTH = 24
+
+    def __init__(self, stream) -> None:
+        self.stream = stream
+        self.shown = ""
+
+    def __call__(self, message: str) -> None:
+        self._show(message)
+
+    def bar(self, title: str, index: int, stages: int, stage: str, done: int, total: int) -> None:
+        filled = self.WIDTH * min(done, total) // total if total else 0
+        count = f" {done}/{total}" if total else ""
+        self._show(f"{title} [{'#' * filled}{'.' * (self.WIDTH - filled)}] {index + 1}/{stages} {stage}{count}")
+
+    def end(self) -> None:
+        if self.shown:
+            self.stream.write("\n")
+            self.stream.flush()
+            self.shown = ""
+
+    def _show(self, text: str) -> None:
+        if text != self.shown:
+            self.stream.write(f"\r\033[Kscoopc: {text}")
+            self.stream.flush()
+            self.shown = text
 
 
 def main(argv: Sequence[str] | None = None) -> int:
