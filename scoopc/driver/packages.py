@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import compileall
+import functools
 import hashlib
 import json
 import shutil
@@ -78,10 +79,12 @@ def remove_cached(folder: Path) -> None:
         shutil.rmtree(folder, ignore_errors=True)
 
 
+@functools.cache
 def compiler_digest() -> str:
     """A key of everything a compiled package depends on: scoopc's version, the grammar, the
     parser and syntax tree, the checker, the code generator, the kernel, how packages are written
-    and the standard library's sources (a few milliseconds: it is checked on every run)."""
+    and the standard library's sources (a few milliseconds, once per process: the code this
+    process runs is the code it read at start-up)."""
     digest = hashlib.sha256(__version__.encode())
     root = Path(__file__).parents[1]
     digest.update((root / "grammar.lark").read_bytes())
