@@ -6,6 +6,7 @@ error of scoopc, reported with its Python traceback). No other module imports th
 from __future__ import annotations
 
 import argparse
+import gc
 import sys
 import traceback
 from collections.abc import Callable, Sequence
@@ -597,7 +598,12 @@ class ProgressBar:
             self.shown = text
 
 
+ONE_SHOT = ("check", "compile", "run")  # commands that compile, then end (or run the program)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
+    """The command line: `argv`, else (the `scoopc` command's own process) sys.argv."""
+    argv_given = argv
     argv = list(sys.argv[1:] if argv is None else argv)
     program_args: list[str] = []
     if "--" in argv:
@@ -606,6 +612,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
     if program_args and args.command != "run":
         build_parser().error("arguments after `--` are for `scoopc run` only")
+    if argv_given is None and args.command in ONE_SHOT:
+        # The command's own process (not a caller's): the compiler's objects (a checked standard
+        # library: millions) live to its end and make little garbage, so the collector's passes
+        # over them would cost more than the compilation. A run's program gets the collector
+        # back, with these objects frozen out of its way to the end (driver.running).
+        gc.disable()
     try:
         if args.command == "run":
             return int(args.handler(args, program_args))

@@ -92,18 +92,24 @@ def run_program(
 
 @contextmanager
 def _collector_spared() -> Iterator[None]:
-    """What exists before the program starts (the compiler's objects: a checked standard library
-    is millions) stays out of the cyclic collector's passes while the program runs (a full pass
-    over them costs half a second), and goes back into them afterwards. Left alone when objects
-    are frozen already (the language server's process)."""
-    if gc.get_freeze_count():
-        yield
-        return
-    gc.freeze()
+    """The program runs with the cyclic collector on, and what exists before it starts (the
+    compiler's objects: a checked standard library is millions) stays out of the collector's
+    passes while it runs (a pass over them costs half a second). They go back into them
+    afterwards, unless the collector was off (the `scoopc` command's own process, cli.main,
+    which then ends: the final collection at exit spares them too). Objects frozen already
+    stay so (the language server's)."""
+    enabled = gc.isenabled()
+    freeze = not gc.get_freeze_count()
+    if freeze:
+        gc.freeze()
+    gc.enable()
     try:
         yield
     finally:
-        gc.unfreeze()
+        if not enabled:
+            gc.disable()
+        elif freeze:
+            gc.unfreeze()
 
 
 def _run_program(
