@@ -46,3 +46,11 @@ def test_no_prebuilt_ignores_what_the_wheel_ships(prebuilt, monkeypatch):
     ship(prebuilt, compiler_digest())
     monkeypatch.setenv("SCOOPC_NO_PREBUILT", "1")
     assert version.prebuilt(f"base-{compiler_digest()}") is None
+
+
+def test_cache_info_names_the_library_installed_with_scoopc(prebuilt):
+    from scoopc.driver import cache
+
+    shipped = ship(prebuilt, compiler_digest())
+    text = cache.describe([], prebuilt.parent / "cache", 1000)
+    assert f"standard library: the one installed with scoopc, outside the cache ({shipped})" in text

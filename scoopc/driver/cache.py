@@ -199,6 +199,9 @@ def _remove(path: Path) -> None:
 def describe(found: list[Entry], folder: Path, limit: int) -> str:
     """The text of `scoopc cache info`."""
     lines = [f"cache folder: {folder}", f"limit: {size_text(limit)} (SCOOPC_CACHE_MAX)"]
+    shipped = version.prebuilt(f"base-{compiler_digest()}")
+    if shipped is not None:
+        lines.append(f"standard library: the one installed with scoopc, outside the cache ({shipped})")
     total = sum(e.size for e in found)
     by_kind: dict[str, list[Entry]] = {}
     for entry in found:
