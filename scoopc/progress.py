@@ -34,6 +34,12 @@ class Steps:
         if finish is not None:
             finish()
 
+    def __enter__(self) -> Steps:
+        return self
+
+    def __exit__(self, *exception: object) -> None:
+        self.end()  # also when a stage fails: the bar's line is ended before the error is told
+
     def _draw(self) -> None:
         bar = getattr(self.progress, "bar", None)
         if bar is not None:

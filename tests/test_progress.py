@@ -3,6 +3,8 @@ the command line's bar, one line of stderr redrawn with the stage and how far it
 
 import io
 
+import pytest
+
 from scoopc.cli import ProgressBar
 from scoopc.progress import Steps
 
@@ -38,3 +40,11 @@ def test_the_bar_redraws_one_line_and_ends_it():
 
 def test_nothing_is_drawn_for_nobody():
     build(None)  # no callback: no output, no error
+
+
+def test_a_failing_stage_ends_the_bar_line_before_the_error_is_told():
+    stream = io.StringIO()
+    with pytest.raises(RuntimeError), Steps(ProgressBar(stream), "compiling", ("checking",)) as steps:
+        steps.stage()
+        raise RuntimeError("the library does not check")
+    assert stream.getvalue().endswith("checking\n")

@@ -84,29 +84,29 @@ def build_prebuilt(folder: Path, progress: Progress = None) -> Path:
 
 
 def _build(target: Path, progress: Progress, bytecode: bool) -> None:
-    steps = Steps(progress, "compiling the standard library (once per compiler)", STAGES if bytecode else STAGES[:-1])
-    steps.stage()
-    checked = check_project(Project(), use_cache=False, library_bodies=True)
-    if checked.has_errors:
-        raise LibraryError("the standard library does not check: " + str(checked.diagnostics[0]))
-    sem = checked.semantics
-    assert sem is not None  # no errors: the checker ran
-    options = Options(package=BASE_PACKAGE)
-    steps.stage(sum(1 for info in sem.universe.classes.values() if info.from_library))
-    modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library, on_class=steps.advance)
-    steps.stage()
-    package = target / BASE_PACKAGE
-    write_modules(package, modules, "The standard library, compiled by scoopc.")
-    write_library_facts(package, sem.universe, sem.tables, options)
-    if bytecode:
-        sources = sorted(package.glob("*.py"))
-        steps.stage(len(sources))
-        for source in sources:  # what packages.write_bytecode does, one module at a time
-            py_compile.compile(str(source), doraise=True)
-            steps.advance()
-        (package / BYTECODE_DONE).touch()
-    write_manifest(package)
-    steps.end()
+    title = "compiling the standard library (once per compiler)"
+    with Steps(progress, title, STAGES if bytecode else STAGES[:-1]) as steps:
+        steps.stage()
+        checked = check_project(Project(), use_cache=False, library_bodies=True)
+        if checked.has_errors:
+            raise LibraryError("the standard library does not check: " + str(checked.diagnostics[0]))
+        sem = checked.semantics
+        assert sem is not None  # no errors: the checker ran
+        options = Options(package=BASE_PACKAGE)
+        steps.stage(sum(1 for info in sem.universe.classes.values() if info.from_library))
+        modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library, on_class=steps.advance)
+        steps.stage()
+        package = target / BASE_PACKAGE
+        write_modules(package, modules, "The standard library, compiled by scoopc.")
+        write_library_facts(package, sem.universe, sem.tables, options)
+        if bytecode:
+            sources = sorted(package.glob("*.py"))
+            steps.stage(len(sources))
+            for source in sources:  # what packages.write_bytecode does, one module at a time
+                py_compile.compile(str(source), doraise=True)
+                steps.advance()
+            (package / BYTECODE_DONE).touch()
+        write_manifest(package)
 
 
 def _read_facts(path: Path) -> dict[str, Any]:

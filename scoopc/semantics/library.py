@@ -75,19 +75,18 @@ def ship(parse_file, prepare, folder: Path, progress=None) -> Path:
 
 
 def _parse_and_prepare(files: list[Path], key: str, parse_file, prepare, progress) -> tuple:
-    steps = Steps(progress, "reading the standard library (once per scoopc version)", ("parsing", "preparing"))
-    steps.stage(len(files))
-    parsed = []
-    for path in files:
-        parsed.append(parse_file(path))
-        steps.advance()
-    _PARSED.clear()
-    _PARSED[key] = parsed  # compiling the library next needs the bodies too
-    steps.stage()
-    # Kept: the declarations; not kept: the source texts (a cached library reports nothing).
-    units = [(None, declarations_only(tree), found) for _, tree, found in parsed]
-    prepared = prepare(units) if prepare is not None else None
-    steps.end()
+    with Steps(progress, "reading the standard library (once per scoopc version)", ("parsing", "preparing")) as steps:
+        steps.stage(len(files))
+        parsed = []
+        for path in files:
+            parsed.append(parse_file(path))
+            steps.advance()
+        _PARSED.clear()
+        _PARSED[key] = parsed  # compiling the library next needs the bodies too
+        steps.stage()
+        # Kept: the declarations; not kept: the source texts (a cached library reports nothing).
+        units = [(None, declarations_only(tree), found) for _, tree, found in parsed]
+        prepared = prepare(units) if prepare is not None else None
     return units, prepared
 
 
