@@ -6,6 +6,7 @@ error of scoopc, reported with its Python traceback). No other module imports th
 from __future__ import annotations
 
 import argparse
+import gc
 import sys
 import traceback
 from collections.abc import Callable, Sequence
@@ -574,17 +575,57 @@ def _render(found: list, line_text: Callable[[str, int], str], style: str, check
 
 
 def _progress() -> Callable[[str], None] | None:
-    """Progress lines on stderr for long steps, on a terminal only (stderr stays clean otherwise)."""
-    if not sys.stderr.isatty():
-        return None
-    return lambda message: print(f"scoopc: {message}", file=sys.stderr, flush=True)
+    """Progress of long steps on stderr, on a terminal only (stderr stays clean otherwise)."""
+    return ProgressBar(sys.stderr) if sys.stderr.isatty() else None
+
+
+class ProgressBar:
+    """One line of stderr, rewritten in place: a step's title, its stage (2/4 generating Python)
+    and a bar of how far the stage has gone (progress.Steps draws through `bar`)."""
+
+    WIDTH = 24
+
+    def __init__(self, stream) -> None:
+        self.stream = stream
+        self.shown = ""
+
+    def __call__(self, message: str) -> None:
+        self._show(message)
+
+    def bar(self, title: str, index: int, stages: int, stage: str, done: int, total: int) -> None:
+        filled = self.WIDTH * min(done, total) // total if total else 0
+        count = f" {done}/{total}" if total else ""
+        self._show(f"{title} [{'#' * filled}{'.' * (self.WIDTH - filled)}] {index + 1}/{stages} {stage}{count}")
+
+    def end(self) -> None:
+        if self.shown:
+            self.stream.write("\n")
+            self.stream.flush()
+            self.shown = ""
+
+    def _show(self, text: str) -> None:
+        if text != self.shown:
+            self.stream.write(f"\r\033[Kscoopc: {text}")
+            self.stream.flush()
+            self.shown = text
+
+
+ONE_SHOT = ("check", "compile", "run")  # commands that compile, then end (or run the program)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    """The command line: `argv`, else (the `scoopc` command's own process) sys.argv."""
+    argv_given = argv
     argv, program_args = _program_arguments(list(sys.argv[1:] if argv is None else argv))
     args = build_parser().parse_args(argv)
     if program_args and args.command != "run":
         build_parser().error("arguments after `--` are for `scoopc run` only")
+    if argv_given is None and args.command in ONE_SHOT:
+        # The command's own process (not a caller's): the compiler's objects (a checked standard
+        # library: millions) live to its end and make little garbage, so the collector's passes
+        # over them would cost more than the compilation. A run's program gets the collector
+        # back, with these objects frozen out of its way to the end (driver.running).
+        gc.disable()
     if args.command == "run":
         return _reported(lambda: args.handler(args, program_args))
     return _reported(lambda: args.handler(args))

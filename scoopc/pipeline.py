@@ -8,9 +8,10 @@ from __future__ import annotations
 
 import gc
 import os
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from contextlib import contextmanager
 from dataclasses import dataclass, field, replace
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from . import diagnostics
@@ -142,6 +143,14 @@ def load_stdlib(use_cache: bool = True, progress=None) -> tuple:
     from .semantics import library  # deferred: start-up (scoopc.semantics.library loads only when this is used)
 
     return library.load(_parse_library_file, _prepare_library, use_cache, progress)
+
+
+def ship_stdlib(folder: Path, progress: Callable[[str], None] | None = None) -> Path:
+    """A wheel's build: the library's declarations written into `folder` (load_stdlib reads them
+    there first), its full trees kept for compiling it next."""
+    from .semantics import library  # deferred: start-up, as in load_stdlib
+
+    return library.ship(_parse_library_file, _prepare_library, folder, progress)
 
 
 def _check_project(project: Project, use_cache: bool, library_bodies: bool | None, parsed: Parsed, stdlib) -> Checked:

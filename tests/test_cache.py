@@ -37,6 +37,7 @@ def warm(tmp_path_factory):
     (folder / "hello.e").write_text(HELLO)
     mp = pytest.MonkeyPatch()
     mp.setenv("SCOOPC_CACHE_DIR", str(folder / "cache"))
+    mp.setenv("SCOOPC_NO_PREBUILT", "1")  # the library in the cache, even when the suite runs from a wheel
     assert cli.main(["run", str(folder / "hello.e")]) == 0
     mp.undo()
     return folder
@@ -48,6 +49,7 @@ def cache(warm, tmp_path, monkeypatch):
     for meta in (tmp_path / "cache").glob("programs/*/program.json"):  # it names its library's folder
         meta.write_text(meta.read_text().replace(str(warm / "cache"), str(tmp_path / "cache")))
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("SCOOPC_NO_PREBUILT", "1")
     return tmp_path / "cache"
 
 

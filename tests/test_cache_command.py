@@ -94,3 +94,14 @@ def test_a_bad_limit_is_a_usage_error(root, monkeypatch, capsys):
     assert cli.main(["cache", "clean"]) == 2
     assert "SCOOPC_CACHE_MAX=lots: expected a size such as 500M or 2G" in capsys.readouterr().err
     assert (root / OTHER).is_dir()
+
+
+def test_a_program_on_the_library_the_wheel_ships_belongs_to_this_compiler(root):
+    from scoopc import version
+
+    folder = _program(root, "shipped", "x", 100, time.time())
+    shipped = version.PREBUILT / f"base-{compiler_digest()}"
+    (folder / "program.json").write_text(json.dumps({"package": "program", "base": str(shipped)}))
+    found = {e.path.name: e for e in cache.entries()}
+    assert found["shipped"].current and not found["old"].current
+    assert "shipped" not in {e.path.name for e in cache.clean()}

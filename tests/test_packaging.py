@@ -1,6 +1,9 @@
 """Packaging: the wheel built from the repository carries every module, the grammar and every
-stdlib .e file, so a regular (non-editable) install works as the checkout does."""
+stdlib .e file, so a regular (non-editable) install works as the checkout does; and the standard
+library compiled when the wheel was built (tools/build_stdlib.py), which a run from the wheel uses
+instead of compiling it: nothing of the library is written to the cache, no progress is shown."""
 
+import os
 import subprocess
 import sys
 import zipfile
@@ -23,7 +26,7 @@ def test_every_python_package_is_listed_in_pyproject():
 
 
 @pytest.fixture(scope="module")
-def wheel_names(tmp_path_factory):
+def wheel(tmp_path_factory):
     pytest.importorskip("setuptools")
     pytest.importorskip("wheel")
     out = tmp_path_factory.mktemp("wheel")
@@ -45,16 +48,64 @@ def wheel_names(tmp_path_factory):
         timeout=300,
     )
     assert done.returncode == 0, done.stderr
-    (wheel,) = out.glob("scoopc-*.whl")
+    (built,) = out.glob("scoopc-*.whl")
+    return built
+
+
+@pytest.fixture(scope="module")
+def wheel_names(wheel):
     return set(zipfile.ZipFile(wheel).namelist())
 
 
+@pytest.mark.slow
 def test_wheel_has_all_modules_and_the_grammar(wheel_names):
     expected = {p.relative_to(ROOT).as_posix() for p in (ROOT / "scoopc").rglob("*.py")}
     expected.add("scoopc/grammar.lark")
     assert expected <= wheel_names, sorted(expected - wheel_names)
 
 
+@pytest.mark.slow
 def test_wheel_has_every_stdlib_class(wheel_names):
     expected = {"scoopc/stdlib/" + p.relative_to(ROOT / "stdlib").as_posix() for p in (ROOT / "stdlib").rglob("*.e")}
     assert expected <= wheel_names, sorted(expected - wheel_names)
+
+
+@pytest.mark.slow
+def test_wheel_has_the_compiled_library_of_its_own_compiler(wheel_names):
+    from scoopc.driver.packages import compiler_digest
+    from scoopc.parse.parser import GRAMMAR_PATH, parser_file
+    from scoopc.semantics.library import library_key
+    from scoopc.semantics.universe import stdlib_files
+
+    prebuilt = "scoopc/prebuilt/"
+    base = f"{prebuilt}base-{compiler_digest()}/eiffel_base/"
+    made = ("__init__.py", "_lines.json", "_manifest.json", "_scoop_facts.json")
+    assert {base + name for name in made} <= wheel_names
+    assert len([n for n in wheel_names if n.startswith(base) and n.endswith(".py")]) == len(stdlib_files()) + 1
+    assert f"{prebuilt}stdlib-{library_key()}.pickle" in wheel_names
+    assert prebuilt + parser_file(GRAMMAR_PATH.read_text(encoding="utf-8")) in wheel_names
+    assert not [n for n in wheel_names if "__pycache__" in n or n.endswith(".pyc")]
+
+
+@pytest.mark.slow
+def test_a_run_from_the_wheel_compiles_nothing_of_the_library(wheel, tmp_path):
+    """The wheel's files first on the path (its dependencies from this environment), an empty
+    cache: the program runs, the cache holds the program only, stderr stays empty."""
+    site = tmp_path / "site"
+    zipfile.ZipFile(wheel).extractall(site)
+    cache = tmp_path / "cache"
+    env = dict(os.environ, PYTHONPATH=str(site), SCOOPC_CACHE_DIR=str(cache))
+    env.pop("SCOOPC_NO_PREBUILT", None)
+    done = subprocess.run(
+        [sys.executable, "-m", "scoopc", "run", str(ROOT / "samples" / "producer_consumer")],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=tmp_path,
+        timeout=300,
+    )
+    assert done.returncode == 0 and done.stderr == "", done.stderr
+    assert "consumers took items adding up to" in done.stdout
+    assert sorted(p.name for p in cache.iterdir()) == ["programs"]
+    (meta,) = cache.glob("programs/*/program.json")
+    assert str(site / "scoopc" / "prebuilt" / "base-") in meta.read_text()

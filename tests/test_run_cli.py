@@ -160,6 +160,7 @@ def test_cached_packages_are_byte_compiled_once(tmp_path, capsys, monkeypatch):
     from scoopc.driver import BASE_PACKAGE, compiled_library
 
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setenv("SCOOPC_NO_PREBUILT", "1")  # the library in the cache, even when the suite runs from a wheel
     path = write(tmp_path, "hello.e", HELLO)
     assert run(capsys, "run", path)[0] == 0
     base = compiled_library().path / BASE_PACKAGE

@@ -33,11 +33,17 @@ def parents_first(universe) -> list:
     return order
 
 
-def prepare(universe, tables, options: Options, library_facts=None) -> Program:
+def prepare(universe, tables, options: Options, library_facts=None, which=None) -> Program:
+    """Names and layouts; the layouts (and their bindings) only of the classes `which(info)`
+    selects and their ancestors when it is given: a program's classes need the library's
+    ancestors of theirs, not the whole library."""
     program = Program(universe, tables, options, Naming(universe), library_facts=library_facts)
-    for info in parents_first(universe):
-        program.layouts[info.name] = layout = make_layout(universe, info, program.layouts)
-        layout.plan = plan_bindings(program, info, layout)
+    order = parents_first(universe)
+    needed = _with_ancestors(universe, [info for info in order if which(info)]) if which is not None else None
+    for info in order:
+        if needed is None or info.name in needed:
+            program.layouts[info.name] = layout = make_layout(universe, info, program.layouts)
+            layout.plan = plan_bindings(program, info, layout)
         info._has_invariant = bool(info.decl.invariant) or any(
             getattr(universe.get(ty.name), "_has_invariant", False) for _, ty, _ in info.parents
         )
@@ -45,6 +51,17 @@ def prepare(universe, tables, options: Options, library_facts=None) -> Program:
             program.invariant_classes.update(info.ancestors)
             program.invariant_classes.add(info.name)
     return program
+
+
+def _with_ancestors(universe, chosen: list) -> set:
+    found: set = set()
+    pending = list(chosen)
+    while pending:
+        info = pending.pop()
+        if info.name not in found:
+            found.add(info.name)
+            pending += [parent for _, ty, _ in info.parents if (parent := universe.get(ty.name)) is not None]
+    return found
 
 
 def generate_class(program: Program, info) -> ast.Module:
@@ -59,15 +76,20 @@ def generate_class(program: Program, info) -> ast.Module:
         raise CodegenError(f"class {info.name}: {type(problem).__name__}: {problem}") from problem
 
 
-def generate(universe, tables, options: Options, which, library_leaves: list | None = None, library_facts=None) -> dict:
+def generate(
+    universe, tables, options: Options, which, library_leaves: list | None = None, library_facts=None, on_class=None
+) -> dict:
     """{module file name: (ast.Module, Eiffel source path)} for the classes `which(info)` selects.
     `library_facts`: the compiled library's SCOOP facts (Program.library_facts). `library_leaves`,
-    if given, receives the library routines that are leaves in this program (scoop.library_leaves)."""
-    program = prepare(universe, tables, options, library_facts)
+    if given, receives the library routines that are leaves in this program (scoop.library_leaves).
+    `on_class()` is called after each class (progress)."""
+    program = prepare(universe, tables, options, library_facts, which)
     modules = {}
     for info in parents_first(universe):
         if which(info):
             modules[module_name(info.name) + ".py"] = (generate_class(program, info), info.decl.span.file)
+            if on_class is not None:
+                on_class()
     if library_leaves is not None:
         from .scoop import library_leaves as leaves_of  # deferred: start-up (loaded on first use only)
 

@@ -5,7 +5,8 @@ compiler versions removed, and the least recently used programs pruned past a si
 The cache folder (semantics.library.cache_dir) holds `stdlib-<key>.pickle` (the checked library's
 declarations), `base-<digest>/` (the compiled library, driver.library) and `programs/<key>/` (one
 compiled program each, driver.compilation). A program names its library's folder in its
-`program.json`: it belongs to this compiler when that folder is this compiler's `base-<digest>`.
+`program.json`: it belongs to this compiler when that folder is this compiler's `base-<digest>`,
+in the cache or shipped in the wheel (version.PREBUILT, never counted nor removed here).
 A program's `program.json` is touched when it is used, so its time of last use is that file's.
 """
 
@@ -18,6 +19,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
+from .. import version
 from ..exits import UsageError
 from ..semantics.library import cache_dir, library_key
 from .packages import compiler_digest, remove_cached
@@ -74,7 +76,7 @@ def entries(folder: Path | None = None) -> list[Entry]:
         if path.name.endswith((".tmp", ".old")):
             found.append(_entry(path, "staging", False))
         else:
-            found.append(_entry(path, "program", _program_base(path) == folder / base))
+            found.append(_entry(path, "program", _program_base(path) in (folder / base, version.PREBUILT / base)))
     return sorted(found, key=lambda e: e.used)
 
 
@@ -197,6 +199,9 @@ def _remove(path: Path) -> None:
 def describe(found: list[Entry], folder: Path, limit: int) -> str:
     """The text of `scoopc cache info`."""
     lines = [f"cache folder: {folder}", f"limit: {size_text(limit)} (SCOOPC_CACHE_MAX)"]
+    shipped = version.prebuilt(f"base-{compiler_digest()}")
+    if shipped is not None:
+        lines.append(f"standard library: the one installed with scoopc, outside the cache ({shipped})")
     total = sum(e.size for e in found)
     by_kind: dict[str, list[Entry]] = {}
     for entry in found:

@@ -255,13 +255,17 @@ class Compilation:
         folder = cache_dir() / "programs" / key
         found = _read_cached(folder) if use_cache else None
         if found is None:
-            self.require_clean()
-            self.rebuild_library |= not use_cache  # no cache at all: the library is compiled again too
-            found = self._cache(folder, key)
+            # The checked library stays in memory to the end: the collector's passes over it
+            # would cost more than the whole compilation (pipeline.without_gc_pauses).
+            with pipeline.without_gc_pauses():
+                self.require_clean()
+                self.rebuild_library |= not use_cache  # no cache at all: the library is compiled again too
+                found = self._cache(folder, key)
             cache.tidy(keep=folder)
         else:
             cache.touch(folder / "program.json")
-        cache.touch(found.library)
+        if found.library.parent == cache_dir():
+            cache.touch(found.library)
         ensure_bytecode(found.library)
         return found
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import ast
 import compileall
+import functools
 import hashlib
 import json
 import shutil
@@ -18,6 +19,7 @@ import tempfile
 from collections.abc import Iterator
 from pathlib import Path
 
+from .. import version
 from ..exits import UsageError
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_files
@@ -25,6 +27,7 @@ from ..version import __version__
 
 BASE_PACKAGE = "eiffel_base"
 MANIFEST = "_manifest.json"  # {module file: size}: a cached package is whole when these match
+BYTECODE_DONE = "__pycache__/scoopc-complete"  # written last by a package's byte-compilation
 
 
 class DamagedCache(Exception):
@@ -76,15 +79,21 @@ def remove_cached(folder: Path) -> None:
         shutil.rmtree(folder, ignore_errors=True)
 
 
+@functools.cache
 def compiler_digest() -> str:
-    """A key of everything a compiled package depends on: scoopc's version, the code generator,
-    the kernel, the checker and the standard library's sources."""
+    """A key of everything a compiled package depends on: scoopc's version, the grammar, the
+    parser and syntax tree, the checker, the code generator, the kernel, how packages are written
+    and the standard library's sources (a few milliseconds, once per process: the code this
+    process runs is the code it read at start-up)."""
     digest = hashlib.sha256(__version__.encode())
     root = Path(__file__).parents[1]
-    for folder in ("codegen", "kernel", "kernel/ext", "semantics"):
+    digest.update((root / "grammar.lark").read_bytes())
+    for folder in ("parse", "parse/builders", "syntax", "semantics", "codegen", "kernel", "kernel/ext"):
         for path in sorted((root / folder).glob("*.py")):
             digest.update(path.name.encode())
             digest.update(path.read_bytes())
+    for path in (root / "driver" / "library.py", Path(__file__)):
+        digest.update(path.read_bytes())
     for path in stdlib_files():
         digest.update(path.name.encode())
         digest.update(path.read_bytes())
@@ -164,11 +173,11 @@ def write_bytecode(folder: Path) -> None:
 
 
 def ensure_bytecode(base: Path) -> None:
-    """The compiled library's bytecode, written by the first run that needs it (`scoopc compile`
-    never does: it copies the sources only)."""
+    """The compiled library's bytecode, written when it is compiled into the cache; an interrupted
+    byte-compilation is done again here. A wheel's library is left to its installer."""
     package = base / BASE_PACKAGE
-    done = package / "__pycache__" / "scoopc-complete"  # written last: an interrupted run redoes it
-    if not done.exists():
+    done = package / BYTECODE_DONE
+    if base.parent != version.PREBUILT and not done.exists():
         write_bytecode(package)
         done.touch()
 

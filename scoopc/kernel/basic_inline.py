@@ -15,13 +15,14 @@ _PLACES = ("X", "Y", "Z")
 
 
 class Spec:
-    """How to inline one feature: `arity` arguments, templates `alts` ((guard, text), ...)."""
+    """How to inline one feature: `arity` arguments, templates `alts` ((guard, (tree, counts)), ...)
+    as _parse makes them."""
 
     __slots__ = ("arity", "alts")
 
     def __init__(self, arity, alts):
         self.arity = arity
-        self.alts = [(guard, _parse(text)) for guard, text in alts]
+        self.alts = alts
 
     def build(self, current, arguments, region):
         if len(arguments) != self.arity:
@@ -481,6 +482,6 @@ def _build():
         for feature, alts in table.items():
             if isinstance(alts, str):
                 alts = [(None, alts)]
-            arity = max(_arity(_parse(text)) for _, text in alts)
-            result[(class_name, feature)] = Spec(arity, alts)
+            parsed = [(guard, _parse(text)) for guard, text in alts]
+            result[(class_name, feature)] = Spec(max(_arity(tree) for _, tree in parsed), parsed)
     return result

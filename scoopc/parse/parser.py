@@ -7,16 +7,19 @@ reduction callbacks (scoopc/parse_tree); there is no intermediate parse tree.
 
 from __future__ import annotations
 
+import hashlib
 import os
 import re
+import sys
 import threading
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import lark
 from lark import Lark
 from lark.exceptions import UnexpectedInput
 
-from .. import diagnostics, syntax
+from .. import diagnostics, syntax, version
 from ..diagnostics import Diagnostic, InternalError
 from ..source import SourceFile, Span
 from . import syntax_errors
@@ -47,18 +50,39 @@ def _accelerator() -> dict:
 
 
 def make_parser(builder: object, accelerate: bool = True) -> Lark:
-    """A lark LALR parser for the grammar that calls `builder`'s methods on each reduction."""
+    """A lark LALR parser for the grammar that calls `builder`'s methods on each reduction. Its
+    tables are the ones a wheel ships, made for this grammar, lark and Python, when they load
+    (building them takes about a second); else they are built, with lark's cache in the
+    temporary folder."""
     options = _accelerator() if accelerate else {}
-    return Lark(
-        GRAMMAR_PATH.read_text(encoding="utf-8"),
-        parser="lalr",
-        lexer="basic",
-        transformer=builder,
-        maybe_placeholders=True,
-        propagate_positions=False,
-        cache=True,
-        **options,
-    )
+    grammar = GRAMMAR_PATH.read_text(encoding="utf-8")
+    shipped = version.prebuilt(parser_file(grammar))
+    if shipped is not None:
+        try:
+            with open(shipped, "rb") as handle:
+                # Lark.load with the callbacks: the form lark's own cache uses (Lark.load takes none)
+                return Lark.__new__(Lark)._load(handle, transformer=builder, **options)
+        except Exception:  # not loadable by this lark after all: build the tables
+            pass
+    return Lark(grammar, transformer=builder, cache=True, **PARSER_OPTIONS, **options)
+
+
+PARSER_OPTIONS = {"parser": "lalr", "lexer": "basic", "maybe_placeholders": True, "propagate_positions": False}
+
+
+def parser_file(grammar: str) -> str:
+    """The name of the serialized parser for `grammar` under this lark and Python."""
+    key = f"{grammar}{PARSER_OPTIONS}{lark.__version__}{sys.version_info[:2]}"
+    return f"parser-{hashlib.sha256(key.encode()).hexdigest()[:24]}.lark"
+
+
+def save_parser(folder: Path) -> Path:
+    """Serialize the parser's tables into `folder` (a wheel's build): what make_parser loads."""
+    grammar = GRAMMAR_PATH.read_text(encoding="utf-8")
+    path = folder / parser_file(grammar)
+    with open(path, "wb") as handle:
+        Lark(grammar, **PARSER_OPTIONS).save(handle)
+    return path
 
 
 def _parser() -> tuple[Lark, AstBuilder]:

@@ -2,7 +2,8 @@
 signatures), parsed from stdlib/ or loaded from a cache keyed by the library's contents and the
 compiler's version (so edits invalidate it).
 
-Cache directory: $SCOOPC_CACHE_DIR, else $XDG_CACHE_HOME/scoopc, else ~/.cache/scoopc.
+Cache directory: $SCOOPC_CACHE_DIR, else $XDG_CACHE_HOME/scoopc, else ~/.cache/scoopc. A wheel
+ships the cache file of its own library in scoopc/prebuilt/ (version.PREBUILT), read first.
 """
 
 from __future__ import annotations
@@ -15,7 +16,8 @@ import sys
 from dataclasses import replace
 from pathlib import Path
 
-from .. import syntax
+from .. import syntax, version
+from ..progress import Steps
 from ..version import __version__
 from .universe import stdlib_files
 
@@ -58,15 +60,33 @@ def load(parse_file, prepare=None, use_cache: bool = True, progress=None):
     cached = _read(key)
     if cached is not None:
         return cached
-    if progress is not None:
-        progress(f"reading the standard library ({len(files)} classes, once per scoopc version)")
-    parsed = [parse_file(path) for path in files]
-    _PARSED.clear()
-    _PARSED[key] = parsed  # compiling the library next needs the bodies too
-    # Kept: the declarations; not kept: the source texts (a cached library reports nothing).
-    units = [(None, declarations_only(tree), found) for _, tree, found in parsed]
-    prepared = prepare(units) if prepare is not None else None
+    units, prepared = _parse_and_prepare(files, key, parse_file, prepare, progress)
     _write(key, (units, prepared))
+    return units, prepared
+
+
+def ship(parse_file, prepare, folder: Path, progress=None) -> Path:
+    """A wheel's build: the library's declarations cache file written into `folder` (the trees
+    are kept for compiling the library next). Fails loudly."""
+    files = stdlib_files()
+    key = _key(files)
+    _write(key, _parse_and_prepare(files, key, parse_file, prepare, progress), folder)
+    return folder / f"stdlib-{key}.pickle"
+
+
+def _parse_and_prepare(files: list[Path], key: str, parse_file, prepare, progress) -> tuple:
+    with Steps(progress, "reading the standard library (once per scoopc version)", ("parsing", "preparing")) as steps:
+        steps.stage(len(files))
+        parsed = []
+        for path in files:
+            parsed.append(parse_file(path))
+            steps.advance()
+        _PARSED.clear()
+        _PARSED[key] = parsed  # compiling the library next needs the bodies too
+        steps.stage()
+        # Kept: the declarations; not kept: the source texts (a cached library reports nothing).
+        units = [(None, declarations_only(tree), found) for _, tree, found in parsed]
+        prepared = prepare(units) if prepare is not None else None
     return units, prepared
 
 
@@ -90,7 +110,8 @@ def _without_body(feature):
 
 
 def _read(key: str) -> list | None:
-    path = cache_dir() / f"stdlib-{key}.pickle"
+    name = f"stdlib-{key}.pickle"
+    path = version.prebuilt(name) or cache_dir() / name
     enabled = gc.isenabled()
     gc.disable()  # a load creates many objects and no garbage: collections only cost time
     try:
@@ -103,8 +124,10 @@ def _read(key: str) -> list | None:
             gc.enable()
 
 
-def _write(key: str, units) -> None:
-    directory = cache_dir()
+def _write(key: str, units, directory: Path | None = None) -> None:
+    """Into the cache folder, or `directory` (a wheel's build, which must not fail quietly)."""
+    shipping = directory is not None
+    directory = cache_dir() if directory is None else directory
     try:
         directory.mkdir(parents=True, exist_ok=True)
         temporary = directory / f".stdlib-{key}.{os.getpid()}"
@@ -120,4 +143,6 @@ def _write(key: str, units) -> None:
             if stale.name != f"stdlib-{key}.pickle":
                 stale.unlink(missing_ok=True)
     except OSError:
-        pass  # a read-only home: work without the cache
+        if shipping:  # a wheel must not ship without it
+            raise
+        # else a read-only home: work without the cache

@@ -48,6 +48,7 @@ def test_stdlib_holds_the_kernel_classes_programs_name():
 
 def test_cached_check_reports_what_a_cold_check_reports(tmp_path, monkeypatch):
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path))
+    monkeypatch.setenv("SCOOPC_NO_PREBUILT", "1")  # the cache file, not the one a wheel ships
     sample = Path(__file__).resolve().parents[2] / "samples" / "producer_consumer"
     from scoopc.project import collect
 
@@ -60,6 +61,7 @@ def test_cached_check_reports_what_a_cold_check_reports(tmp_path, monkeypatch):
 
 def test_a_damaged_cache_is_ignored_and_rewritten(tmp_path, monkeypatch):
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path))
+    monkeypatch.setenv("SCOOPC_NO_PREBUILT", "1")  # the cache file, not the one a wheel ships
     sample = Path(__file__).resolve().parents[2] / "samples" / "producer_consumer"
     from scoopc.project import collect
 

@@ -12,7 +12,7 @@ import threading
 import scoopc.runtime as rt
 from scoopc.kernel import strings
 from scoopc.kernel.ext.exception import failure
-from scoopc.robots import eiffel_bridge, transport
+from scoopc.robots import transport
 
 
 def _over_dds(bus) -> bool:
@@ -99,12 +99,16 @@ def _on_status(handle, code):
 
 
 def _on_feedback(handle, link):
+    from scoopc.robots import eiffel_bridge  # deferred: start-up (numpy and rosbags load only when this is used)
+
     msg = link.take()
     if msg is not None:
         handle.on_feedback(eiffel_bridge.from_message(msg, handle._region_, link.store))
 
 
 def _on_result(handle, link, code, msg):
+    from scoopc.robots import eiffel_bridge  # deferred: start-up (numpy and rosbags load only when this is used)
+
     handle.on_result(code, eiffel_bridge.from_message(msg, handle._region_, link.store))
 
 
@@ -114,7 +118,10 @@ def _on_cancel_reply(handle, code):
 
 def send(current, goal, handle):
     """Send `goal`; wait for the answer; from then on the goal's news go to `handle`."""
-    from scoopc.robots import services  # deferred: start-up (cyclonedds loads only when actions are used)
+    from scoopc.robots import (
+        eiffel_bridge,  # deferred: start-up (numpy and rosbags load only when this is used)
+        services,  # deferred: start-up (cyclonedds loads only when actions are used)
+    )
 
     client, source = action_client(current)
     message = eiffel_bridge.to_message(goal, client.types["goal"], client.store)

@@ -13,7 +13,7 @@ import threading
 import scoopc.runtime as rt
 from scoopc.kernel import strings
 from scoopc.kernel.ext.exception import failure
-from scoopc.robots import eiffel_bridge, transport
+from scoopc.robots import transport
 
 ANSWER_WAIT = 60.0  # seconds a DDS thread waits for the processor's answer
 
@@ -25,6 +25,8 @@ class _Answer:
 
 def _goal(current, pending, server_goal):
     """On the server's processor: `on_goal' for one request."""
+    from scoopc.robots import eiffel_bridge  # deferred: start-up (numpy and rosbags load only when this is used)
+
     try:
         server = server_goal.server
         request = eiffel_bridge.from_message(server_goal.goal, current._region_, server.store)

@@ -3,17 +3,21 @@ the goal's scoopc.robots.actions.ServerGoal, attached by ROS_ACTION_SERVER's tra
 (scoopc/kernel/ext/ros_action_server.py) when the goal was accepted."""
 
 from scoopc.kernel.ext.exception import failure
-from scoopc.robots import eiffel_bridge
 
 
 def send_feedback(current, feedback):
+    from scoopc.robots import eiffel_bridge  # deferred: start-up (numpy and rosbags load only when this is used)
+
     server_goal = current._server_goal
     server = server_goal.server
     server_goal.publish_feedback(eiffel_bridge.to_message(feedback, server.types["feedback"], server.store))
 
 
 def finish(current, result, status):
-    from scoopc.robots import actions  # deferred: start-up (cyclonedds loads only when actions are used)
+    from scoopc.robots import (
+        actions,  # deferred: start-up (cyclonedds loads only when actions are used)
+        eiffel_bridge,  # deferred: start-up (numpy and rosbags load only when this is used)
+    )
 
     server_goal = current._server_goal
     server = server_goal.server

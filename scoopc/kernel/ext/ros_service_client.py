@@ -4,7 +4,7 @@ request object converted by the generic bridge, the response made in the client'
 
 from scoopc.kernel import strings
 from scoopc.kernel.ext.exception import failure
-from scoopc.robots import eiffel_bridge, transport
+from scoopc.robots import transport
 
 
 def service_client(current, what):
@@ -35,7 +35,10 @@ def is_available(current, seconds):
 
 
 def call_service(current, request):
-    from scoopc.robots import services  # deferred: start-up (cyclonedds loads only when services are used)
+    from scoopc.robots import (
+        eiffel_bridge,  # deferred: start-up (numpy and rosbags load only when this is used)
+        services,  # deferred: start-up (cyclonedds loads only when services are used)
+    )
 
     client = service_client(current, "ROS_SERVICE_CLIENT")
     message = eiffel_bridge.to_message(request, client.request_type, client.store)

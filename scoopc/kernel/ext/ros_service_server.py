@@ -14,7 +14,7 @@ import time
 import scoopc.runtime as rt
 from scoopc.kernel import strings
 from scoopc.kernel.ext.exception import failure
-from scoopc.robots import eiffel_bridge, transport
+from scoopc.robots import transport
 
 ANSWER_WAIT = 60.0  # seconds the DDS thread waits for the processor's answer
 
@@ -28,6 +28,8 @@ class _Answer:
 
 def _answer(current, pending, store, response_type):
     """On the server's processor: the Eiffel `answer' to one request."""
+    from scoopc.robots import eiffel_bridge  # deferred: start-up (numpy and rosbags load only when this is used)
+
     try:
         request = eiffel_bridge.from_message(pending.request, current._region_, store)
         response = current.answer(request)
