@@ -15,6 +15,7 @@ from .context import ModuleContext
 from .layout import impl_id, lookup
 from .names import ONCE_CELL, class_name, eiffel_class_name
 from .routines import RoutineGen, local_identifier
+from .shallow import Shallow
 
 # The generated module's own names (these, its constants `_W_1`, ..., the externals' modules
 # `_X_...`) start with an underscore, which no Eiffel identifier can: a class named S or W_1 is safe.
@@ -98,7 +99,7 @@ class ClassGen:
         stmts += self.module.functions
         stmts.append(P.expr_stmt(P.call("_S.register", [P.const(self.info.name), P.name(class_name(self.info.name))])))
         stmts += self.module.module_imports()
-        module = ast.Module(stmts, [])
+        module = Shallow().module(ast.Module(stmts, []))
         _stamp_statements(module, 1)
         return module
 

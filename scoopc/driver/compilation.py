@@ -24,6 +24,7 @@ from .. import outdir, pipeline
 from ..codegen.context import Options
 from ..codegen.names import class_name, module_name
 from ..codegen.program import generate
+from ..depth import deeply
 from ..exits import SourceErrors, UsageError
 from ..kernel.link import LIBRARY_LEAVES_FILE
 from ..project import Project, collect
@@ -118,11 +119,12 @@ class Compilation:
 
     @cached_property
     def parsed(self) -> pipeline.Parsed:
-        return pipeline.parse_project(self.project, self.overlay)
+        return deeply(pipeline.parse_project, self.project, self.overlay)
 
     @cached_property
     def checked(self) -> pipeline.Checked:
-        return pipeline.check_project(self.project, parsed=self.parsed, progress=self.progress, stdlib=self.stdlib)
+        parsed = self.parsed
+        return deeply(pipeline.check_project, self.project, parsed=parsed, progress=self.progress, stdlib=self.stdlib)
 
     @property
     def was_checked(self) -> bool:
@@ -177,7 +179,8 @@ class Compilation:
                 (plan.language, plan.name) for plan in externals.plans(self.checked.externals, self.project)
             )
             options = Options(assertions=self.assertions, package=package, c_modules=c_modules)
-            modules = generate(
+            modules = deeply(
+                generate,
                 sem.universe,
                 sem.tables,
                 options,
@@ -194,7 +197,8 @@ class Compilation:
         sem = self.semantics
         modules, leaves = self.modules(package)
         folder = out / package
-        write_modules(folder, modules, f"A program compiled by scoopc (root class {self.root.key}).", (BASE_PACKAGE,))
+        doc = f"A program compiled by scoopc (root class {self.root.key})."
+        deeply(write_modules, folder, modules, doc, (BASE_PACKAGE,))
         (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
         (folder / "__main__.py").write_text(_main_text(package, self.root, dict(sem.universe.shadowed)))
         externals.copy_python_modules(self.checked.externals, folder)

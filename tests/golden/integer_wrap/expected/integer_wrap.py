@@ -19,34 +19,50 @@ class INTEGER_WRAP(ANY):
         n32 = 0
         n64 = 0
         i8 = 127
-        i8 = _t if (_t := (i8 + 1)) <= 127 else _B.wrap_i8(_t)
+        i8 = i8 + 1
+        if i8 > 127:
+            i8 = _B.wrap_i8(i8)
         self.show(_KS.s8(here, 'i8 127 + 1'), _B.out_int(here, i8))
-        i8 = _t if -128 <= (_t := (i8 - 1)) else _B.wrap_i8(_t)
+        i8 = i8 - 1
+        if i8 < -128:
+            i8 = _B.wrap_i8(i8)
         self.show(_KS.s8(here, 'i8 -128 - 1'), _B.out_int(here, i8))
         i8 = 100
-        i8 = _t if -128 <= (_t := (i8 * 3)) <= 127 else _B.wrap_i8(_t)
+        i8 = i8 * 3
+        if not -128 <= i8 <= 127:
+            i8 = _B.wrap_i8(i8)
         self.show(_KS.s8(here, 'i8 100 * 3'), _B.out_int(here, i8))
         i8 = -128
         i8 = _B.idiv_i8(i8, -1)
         self.show(_KS.s8(here, 'i8 -128 // -1'), _B.out_int(here, i8))
         i8 = -128
-        self.show(_KS.s8(here, 'i8 abs'), _B.out_int(here, i8 if i8 >= 0 else _t if (_t := (-i8)) <= 127 else _B.wrap_i8(_t)))
+        self.show(_KS.s8(here, 'i8 abs'), _B.out_int(here, i8 if i8 >= 0 else _B.i8(-i8)))
         i16 = 32767
-        i16 = _t if (_t := (i16 + 2)) <= 32767 else _B.wrap_i16(_t)
+        i16 = i16 + 2
+        if i16 > 32767:
+            i16 = _B.wrap_i16(i16)
         self.show(_KS.s8(here, 'i16 32767 + 2'), _B.out_int(here, i16))
         i32 = _L_integer_32.INTEGER_32.max_value
-        i32 = _t if (_t := (i32 + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        i32 = i32 + 1
+        if i32 > 2147483647:
+            i32 = _B.wrap_i32(i32)
         self.show(_KS.s8(here, 'i32 max + 1'), _B.out_int(here, i32))
         i32 = 65536
-        i32 = _t if -2147483648 <= (_t := (i32 * 65536)) <= 2147483647 else _B.wrap_i32(_t)
+        i32 = i32 * 65536
+        if not -2147483648 <= i32 <= 2147483647:
+            i32 = _B.wrap_i32(i32)
         self.show(_KS.s8(here, 'i32 65536 * 65536'), _B.out_int(here, i32))
         i32 = _L_integer_32.INTEGER_32.min_value
-        self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, _t if -2147483648 <= (_t := (i32 - 1)) else _B.wrap_i32(_t)))
+        self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, _B.i32(i32 - 1)))
         i64 = _L_integer_64.INTEGER_64.max_value
-        i64 = _t if (_t := (i64 + 1)) <= 9223372036854775807 else _B.wrap_i64(_t)
+        i64 = i64 + 1
+        if i64 > 9223372036854775807:
+            i64 = _B.wrap_i64(i64)
         self.show(_KS.s8(here, 'i64 max + 1'), _B.out_int(here, i64))
         i64 = 3000000000
-        i64 = _t if -9223372036854775808 <= (_t := (i64 * 4000000000)) <= 9223372036854775807 else _B.wrap_i64(_t)
+        i64 = i64 * 4000000000
+        if not -9223372036854775808 <= i64 <= 9223372036854775807:
+            i64 = _B.wrap_i64(i64)
         self.show(_KS.s8(here, 'i64 3e9 * 4e9'), _B.out_int(here, i64))
         n8 = 0
         n8 = n8 - 1 & 255
@@ -74,10 +90,10 @@ class INTEGER_WRAP(ANY):
         self.show(_KS.s8(here, 'i64 -9 // 4, -9 \\\\ 4'), _B.out_int(here, i64 // 4 if i64 >= 0 else -(-i64 // 4)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, i64 % 4 if i64 >= 0 else -(-i64 % 4))))
         self.show(_KS.s8(here, '7 / 2'), _B.out_r64(here, 7 / 2))
         self.show(_KS.s8(here, '2 ^ 10'), _B.out_r64(here, _B.power(2, 10.0)))
-        self.show(_KS.s8(here, '-7 abs, 7 max 9, 3 min -2'), _B.out_int(here, -7 if -7 >= 0 else _t if (_t := (--7)) <= 2147483647 else _B.wrap_i32(_t)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 7 if 7 >= 9 else 9)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 3 if 3 <= -2 else -2)))
+        self.show(_KS.s8(here, '-7 abs, 7 max 9, 3 min -2'), _B.out_int(here, -7 if -7 >= 0 else _B.i32(--7)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 7 if 7 >= 9 else 9)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 3 if 3 <= -2 else -2)))
         self.show(_KS.s8(here, 'sign'), _B.out_int(here, (-5 > 0) - (-5 < 0)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (0 > 0) - (0 < 0))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (5 > 0) - (5 < 0))))
         self.show(_KS.s8(here, '12 & 10, 12 | 10, 12 xor 10'), _B.out_int(here, 12 & 10).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 12 | 10)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 12 ^ 10)))
-        self.show(_KS.s8(here, '1 |<< 4, 1 |<< 31, -16 |>> 2'), _B.out_int(here, _t if -2147483648 <= (_t := (1 << 4)) <= 2147483647 else _B.wrap_i32(_t)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _t if -2147483648 <= (_t := (1 << 31)) <= 2147483647 else _B.wrap_i32(_t))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -16 >> 2)))
+        self.show(_KS.s8(here, '1 |<< 4, 1 |<< 31, -16 |>> 2'), _B.out_int(here, _B.i32(1 << 4)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.i32(1 << 31))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -16 >> 2)))
         self.show(_KS.s8(here, 'bit_not 0'), _B.out_int(here, ~0))
         n8 = 0
         self.show(_KS.s8(here, 'n8 bit_not 0'), _B.out_int(here, n8 ^ 255))
@@ -91,7 +107,7 @@ class INTEGER_WRAP(ANY):
         self.show(_KS.s8(here, 'n8 200 as_integer_8'), _B.out_int(here, (n8 + 128 & 255) - 128))
         i8 = -128
         i32 = 1000
-        self.show(_KS.s8(here, 'i8 + i32'), _B.out_int(here, _t if -2147483648 <= (_t := (i8 + i32)) <= 2147483647 else _B.wrap_i32(_t)))
+        self.show(_KS.s8(here, 'i8 + i32'), _B.out_int(here, _B.i32(i8 + i32)))
         self.show(_KS.s8(here, '0xFF, 1_000_000'), _B.out_int(here, 255).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 1000000)))
         self.show(_KS.s8(here, 'to_real_64 / 2'), _B.out_r64(here, (7 + 0.0) / 2.0))
         self.show(_KS.s8(here, 'comparisons'), _B.out_bool(here, 3 < 5).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 3 >= 5)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (3 > 5) - (3 < 5))))
