@@ -36,7 +36,7 @@ class Spec:
             result = _instantiate(tree, nodes)
             dropped = [nodes[k] for k in _PLACES if k in nodes and not counts.get(k) and not _trivial(nodes[k])]
             if dropped:
-                result = ast.Call(_b("seq"), [_clone(d) for d in dropped] + [result], [])
+                result = ast.Call(_b("seq"), dropped + [result], [])
             return result
         raise AssertionError("no template applies")
 
@@ -51,10 +51,12 @@ def _parse(text):
 
 
 def _instantiate(node, nodes):
-    """A fresh copy of template `node` with the place names X, Y, Z, R replaced by copies of
-    the given expressions (copying by hand: copy.deepcopy costs ten times more)."""
+    """A fresh copy of template `node` with the place names X, Y, Z, R replaced by the given
+    expressions (copies of the trivial ones, which a template may use twice; copying by hand:
+    copy.deepcopy costs ten times more)."""
     if isinstance(node, ast.Name) and node.id in nodes and nodes[node.id] is not None:
-        return _clone(nodes[node.id])
+        value = nodes[node.id]  # an operand used twice is trivial: copying the others costs time for nothing
+        return _clone(value) if _trivial(value) else value
     if isinstance(node, ast.AST):
         new = node.__class__.__new__(node.__class__)
         for field in node._fields:

@@ -20,7 +20,9 @@ class ACROSS_FORMS(ANY):
             self.print_(_B.out_int(here, i).plus(_KS.s8(here, ' ')))
         self.print_(_KS.s8(here, '\n'))
         for i in range(1, 5 + 1):
-            sum = _t if -2147483648 <= (_t := (sum + i)) <= 2147483647 else _B.wrap_i32(_t)
+            sum = sum + i
+            if not -2147483648 <= sum <= 2147483647:
+                sum = _B.wrap_i32(sum)
         self.print_(_KS.s8(here, 'sum ').plus(_B.out_int(here, sum)).plus(_KS.s8(here, '\n')))
         for i in range(5, 1 + 1):
             self.print_(_KS.s8(here, 'never ').plus(_B.out_int(here, i)))
@@ -39,7 +41,7 @@ class ACROSS_FORMS(ANY):
         self.print_(_KS.s8(here, 'all positive: ').plus(_B.out_bool(here, all((x > 0 for x in _S.items(list))))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'all even: ').plus(_B.out_bool(here, all(((x % 2 if x >= 0 else -(-x % 2)) == 0 for x in _S.items(list))))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'some above 40: ').plus(_B.out_bool(here, any((c.item > 40 for c in _S.cursors(list))))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'some square is 49: ').plus(_B.out_bool(here, any(((_t if -2147483648 <= (_t := (i.item * i.item)) <= 2147483647 else _B.wrap_i32(_t)) == 49 for i in _S.cursors(_B.interval(here, 1, 10)))))).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'some square is 49: ').plus(_B.out_bool(here, any((_B.i32(i.item * i.item) == 49 for i in _S.cursors(_B.interval(here, 1, 10)))))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'all over empty: ').plus(_B.out_bool(here, all((i > 100 for i in _S.items(_B.interval(here, 3, 2)))))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'some over empty: ').plus(_B.out_bool(here, any((i > 0 for i in _S.items(_B.interval(here, 3, 2)))))).plus(_KS.s8(here, '\n')))
         for c in _S.cursors(list):

@@ -16,26 +16,32 @@ class ACROSS_IS_UNFOLDED(ANY):
         i = 0
         a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
         for x in _S.cursors(a):
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
-            a.put(_t if -2147483648 <= (_t := (x.item * 10)) <= 2147483647 else _B.wrap_i32(_t), i)
+            a.put(_B.i32(x.item * 10), i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
         self.print_(_KS.s8(here, '(across is)\n'))
         a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
         i = 0
         for x in _S.cursors(a):
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
-            a.put(_t if -2147483648 <= (_t := (x.item * 10)) <= 2147483647 else _B.wrap_i32(_t), i)
+            a.put(_B.i32(x.item * 10), i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
         self.print_(_KS.s8(here, '(symbolic)\n'))
         a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
         i = 0
         c = a.new_cursor
         while not c.after:
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
             self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))
-            a.put(_t if -2147483648 <= (_t := (c.item * 10)) <= 2147483647 else _B.wrap_i32(_t), i)
+            a.put(_B.i32(c.item * 10), i)
             self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))
             c.forth()
         self.print_(_KS.s8(here, '(unfolded)\n'))

@@ -64,7 +64,9 @@ class AGENTS(ANY):
         self.show(_KS.s8(here, 'for_all even'), _B.out_bool(here, list.for_all(even)))
         self.show(_KS.s8(here, 'there_exists even'), _B.out_bool(here, list.there_exists(even)))
         for x in _S.cursors(list):
-            total = _t if -2147483648 <= (_t := (total + _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)).item(_S.new_tuple(here, [x.item], (_T_1,))))) <= 2147483647 else _B.wrap_i32(_t)
+            total = total + _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)).item(_S.new_tuple(here, [x.item], (_T_1,)))
+            if not -2147483648 <= total <= 2147483647:
+                total = _B.wrap_i32(total)
         self.show(_KS.s8(here, 'total'), _B.out_int(here, total))
         self.show(_KS.s8(here, 'inline with closed'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _agent_10, [self, 6, None], (2,)).item(_S.new_tuple(here, [7], (_T_1,)))))
         self.show(_KS.s8(here, 'attribute agent'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_6, _T_1), _S.dispatcher('counter', True), [self], ()).item(_S.new_tuple(here, [], ()))))
@@ -73,12 +75,16 @@ class AGENTS(ANY):
 
     @_rt.leaf
     def add(self, a, b_):
-        Result = _t if -2147483648 <= (_t := (a + b_)) <= 2147483647 else _B.wrap_i32(_t)
+        Result = a + b_
+        if not -2147483648 <= Result <= 2147483647:
+            Result = _B.wrap_i32(Result)
         return Result
 
     @_rt.leaf
     def double(self, x):
-        Result = _t if -2147483648 <= (_t := (2 * x)) <= 2147483647 else _B.wrap_i32(_t)
+        Result = 2 * x
+        if not -2147483648 <= Result <= 2147483647:
+            Result = _B.wrap_i32(Result)
         return Result
 
     def twice(self, fn, x):
@@ -96,11 +102,15 @@ class AGENTS(ANY):
 
     @_rt.leaf
     def bump(self):
-        self.counter = _t if (_t := (self.counter + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.counter = self.counter + 1
+        if self.counter > 2147483647:
+            self.counter = _B.wrap_i32(self.counter)
 
     @_rt.leaf
     def accumulate(self, x, factor):
-        self.accumulated = _t if -2147483648 <= (_t := (self.accumulated + (_t if -2147483648 <= (_t := (x * factor)) <= 2147483647 else _B.wrap_i32(_t)))) <= 2147483647 else _B.wrap_i32(_t)
+        self.accumulated = self.accumulated + x * factor
+        if not -2147483648 <= self.accumulated <= 2147483647:
+            self.accumulated = _B.wrap_i32(self.accumulated)
 
     def show(self, label, value):
         here = self._region_
@@ -111,7 +121,9 @@ def _agent_7(self, x):
     return Result
 
 def _agent_8(self, x):
-    Result = _t if -2147483648 <= (_t := (x + self.counter)) <= 2147483647 else _B.wrap_i32(_t)
+    Result = x + self.counter
+    if not -2147483648 <= Result <= 2147483647:
+        Result = _B.wrap_i32(Result)
     return Result
 
 def _agent_9(self, x):
@@ -119,7 +131,9 @@ def _agent_9(self, x):
     self.print_(_B.out_int(here, x).plus(_KS.s8(here, ' ')))
 
 def _agent_10(self, a, b_):
-    Result = _t if -2147483648 <= (_t := (a * b_)) <= 2147483647 else _B.wrap_i32(_t)
+    Result = a * b_
+    if not -2147483648 <= Result <= 2147483647:
+        Result = _B.wrap_i32(Result)
     return Result
 _S.register('AGENTS', AGENTS)
 import eiffel_base.arrayed_list as _L_arrayed_list

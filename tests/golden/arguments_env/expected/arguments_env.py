@@ -17,11 +17,13 @@ class ARGUMENTS_ENV(ARGUMENTS):
         i = 1
         while not i > self.argument_count:
             self.print_(_B.out_int(here, i).plus(_KS.s8(here, ': [')).plus(self.argument(i)).plus(_KS.s8(here, ']\n')))
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.print_(_KS.s8(here, 'word option v at ').plus(_B.out_int(here, self.index_of_word_option(_KS.s8(here, 'v')))).plus(_KS.s8(here, ', x at ')).plus(_B.out_int(here, self.index_of_word_option(_KS.s8(here, 'x')))).plus(_KS.s8(here, '\n')))
         if (n := self.separate_word_option_value(_KS.s8(here, 'name'))) is not None:
             self.print_(_KS.s8(here, 'name ').plus(n).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'number + 1 = ').plus(_B.out_int(here, _t if (_t := (self.argument(4).to_integer + 1)) <= 2147483647 else _B.wrap_i32(_t))).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'number + 1 = ').plus(_B.out_int(here, _B.i32(self.argument(4).to_integer + 1))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'argument_array ').plus(_B.out_int(here, self.argument_array.lower)).plus(_KS.s8(here, '..')).plus(_B.out_int(here, self.argument_array.upper)).plus(_KS.s8(here, '\n')))
         env = here.new(_L_execution_environment.EXECUTION_ENVIRONMENT)
         env.default_create()

@@ -22,7 +22,7 @@ class ARRAYS(ANY):
         a.make_filled(0, -2, 2)
         a.put(10, -2)
         a.put(20, 0)
-        a.put(_t if -2147483648 <= (_t := (a.item(-2) + a.item(0))) <= 2147483647 else _B.wrap_i32(_t), 2)
+        a.put(_B.i32(a.item(-2) + a.item(0)), 2)
         self.show(_KS.s8(here, 'bounds'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)))
         self.show(_KS.s8(here, 'items'), self.image(a))
         a.force(99, 5)
@@ -38,8 +38,10 @@ class ARRAYS(ANY):
         self.show(_KS.s8(here, 'equality'), _B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4, 1, 5]))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, b_ is b_.twin)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, b_.twin))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4])))))
         i = b_.lower
         while not i > b_.upper:
-            b_.put(_t if -2147483648 <= (_t := (b_.item(i) * 10)) <= 2147483647 else _B.wrap_i32(_t), i)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            b_.put(_B.i32(b_.item(i) * 10), i)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.show(_KS.s8(here, 'loop'), self.image(b_))
         self.show(_KS.s8(here, 'subarray'), self.image(b_.subarray(2, 4)).plus(_KS.s8(here, ' lower ')).plus(_B.out_int(here, b_.subarray(2, 4).lower)))
         b_.rebase(0)

@@ -42,7 +42,9 @@ class BOOLEAN_OPS(ANY):
     @_rt.leaf
     def touched(self):
         Result = False
-        self.touches = _t if (_t := (self.touches + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.touches = self.touches + 1
+        if self.touches > 2147483647:
+            self.touches = _B.wrap_i32(self.touches)
         return Result
 
     def show(self, label, value):

@@ -52,7 +52,9 @@ class CONSTANTS_ONCE(ANY):
 
     def next_id_once_(self, _once_):
         _once_.result = 0
-        self.evaluations = _t if (_t := (self.evaluations + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.evaluations = self.evaluations + 1
+        if self.evaluations > 2147483647:
+            self.evaluations = _B.wrap_i32(self.evaluations)
         _once_.result = 42
         return _once_.result
 
@@ -61,7 +63,9 @@ class CONSTANTS_ONCE(ANY):
         return self._region_.once('CONSTANTS_ONCE.next_id', CONSTANTS_ONCE.next_id_once_, (self,))
 
     def setup_once_(self, _once_):
-        self.setups = _t if (_t := (self.setups + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.setups = self.setups + 1
+        if self.setups > 2147483647:
+            self.setups = _B.wrap_i32(self.setups)
 
     def setup(self):
         return self._region_.once('CONSTANTS_ONCE.setup', CONSTANTS_ONCE.setup_once_, (self,))
@@ -69,7 +73,9 @@ class CONSTANTS_ONCE(ANY):
 
     def failing_once_(self, _once_):
         _once_.result = 0
-        self.attempts = _t if (_t := (self.attempts + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.attempts = self.attempts + 1
+        if self.attempts > 2147483647:
+            self.attempts = _B.wrap_i32(self.attempts)
         if not False:
             _S.assertion_failed('check', 'never', _W_1)
         _once_.result = 1

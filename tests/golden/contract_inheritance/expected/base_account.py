@@ -27,8 +27,10 @@ class BASE_ACCOUNT(ANY):
         if not amount <= self.balance:
             _S.assertion_failed('precondition', 'covered', _W_3)
         _old1 = _S.old(lambda: self.balance)
-        self.balance = _t if -2147483648 <= (_t := (self.balance - amount)) <= 2147483647 else _B.wrap_i32(_t)
-        if not self.balance == (_t if -2147483648 <= (_t := (_old1 - amount)) <= 2147483647 else _B.wrap_i32(_t)):
+        self.balance = self.balance - amount
+        if not -2147483648 <= self.balance <= 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
+        if not self.balance == _B.i32(_old1 - amount):
             _S.assertion_failed('postcondition', 'decreased', _W_1)
 
     @_rt.leaf
@@ -36,8 +38,10 @@ class BASE_ACCOUNT(ANY):
         if not amount > 0:
             _S.assertion_failed('precondition', 'positive', _W_5)
         _old1 = _S.old(lambda: self.balance)
-        self.balance = _t if -2147483648 <= (_t := (self.balance + amount)) <= 2147483647 else _B.wrap_i32(_t)
-        if not self.balance == (_t if -2147483648 <= (_t := (_old1 + amount)) <= 2147483647 else _B.wrap_i32(_t)):
+        self.balance = self.balance + amount
+        if not -2147483648 <= self.balance <= 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
+        if not self.balance == _B.i32(_old1 + amount):
             _S.assertion_failed('postcondition', 'increased', _W_4)
 
     @property

@@ -17,17 +17,21 @@ class CREDIT_ACCOUNT(BASE_ACCOUNT):
 
     @_rt.leaf
     def withdraw(self, amount):
-        if not (amount <= (_t if (_t := (self.balance + 100)) <= 2147483647 else _B.wrap_i32(_t)) or (amount > 0 and amount <= self.balance)):
-            if not amount <= (_t if (_t := (self.balance + 100)) <= 2147483647 else _B.wrap_i32(_t)):
+        if not (amount <= _B.i32(self.balance + 100) or (amount > 0 and amount <= self.balance)):
+            if not amount <= _B.i32(self.balance + 100):
                 _S.assertion_failed('precondition', 'within_credit', _W_3)
             _S.assertion_failed('precondition', 'within_credit', _W_3)
         _old1 = _S.old(lambda: self.balance)
         _old2 = _S.old(lambda: self.withdrawals)
-        self.balance = _t if -2147483648 <= (_t := (self.balance - amount)) <= 2147483647 else _B.wrap_i32(_t)
-        self.withdrawals = _t if (_t := (self.withdrawals + 1)) <= 2147483647 else _B.wrap_i32(_t)
-        if not self.balance == (_t if -2147483648 <= (_t := (_old1 - amount)) <= 2147483647 else _B.wrap_i32(_t)):
+        self.balance = self.balance - amount
+        if not -2147483648 <= self.balance <= 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
+        self.withdrawals = self.withdrawals + 1
+        if self.withdrawals > 2147483647:
+            self.withdrawals = _B.wrap_i32(self.withdrawals)
+        if not self.balance == _B.i32(_old1 - amount):
             _S.assertion_failed('postcondition', 'decreased', _W_1)
-        if not self.withdrawals == (_t if (_t := (_old2 + 1)) <= 2147483647 else _B.wrap_i32(_t)):
+        if not self.withdrawals == _B.i32(_old2 + 1):
             _S.assertion_failed('postcondition', 'counted', _W_2)
 
     @_rt.leaf
@@ -36,15 +40,19 @@ class CREDIT_ACCOUNT(BASE_ACCOUNT):
             _S.assertion_failed('precondition', 'positive', _W_5)
         _old1 = _S.old(lambda: self.balance)
         BASE_ACCOUNT.deposit(self, amount)
-        self.deposits = _t if (_t := (self.deposits + 1)) <= 2147483647 else _B.wrap_i32(_t)
-        if not self.balance == (_t if -2147483648 <= (_t := (_old1 + amount)) <= 2147483647 else _B.wrap_i32(_t)):
+        self.deposits = self.deposits + 1
+        if self.deposits > 2147483647:
+            self.deposits = _B.wrap_i32(self.deposits)
+        if not self.balance == _B.i32(_old1 + amount):
             _S.assertion_failed('postcondition', 'increased', _W_4)
     deposits = 0
 
     @property
     @_rt.leaf
     def fee(self):
-        Result = _t if (_t := (BASE_ACCOUNT.fee.fget(self) + 5)) <= 2147483647 else _B.wrap_i32(_t)
+        Result = BASE_ACCOUNT.fee.fget(self) + 5
+        if Result > 2147483647:
+            Result = _B.wrap_i32(Result)
         if not Result <= 5:
             _S.assertion_failed('postcondition', 'small', _W_6)
         if not (Result % 2 if Result >= 0 else -(-Result % 2)) == 0:
@@ -54,5 +62,7 @@ class CREDIT_ACCOUNT(BASE_ACCOUNT):
 
     @_rt.leaf
     def force_debt(self, amount):
-        self.balance = _t if -2147483648 <= (_t := (self.balance - amount)) <= 2147483647 else _B.wrap_i32(_t)
+        self.balance = self.balance - amount
+        if not -2147483648 <= self.balance <= 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
 _S.register('CREDIT_ACCOUNT', CREDIT_ACCOUNT)

@@ -44,11 +44,13 @@ class ACCOUNT(ANY):
             _S.assertion_failed('precondition', 'positive', _W_6)
         _old1 = _S.old(lambda: self.balance)
         _old2 = _S.old(lambda: self.history.count)
-        self.balance = _t if -2147483648 <= (_t := (self.balance + amount)) <= 2147483647 else _B.wrap_i32(_t)
+        self.balance = self.balance + amount
+        if not -2147483648 <= self.balance <= 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
         self.history.extend(amount)
-        if not self.balance == (_t if -2147483648 <= (_t := (_old1 + amount)) <= 2147483647 else _B.wrap_i32(_t)):
+        if not self.balance == _B.i32(_old1 + amount):
             _S.assertion_failed('postcondition', 'increased', _W_4)
-        if not self.history.count == (_t if (_t := (_old2 + 1)) <= 2147483647 else _B.wrap_i32(_t)):
+        if not self.history.count == _B.i32(_old2 + 1):
             _S.assertion_failed('postcondition', 'recorded', _W_5)
 
     def withdraw(self, amount):
@@ -57,23 +59,29 @@ class ACCOUNT(ANY):
         if not amount <= self.balance:
             _S.assertion_failed('precondition', 'enough', _W_9)
         _old1 = _S.old(lambda: self.balance)
-        self.balance = _t if -2147483648 <= (_t := (self.balance - amount)) <= 2147483647 else _B.wrap_i32(_t)
-        self.history.extend(_t if (_t := (-amount)) <= 2147483647 else _B.wrap_i32(_t))
-        if not self.balance == (_t if -2147483648 <= (_t := (_old1 - amount)) <= 2147483647 else _B.wrap_i32(_t)):
+        self.balance = self.balance - amount
+        if not -2147483648 <= self.balance <= 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
+        self.history.extend(_B.i32(-amount))
+        if not self.balance == _B.i32(_old1 - amount):
             _S.assertion_failed('postcondition', 'decreased', _W_7)
 
     @_rt.leaf
     def faulty_deposit(self, amount):
         _old1 = _S.old(lambda: self.balance)
-        self.balance = _t if (_t := ((_t if -2147483648 <= (_t := (self.balance + amount)) <= 2147483647 else _B.wrap_i32(_t)) + 1)) <= 2147483647 else _B.wrap_i32(_t)
-        if not self.balance == (_t if -2147483648 <= (_t := (_old1 + amount)) <= 2147483647 else _B.wrap_i32(_t)):
+        self.balance = self.balance + amount + 1
+        if self.balance > 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
+        if not self.balance == _B.i32(_old1 + amount):
             _S.assertion_failed('postcondition', 'increased', _W_10)
 
     @property
     @_rt.leaf
     def doubled(self):
-        Result = _t if -2147483648 <= (_t := (2 * self.balance)) <= 2147483647 else _B.wrap_i32(_t)
-        if not Result == (_t if -2147483648 <= (_t := (self.balance * 2)) <= 2147483647 else _B.wrap_i32(_t)):
+        Result = 2 * self.balance
+        if not -2147483648 <= Result <= 2147483647:
+            Result = _B.wrap_i32(Result)
+        if not Result == _B.i32(self.balance * 2):
             _S.assertion_failed('postcondition', 'twice', _W_11)
         if not Result >= self.balance:
             _S.assertion_failed('postcondition', 'not_smaller', _W_12)

@@ -30,9 +30,9 @@ class CONVERSIONS(ANY):
         f = _B.r32(i + 0.0)
         self.print_(_KS.s8(here, 'promotions: ').plus(_B.out_r64(here, d)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, big)).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, f)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i / 2)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i + 0.0 + 0.0 + 0.5)).plus(_KS.s8(here, '\n')))
         small = 100
-        self.print_(_KS.s8(here, 'INTEGER_8 + INTEGER: ').plus(_B.out_int(here, _t if (_t := (small + 1000)) <= 2147483647 else _B.wrap_i32(_t))).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'INTEGER_8 + INTEGER: ').plus(_B.out_int(here, _B.i32(small + 1000))).plus(_KS.s8(here, '\n')))
         n = 4000000000
-        self.print_(_KS.s8(here, 'NATURAL_32 to INTEGER_64: ').plus(_B.out_int(here, _t if (_t := (n + 1)) <= 9223372036854775807 else _B.wrap_i64(_t))).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'NATURAL_32 to INTEGER_64: ').plus(_B.out_int(here, _B.i64(n + 1))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'explicit: ').plus(_B.out_int(here, _B.trunc32(3.99))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(-3.5))).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.chr(65 & 255))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('A'))).plus(_KS.s8(here, '\n')))
 
     def show(self, c):

@@ -36,6 +36,8 @@ class NODE(ANY):
         self.value = other.value
         self.label = other.label
         self.children = other.children
-        self.copies = _t if (_t := (other.copies + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.copies = other.copies + 1
+        if self.copies > 2147483647:
+            self.copies = _B.wrap_i32(self.copies)
 _S.register('NODE', NODE)
 import eiffel_base.arrayed_list as _L_arrayed_list

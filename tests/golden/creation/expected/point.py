@@ -12,7 +12,9 @@ class POINT(ANY):
     def make(self, ax, ay):
         self.x = ax
         self.y = ay
-        self.creations = _t if (_t := (self.creations + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.creations = self.creations + 1
+        if self.creations > 2147483647:
+            self.creations = _B.wrap_i32(self.creations)
 
     @_rt.leaf
     def make_origin(self):

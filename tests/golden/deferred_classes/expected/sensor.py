@@ -13,7 +13,7 @@ class SENSOR(ANY):
     @_rt.leaf
     def reading(self):
         here = self._region_
-        Result = self.name.plus(_KS.s8(here, ' reads ')).plus(_B.out_int(here, _t if -2147483648 <= (_t := (self.raw * self.scale)) <= 2147483647 else _B.wrap_i32(_t)))
+        Result = self.name.plus(_KS.s8(here, ' reads ')).plus(_B.out_int(here, _B.i32(self.raw * self.scale)))
         return Result
 
     @property

@@ -41,7 +41,9 @@ class EXPANDED_VALUES(ANY):
         self.print_(_KS.s8(here, 'retrieval copies: ').plus(list.first.out).plus(_KS.s8(here, ' ')).plus(b_.out).plus(_KS.s8(here, '\n')))
         i = 5
         j = i
-        j = _t if (_t := (j + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        j = j + 1
+        if j > 2147483647:
+            j = _B.wrap_i32(j)
         self.print_(_KS.s8(here, 'integers: ').plus(_B.out_int(here, i)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, j)).plus(_KS.s8(here, '\n')))
 _S.register('EXPANDED_VALUES', EXPANDED_VALUES)
 import eiffel_base.arrayed_list as _L_arrayed_list

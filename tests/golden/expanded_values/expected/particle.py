@@ -11,6 +11,6 @@ class PARTICLE(ANY):
     position = _S.ExpandedDefault(_T_1, 'position')
 
     def move(self, v):
-        self.position.set(_t if -2147483648 <= (_t := (self.position.x + v.x)) <= 2147483647 else _B.wrap_i32(_t), _t if -2147483648 <= (_t := (self.position.y + v.y)) <= 2147483647 else _B.wrap_i32(_t))
+        self.position.set(_B.i32(self.position.x + v.x), _B.i32(self.position.y + v.y))
         v.scale(100)
 _S.register('PARTICLE', PARTICLE)

@@ -22,6 +22,10 @@ class VECTOR(ANY):
         self.y = ay
 
     def scale(self, f):
-        self.x = _t if -2147483648 <= (_t := (self.x * f)) <= 2147483647 else _B.wrap_i32(_t)
-        self.y = _t if -2147483648 <= (_t := (self.y * f)) <= 2147483647 else _B.wrap_i32(_t)
+        self.x = self.x * f
+        if not -2147483648 <= self.x <= 2147483647:
+            self.x = _B.wrap_i32(self.x)
+        self.y = self.y * f
+        if not -2147483648 <= self.y <= 2147483647:
+            self.y = _B.wrap_i32(self.y)
 _S.register('VECTOR', VECTOR)

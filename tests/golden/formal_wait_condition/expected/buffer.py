@@ -11,5 +11,7 @@ class BUFFER(ANY):
 
     @_rt.leaf
     def put(self):
-        self.count = _t if (_t := (self.count + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.count = self.count + 1
+        if self.count > 2147483647:
+            self.count = _B.wrap_i32(self.count)
 _S.register('BUFFER', BUFFER)

@@ -61,7 +61,9 @@ class GENERICS(ANY):
         self.print_(_KS.s8(here, 'images: ').plus(real_box.image).plus(_KS.s8(here, ', ')).plus(ib.image).plus(_KS.s8(here, ', ')).plus(sb.image).plus(_KS.s8(here, ', ')).plus(q.low).plus(_KS.s8(here, '\n')))
 
 def _agent_3(self, x):
-    Result = _t if -2147483648 <= (_t := (x * 2)) <= 2147483647 else _B.wrap_i32(_t)
+    Result = x * 2
+    if not -2147483648 <= Result <= 2147483647:
+        Result = _B.wrap_i32(Result)
     return Result
 _S.register('GENERICS', GENERICS)
 import generics.box as _M_box

@@ -55,7 +55,7 @@ class HOST_NAMES(ANY):
         here_ = 15
         self_ = 16
         dict = 17
-        self.print_(_B.out_int(here, _t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (list + str)) <= 2147483647 else _B.wrap_i32(_t)) + sum)) <= 2147483647 else _B.wrap_i32(_t)) + len_)) <= 2147483647 else _B.wrap_i32(_t)) + type_)) <= 2147483647 else _B.wrap_i32(_t)) + object_)) <= 2147483647 else _B.wrap_i32(_t)) + range_)) <= 2147483647 else _B.wrap_i32(_t)) + int)) <= 2147483647 else _B.wrap_i32(_t)) + s_)) <= 2147483647 else _B.wrap_i32(_t)) + b_)) <= 2147483647 else _B.wrap_i32(_t)) + t_)) <= 2147483647 else _B.wrap_i32(_t)) + k_)) <= 2147483647 else _B.wrap_i32(_t)) + rt_)) <= 2147483647 else _B.wrap_i32(_t)) + ks_)) <= 2147483647 else _B.wrap_i32(_t)) + here_)) <= 2147483647 else _B.wrap_i32(_t)) + self_)) <= 2147483647 else _B.wrap_i32(_t)) + dict)) <= 2147483647 else _B.wrap_i32(_t)).plus(_KS.s8(here, '\n')))
+        self.print_(_B.out_int(here, _B.i32(list + str + sum + len_ + type_ + object_ + range_ + int + s_ + b_ + t_ + k_ + rt_ + ks_ + here_ + self_ + dict)).plus(_KS.s8(here, '\n')))
         id = _KS.s8(here, 'id')
         next = _KS.s8(here, 'next')
         iter = _KS.s8(here, 'iter')
@@ -85,7 +85,9 @@ class HOST_NAMES(ANY):
 
     @_rt.leaf
     def del_(self, x):
-        Result = _t if -2147483648 <= (_t := (x * 2)) <= 2147483647 else _B.wrap_i32(_t)
+        Result = x * 2
+        if not -2147483648 <= Result <= 2147483647:
+            Result = _B.wrap_i32(Result)
         return Result
     try_ = 't'
     with_ = 2.5

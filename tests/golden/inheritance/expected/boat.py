@@ -11,7 +11,9 @@ class BOAT(VEHICLE):
     @property
     @_rt.leaf
     def speed(self):
-        Result = _t if -2147483648 <= (_t := (VEHICLE.speed.fget(self) * 3)) <= 2147483647 else _B.wrap_i32(_t)
+        Result = VEHICLE.speed.fget(self) * 3
+        if not -2147483648 <= Result <= 2147483647:
+            Result = _B.wrap_i32(Result)
         return Result
     speed__boat = speed
 _S.register('BOAT', BOAT)

@@ -16,7 +16,9 @@ class INSPECT_BRANCHES(EXCEPTION_MANAGER_FACTORY):
         i = -1
         while not i > 12:
             self.print_(_B.out_int(here, i).plus(_KS.s8(here, ': ')).plus(self.number_kind(i)).plus(_KS.s8(here, '\n')))
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         for c in _S.cursors(_KS.s8(here, 'aZ7 ?\n')):
             self.print_(self.character_kind(c.item).plus(_KS.s8(here, ' ')))
         self.print_(_KS.s8(here, '\n'))

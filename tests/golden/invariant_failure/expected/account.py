@@ -16,7 +16,9 @@ class ACCOUNT(ANY):
 
     @_rt.leaf
     def withdraw(self, amount):
-        self.balance = _t if -2147483648 <= (_t := (self.balance - amount)) <= 2147483647 else _B.wrap_i32(_t)
+        self.balance = self.balance - amount
+        if not -2147483648 <= self.balance <= 2147483647:
+            self.balance = _B.wrap_i32(self.balance)
 
     def _invariant_(self):
         _S.parent_invariant(ANY, self)

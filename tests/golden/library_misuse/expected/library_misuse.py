@@ -22,7 +22,9 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
         kind = 1
         while not kind > 11:
             self.attempt(kind)
-            kind = _t if (_t := (kind + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            kind = kind + 1
+            if kind > 2147483647:
+                kind = _B.wrap_i32(kind)
         t_ = _S.new_default_tuple(here, (_T_1, _T_2, _T_3))
         self.print_(_KS.s8(here, 'created tuple: count ').plus(_B.out_int(here, t_.count)).plus(_KS.s8(here, ', x ')).plus(_B.out_int(here, t_._items[0])).plus(_KS.s8(here, ', s is Void ')).plus(_B.out_bool(here, t_._items[1] is None)).plus(_KS.s8(here, ', b ')).plus(_B.out_bool(here, t_._items[2])).plus(_KS.s8(here, '\n')))
         i = 5
@@ -34,6 +36,14 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
         self.print_(_KS.s8(here, 'after copy ').plus(_B.out_int(here, i)).plus(_KS.s8(here, '\n')))
 
     def attempt(self, kind):
+
+        def _block1():
+            if _inspect1 == 10:
+                self.print_(str.item__readable_string_8(0))
+            elif _inspect1 == 11:
+                str.insert_character('x', 5)
+            else:
+                _S.bad_inspect(_inspect1, _W_4)
         here = self._region_
         failed = False
         a = None
@@ -68,12 +78,8 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
                         s_.keep_head(3)
                     elif _inspect1 == 9:
                         str.put('x', 0)
-                    elif _inspect1 == 10:
-                        self.print_(str.item__readable_string_8(0))
-                    elif _inspect1 == 11:
-                        str.insert_character('x', 5)
                     else:
-                        _S.bad_inspect(_inspect1, _W_4)
+                        _block1()
                     self.print_(_KS.s8(here, 'kind ').plus(_B.out_int(here, kind)).plus(_KS.s8(here, ': no failure\n')))
                 break
             except Exception as _exception2:

@@ -43,7 +43,7 @@ class LISTS_CURSORS(ANY):
         c = None
         self.show(_KS.s8(here, 'empty'), _B.out_bool(here, l.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.count)).plus(_KS.s8(here, ' before ')).plus(_B.out_bool(here, l.before)).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))
         for i in range(1, 6 + 1):
-            l.extend(_t if -2147483648 <= (_t := (i * 10)) <= 2147483647 else _B.wrap_i32(_t))
+            l.extend(_B.i32(i * 10))
         self.show(_KS.s8(here, 'extended'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))
         l.start()
         while not l.after:

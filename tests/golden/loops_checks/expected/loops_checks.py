@@ -25,22 +25,26 @@ class LOOPS_CHECKS(EXCEPTION_MANAGER_FACTORY):
         s_ = None
         i = 1
         sum = 0
-        _variant1 = _S.variant_start(_t if -2147483648 <= (_t := (11 - i)) <= 2147483647 else _B.wrap_i32(_t), _W_3)
+        _variant1 = _S.variant_start(_B.i32(11 - i), _W_3)
         if not (i >= 1 and i <= 11):
             _S.assertion_failed('loop_invariant', 'in_range', _W_1)
-        if not sum == _B.idiv_i32(_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (i - 1)) else _B.wrap_i32(_t)) * i)) <= 2147483647 else _B.wrap_i32(_t), 2):
+        if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):
             _S.assertion_failed('loop_invariant', 'partial_sum', _W_2)
         while not i > 10:
             if not (i >= 1 and i <= 11):
                 _S.assertion_failed('loop_invariant', 'in_range', _W_1)
-            if not sum == _B.idiv_i32(_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (i - 1)) else _B.wrap_i32(_t)) * i)) <= 2147483647 else _B.wrap_i32(_t), 2):
+            if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):
                 _S.assertion_failed('loop_invariant', 'partial_sum', _W_2)
-            sum = _t if -2147483648 <= (_t := (sum + i)) <= 2147483647 else _B.wrap_i32(_t)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
-            _variant1 = _S.variant_step(_variant1, _t if -2147483648 <= (_t := (11 - i)) <= 2147483647 else _B.wrap_i32(_t), _W_3)
+            sum = sum + i
+            if not -2147483648 <= sum <= 2147483647:
+                sum = _B.wrap_i32(sum)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
+            _variant1 = _S.variant_step(_variant1, _B.i32(11 - i), _W_3)
         if not (i >= 1 and i <= 11):
             _S.assertion_failed('loop_invariant', 'in_range', _W_1)
-        if not sum == _B.idiv_i32(_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (i - 1)) else _B.wrap_i32(_t)) * i)) <= 2147483647 else _B.wrap_i32(_t), 2):
+        if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):
             _S.assertion_failed('loop_invariant', 'partial_sum', _W_2)
         self.print_(_KS.s8(here, 'sum ').plus(_B.out_int(here, sum)).plus(_KS.s8(here, '\n')))
         if not sum == 55:
@@ -109,7 +113,9 @@ class LOOPS_CHECKS(EXCEPTION_MANAGER_FACTORY):
         i = 0
         _variant1 = _S.variant_start(i, _W_9, 'non_decreasing')
         while not i == 3:
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
             _variant1 = _S.variant_step(_variant1, i, _W_9, 'non_decreasing')
 
     def bad_invariant(self):
@@ -120,7 +126,9 @@ class LOOPS_CHECKS(EXCEPTION_MANAGER_FACTORY):
         while not i == 5:
             if not i < 2:
                 _S.assertion_failed('loop_invariant', 'small', _W_10)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         if not i < 2:
             _S.assertion_failed('loop_invariant', 'small', _W_10)
 _S.register('LOOPS_CHECKS', LOOPS_CHECKS)

@@ -38,7 +38,7 @@ class OBJECT_TESTS(ANY):
             self.print_(_KS.s8(here, 'still not a cat\n'))
         x = 42
         if (i := x) is not None and _T_3.accepts(i):
-            self.print_(_KS.s8(here, 'an integer: ').plus(_B.out_int(here, _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t))).plus(_KS.s8(here, '\n')))
+            self.print_(_KS.s8(here, 'an integer: ').plus(_B.out_int(here, _B.i32(i + 1))).plus(_KS.s8(here, '\n')))
         if _S.conforms(x, _T_4):
             self.print_(_KS.s8(here, 'a string\n'))
         else:
@@ -58,7 +58,9 @@ class OBJECT_TESTS(ANY):
         zoo.extend(_S.create(here, _M_dog.DOG, None, 'default_create', ()))
         for z in _S.cursors(zoo):
             if _S.conforms(z.item, _T_1):
-                dogs = _t if (_t := (dogs + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                dogs = dogs + 1
+                if dogs > 2147483647:
+                    dogs = _B.wrap_i32(dogs)
             self.print_(z.item.describe.plus(_KS.s8(here, ' (')).plus(z.item.generator).plus(_KS.s8(here, ')\n')))
         self.print_(_KS.s8(here, 'dogs: ').plus(_B.out_int(here, dogs)).plus(_KS.s8(here, '\n')))
         n = _S.attempt(zoo.i_th(2), _T_6)

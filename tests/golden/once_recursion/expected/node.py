@@ -16,7 +16,7 @@ class NODE(ANY):
     def total_once_(self, _once_):
         _once_.result = 0
         _once_.result = self.value
-        _once_.result = _t if -2147483648 <= (_t := (_once_.result + self.total)) <= 2147483647 else _B.wrap_i32(_t)
+        _once_.result = _B.i32(_once_.result + self.total)
         return _once_.result
 
     @property

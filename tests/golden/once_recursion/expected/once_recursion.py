@@ -31,7 +31,7 @@ class ONCE_RECURSION(ANY):
         _once_.result = 0
         _once_.result = 1
         self.print_(_KS.s8(here, 'counter: recursive call sees ').plus(_B.out_int(here, self.counter)).plus(_KS.s8(here, '\n')))
-        _once_.result = _t if (_t := ((_t if -2147483648 <= (_t := (_once_.result + self.counter)) <= 2147483647 else _B.wrap_i32(_t)) + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        _once_.result = _B.i32(_once_.result + self.counter + 1)
         return _once_.result
 
     @property
@@ -40,7 +40,7 @@ class ONCE_RECURSION(ANY):
 
     def fresh_once_(self, _once_):
         _once_.result = 0
-        _once_.result = _t if (_t := ((_t if -2147483648 <= (_t := (self.counter + self.fresh)) <= 2147483647 else _B.wrap_i32(_t)) + 100)) <= 2147483647 else _B.wrap_i32(_t)
+        _once_.result = _B.i32(self.counter + self.fresh + 100)
         return _once_.result
 
     @property
@@ -50,7 +50,7 @@ class ONCE_RECURSION(ANY):
     def shared_code_once_(self, _once_):
         _once_.result = 0
         _once_.result = 7
-        _once_.result = _t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (_once_.result * 10)) <= 2147483647 else _B.wrap_i32(_t)) + self.shared_code)) <= 2147483647 else _B.wrap_i32(_t)
+        _once_.result = _B.i32(_once_.result * 10 + self.shared_code)
         return _once_.result
 
     @property
@@ -60,7 +60,9 @@ class ONCE_RECURSION(ANY):
 
     def setup_once_(self, _once_):
         here = self._region_
-        self.setups = _t if (_t := (self.setups + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.setups = self.setups + 1
+        if self.setups > 2147483647:
+            self.setups = _B.wrap_i32(self.setups)
         self.print_(_KS.s8(here, 'setup: ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, '\n')))
         self.setup()
         self.print_(_KS.s8(here, 'setup: after the recursive call\n'))

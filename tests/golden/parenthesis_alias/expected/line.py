@@ -15,6 +15,8 @@ class LINE(ANY):
 
     @_rt.leaf
     def value(self, x):
-        Result = _t if -2147483648 <= (_t := (self.slope * x)) <= 2147483647 else _B.wrap_i32(_t)
+        Result = self.slope * x
+        if not -2147483648 <= Result <= 2147483647:
+            Result = _B.wrap_i32(Result)
         return Result
 _S.register('LINE', LINE)

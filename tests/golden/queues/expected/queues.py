@@ -45,7 +45,9 @@ class QUEUES(ANY):
         i = 5
         while not i > 12:
             a.extend(i)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.show(_KS.s8(here, 'grown'), _B.out_int(here, a.count).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, a.item)))
         while not a.count == 3:
             self.print_(_B.out_int(here, a.item).plus(_KS.s8(here, ' ')))

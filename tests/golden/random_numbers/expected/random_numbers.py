@@ -20,7 +20,9 @@ class RANDOM_NUMBERS(ANY):
         while not i > 5:
             self.print_(_B.out_int(here, r.item).plus(_KS.s8(here, '\n')))
             r.forth()
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.print_(_KS.s8(here, 'double_item ').plus(_B.out_r64(here, r.double_item)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'real_item ').plus(_B.out_r32(here, r.real_item)).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'i_th (10) ').plus(_B.out_int(here, r.i_th(10))).plus(_KS.s8(here, ' i_th (1) ')).plus(_B.out_int(here, r.i_th(1))).plus(_KS.s8(here, '\n')))
@@ -34,9 +36,11 @@ class RANDOM_NUMBERS(ANY):
         dice = _KS.s8(here, '')
         i = 1
         while not i > 20:
-            dice.append_integer(_t if (_t := (_B.irem_i32(r.item, 6) + 1)) <= 2147483647 else _B.wrap_i32(_t))
+            dice.append_integer(_B.i32(_B.irem_i32(r.item, 6) + 1))
             r.forth()
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.print_(_KS.s8(here, 'dice ').plus(dice).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'double_i_th (3) ').plus(_B.out_r64(here, r.double_i_th(3))).plus(_KS.s8(here, '\n')))
 _S.register('RANDOM_NUMBERS', RANDOM_NUMBERS)

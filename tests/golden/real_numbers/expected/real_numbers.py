@@ -40,7 +40,9 @@ class REAL_NUMBERS(ANY):
         g = 0.0
         while not i > 10:
             g = _B.r32(g + f)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.show(_KS.s8(here, 'ten times f'), _B.out_r32(here, g).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, g)))
         f = 16777216.0
         self.show(_KS.s8(here, 'f + 1 = f'), _B.out_bool(here, _B.r32(f + 1.0) == f).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, _B.r32(f + 1.0))))

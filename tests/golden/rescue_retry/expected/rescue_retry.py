@@ -28,7 +28,9 @@ class RESCUE_RETRY(EXCEPTION_MANAGER_FACTORY):
         here = self._region_
         while True:
             try:
-                self.attempts = _t if (_t := (self.attempts + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                self.attempts = self.attempts + 1
+                if self.attempts > 2147483647:
+                    self.attempts = _B.wrap_i32(self.attempts)
                 self.print_(_KS.s8(here, 'attempt ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, '\n')))
                 if self.attempts < 3:
                     self.raise_developer(_KS.s8(here, 'not yet'))
@@ -54,7 +56,9 @@ class RESCUE_RETRY(EXCEPTION_MANAGER_FACTORY):
         while True:
             try:
                 if failed:
-                    self.recovered = _t if (_t := (self.recovered + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                    self.recovered = self.recovered + 1
+                    if self.recovered > 2147483647:
+                        self.recovered = _B.wrap_i32(self.recovered)
                 else:
                     self.failing(kind)
                     self.print_(_KS.s8(here, 'no failure\n'))

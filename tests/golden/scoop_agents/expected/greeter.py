@@ -22,7 +22,9 @@ class GREETER(ANY):
     def greet(self, name):
         here = self._region_
         with here.reserve1(name, _W_1):
-            self.greetings = _t if (_t := (self.greetings + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            self.greetings = self.greetings + 1
+            if self.greetings > 2147483647:
+                self.greetings = _B.wrap_i32(self.greetings)
             self.last = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (name,))
             self.print_(_KS.s8(here, 'hello ').plus(self.last).plus(_KS.s8(here, '\n')))
 

@@ -19,7 +19,9 @@ class ACCUMULATOR(ANY):
 
     def add(self, v):
         here = self._region_
-        self.sum = _t if -2147483648 <= (_t := (self.sum + v)) <= 2147483647 else _B.wrap_i32(_t)
+        self.sum = self.sum + v
+        if not -2147483648 <= self.sum <= 2147483647:
+            self.sum = _B.wrap_i32(self.sum)
         self.print_(self.name.plus(_KS.s8(here, ' + ')).plus(_B.out_int(here, v)).plus(_KS.s8(here, ' = ')).plus(_B.out_int(here, self.sum)).plus(_KS.s8(here, '\n')))
 _S.register('ACCUMULATOR', ACCUMULATOR)
 import eiffel_base.string_8 as _L_string_8

@@ -32,7 +32,7 @@ class SCOOP_BASIC(ANY):
         with here.reserve((x, y), where=_W_3):
             here.call(x, _M_accumulator.ACCUMULATOR.add, (100,))
             here.call(y, _M_accumulator.ACCUMULATOR.add, (200,))
-            self.print_(_KS.s8(here, 'in separate block: ').plus(_B.out_int(here, _t if -2147483648 <= (_t := (here.leaf_query(x, _G_1, (), _W_2) + here.leaf_query(y, _G_1, (), _W_2))) <= 2147483647 else _B.wrap_i32(_t))).plus(_KS.s8(here, '\n')))
+            self.print_(_KS.s8(here, 'in separate block: ').plus(_B.out_int(here, _B.i32(here.leaf_query(x, _G_1, (), _W_2) + here.leaf_query(y, _G_1, (), _W_2)))).plus(_KS.s8(here, '\n')))
         self.print_(_KS.s8(here, 'name of a: ').plus(self.name_of(a)).plus(_KS.s8(here, '\n')))
 
     def feed(self, acc, low, high):
@@ -42,7 +42,9 @@ class SCOOP_BASIC(ANY):
             i = low
             while not i > high:
                 here.call(acc, _M_accumulator.ACCUMULATOR.add, (i,))
-                i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                i = i + 1
+                if i > 2147483647:
+                    i = _B.wrap_i32(i)
 
     def total(self, acc):
         here = self._region_

@@ -14,7 +14,9 @@ class COUNTER(ANY):
     @_rt.leaf
     def next(self):
         Result = 0
-        self.count = _t if (_t := (self.count + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.count = self.count + 1
+        if self.count > 2147483647:
+            self.count = _B.wrap_i32(self.count)
         Result = self.count
         return Result
 

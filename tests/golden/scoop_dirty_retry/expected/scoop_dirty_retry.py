@@ -27,7 +27,9 @@ class SCOOP_DIRTY_RETRY(ANY):
         with here.reserve1(c, _W_2):
             while True:
                 try:
-                    self.attempts = _t if (_t := (self.attempts + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                    self.attempts = self.attempts + 1
+                    if self.attempts > 2147483647:
+                        self.attempts = _B.wrap_i32(self.attempts)
                     if self.attempts == 1:
                         here.leaf_call(c, _M_counter.COUNTER.explode, ())
                         here.leaf_call(c, _M_counter.COUNTER.set, (100,))

@@ -11,5 +11,7 @@ class WORKABLE(ANY):
 
     @_rt.leaf
     def work(self, n):
-        self.done = _t if -2147483648 <= (_t := (self.done + n)) <= 2147483647 else _B.wrap_i32(_t)
+        self.done = self.done + n
+        if not -2147483648 <= self.done <= 2147483647:
+            self.done = _B.wrap_i32(self.done)
 _S.register('WORKABLE', WORKABLE)

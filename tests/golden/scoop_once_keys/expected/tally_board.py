@@ -11,5 +11,7 @@ class TALLY_BOARD(ANY):
 
     @_rt.leaf
     def add(self, n):
-        self.count = _t if -2147483648 <= (_t := (self.count + n)) <= 2147483647 else _B.wrap_i32(_t)
+        self.count = self.count + n
+        if not -2147483648 <= self.count <= 2147483647:
+            self.count = _B.wrap_i32(self.count)
 _S.register('TALLY_BOARD', TALLY_BOARD)

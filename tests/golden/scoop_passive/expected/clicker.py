@@ -22,7 +22,9 @@ class CLICKER(ANY):
         i = 1
         while not i > 50:
             self.click(self.tally)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.print_(self.name.plus(_KS.s8(here, ' done\n')))
     tally = None
     name = None

@@ -13,5 +13,7 @@ class TALLY(ANY):
     def increment(self):
         v = 0
         v = self.value
-        self.value = _t if (_t := (v + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.value = v + 1
+        if self.value > 2147483647:
+            self.value = _B.wrap_i32(self.value)
 _S.register('TALLY', TALLY)

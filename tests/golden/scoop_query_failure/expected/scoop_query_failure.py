@@ -28,7 +28,9 @@ class SCOOP_QUERY_FAILURE(ANY):
         with here.reserve1(g, _W_3):
             while True:
                 try:
-                    self.attempts = _t if (_t := (self.attempts + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                    self.attempts = self.attempts + 1
+                    if self.attempts > 2147483647:
+                        self.attempts = _B.wrap_i32(self.attempts)
                     here.leaf_call(g, _M_gauge.GAUGE.set, (7,))
                     if self.attempts == 1:
                         Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (0,), _W_2)

@@ -20,7 +20,9 @@ class LOGGER(ANY):
 
     def put(self, code):
         here = self._region_
-        self.count = _t if (_t := (self.count + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.count = self.count + 1
+        if self.count > 2147483647:
+            self.count = _B.wrap_i32(self.count)
         self.print_(_KS.s8(here, 'L').plus(_B.out_int(here, self.id)).plus(_KS.s8(here, ' #')).plus(_B.out_int(here, self.count)).plus(_KS.s8(here, ': ')).plus(_B.out_int(here, code)).plus(_KS.s8(here, '\n')))
 
     @_rt.leaf
@@ -38,8 +40,10 @@ class LOGGER(ANY):
         if (l_peer := self.peer) is not None:
             i = 1
             while not i > n:
-                self.put_one(l_peer, _t if -2147483648 <= (_t := (100 + i)) <= 2147483647 else _B.wrap_i32(_t))
-                i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                self.put_one(l_peer, _B.i32(100 + i))
+                i = i + 1
+                if i > 2147483647:
+                    i = _B.wrap_i32(i)
 
     def put_one(self, other, code):
         here = self._region_

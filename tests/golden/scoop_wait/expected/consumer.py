@@ -36,9 +36,13 @@ class CONSUMER(ANY):
     def take(self, b_):
         here = self._region_
         with here.reserve1(b_, _W_4, _PRE_6, (here, self, b_)):
-            self.total = _t if -2147483648 <= (_t := (self.total + here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_2))) <= 2147483647 else _B.wrap_i32(_t)
+            self.total = self.total + here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_2)
+            if not -2147483648 <= self.total <= 2147483647:
+                self.total = _B.wrap_i32(self.total)
             self.print_(_KS.s8(here, 'got ').plus(_B.out_int(here, here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_3))).plus(_KS.s8(here, '\n')))
             here.leaf_call(b_, _M_buffer.BUFFER.remove, ())
-            self.taken = _t if (_t := (self.taken + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            self.taken = self.taken + 1
+            if self.taken > 2147483647:
+                self.taken = _B.wrap_i32(self.taken)
 _S.register('CONSUMER', CONSUMER)
 import scoop_wait.buffer as _M_buffer

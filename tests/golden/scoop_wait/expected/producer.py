@@ -21,8 +21,10 @@ class PRODUCER(ANY):
         i = 0
         i = 1
         while not i > self.count:
-            self.store(self.buffer, _t if -2147483648 <= (_t := (i * i)) <= 2147483647 else _B.wrap_i32(_t))
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            self.store(self.buffer, _B.i32(i * i))
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
     buffer = None
     count = 0
 

@@ -29,8 +29,12 @@ class STDIN_READING(ANY):
         self.io.read_line()
         while not self.io.input.end_of_file:
             if self.io.last_string.is_integer:
-                total = _t if -2147483648 <= (_t := (total + self.io.last_string.to_integer)) <= 2147483647 else _B.wrap_i32(_t)
-                count = _t if (_t := (count + 1)) <= 2147483647 else _B.wrap_i32(_t)
+                total = total + self.io.last_string.to_integer
+                if not -2147483648 <= total <= 2147483647:
+                    total = _B.wrap_i32(total)
+                count = count + 1
+                if count > 2147483647:
+                    count = _B.wrap_i32(count)
             else:
                 self.print_(_KS.s8(here, 'skipped [').plus(self.io.last_string).plus(_KS.s8(here, ']\n')))
             self.io.read_line()

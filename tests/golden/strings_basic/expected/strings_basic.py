@@ -55,7 +55,7 @@ class STRINGS_BASIC(ANY):
         for p in _S.cursors(parts):
             self.print_(_KS.s8(here, '[').plus(p.item).plus(_KS.s8(here, ']')))
         self.print_(_KS.s8(here, '\n'))
-        self.show(_KS.s8(here, 'to_integer'), _B.out_int(here, _KS.s8(here, '42').to_integer).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _KS.s8(here, '-17').to_integer)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _t if (_t := (_KS.s8(here, '42').to_integer + 1)) <= 2147483647 else _B.wrap_i32(_t))))
+        self.show(_KS.s8(here, 'to_integer'), _B.out_int(here, _KS.s8(here, '42').to_integer).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _KS.s8(here, '-17').to_integer)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.i32(_KS.s8(here, '42').to_integer + 1))))
         self.show(_KS.s8(here, 'is_integer'), _B.out_bool(here, _KS.s8(here, '123').is_integer).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '12a').is_integer)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '').is_integer)))
         self.show(_KS.s8(here, 'to_double'), _B.out_r64(here, _KS.s8(here, '3.5').to_double).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '2').is_double)))
         self.show(_KS.s8(here, 'to_boolean'), _B.out_bool(here, _KS.s8(here, 'True').to_boolean).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'false').to_boolean)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'yes').is_boolean)))

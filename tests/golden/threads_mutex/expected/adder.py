@@ -36,8 +36,10 @@ class ADDER(THREAD):
             self.mutex.lock()
             self.counter.increment()
             self.mutex.unlock()
-            self.turns.put(_t if (_t := (self.turns.item + 1)) <= 2147483647 else _B.wrap_i32(_t))
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            self.turns.put(_B.i32(self.turns.item + 1))
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         self.turns_seen = self.turns.item
 _S.register('ADDER', ADDER)
 import eiffel_base.cell as _L_cell

@@ -20,6 +20,10 @@ class CONSUMER(THREAD):
         i = 0
         i = 1
         while not i > self.count:
-            self.sum = _t if -2147483648 <= (_t := (self.sum + self.buffer.take)) <= 2147483647 else _B.wrap_i32(_t)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            self.sum = self.sum + self.buffer.take
+            if not -2147483648 <= self.sum <= 2147483647:
+                self.sum = _B.wrap_i32(self.sum)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
 _S.register('CONSUMER', CONSUMER)

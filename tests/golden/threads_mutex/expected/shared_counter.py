@@ -11,5 +11,7 @@ class SHARED_COUNTER(ANY):
 
     @_rt.leaf
     def increment(self):
-        self.value = _t if (_t := (self.value + 1)) <= 2147483647 else _B.wrap_i32(_t)
+        self.value = self.value + 1
+        if self.value > 2147483647:
+            self.value = _B.wrap_i32(self.value)
 _S.register('SHARED_COUNTER', SHARED_COUNTER)

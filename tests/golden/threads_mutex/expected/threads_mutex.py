@@ -32,7 +32,7 @@ class THREADS_MUTEX(ANY):
         adders._gen_ = (_T_1,)
         adders.make(4)
         for i in range(1, 4 + 1):
-            adders.extend(_S.create(here, _M_adder.ADDER, None, 'make__adder', (counter, mutex, _t if -2147483648 <= (_t := (250 * i)) <= 2147483647 else _B.wrap_i32(_t))))
+            adders.extend(_S.create(here, _M_adder.ADDER, None, 'make__adder', (counter, mutex, _B.i32(250 * i))))
         self.print_(_KS.s8(here, 'launchable before: ').plus(_B.out_bool(here, adders.first.is_launchable)).plus(_KS.s8(here, '\n')))
         for a in _S.cursors(adders):
             a.item.launch()
@@ -82,7 +82,9 @@ class THREADS_MUTEX(ANY):
         i = 1
         while not i > 100:
             buffer.put(i)
-            i = _t if (_t := (i + 1)) <= 2147483647 else _B.wrap_i32(_t)
+            i = i + 1
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
         consumer.join()
         self.print_(_KS.s8(here, 'sum of 1 .. 100 through the buffer: ').plus(_B.out_int(here, consumer.sum)).plus(_KS.s8(here, '\n')))
 

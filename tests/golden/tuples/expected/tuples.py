@@ -22,12 +22,12 @@ class TUPLES(ANY):
         d = None
         person = _S.new_tuple(here, [_KS.s8(here, 'Ann'), 30], (_T_1, _T_2))
         self.show(_KS.s8(here, 'labels'), person._items[0].plus(_KS.s8(here, ' ')).plus(_B.out_int(here, person._items[1])).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, person.count)))
-        _S.tuple_put(person, 1, _t if (_t := (person._items[1] + 1)) <= 2147483647 else _B.wrap_i32(_t))
+        _S.tuple_put(person, 1, _B.i32(person._items[1] + 1))
         _S.tuple_put(person, 0, _KS.s8(here, 'Anna'))
         self.show(_KS.s8(here, 'label assigners'), person._items[0].plus(_KS.s8(here, ' ')).plus(_B.out_int(here, person._items[1])))
         person.put(_KS.s8(here, 'Bob'), 1)
         person.put(40, 2)
-        if ((s_ := person.item(1)) is not None and _T_1.accepts(s_)) and ((n := person.item(2)) is not None and _T_2.accepts(n)):
+        if (s_ := person.item(1)) is not None and _T_1.accepts(s_) and ((n := person.item(2)) is not None) and _T_2.accepts(n):
             self.show(_KS.s8(here, 'item, put'), s_.plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n)))
         self.show(_KS.s8(here, 'integer_item'), _B.out_int(here, person.integer_item(2)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, person.is_integer_item(2))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, person.is_integer_item(1))))
         pair = _S.new_tuple(here, [1, 2], (_T_2, _T_2))
@@ -41,7 +41,7 @@ class TUPLES(ANY):
         self.show(_KS.s8(here, 'result tuple'), _B.out_int(here, d._items[0]).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, d._items[1])))
         self.show(_KS.s8(here, 'nested'), _B.out_int(here, self.nested.integer_item(1)))
         if (p := pair) is not None and _T_4.accepts(p):
-            self.show(_KS.s8(here, 'object test'), _B.out_int(here, _t if -2147483648 <= (_t := (p._items[0] + p._items[1])) <= 2147483647 else _B.wrap_i32(_t)))
+            self.show(_KS.s8(here, 'object test'), _B.out_int(here, _B.i32(p._items[0] + p._items[1])))
 
     @_rt.leaf
     def divmod(self, a, b_):

@@ -11,18 +11,18 @@ class MATRIX(ANY):
 
     def make(self, n):
         here = self._region_
-        self.cells = _S.create(here, _L_array.ARRAY, (_T_1,), 'make_filled', (0, 1, _t if -2147483648 <= (_t := (n * n)) <= 2147483647 else _B.wrap_i32(_t)))
+        self.cells = _S.create(here, _L_array.ARRAY, (_T_1,), 'make_filled', (0, 1, _B.i32(n * n)))
         self.size = n
     size = 0
     cells = None
 
     @_rt.leaf
     def item(self, i, j):
-        Result = self.cells.item(_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (i - 1)) else _B.wrap_i32(_t)) * self.size)) <= 2147483647 else _B.wrap_i32(_t)) + j)) <= 2147483647 else _B.wrap_i32(_t))
+        Result = self.cells.item(_B.i32((i - 1) * self.size + j))
         return Result
 
     @_rt.leaf
     def put(self, v, i, j):
-        self.cells.put(v, _t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (i - 1)) else _B.wrap_i32(_t)) * self.size)) <= 2147483647 else _B.wrap_i32(_t)) + j)) <= 2147483647 else _B.wrap_i32(_t))
+        self.cells.put(v, _B.i32((i - 1) * self.size + j))
 _S.register('MATRIX', MATRIX)
 import eiffel_base.array as _L_array

@@ -12,7 +12,7 @@ class RATIONAL(ANY):
 
     def make(self, n, d):
         g = 0
-        g = self.gcd(n if n >= 0 else _t if (_t := (-n)) <= 2147483647 else _B.wrap_i32(_t), d if d >= 0 else _t if (_t := (-d)) <= 2147483647 else _B.wrap_i32(_t))
+        g = self.gcd(n if n >= 0 else _B.i32(-n), d if d >= 0 else _B.i32(-d))
         self.num = _B.idiv_i32(n, g)
         self.den = _B.idiv_i32(d, g)
 
@@ -28,7 +28,7 @@ class RATIONAL(ANY):
         here = self._region_
         Result = None
         Result = here.new(RATIONAL)
-        Result.make(_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (self.num * o.den)) <= 2147483647 else _B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (o.num * self.den)) <= 2147483647 else _B.wrap_i32(_t)))) <= 2147483647 else _B.wrap_i32(_t), _t if -2147483648 <= (_t := (self.den * o.den)) <= 2147483647 else _B.wrap_i32(_t))
+        Result.make(_B.i32(self.num * o.den + o.num * self.den), _B.i32(self.den * o.den))
         return Result
 
     @_rt.leaf

@@ -20,7 +20,7 @@ class VEC(COMPARABLE):
         here = self._region_
         Result = None
         Result = here.new(VEC)
-        Result.make(_t if -2147483648 <= (_t := (self.x + o.x)) <= 2147483647 else _B.wrap_i32(_t), _t if -2147483648 <= (_t := (self.y + o.y)) <= 2147483647 else _B.wrap_i32(_t))
+        Result.make(_B.i32(self.x + o.x), _B.i32(self.y + o.y))
         return Result
 
     @property
@@ -29,7 +29,7 @@ class VEC(COMPARABLE):
         here = self._region_
         Result = None
         Result = here.new(VEC)
-        Result.make(_t if (_t := (-self.x)) <= 2147483647 else _B.wrap_i32(_t), _t if (_t := (-self.y)) <= 2147483647 else _B.wrap_i32(_t))
+        Result.make(_B.i32(-self.x), _B.i32(-self.y))
         return Result
 
     @_rt.leaf
@@ -37,17 +37,19 @@ class VEC(COMPARABLE):
         here = self._region_
         Result = None
         Result = here.new(VEC)
-        Result.make(_t if -2147483648 <= (_t := (k_ * self.x)) <= 2147483647 else _B.wrap_i32(_t), _t if -2147483648 <= (_t := (k_ * self.y)) <= 2147483647 else _B.wrap_i32(_t))
+        Result.make(_B.i32(k_ * self.x), _B.i32(k_ * self.y))
         return Result
 
     @_rt.leaf
     def dot(self, o):
-        Result = _t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (self.x * o.x)) <= 2147483647 else _B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (self.y * o.y)) <= 2147483647 else _B.wrap_i32(_t)))) <= 2147483647 else _B.wrap_i32(_t)
+        Result = self.x * o.x + self.y * o.y
+        if not -2147483648 <= Result <= 2147483647:
+            Result = _B.wrap_i32(Result)
         return Result
 
     @_rt.leaf
     def is_less(self, o):
-        Result = (_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (self.x * self.x)) <= 2147483647 else _B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (self.y * self.y)) <= 2147483647 else _B.wrap_i32(_t)))) <= 2147483647 else _B.wrap_i32(_t)) < (_t if -2147483648 <= (_t := ((_t if -2147483648 <= (_t := (o.x * o.x)) <= 2147483647 else _B.wrap_i32(_t)) + (_t if -2147483648 <= (_t := (o.y * o.y)) <= 2147483647 else _B.wrap_i32(_t)))) <= 2147483647 else _B.wrap_i32(_t))
+        Result = _B.i32(self.x * self.x + self.y * self.y) < _B.i32(o.x * o.x + o.y * o.y)
         return Result
 
     @property
