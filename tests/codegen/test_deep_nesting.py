@@ -88,6 +88,7 @@ def test_one_level_deeper_is_a_coded_diagnostic(tmp_path, kind):
     assert span.file == str(path) and span.line >= 11
 
 
+@pytest.mark.slow
 def test_seventy_deep_sum_runs(tmp_path):
     run(tmp_path, "sum", 70)  # the quick selection's case: Python's nested parentheses limit before
 
