@@ -371,10 +371,12 @@ def _load(target: ast.expr) -> ast.expr:
 
 
 def _adds_constant(raw: ast.expr, op: type, negative: bool = False) -> bool:
-    """Is `raw` `e + c` (`e - c`) with a constant `c` >= 0 (< 0 when `negative`)? Then the
-    result can only overflow on one side."""
+    """Is `raw` `e + c` (`e - c`) with `e` a value of the type and a constant `c` >= 0 (< 0 when
+    `negative`)? Then the result can only overflow on one side."""
     if not (isinstance(raw, ast.BinOp) and isinstance(raw.op, op)):
         return False
+    if isinstance(raw.left, (ast.BinOp, ast.UnaryOp)):
+        return False  # an exact value of the tree below, which may be out of range either way
     value = raw.right.value if isinstance(raw.right, ast.Constant) else None
     if not isinstance(value, int) or isinstance(value, bool):
         return False

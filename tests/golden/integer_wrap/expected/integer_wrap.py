@@ -54,6 +54,22 @@ class INTEGER_WRAP(ANY):
         self.show(_KS.s8(here, 'i32 65536 * 65536'), _B.out_int(here, i32))
         i32 = _L_integer_32.INTEGER_32.min_value
         self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, _B.i32(i32 - 1)))
+        i32 = 65536
+        self.show(_KS.s8(here, 'i32 65536 * 65536 + 7 - 3'), _B.out_int(here, _B.i32(i32 * 65536 + 7 - 3)))
+        i32 = _L_integer_32.INTEGER_32.max_value
+        i32 = i32 + 1 - 1
+        if not -2147483648 <= i32 <= 2147483647:
+            i32 = _B.wrap_i32(i32)
+        self.show(_KS.s8(here, 'i32 max + 1 - 1'), _B.out_int(here, i32))
+        i32 = i32 + 5 - 1
+        if not -2147483648 <= i32 <= 2147483647:
+            i32 = _B.wrap_i32(i32)
+        self.show(_KS.s8(here, 'i32 max + 5 - 1'), _B.out_int(here, i32))
+        i8 = 100
+        i8 = i8 * 3 - -(i8 * 2)
+        if not -128 <= i8 <= 127:
+            i8 = _B.wrap_i8(i8)
+        self.show(_KS.s8(here, 'i8 100 * 3 - -(100 * 2)'), _B.out_int(here, i8))
         i64 = _L_integer_64.INTEGER_64.max_value
         i64 = i64 + 1
         if i64 > 9223372036854775807:
