@@ -67,7 +67,10 @@ def generate(universe, tables, options: Options, which, library_leaves: list | N
     modules = {}
     for info in parents_first(universe):
         if which(info):
-            modules[module_name(info.name) + ".py"] = (generate_class(program, info), info.decl.span.file)
+            modules[module_name(info.name) + ".py"] = (
+                generate_class(program, info),
+                program.shown_path(info.decl.span.file),
+            )
     if library_leaves is not None:
         from .scoop import library_leaves as leaves_of  # deferred: start-up (loaded on first use only)
 

@@ -160,6 +160,16 @@ class Compilation:
         return choose_root(self.project, self.semantics.universe, self.root_option, self.paths)
 
     @property
+    def program_folder(self) -> str:
+        """The folder of the program's paths (a file's, a cluster's, an .ecf's): generated code
+        names the program's source files relative to it."""
+        folders = [p if os.path.isdir(p) else os.path.dirname(p) or "." for p in self.paths]
+        try:
+            return os.path.commonpath([os.path.abspath(f) for f in folders])
+        except ValueError:  # folders on several drives (Windows)
+            return os.path.abspath(folders[0])
+
+    @property
     def assertions(self) -> str:
         return self.assertions_option or self.project.settings.assertions or "all"
 
@@ -178,7 +188,9 @@ class Compilation:
             c_modules = tuple(
                 (plan.language, plan.name) for plan in externals.plans(self.checked.externals, self.project)
             )
-            options = Options(assertions=self.assertions, package=package, c_modules=c_modules)
+            options = Options(
+                assertions=self.assertions, package=package, c_modules=c_modules, source_root=self.program_folder
+            )
             modules = deeply(
                 generate,
                 sem.universe,

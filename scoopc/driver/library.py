@@ -18,6 +18,7 @@ from ..codegen.scoop import FACTS_FILE, FACTS_FORMAT, write_library_facts
 from ..pipeline import check_project
 from ..project import Project
 from ..semantics.library import cache_dir
+from ..semantics.universe import stdlib_root
 from .packages import (
     BASE_PACKAGE,
     compiler_digest,
@@ -60,7 +61,7 @@ def _build(target: Path, progress: Progress) -> None:
         raise LibraryError("the standard library does not check: " + str(checked.diagnostics[0]))
     sem = checked.semantics
     assert sem is not None  # no errors: the checker ran
-    options = Options(package=BASE_PACKAGE)
+    options = Options(package=BASE_PACKAGE, source_root=str(stdlib_root().parent))
     modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library)
     staging = Path(tempfile.mkdtemp(prefix="base-", dir=writable_cache()))
     write_modules(staging / BASE_PACKAGE, modules, "The standard library, compiled by scoopc.")

@@ -10,68 +10,68 @@ class ACROSS_FORMS(ANY):
     _key_ = 'ACROSS_FORMS'
     _conforms_ = frozenset(['ACROSS_FORMS', 'ANY'])
 
-    def make(self):
+    def make(self):  # across_forms.e:12
         here = self._region_
-        list = None
-        table = None
-        sum = 0
-        a = None
-        for i in range(1, 5 + 1):
-            self.print_(_B.out_int(here, i).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
-        for i in range(1, 5 + 1):
-            sum = sum + i
+        list = None  # across_forms.e:14
+        table = None  # across_forms.e:15
+        sum = 0  # across_forms.e:16
+        a = None  # across_forms.e:17
+        for i in range(1, 5 + 1):  # across_forms.e:19
+            self.print_(_B.out_int(here, i).plus(_KS.s8(here, ' ')))  # across_forms.e:20
+        self.print_(_KS.s8(here, '\n'))  # across_forms.e:22
+        for i in range(1, 5 + 1):  # across_forms.e:23
+            sum = sum + i  # across_forms.e:24
             if not -2147483648 <= sum <= 2147483647:
                 sum = _B.wrap_i32(sum)
-        self.print_(_KS.s8(here, 'sum ').plus(_B.out_int(here, sum)).plus(_KS.s8(here, '\n')))
-        for i in range(5, 1 + 1):
-            self.print_(_KS.s8(here, 'never ').plus(_B.out_int(here, i)))
-        for i in _S.cursors(_B.interval(here, -2, 2)):
-            self.print_(_B.out_int(here, i.item).plus(_KS.s8(here, '\n') if i.is_last else _KS.s8(here, ',')))
-        list = here.new(_L_linked_list.LINKED_LIST)
+        self.print_(_KS.s8(here, 'sum ').plus(_B.out_int(here, sum)).plus(_KS.s8(here, '\n')))  # across_forms.e:26
+        for i in range(5, 1 + 1):  # across_forms.e:27
+            self.print_(_KS.s8(here, 'never ').plus(_B.out_int(here, i)))  # across_forms.e:28
+        for i in _S.cursors(_B.interval(here, -2, 2)):  # across_forms.e:30
+            self.print_(_B.out_int(here, i.item).plus(_KS.s8(here, '\n') if i.is_last else _KS.s8(here, ',')))  # across_forms.e:31
+        list = here.new(_L_linked_list.LINKED_LIST)  # across_forms.e:33
         list._gen_ = (_T_1,)
         list.make()
-        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [4, 8, 15, 16, 23, 42])):
-            list.extend(x.item)
-        list.start()
-        for c in _S.cursors(list):
-            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, '@')).plus(_B.out_int(here, c.cursor_index)).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(_KS.s8(here, 'list cursor untouched: ').plus(_B.out_int(here, list.index)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'all positive: ').plus(_B.out_bool(here, all((x > 0 for x in _S.items(list))))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'all even: ').plus(_B.out_bool(here, all(((x % 2 if x >= 0 else -(-x % 2)) == 0 for x in _S.items(list))))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'some above 40: ').plus(_B.out_bool(here, any((c.item > 40 for c in _S.cursors(list))))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'some square is 49: ').plus(_B.out_bool(here, any((_B.i32(i.item * i.item) == 49 for i in _S.cursors(_B.interval(here, 1, 10)))))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'all over empty: ').plus(_B.out_bool(here, all((i > 100 for i in _S.items(_B.interval(here, 3, 2)))))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'some over empty: ').plus(_B.out_bool(here, any((i > 0 for i in _S.items(_B.interval(here, 3, 2)))))).plus(_KS.s8(here, '\n')))
-        for c in _S.cursors(list):
+        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [4, 8, 15, 16, 23, 42])):  # across_forms.e:34
+            list.extend(x.item)  # across_forms.e:35
+        list.start()  # across_forms.e:37
+        for c in _S.cursors(list):  # across_forms.e:38
+            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, '@')).plus(_B.out_int(here, c.cursor_index)).plus(_KS.s8(here, ' ')))  # across_forms.e:39
+        self.print_(_KS.s8(here, '\n'))  # across_forms.e:41
+        self.print_(_KS.s8(here, 'list cursor untouched: ').plus(_B.out_int(here, list.index)).plus(_KS.s8(here, '\n')))  # across_forms.e:42
+        self.print_(_KS.s8(here, 'all positive: ').plus(_B.out_bool(here, all((x > 0 for x in _S.items(list))))).plus(_KS.s8(here, '\n')))  # across_forms.e:43
+        self.print_(_KS.s8(here, 'all even: ').plus(_B.out_bool(here, all(((x % 2 if x >= 0 else -(-x % 2)) == 0 for x in _S.items(list))))).plus(_KS.s8(here, '\n')))  # across_forms.e:44
+        self.print_(_KS.s8(here, 'some above 40: ').plus(_B.out_bool(here, any((c.item > 40 for c in _S.cursors(list))))).plus(_KS.s8(here, '\n')))  # across_forms.e:45
+        self.print_(_KS.s8(here, 'some square is 49: ').plus(_B.out_bool(here, any((_B.i32(i.item * i.item) == 49 for i in _S.cursors(_B.interval(here, 1, 10)))))).plus(_KS.s8(here, '\n')))  # across_forms.e:46
+        self.print_(_KS.s8(here, 'all over empty: ').plus(_B.out_bool(here, all((i > 100 for i in _S.items(_B.interval(here, 3, 2)))))).plus(_KS.s8(here, '\n')))  # across_forms.e:47
+        self.print_(_KS.s8(here, 'some over empty: ').plus(_B.out_bool(here, any((i > 0 for i in _S.items(_B.interval(here, 3, 2)))))).plus(_KS.s8(here, '\n')))  # across_forms.e:48
+        for c in _S.cursors(list):  # across_forms.e:49
             if c.item > 15:
                 break
-            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
-        table = here.new(_L_hash_table.HASH_TABLE)
+            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))  # across_forms.e:50
+        self.print_(_KS.s8(here, '\n'))  # across_forms.e:52
+        table = here.new(_L_hash_table.HASH_TABLE)  # across_forms.e:53
         table._gen_ = (_T_2, _T_2)
         table.make(3)
-        table.put(_KS.s8(here, 'uno'), _KS.s8(here, 'one'))
-        table.put(_KS.s8(here, 'dos'), _KS.s8(here, 'two'))
-        table.put(_KS.s8(here, 'tres'), _KS.s8(here, 'three'))
-        for t_ in _S.cursors(table):
-            self.print_(t_.key.plus(_KS.s8(here, '->')).plus(t_.item).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
-        for w in _S.cursors(table):
-            self.print_(w.item.plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
-        for ch in _S.cursors(_KS.s8(here, 'abc')):
-            self.print_(_B.out_c8(here, _B.UPPER8[ch.item]))
-        self.print_(_KS.s8(here, '\n'))
-        a = _S.manifest_array(here, _L_array.ARRAY, (_T_2,), [_KS.s8(here, 'x'), _KS.s8(here, 'y'), _KS.s8(here, 'z')])
-        for c in _S.cursors(a):
-            for k_ in range(1, c.cursor_index + 1):
-                self.print_(c.item)
-            self.print_(_KS.s8(here, ' '))
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(_B.out_bool(here, all((c.item > 0 for c in _S.take_while(lambda c: not c.item < 0, _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2, 3, -4, 5])))))).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_bool(here, any((i == 3 for i in _S.take_while(lambda i: not i > 2, _S.items(_B.interval(here, 1, 10)))))).plus(_KS.s8(here, '\n')))
+        table.put(_KS.s8(here, 'uno'), _KS.s8(here, 'one'))  # across_forms.e:54
+        table.put(_KS.s8(here, 'dos'), _KS.s8(here, 'two'))  # across_forms.e:55
+        table.put(_KS.s8(here, 'tres'), _KS.s8(here, 'three'))  # across_forms.e:56
+        for t_ in _S.cursors(table):  # across_forms.e:57
+            self.print_(t_.key.plus(_KS.s8(here, '->')).plus(t_.item).plus(_KS.s8(here, ' ')))  # across_forms.e:58
+        self.print_(_KS.s8(here, '\n'))  # across_forms.e:60
+        for w in _S.cursors(table):  # across_forms.e:61
+            self.print_(w.item.plus(_KS.s8(here, ' ')))  # across_forms.e:62
+        self.print_(_KS.s8(here, '\n'))  # across_forms.e:64
+        for ch in _S.cursors(_KS.s8(here, 'abc')):  # across_forms.e:65
+            self.print_(_B.out_c8(here, _B.UPPER8[ch.item]))  # across_forms.e:66
+        self.print_(_KS.s8(here, '\n'))  # across_forms.e:68
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_2,), [_KS.s8(here, 'x'), _KS.s8(here, 'y'), _KS.s8(here, 'z')])  # across_forms.e:69
+        for c in _S.cursors(a):  # across_forms.e:70
+            for k_ in range(1, c.cursor_index + 1):  # across_forms.e:71
+                self.print_(c.item)  # across_forms.e:72
+            self.print_(_KS.s8(here, ' '))  # across_forms.e:74
+        self.print_(_KS.s8(here, '\n'))  # across_forms.e:76
+        self.print_(_B.out_bool(here, all((c.item > 0 for c in _S.take_while(lambda c: not c.item < 0, _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2, 3, -4, 5])))))).plus(_KS.s8(here, '\n')))  # across_forms.e:78
+        self.print_(_B.out_bool(here, any((i == 3 for i in _S.take_while(lambda i: not i > 2, _S.items(_B.interval(here, 1, 10)))))).plus(_KS.s8(here, '\n')))  # across_forms.e:79
 _S.register('ACROSS_FORMS', ACROSS_FORMS)
 import eiffel_base.array as _L_array
 import eiffel_base.hash_table as _L_hash_table

@@ -9,41 +9,41 @@ class ACROSS_IS_UNFOLDED(ANY):
     _key_ = 'ACROSS_IS_UNFOLDED'
     _conforms_ = frozenset(['ACROSS_IS_UNFOLDED', 'ANY'])
 
-    def make(self):
+    def make(self):  # across_is_unfolded.e:16
         here = self._region_
-        a = None
-        c = None
-        i = 0
-        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
-        for x in _S.cursors(a):
+        a = None  # across_is_unfolded.e:18
+        c = None  # across_is_unfolded.e:19
+        i = 0  # across_is_unfolded.e:20
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])  # across_is_unfolded.e:22
+        for x in _S.cursors(a):  # across_is_unfolded.e:23
+            i = i + 1  # across_is_unfolded.e:24
+            if i > 2147483647:
+                i = _B.wrap_i32(i)
+            self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))  # across_is_unfolded.e:25
+            a.put(_B.i32(x.item * 10), i)  # across_is_unfolded.e:26
+            self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))  # across_is_unfolded.e:27
+        self.print_(_KS.s8(here, '(across is)\n'))  # across_is_unfolded.e:29
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])  # across_is_unfolded.e:30
+        i = 0  # across_is_unfolded.e:31
+        for x in _S.cursors(a):  # across_is_unfolded.e:32
             i = i + 1
             if i > 2147483647:
                 i = _B.wrap_i32(i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
             a.put(_B.i32(x.item * 10), i)
             self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '(across is)\n'))
-        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
-        i = 0
-        for x in _S.cursors(a):
-            i = i + 1
+        self.print_(_KS.s8(here, '(symbolic)\n'))  # across_is_unfolded.e:33
+        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])  # across_is_unfolded.e:34
+        i = 0  # across_is_unfolded.e:35
+        c = a.new_cursor  # across_is_unfolded.e:37
+        while not c.after:  # across_is_unfolded.e:36
+            i = i + 1  # across_is_unfolded.e:41
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-            self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
-            a.put(_B.i32(x.item * 10), i)
-            self.print_(_B.out_int(here, x.item).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '(symbolic)\n'))
-        a = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [1, 2])
-        i = 0
-        c = a.new_cursor
-        while not c.after:
-            i = i + 1
-            if i > 2147483647:
-                i = _B.wrap_i32(i)
-            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))
-            a.put(_B.i32(c.item * 10), i)
-            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))
-            c.forth()
-        self.print_(_KS.s8(here, '(unfolded)\n'))
+            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))  # across_is_unfolded.e:42
+            a.put(_B.i32(c.item * 10), i)  # across_is_unfolded.e:43
+            self.print_(_B.out_int(here, c.item).plus(_KS.s8(here, ' ')))  # across_is_unfolded.e:44
+            c.forth()  # across_is_unfolded.e:45
+        self.print_(_KS.s8(here, '(unfolded)\n'))  # across_is_unfolded.e:47
 _S.register('ACROSS_IS_UNFOLDED', ACROSS_IS_UNFOLDED)
 import eiffel_base.array as _L_array

@@ -14,123 +14,123 @@ class AGENTS(ANY):
     _key_ = 'AGENTS'
     _conforms_ = frozenset(['AGENTS', 'ANY'])
 
-    def make(self):
+    def make(self):  # agents.e:12
         here = self._region_
-        f = None
-        g = None
-        h = None
-        p = None
-        q = None
-        even = None
-        n = 0
-        list = None
-        total = 0
-        f = _S.new_agent(here, _L_function.FUNCTION, (_T_2, _T_1), _S.dispatcher('add', False), [self, None, None], (1, 2))
-        self.show(_KS.s8(here, 'item'), _B.out_int(here, f.item(_S.new_tuple(here, [2, 3], (_T_1, _T_1)))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, f.item(_S.new_tuple(here, [4, 5], ())))).plus(_KS.s8(here, ' open_count ')).plus(_B.out_int(here, f.open_count)))
-        f.call(_S.new_tuple(here, [10, 20], (_T_1, _T_1)))
-        self.show(_KS.s8(here, 'last_result'), _B.out_int(here, f.last_result))
-        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, 10, None], (2,))
-        self.show(_KS.s8(here, 'closed first'), _B.out_int(here, g.item(_S.new_tuple(here, [5], ()))))
-        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, None, 100], (1,))
-        self.show(_KS.s8(here, 'closed second'), _B.out_int(here, g.item(_S.new_tuple(here, [5], ()))))
-        n = 1
-        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, n, None], (2,))
-        n = 100
-        self.show(_KS.s8(here, 'closed at creation'), _B.out_int(here, g.item(_S.new_tuple(here, [1], ()))))
-        h = _S.new_agent(here, _L_function.FUNCTION, (_T_5, _T_1), _S.dispatcher('count', True), [None], (0,))
-        self.show(_KS.s8(here, 'open target'), _B.out_int(here, h.item(_S.new_tuple(here, [_KS.s8(here, 'abcd')], ()))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, h.item(_S.new_tuple(here, [_KS.s8(here, 'xy')], (_T_4,))))))
-        p = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_5,), _S.dispatcher('say', False), [self, None], (1,))
-        p.call(_S.new_tuple(here, [_KS.s8(here, 'hi')], (_T_4,)))
-        p.call(_S.new_tuple(here, [_KS.s8(here, 'there')], ()))
-        q = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_6,), _S.dispatcher('bump', False), [self], ())
-        q.call(None)
-        q.call(_S.new_tuple(here, [], ()))
-        self.show(_KS.s8(here, 'counter'), _B.out_int(here, self.counter))
-        even = _S.new_agent(here, _L_predicate.PREDICATE, (_T_3,), _agent_7, [self, None], (1,))
-        self.show(_KS.s8(here, 'predicate'), _B.out_bool(here, even.item(_S.new_tuple(here, [4], ()))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, even.item(_S.new_tuple(here, [7], ())))))
-        self.show(_KS.s8(here, 'as argument'), _B.out_int(here, self.twice(_S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)), 3)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.twice(_S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _agent_8, [self, None], (1,)), 1))))
-        list = here.new(_L_arrayed_list.ARRAYED_LIST)
+        f = None  # agents.e:14
+        g = None  # agents.e:15
+        h = None  # agents.e:16
+        p = None  # agents.e:17
+        q = None  # agents.e:18
+        even = None  # agents.e:19
+        n = 0  # agents.e:20
+        list = None  # agents.e:21
+        total = 0  # agents.e:22
+        f = _S.new_agent(here, _L_function.FUNCTION, (_T_2, _T_1), _S.dispatcher('add', False), [self, None, None], (1, 2))  # agents.e:24
+        self.show(_KS.s8(here, 'item'), _B.out_int(here, f.item(_S.new_tuple(here, [2, 3], (_T_1, _T_1)))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, f.item(_S.new_tuple(here, [4, 5], ())))).plus(_KS.s8(here, ' open_count ')).plus(_B.out_int(here, f.open_count)))  # agents.e:25
+        f.call(_S.new_tuple(here, [10, 20], (_T_1, _T_1)))  # agents.e:26
+        self.show(_KS.s8(here, 'last_result'), _B.out_int(here, f.last_result))  # agents.e:27
+        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, 10, None], (2,))  # agents.e:28
+        self.show(_KS.s8(here, 'closed first'), _B.out_int(here, g.item(_S.new_tuple(here, [5], ()))))  # agents.e:29
+        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, None, 100], (1,))  # agents.e:30
+        self.show(_KS.s8(here, 'closed second'), _B.out_int(here, g.item(_S.new_tuple(here, [5], ()))))  # agents.e:31
+        n = 1  # agents.e:32
+        g = _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('add', False), [self, n, None], (2,))  # agents.e:33
+        n = 100  # agents.e:34
+        self.show(_KS.s8(here, 'closed at creation'), _B.out_int(here, g.item(_S.new_tuple(here, [1], ()))))  # agents.e:35
+        h = _S.new_agent(here, _L_function.FUNCTION, (_T_5, _T_1), _S.dispatcher('count', True), [None], (0,))  # agents.e:36
+        self.show(_KS.s8(here, 'open target'), _B.out_int(here, h.item(_S.new_tuple(here, [_KS.s8(here, 'abcd')], ()))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, h.item(_S.new_tuple(here, [_KS.s8(here, 'xy')], (_T_4,))))))  # agents.e:37
+        p = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_5,), _S.dispatcher('say', False), [self, None], (1,))  # agents.e:38
+        p.call(_S.new_tuple(here, [_KS.s8(here, 'hi')], (_T_4,)))  # agents.e:39
+        p.call(_S.new_tuple(here, [_KS.s8(here, 'there')], ()))  # agents.e:40
+        q = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_6,), _S.dispatcher('bump', False), [self], ())  # agents.e:41
+        q.call(None)  # agents.e:42
+        q.call(_S.new_tuple(here, [], ()))  # agents.e:43
+        self.show(_KS.s8(here, 'counter'), _B.out_int(here, self.counter))  # agents.e:44
+        even = _S.new_agent(here, _L_predicate.PREDICATE, (_T_3,), _agent_7, [self, None], (1,))  # agents.e:45
+        self.show(_KS.s8(here, 'predicate'), _B.out_bool(here, even.item(_S.new_tuple(here, [4], ()))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, even.item(_S.new_tuple(here, [7], ())))))  # agents.e:46
+        self.show(_KS.s8(here, 'as argument'), _B.out_int(here, self.twice(_S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)), 3)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.twice(_S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _agent_8, [self, None], (1,)), 1))))  # agents.e:47
+        list = here.new(_L_arrayed_list.ARRAYED_LIST)  # agents.e:48
         list._gen_ = (_T_1,)
         list.make(5)
-        list.extend(3)
-        list.extend(8)
-        list.extend(6)
-        list.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _agent_9, [self, None], (1,)))
-        self.print_(_KS.s8(here, '\n'))
-        list.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _S.dispatcher('accumulate', False), [self, None, 2], (1,)))
-        self.show(_KS.s8(here, 'accumulated'), _B.out_int(here, self.accumulated))
-        list.do_if(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _S.dispatcher('say_integer', False), [self, None], (1,)), even)
-        self.print_(_KS.s8(here, '\n'))
-        self.show(_KS.s8(here, 'for_all even'), _B.out_bool(here, list.for_all(even)))
-        self.show(_KS.s8(here, 'there_exists even'), _B.out_bool(here, list.there_exists(even)))
-        for x in _S.cursors(list):
-            total = total + _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)).item(_S.new_tuple(here, [x.item], (_T_1,)))
+        list.extend(3)  # agents.e:49
+        list.extend(8)  # agents.e:50
+        list.extend(6)  # agents.e:51
+        list.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _agent_9, [self, None], (1,)))  # agents.e:52
+        self.print_(_KS.s8(here, '\n'))  # agents.e:53
+        list.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _S.dispatcher('accumulate', False), [self, None, 2], (1,)))  # agents.e:54
+        self.show(_KS.s8(here, 'accumulated'), _B.out_int(here, self.accumulated))  # agents.e:55
+        list.do_if(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_3,), _S.dispatcher('say_integer', False), [self, None], (1,)), even)  # agents.e:56
+        self.print_(_KS.s8(here, '\n'))  # agents.e:57
+        self.show(_KS.s8(here, 'for_all even'), _B.out_bool(here, list.for_all(even)))  # agents.e:58
+        self.show(_KS.s8(here, 'there_exists even'), _B.out_bool(here, list.there_exists(even)))  # agents.e:59
+        for x in _S.cursors(list):  # agents.e:60
+            total = total + _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _S.dispatcher('double', False), [self, None], (1,)).item(_S.new_tuple(here, [x.item], (_T_1,)))  # agents.e:61
             if not -2147483648 <= total <= 2147483647:
                 total = _B.wrap_i32(total)
-        self.show(_KS.s8(here, 'total'), _B.out_int(here, total))
-        self.show(_KS.s8(here, 'inline with closed'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _agent_10, [self, 6, None], (2,)).item(_S.new_tuple(here, [7], (_T_1,)))))
-        self.show(_KS.s8(here, 'attribute agent'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_6, _T_1), _S.dispatcher('counter', True), [self], ()).item(_S.new_tuple(here, [], ()))))
+        self.show(_KS.s8(here, 'total'), _B.out_int(here, total))  # agents.e:63
+        self.show(_KS.s8(here, 'inline with closed'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_3, _T_1), _agent_10, [self, 6, None], (2,)).item(_S.new_tuple(here, [7], (_T_1,)))))  # agents.e:64
+        self.show(_KS.s8(here, 'attribute agent'), _B.out_int(here, _S.new_agent(here, _L_function.FUNCTION, (_T_6, _T_1), _S.dispatcher('counter', True), [self], ()).item(_S.new_tuple(here, [], ()))))  # agents.e:65
     counter = 0
     accumulated = 0
 
     @_rt.leaf
-    def add(self, a, b_):
-        Result = a + b_
+    def add(self, a, b_):  # agents.e:74
+        Result = a + b_  # agents.e:76
         if not -2147483648 <= Result <= 2147483647:
             Result = _B.wrap_i32(Result)
-        return Result
+        return Result  # agents.e:74
 
     @_rt.leaf
-    def double(self, x):
-        Result = 2 * x
+    def double(self, x):  # agents.e:79
+        Result = 2 * x  # agents.e:81
         if not -2147483648 <= Result <= 2147483647:
             Result = _B.wrap_i32(Result)
-        return Result
+        return Result  # agents.e:79
 
-    def twice(self, fn, x):
+    def twice(self, fn, x):  # agents.e:84
         here = self._region_
-        Result = fn.item(_S.new_tuple(here, [fn.item(_S.new_tuple(here, [x], ()))], ()))
-        return Result
+        Result = fn.item(_S.new_tuple(here, [fn.item(_S.new_tuple(here, [x], ()))], ()))  # agents.e:86
+        return Result  # agents.e:84
 
-    def say(self, s_):
+    def say(self, s_):  # agents.e:89
         here = self._region_
-        self.print_(_KS.s8(here, 'say: ').plus(s_).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'say: ').plus(s_).plus(_KS.s8(here, '\n')))  # agents.e:91
 
-    def say_integer(self, i):
+    def say_integer(self, i):  # agents.e:94
         here = self._region_
-        self.print_(_B.out_int(here, i).plus(_KS.s8(here, ' is even ')))
+        self.print_(_B.out_int(here, i).plus(_KS.s8(here, ' is even ')))  # agents.e:96
 
     @_rt.leaf
-    def bump(self):
-        self.counter = self.counter + 1
+    def bump(self):  # agents.e:99
+        self.counter = self.counter + 1  # agents.e:101
         if self.counter > 2147483647:
             self.counter = _B.wrap_i32(self.counter)
 
     @_rt.leaf
-    def accumulate(self, x, factor):
-        self.accumulated = self.accumulated + x * factor
+    def accumulate(self, x, factor):  # agents.e:104
+        self.accumulated = self.accumulated + x * factor  # agents.e:106
         if not -2147483648 <= self.accumulated <= 2147483647:
             self.accumulated = _B.wrap_i32(self.accumulated)
 
-    def show(self, label, value):
+    def show(self, label, value):  # agents.e:109
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # agents.e:111
 
-def _agent_7(self, x):
+def _agent_7(self, x):  # agents.e:45
     Result = (x % 2 if x >= 0 else -(-x % 2)) == 0
     return Result
 
-def _agent_8(self, x):
+def _agent_8(self, x):  # agents.e:47
     Result = x + self.counter
     if not -2147483648 <= Result <= 2147483647:
         Result = _B.wrap_i32(Result)
     return Result
 
-def _agent_9(self, x):
+def _agent_9(self, x):  # agents.e:52
     here = self._region_
     self.print_(_B.out_int(here, x).plus(_KS.s8(here, ' ')))
 
-def _agent_10(self, a, b_):
+def _agent_10(self, a, b_):  # agents.e:64
     Result = a * b_
     if not -2147483648 <= Result <= 2147483647:
         Result = _B.wrap_i32(Result)

@@ -9,30 +9,30 @@ class ARGUMENTS_ENV(ARGUMENTS):
     _conforms_ = frozenset(['ANY', 'ARGUMENTS', 'ARGUMENTS_ENV', 'ITERABLE'])
     _ancestor_gen_ = {'ITERABLE': lambda g: (_T.t('STRING_8', (), True),)}
 
-    def make(self):
+    def make(self):  # arguments_env.e:15
         here = self._region_
-        env = None
-        i = 0
-        self.print_(_KS.s8(here, 'argument_count ').plus(_B.out_int(here, self.argument_count)).plus(_KS.s8(here, '\n')))
-        i = 1
-        while not i > self.argument_count:
-            self.print_(_B.out_int(here, i).plus(_KS.s8(here, ': [')).plus(self.argument(i)).plus(_KS.s8(here, ']\n')))
-            i = i + 1
+        env = None  # arguments_env.e:17
+        i = 0  # arguments_env.e:18
+        self.print_(_KS.s8(here, 'argument_count ').plus(_B.out_int(here, self.argument_count)).plus(_KS.s8(here, '\n')))  # arguments_env.e:20
+        i = 1  # arguments_env.e:22
+        while not i > self.argument_count:  # arguments_env.e:21
+            self.print_(_B.out_int(here, i).plus(_KS.s8(here, ': [')).plus(self.argument(i)).plus(_KS.s8(here, ']\n')))  # arguments_env.e:26
+            i = i + 1  # arguments_env.e:27
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.print_(_KS.s8(here, 'word option v at ').plus(_B.out_int(here, self.index_of_word_option(_KS.s8(here, 'v')))).plus(_KS.s8(here, ', x at ')).plus(_B.out_int(here, self.index_of_word_option(_KS.s8(here, 'x')))).plus(_KS.s8(here, '\n')))
-        if (n := self.separate_word_option_value(_KS.s8(here, 'name'))) is not None:
-            self.print_(_KS.s8(here, 'name ').plus(n).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'number + 1 = ').plus(_B.out_int(here, _B.i32(self.argument(4).to_integer + 1))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'argument_array ').plus(_B.out_int(here, self.argument_array.lower)).plus(_KS.s8(here, '..')).plus(_B.out_int(here, self.argument_array.upper)).plus(_KS.s8(here, '\n')))
-        env = here.new(_L_execution_environment.EXECUTION_ENVIRONMENT)
+        self.print_(_KS.s8(here, 'word option v at ').plus(_B.out_int(here, self.index_of_word_option(_KS.s8(here, 'v')))).plus(_KS.s8(here, ', x at ')).plus(_B.out_int(here, self.index_of_word_option(_KS.s8(here, 'x')))).plus(_KS.s8(here, '\n')))  # arguments_env.e:29
+        if (n := self.separate_word_option_value(_KS.s8(here, 'name'))) is not None:  # arguments_env.e:30
+            self.print_(_KS.s8(here, 'name ').plus(n).plus(_KS.s8(here, '\n')))  # arguments_env.e:31
+        self.print_(_KS.s8(here, 'number + 1 = ').plus(_B.out_int(here, _B.i32(self.argument(4).to_integer + 1))).plus(_KS.s8(here, '\n')))  # arguments_env.e:33
+        self.print_(_KS.s8(here, 'argument_array ').plus(_B.out_int(here, self.argument_array.lower)).plus(_KS.s8(here, '..')).plus(_B.out_int(here, self.argument_array.upper)).plus(_KS.s8(here, '\n')))  # arguments_env.e:34
+        env = here.new(_L_execution_environment.EXECUTION_ENVIRONMENT)  # arguments_env.e:35
         env.default_create()
-        env.put(_KS.s8(here, 'golden'), _KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))
-        if (v := env.item(_KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))) is not None:
-            self.print_(_KS.s8(here, 'environment ').plus(v).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'unset variable attached: ').plus(_B.out_bool(here, env.item(_KS.s8(here, 'SCOOPC_GOLDEN_SURELY_UNSET')) is not None)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'cpus > 0: ').plus(_B.out_bool(here, env.available_cpu_count > 0)).plus(_KS.s8(here, '\n')))
-        env.sleep(2000000000)
-        self.print_(_KS.s8(here, 'slept\n'))
+        env.put(_KS.s8(here, 'golden'), _KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))  # arguments_env.e:36
+        if (v := env.item(_KS.s8(here, 'SCOOPC_GOLDEN_VALUE'))) is not None:  # arguments_env.e:37
+            self.print_(_KS.s8(here, 'environment ').plus(v).plus(_KS.s8(here, '\n')))  # arguments_env.e:38
+        self.print_(_KS.s8(here, 'unset variable attached: ').plus(_B.out_bool(here, env.item(_KS.s8(here, 'SCOOPC_GOLDEN_SURELY_UNSET')) is not None)).plus(_KS.s8(here, '\n')))  # arguments_env.e:40
+        self.print_(_KS.s8(here, 'cpus > 0: ').plus(_B.out_bool(here, env.available_cpu_count > 0)).plus(_KS.s8(here, '\n')))  # arguments_env.e:41
+        env.sleep(2000000000)  # arguments_env.e:42
+        self.print_(_KS.s8(here, 'slept\n'))  # arguments_env.e:43
 _S.register('ARGUMENTS_ENV', ARGUMENTS_ENV)
 import eiffel_base.execution_environment as _L_execution_environment

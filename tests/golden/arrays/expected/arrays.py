@@ -11,76 +11,76 @@ class ARRAYS(ANY):
     _key_ = 'ARRAYS'
     _conforms_ = frozenset(['ANY', 'ARRAYS'])
 
-    def make(self):
+    def make(self):  # arrays.e:12
         here = self._region_
-        a = None
+        a = None  # arrays.e:14
         b_ = None
-        names = None
-        i = 0
-        a = here.new(_L_array.ARRAY)
+        names = None  # arrays.e:15
+        i = 0  # arrays.e:16
+        a = here.new(_L_array.ARRAY)  # arrays.e:18
         a._gen_ = (_T_1,)
         a.make_filled(0, -2, 2)
-        a.put(10, -2)
-        a.put(20, 0)
-        a.put(_B.i32(a.item(-2) + a.item(0)), 2)
-        self.show(_KS.s8(here, 'bounds'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)))
-        self.show(_KS.s8(here, 'items'), self.image(a))
-        a.force(99, 5)
-        self.show(_KS.s8(here, 'force above'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)).plus(_KS.s8(here, ' ')).plus(self.image(a)))
-        a.force(7, -4)
-        self.show(_KS.s8(here, 'force below'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)).plus(_KS.s8(here, ' ')).plus(self.image(a)))
-        a.resize(-1, 8)
-        self.show(_KS.s8(here, 'resize'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)))
-        self.show(_KS.s8(here, 'valid_index'), _B.out_bool(here, a.valid_index(8)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.valid_index(9))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.valid_index(-5))))
-        self.show(_KS.s8(here, 'has, occurrences'), _B.out_bool(here, a.has(99)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.has(98))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.occurrences(0))))
-        b_ = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4, 1, 5])
-        self.show(_KS.s8(here, 'manifest'), _B.out_int(here, b_.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.upper)).plus(_KS.s8(here, ' ')).plus(self.image(b_)))
-        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4, 1, 5]))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, b_ is b_.twin)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, b_.twin))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4])))))
-        i = b_.lower
-        while not i > b_.upper:
-            b_.put(_B.i32(b_.item(i) * 10), i)
-            i = i + 1
+        a.put(10, -2)  # arrays.e:19
+        a.put(20, 0)  # arrays.e:20
+        a.put(_B.i32(a.item(-2) + a.item(0)), 2)  # arrays.e:21
+        self.show(_KS.s8(here, 'bounds'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)))  # arrays.e:22
+        self.show(_KS.s8(here, 'items'), self.image(a))  # arrays.e:23
+        a.force(99, 5)  # arrays.e:24
+        self.show(_KS.s8(here, 'force above'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)).plus(_KS.s8(here, ' ')).plus(self.image(a)))  # arrays.e:25
+        a.force(7, -4)  # arrays.e:26
+        self.show(_KS.s8(here, 'force below'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)).plus(_KS.s8(here, ' ')).plus(self.image(a)))  # arrays.e:27
+        a.resize(-1, 8)  # arrays.e:28
+        self.show(_KS.s8(here, 'resize'), _B.out_int(here, a.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)))  # arrays.e:29
+        self.show(_KS.s8(here, 'valid_index'), _B.out_bool(here, a.valid_index(8)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.valid_index(9))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.valid_index(-5))))  # arrays.e:30
+        self.show(_KS.s8(here, 'has, occurrences'), _B.out_bool(here, a.has(99)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.has(98))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.occurrences(0))))  # arrays.e:31
+        b_ = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4, 1, 5])  # arrays.e:32
+        self.show(_KS.s8(here, 'manifest'), _B.out_int(here, b_.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.upper)).plus(_KS.s8(here, ' ')).plus(self.image(b_)))  # arrays.e:33
+        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4, 1, 5]))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, b_ is b_.twin)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, b_.twin))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(b_, _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [3, 1, 4])))))  # arrays.e:34
+        i = b_.lower  # arrays.e:36
+        while not i > b_.upper:  # arrays.e:35
+            b_.put(_B.i32(b_.item(i) * 10), i)  # arrays.e:40
+            i = i + 1  # arrays.e:41
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.show(_KS.s8(here, 'loop'), self.image(b_))
-        self.show(_KS.s8(here, 'subarray'), self.image(b_.subarray(2, 4)).plus(_KS.s8(here, ' lower ')).plus(_B.out_int(here, b_.subarray(2, 4).lower)))
-        b_.rebase(0)
-        self.show(_KS.s8(here, 'rebase'), _B.out_int(here, b_.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.item(0))))
-        names = here.new(_L_array.ARRAY)
+        self.show(_KS.s8(here, 'loop'), self.image(b_))  # arrays.e:43
+        self.show(_KS.s8(here, 'subarray'), self.image(b_.subarray(2, 4)).plus(_KS.s8(here, ' lower ')).plus(_B.out_int(here, b_.subarray(2, 4).lower)))  # arrays.e:44
+        b_.rebase(0)  # arrays.e:45
+        self.show(_KS.s8(here, 'rebase'), _B.out_int(here, b_.lower).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.upper)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, b_.item(0))))  # arrays.e:46
+        names = here.new(_L_array.ARRAY)  # arrays.e:47
         names._gen_ = (_T_2,)
         names.make_empty()
-        self.show(_KS.s8(here, 'empty'), _B.out_int(here, names.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, names.is_empty)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, names.lower)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, names.upper)))
-        names.force(_KS.s8(here, 'first'), 1)
-        names.force(_KS.s8(here, 'second'), 2)
-        for n in _S.cursors(names):
-            self.print_(n.item.plus(_KS.s8(here, ' at ')).plus(_B.out_int(here, n.cursor_index)).plus(_KS.s8(here, '\n')))
-        names = here.new(_L_array.ARRAY)
+        self.show(_KS.s8(here, 'empty'), _B.out_int(here, names.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, names.is_empty)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, names.lower)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, names.upper)))  # arrays.e:48
+        names.force(_KS.s8(here, 'first'), 1)  # arrays.e:49
+        names.force(_KS.s8(here, 'second'), 2)  # arrays.e:50
+        for n in _S.cursors(names):  # arrays.e:51
+            self.print_(n.item.plus(_KS.s8(here, ' at ')).plus(_B.out_int(here, n.cursor_index)).plus(_KS.s8(here, '\n')))  # arrays.e:52
+        names = here.new(_L_array.ARRAY)  # arrays.e:54
         names._gen_ = (_T_2,)
         names.make_filled(_KS.s8(here, ''), 1, 2)
-        self.show(_KS.s8(here, 'make_filled strings'), _B.out_bool(here, names.item(1) is names.item(2)))
-        a = here.new(_L_array.ARRAY)
+        self.show(_KS.s8(here, 'make_filled strings'), _B.out_bool(here, names.item(1) is names.item(2)))  # arrays.e:55
+        a = here.new(_L_array.ARRAY)  # arrays.e:56
         a._gen_ = (_T_1,)
         a.make(1, 3)
-        self.show(_KS.s8(here, 'make'), self.image(a))
-        a.fill_with(4)
-        self.show(_KS.s8(here, 'fill_with'), self.image(a))
-        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, a.for_all(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))
+        self.show(_KS.s8(here, 'make'), self.image(a))  # arrays.e:57
+        a.fill_with(4)  # arrays.e:58
+        self.show(_KS.s8(here, 'fill_with'), self.image(a))  # arrays.e:59
+        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, a.for_all(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))  # arrays.e:60
 
-    def image(self, a):
+    def image(self, a):  # arrays.e:65
         here = self._region_
-        Result = _KS.s8(here, '[')
-        for x in _S.cursors(a):
-            if Result.count > 1:
-                Result.append__string_8(_KS.s8(here, ', '))
-            Result.append__string_8(_B.out_int(here, x.item))
-        Result.append__string_8(_KS.s8(here, ']'))
-        return Result
+        Result = _KS.s8(here, '[')  # arrays.e:68
+        for x in _S.cursors(a):  # arrays.e:69
+            if Result.count > 1:  # arrays.e:70
+                Result.append__string_8(_KS.s8(here, ', '))  # arrays.e:71
+            Result.append__string_8(_B.out_int(here, x.item))  # arrays.e:73
+        Result.append__string_8(_KS.s8(here, ']'))  # arrays.e:75
+        return Result  # arrays.e:65
 
-    def show(self, label, value):
+    def show(self, label, value):  # arrays.e:78
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # arrays.e:80
 
-def _agent_3(self, x):
+def _agent_3(self, x):  # arrays.e:60
     Result = x == 4
     return Result
 _S.register('ARRAYS', ARRAYS)

@@ -8,46 +8,46 @@ class BOOLEAN_OPS(ANY):
     _key_ = 'BOOLEAN_OPS'
     _conforms_ = frozenset(['ANY', 'BOOLEAN_OPS'])
 
-    def make(self):
+    def make(self):  # boolean_ops.e:12
         here = self._region_
-        t_ = False
+        t_ = False  # boolean_ops.e:14
         f = False
-        t_ = True
-        self.show(_KS.s8(here, 'default'), _B.out_bool(here, f))
-        self.show(_KS.s8(here, 'and'), _B.out_bool(here, t_ and f).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ and t_)))
-        self.show(_KS.s8(here, 'or'), _B.out_bool(here, t_ or f).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, f or f)))
-        self.show(_KS.s8(here, 'xor'), _B.out_bool(here, t_ != t_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ != f)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, f != f)))
-        self.show(_KS.s8(here, 'implies'), _B.out_bool(here, not f or t_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not t_ or f)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not f or f)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not t_ or t_)))
-        self.show(_KS.s8(here, 'not'), _B.out_bool(here, not t_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not f)))
-        self.show(_KS.s8(here, 'precedence'), _B.out_bool(here, not f and f).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ or (t_ and f))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not f or (f and t_))))
-        if f and self.touched:
-            self.show(_KS.s8(here, 'unreachable'), _KS.s8(here, ''))
-        if t_ or self.touched:
-            self.show(_KS.s8(here, 'or else'), _KS.s8(here, 'right operand skipped'))
-        if not f or self.touched:
-            self.show(_KS.s8(here, 'implies'), _KS.s8(here, 'right operand skipped'))
-        if t_ and self.touched:
-            self.show(_KS.s8(here, 'unreachable'), _KS.s8(here, ''))
-        self.show(_KS.s8(here, 'touches'), _B.out_int(here, self.touches))
-        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, t_ == True).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ != f)))
-        self.show(_KS.s8(here, 'to_integer'), _B.out_int(here, 1 if t_ else 0).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 1 if f else 0)))
-        self.show(_KS.s8(here, 'hash_code'), _B.out_int(here, 1 if t_ else 0))
-        self.print_(t_)
-        self.print_(_KS.s8(here, '\n'))
-        self.io.put_boolean(f)
-        self.io.put_new_line()
+        t_ = True  # boolean_ops.e:16
+        self.show(_KS.s8(here, 'default'), _B.out_bool(here, f))  # boolean_ops.e:17
+        self.show(_KS.s8(here, 'and'), _B.out_bool(here, t_ and f).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ and t_)))  # boolean_ops.e:18
+        self.show(_KS.s8(here, 'or'), _B.out_bool(here, t_ or f).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, f or f)))  # boolean_ops.e:19
+        self.show(_KS.s8(here, 'xor'), _B.out_bool(here, t_ != t_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ != f)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, f != f)))  # boolean_ops.e:20
+        self.show(_KS.s8(here, 'implies'), _B.out_bool(here, not f or t_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not t_ or f)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not f or f)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not t_ or t_)))  # boolean_ops.e:21
+        self.show(_KS.s8(here, 'not'), _B.out_bool(here, not t_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not f)))  # boolean_ops.e:22
+        self.show(_KS.s8(here, 'precedence'), _B.out_bool(here, not f and f).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ or (t_ and f))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not f or (f and t_))))  # boolean_ops.e:23
+        if f and self.touched:  # boolean_ops.e:24
+            self.show(_KS.s8(here, 'unreachable'), _KS.s8(here, ''))  # boolean_ops.e:25
+        if t_ or self.touched:  # boolean_ops.e:27
+            self.show(_KS.s8(here, 'or else'), _KS.s8(here, 'right operand skipped'))  # boolean_ops.e:28
+        if not f or self.touched:  # boolean_ops.e:30
+            self.show(_KS.s8(here, 'implies'), _KS.s8(here, 'right operand skipped'))  # boolean_ops.e:31
+        if t_ and self.touched:  # boolean_ops.e:33
+            self.show(_KS.s8(here, 'unreachable'), _KS.s8(here, ''))  # boolean_ops.e:34
+        self.show(_KS.s8(here, 'touches'), _B.out_int(here, self.touches))  # boolean_ops.e:36
+        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, t_ == True).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ != f)))  # boolean_ops.e:37
+        self.show(_KS.s8(here, 'to_integer'), _B.out_int(here, 1 if t_ else 0).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 1 if f else 0)))  # boolean_ops.e:38
+        self.show(_KS.s8(here, 'hash_code'), _B.out_int(here, 1 if t_ else 0))  # boolean_ops.e:39
+        self.print_(t_)  # boolean_ops.e:40
+        self.print_(_KS.s8(here, '\n'))  # boolean_ops.e:41
+        self.io.put_boolean(f)  # boolean_ops.e:42
+        self.io.put_new_line()  # boolean_ops.e:43
     touches = 0
 
     @property
     @_rt.leaf
-    def touched(self):
+    def touched(self):  # boolean_ops.e:50
         Result = False
-        self.touches = self.touches + 1
+        self.touches = self.touches + 1  # boolean_ops.e:53
         if self.touches > 2147483647:
             self.touches = _B.wrap_i32(self.touches)
-        return Result
+        return Result  # boolean_ops.e:50
 
-    def show(self, label, value):
+    def show(self, label, value):  # boolean_ops.e:56
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # boolean_ops.e:58
 _S.register('BOOLEAN_OPS', BOOLEAN_OPS)

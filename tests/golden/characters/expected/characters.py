@@ -8,39 +8,39 @@ class CHARACTERS(ANY):
     _key_ = 'CHARACTERS'
     _conforms_ = frozenset(['ANY', 'CHARACTERS'])
 
-    def make(self):
+    def make(self):  # characters.e:12
         here = self._region_
-        c = '\x00'
+        c = '\x00'  # characters.e:14
         d = '\x00'
-        w = '\x00'
-        c = 'a'
-        self.show(_KS.s8(here, 'default code'), _B.out_int(here, _B.ord(d)))
-        self.show(_KS.s8(here, 'code'), _B.out_int(here, _B.ord(c)))
-        self.show(_KS.s8(here, 'upper, as_upper'), _B.out_c8(here, _B.UPPER8[c]).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.LOWER8['Q'])).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.UPPER8['5'])))
-        self.show(_KS.s8(here, 'plus, minus'), _B.out_c8(here, _B.chr(_B.ord(c) + 1 & 255)).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.chr(_B.ord('z') - 1 & 255))))
-        self.show(_KS.s8(here, 'difference'), _B.out_int(here, _B.ord('z') - _B.ord('a')))
-        self.show(_KS.s8(here, 'is_digit'), _B.out_bool(here, '7' in _B.C8_DIGIT).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, c in _B.C8_DIGIT)))
-        self.show(_KS.s8(here, 'is_alpha'), _B.out_bool(here, c in _B.C8_ALPHA).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, '_' in _B.C8_ALPHA)))
-        self.show(_KS.s8(here, 'is_upper, is_lower'), _B.out_bool(here, 'A' in _B.C8_UPPER).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'A' in _B.C8_LOWER)))
-        self.show(_KS.s8(here, 'is_space'), _B.out_bool(here, ' ' in _B.C8_SPACE).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, '\t' in _B.C8_SPACE)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'x' in _B.C8_SPACE)))
-        self.show(_KS.s8(here, 'is_punctuation'), _B.out_bool(here, '!' in _B.C8_PUNCTUATION).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'a' in _B.C8_PUNCTUATION)))
-        self.show(_KS.s8(here, 'is_hexa_digit'), _B.out_bool(here, 'f' in _B.C8_HEXA).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'g' in _B.C8_HEXA)))
-        self.show(_KS.s8(here, 'comparison'), _B.out_bool(here, c < 'b').plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'B' < 'a')).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, c if c >= 'm' else 'm')))
-        self.show(_KS.s8(here, 'escapes'), _B.out_int(here, _B.ord('\n')).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('\t'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('\r'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('\x00'))))
-        self.show(_KS.s8(here, 'quote, percent'), _B.out_c8(here, "'").plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, '%')).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, '"')))
-        self.show(_KS.s8(here, 'by code'), _B.out_c8(here, 'A').plus(_B.out_c8(here, 'B')))
-        self.show(_KS.s8(here, 'to_character_8'), _B.out_c8(here, _B.chr(72 & 255)).plus(_B.out_c8(here, _B.chr(105 & 255))))
-        w = 'A'
-        self.show(_KS.s8(here, 'CHARACTER_32'), _B.out_c32(here, w).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w))))
-        w = c
-        self.show(_KS.s8(here, 'to_character_32'), _B.out_c32(here, w))
-        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, c == 'a').plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, c != 'a')))
-        self.io.put_character(c)
-        self.io.put_character('\n')
-        self.print_(c)
-        self.print_('\n')
+        w = '\x00'  # characters.e:15
+        c = 'a'  # characters.e:17
+        self.show(_KS.s8(here, 'default code'), _B.out_int(here, _B.ord(d)))  # characters.e:18
+        self.show(_KS.s8(here, 'code'), _B.out_int(here, _B.ord(c)))  # characters.e:19
+        self.show(_KS.s8(here, 'upper, as_upper'), _B.out_c8(here, _B.UPPER8[c]).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.LOWER8['Q'])).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.UPPER8['5'])))  # characters.e:20
+        self.show(_KS.s8(here, 'plus, minus'), _B.out_c8(here, _B.chr(_B.ord(c) + 1 & 255)).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.chr(_B.ord('z') - 1 & 255))))  # characters.e:21
+        self.show(_KS.s8(here, 'difference'), _B.out_int(here, _B.ord('z') - _B.ord('a')))  # characters.e:22
+        self.show(_KS.s8(here, 'is_digit'), _B.out_bool(here, '7' in _B.C8_DIGIT).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, c in _B.C8_DIGIT)))  # characters.e:23
+        self.show(_KS.s8(here, 'is_alpha'), _B.out_bool(here, c in _B.C8_ALPHA).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, '_' in _B.C8_ALPHA)))  # characters.e:24
+        self.show(_KS.s8(here, 'is_upper, is_lower'), _B.out_bool(here, 'A' in _B.C8_UPPER).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'A' in _B.C8_LOWER)))  # characters.e:25
+        self.show(_KS.s8(here, 'is_space'), _B.out_bool(here, ' ' in _B.C8_SPACE).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, '\t' in _B.C8_SPACE)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'x' in _B.C8_SPACE)))  # characters.e:26
+        self.show(_KS.s8(here, 'is_punctuation'), _B.out_bool(here, '!' in _B.C8_PUNCTUATION).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'a' in _B.C8_PUNCTUATION)))  # characters.e:27
+        self.show(_KS.s8(here, 'is_hexa_digit'), _B.out_bool(here, 'f' in _B.C8_HEXA).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'g' in _B.C8_HEXA)))  # characters.e:28
+        self.show(_KS.s8(here, 'comparison'), _B.out_bool(here, c < 'b').plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 'B' < 'a')).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, c if c >= 'm' else 'm')))  # characters.e:29
+        self.show(_KS.s8(here, 'escapes'), _B.out_int(here, _B.ord('\n')).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('\t'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('\r'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('\x00'))))  # characters.e:30
+        self.show(_KS.s8(here, 'quote, percent'), _B.out_c8(here, "'").plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, '%')).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, '"')))  # characters.e:31
+        self.show(_KS.s8(here, 'by code'), _B.out_c8(here, 'A').plus(_B.out_c8(here, 'B')))  # characters.e:32
+        self.show(_KS.s8(here, 'to_character_8'), _B.out_c8(here, _B.chr(72 & 255)).plus(_B.out_c8(here, _B.chr(105 & 255))))  # characters.e:33
+        w = 'A'  # characters.e:34
+        self.show(_KS.s8(here, 'CHARACTER_32'), _B.out_c32(here, w).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w))))  # characters.e:35
+        w = c  # characters.e:36
+        self.show(_KS.s8(here, 'to_character_32'), _B.out_c32(here, w))  # characters.e:37
+        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, c == 'a').plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, c != 'a')))  # characters.e:38
+        self.io.put_character(c)  # characters.e:39
+        self.io.put_character('\n')  # characters.e:40
+        self.print_(c)  # characters.e:41
+        self.print_('\n')  # characters.e:42
 
-    def show(self, label, value):
+    def show(self, label, value):  # characters.e:45
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # characters.e:47
 _S.register('CHARACTERS', CHARACTERS)

@@ -9,27 +9,27 @@ class CONSTANTS_ONCE(ANY):
     _key_ = 'CONSTANTS_ONCE'
     _conforms_ = frozenset(['ANY', 'CONSTANTS_ONCE'])
 
-    def make(self):
+    def make(self):  # constants_once.e:12
         here = self._region_
-        r1 = None
+        r1 = None  # constants_once.e:14
         r2 = None
-        self.print_(_B.out_int(here, self.max).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.big)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.small)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, self.ratio)).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, self.letter)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.flag)).plus(_KS.s8(here, ' ')).plus(self.greeting).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, self.hex).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.negative)).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, self.tiny)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'first id: ').plus(_B.out_int(here, self.next_id)).plus(_KS.s8(here, ', again: ')).plus(_B.out_int(here, self.next_id)).plus(_KS.s8(here, ', evaluated ')).plus(_B.out_int(here, self.evaluations)).plus(_KS.s8(here, ' time(s)\n')))
-        self.setup()
-        self.setup()
-        self.print_(_KS.s8(here, 'setup ran ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, ' time(s)\n')))
-        r1 = here.new(_M_registry.REGISTRY)
+        self.print_(_B.out_int(here, self.max).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.big)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.small)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, self.ratio)).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, self.letter)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.flag)).plus(_KS.s8(here, ' ')).plus(self.greeting).plus(_KS.s8(here, '\n')))  # constants_once.e:16
+        self.print_(_B.out_int(here, self.hex).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.negative)).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, self.tiny)).plus(_KS.s8(here, '\n')))  # constants_once.e:17
+        self.print_(_KS.s8(here, 'first id: ').plus(_B.out_int(here, self.next_id)).plus(_KS.s8(here, ', again: ')).plus(_B.out_int(here, self.next_id)).plus(_KS.s8(here, ', evaluated ')).plus(_B.out_int(here, self.evaluations)).plus(_KS.s8(here, ' time(s)\n')))  # constants_once.e:18
+        self.setup()  # constants_once.e:19
+        self.setup()  # constants_once.e:20
+        self.print_(_KS.s8(here, 'setup ran ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, ' time(s)\n')))  # constants_once.e:21
+        r1 = here.new(_M_registry.REGISTRY)  # constants_once.e:22
         r1.default_create()
-        r2 = here.new(_M_registry.REGISTRY)
+        r2 = here.new(_M_registry.REGISTRY)  # constants_once.e:23
         r2.default_create()
-        r1.shared_list.extend(_KS.s8(here, 'one'))
-        r2.shared_list.extend(_KS.s8(here, 'two'))
-        r1.own_list.extend(_KS.s8(here, 'mine'))
-        self.print_(_KS.s8(here, 'shared: ').plus(_B.out_int(here, r1.shared_list.count)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, r1.shared_list is r2.shared_list)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'per object: ').plus(_B.out_int(here, r1.own_list.count)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, r2.own_list.count)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, r1.own_list is r2.own_list)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'failing once: ').plus(self.guarded_once.out).plus(_KS.s8(here, ' ')).plus(self.guarded_once.out).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'unique: ').plus(_B.out_int(here, self.red)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.green)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.blue)).plus(_KS.s8(here, '\n')))
+        r1.shared_list.extend(_KS.s8(here, 'one'))  # constants_once.e:24
+        r2.shared_list.extend(_KS.s8(here, 'two'))  # constants_once.e:25
+        r1.own_list.extend(_KS.s8(here, 'mine'))  # constants_once.e:26
+        self.print_(_KS.s8(here, 'shared: ').plus(_B.out_int(here, r1.shared_list.count)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, r1.shared_list is r2.shared_list)).plus(_KS.s8(here, '\n')))  # constants_once.e:27
+        self.print_(_KS.s8(here, 'per object: ').plus(_B.out_int(here, r1.own_list.count)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, r2.own_list.count)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, r1.own_list is r2.own_list)).plus(_KS.s8(here, '\n')))  # constants_once.e:28
+        self.print_(_KS.s8(here, 'failing once: ').plus(self.guarded_once.out).plus(_KS.s8(here, ' ')).plus(self.guarded_once.out).plus(_KS.s8(here, '\n')))  # constants_once.e:29
+        self.print_(_KS.s8(here, 'unique: ').plus(_B.out_int(here, self.red)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.green)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.blue)).plus(_KS.s8(here, '\n')))  # constants_once.e:30
     max = 10
     big = 5000000000
     small = 255
@@ -38,7 +38,7 @@ class CONSTANTS_ONCE(ANY):
     flag = True
 
     @property
-    def greeting(self):
+    def greeting(self):  # constants_once.e:41
         here = self._region_
         return _KS.s8(here, 'hello')
     hex = 31
@@ -50,58 +50,58 @@ class CONSTANTS_ONCE(ANY):
     evaluations = 0
     setups = 0
 
-    def next_id_once_(self, _once_):
+    def next_id_once_(self, _once_):  # constants_once.e:55
         _once_.result = 0
-        self.evaluations = self.evaluations + 1
+        self.evaluations = self.evaluations + 1  # constants_once.e:57
         if self.evaluations > 2147483647:
             self.evaluations = _B.wrap_i32(self.evaluations)
-        _once_.result = 42
-        return _once_.result
+        _once_.result = 42  # constants_once.e:58
+        return _once_.result  # constants_once.e:55
 
     @property
-    def next_id(self):
+    def next_id(self):  # constants_once.e:55
         return self._region_.once('CONSTANTS_ONCE.next_id', CONSTANTS_ONCE.next_id_once_, (self,))
 
-    def setup_once_(self, _once_):
-        self.setups = self.setups + 1
+    def setup_once_(self, _once_):  # constants_once.e:61
+        self.setups = self.setups + 1  # constants_once.e:63
         if self.setups > 2147483647:
             self.setups = _B.wrap_i32(self.setups)
 
-    def setup(self):
+    def setup(self):  # constants_once.e:61
         return self._region_.once('CONSTANTS_ONCE.setup', CONSTANTS_ONCE.setup_once_, (self,))
     attempts = 0
 
-    def failing_once_(self, _once_):
+    def failing_once_(self, _once_):  # constants_once.e:68
         _once_.result = 0
-        self.attempts = self.attempts + 1
+        self.attempts = self.attempts + 1  # constants_once.e:71
         if self.attempts > 2147483647:
             self.attempts = _B.wrap_i32(self.attempts)
-        if not False:
+        if not False:  # constants_once.e:73
             _S.assertion_failed('check', 'never', _W_1)
-        _once_.result = 1
-        return _once_.result
+        _once_.result = 1  # constants_once.e:75
+        return _once_.result  # constants_once.e:68
 
     @property
-    def failing(self):
+    def failing(self):  # constants_once.e:68
         return self._region_.once('CONSTANTS_ONCE.failing', CONSTANTS_ONCE.failing_once_, (self,))
 
     @property
-    def guarded_once(self):
+    def guarded_once(self):  # constants_once.e:78
         here = self._region_
-        failed = False
-        Result = None
+        failed = False  # constants_once.e:80
+        Result = None  # constants_once.e:78
         while True:
             try:
-                if failed:
-                    Result = _KS.s8(here, 'raised (evaluations ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ')'))
+                if failed:  # constants_once.e:82
+                    Result = _KS.s8(here, 'raised (evaluations ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ')'))  # constants_once.e:83
                 else:
-                    Result = _B.out_int(here, self.failing)
-                break
+                    Result = _B.out_int(here, self.failing)  # constants_once.e:85
+                break  # constants_once.e:78
             except Exception as _exception1:
                 _S.caught(here, _exception1)
-                failed = True
-                continue
-                raise
+                failed = True  # constants_once.e:88
+                continue  # constants_once.e:89
+                raise  # constants_once.e:78
         return Result
 _S.register('CONSTANTS_ONCE', CONSTANTS_ONCE)
 import constants_once.registry as _M_registry

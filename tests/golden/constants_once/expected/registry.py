@@ -9,24 +9,24 @@ class REGISTRY(ANY):
     _key_ = 'REGISTRY'
     _conforms_ = frozenset(['ANY', 'REGISTRY'])
 
-    def shared_list_once_(self, _once_):
+    def shared_list_once_(self, _once_):  # registry.e:6
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
-        return _once_.result
+        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))  # registry.e:9
+        return _once_.result  # registry.e:6
 
     @property
-    def shared_list(self):
+    def shared_list(self):  # registry.e:6
         return self._region_.once('REGISTRY.shared_list', REGISTRY.shared_list_once_, (self,))
 
-    def own_list_once_(self, _once_):
+    def own_list_once_(self, _once_):  # registry.e:12
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
-        return _once_.result
+        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))  # registry.e:15
+        return _once_.result  # registry.e:12
 
     @property
-    def own_list(self):
+    def own_list(self):  # registry.e:12
         return _rt.once_object(self, 'REGISTRY.own_list', REGISTRY.own_list_once_, (self,))
 _S.register('REGISTRY', REGISTRY)
 import eiffel_base.arrayed_list as _L_arrayed_list

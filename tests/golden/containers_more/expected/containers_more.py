@@ -10,61 +10,61 @@ class CONTAINERS_MORE(ANY):
     _key_ = 'CONTAINERS_MORE'
     _conforms_ = frozenset(['ANY', 'CONTAINERS_MORE'])
 
-    def make(self):
+    def make(self):  # containers_more.e:12
         here = self._region_
-        s_ = None
-        ls = None
-        pq = None
-        sorted = None
-        set = None
-        s_ = here.new(_L_arrayed_stack.ARRAYED_STACK)
+        s_ = None  # containers_more.e:14
+        ls = None  # containers_more.e:15
+        pq = None  # containers_more.e:16
+        sorted = None  # containers_more.e:17
+        set = None  # containers_more.e:18
+        s_ = here.new(_L_arrayed_stack.ARRAYED_STACK)  # containers_more.e:20
         s_._gen_ = (_T_1,)
         s_.make(2)
-        s_.put(1)
-        s_.put(2)
-        s_.extend(3)
-        self.print_(_KS.s8(here, 'stack top ').plus(_B.out_int(here, s_.item)).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, s_.count)).plus(_KS.s8(here, '\n')))
-        s_.remove()
-        self.print_(_KS.s8(here, 'after remove ').plus(_B.out_int(here, s_.item)).plus(_KS.s8(here, ': ')).plus(self.image(s_.linear_representation)).plus(_KS.s8(here, '\n')))
-        ls = here.new(_L_linked_stack.LINKED_STACK)
+        s_.put(1)  # containers_more.e:21
+        s_.put(2)  # containers_more.e:22
+        s_.extend(3)  # containers_more.e:23
+        self.print_(_KS.s8(here, 'stack top ').plus(_B.out_int(here, s_.item)).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, s_.count)).plus(_KS.s8(here, '\n')))  # containers_more.e:24
+        s_.remove()  # containers_more.e:25
+        self.print_(_KS.s8(here, 'after remove ').plus(_B.out_int(here, s_.item)).plus(_KS.s8(here, ': ')).plus(self.image(s_.linear_representation)).plus(_KS.s8(here, '\n')))  # containers_more.e:26
+        ls = here.new(_L_linked_stack.LINKED_STACK)  # containers_more.e:27
         ls._gen_ = (_T_2,)
         ls.make()
-        ls.put(_KS.s8(here, 'a'))
-        ls.put(_KS.s8(here, 'b'))
-        self.print_(_KS.s8(here, 'linked stack top ').plus(ls.item).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, ls.count)).plus(_KS.s8(here, '\n')))
-        pq = here.new(_L_heap_priority_queue.HEAP_PRIORITY_QUEUE)
+        ls.put(_KS.s8(here, 'a'))  # containers_more.e:28
+        ls.put(_KS.s8(here, 'b'))  # containers_more.e:29
+        self.print_(_KS.s8(here, 'linked stack top ').plus(ls.item).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, ls.count)).plus(_KS.s8(here, '\n')))  # containers_more.e:30
+        pq = here.new(_L_heap_priority_queue.HEAP_PRIORITY_QUEUE)  # containers_more.e:31
         pq._gen_ = (_T_1,)
         pq.make(10)
-        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [5, 1, 9, 3, 7])):
-            pq.put(x.item)
-        self.print_(_KS.s8(here, 'priority queue:'))
-        while not pq.is_empty:
-            self.print_(_KS.s8(here, ' ').plus(_B.out_int(here, pq.item)))
-            pq.remove()
-        self.print_(_KS.s8(here, '\n'))
-        sorted = here.new(_L_sorted_two_way_list.SORTED_TWO_WAY_LIST)
+        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [5, 1, 9, 3, 7])):  # containers_more.e:32
+            pq.put(x.item)  # containers_more.e:33
+        self.print_(_KS.s8(here, 'priority queue:'))  # containers_more.e:35
+        while not pq.is_empty:  # containers_more.e:36
+            self.print_(_KS.s8(here, ' ').plus(_B.out_int(here, pq.item)))  # containers_more.e:40
+            pq.remove()  # containers_more.e:41
+        self.print_(_KS.s8(here, '\n'))  # containers_more.e:43
+        sorted = here.new(_L_sorted_two_way_list.SORTED_TWO_WAY_LIST)  # containers_more.e:44
         sorted._gen_ = (_T_1,)
         sorted.make()
-        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [5, 2, 8, 2, 6])):
-            sorted.extend(x.item)
-        self.print_(_KS.s8(here, 'sorted: ').plus(self.image(sorted)).plus(_KS.s8(here, ' min ')).plus(_B.out_int(here, sorted.min)).plus(_KS.s8(here, ' max ')).plus(_B.out_int(here, sorted.max)).plus(_KS.s8(here, '\n')))
-        set = here.new(_L_arrayed_set.ARRAYED_SET)
+        for x in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [5, 2, 8, 2, 6])):  # containers_more.e:45
+            sorted.extend(x.item)  # containers_more.e:46
+        self.print_(_KS.s8(here, 'sorted: ').plus(self.image(sorted)).plus(_KS.s8(here, ' min ')).plus(_B.out_int(here, sorted.min)).plus(_KS.s8(here, ' max ')).plus(_B.out_int(here, sorted.max)).plus(_KS.s8(here, '\n')))  # containers_more.e:48
+        set = here.new(_L_arrayed_set.ARRAYED_SET)  # containers_more.e:49
         set._gen_ = (_T_2,)
         set.make(4)
-        set.compare_objects()
-        set.extend(_KS.s8(here, 'a'))
-        set.extend(_KS.s8(here, 'b'))
-        set.extend(_KS.s8(here, 'a'))
-        self.print_(_KS.s8(here, 'set count ').plus(_B.out_int(here, set.count)).plus(_KS.s8(here, ' has b ')).plus(_B.out_bool(here, set.has(_KS.s8(here, 'b')))).plus(_KS.s8(here, '\n')))
+        set.compare_objects()  # containers_more.e:50
+        set.extend(_KS.s8(here, 'a'))  # containers_more.e:51
+        set.extend(_KS.s8(here, 'b'))  # containers_more.e:52
+        set.extend(_KS.s8(here, 'a'))  # containers_more.e:53
+        self.print_(_KS.s8(here, 'set count ').plus(_B.out_int(here, set.count)).plus(_KS.s8(here, ' has b ')).plus(_B.out_bool(here, set.has(_KS.s8(here, 'b')))).plus(_KS.s8(here, '\n')))  # containers_more.e:54
 
-    def image(self, l):
+    def image(self, l):  # containers_more.e:59
         here = self._region_
-        Result = _KS.s8(here, '')
-        l.start()
-        while not l.after:
-            Result.append__string_8(_B.out_int(here, l.item).plus(_KS.s8(here, ' ')))
-            l.forth()
-        return Result
+        Result = _KS.s8(here, '')  # containers_more.e:61
+        l.start()  # containers_more.e:63
+        while not l.after:  # containers_more.e:62
+            Result.append__string_8(_B.out_int(here, l.item).plus(_KS.s8(here, ' ')))  # containers_more.e:67
+            l.forth()  # containers_more.e:68
+        return Result  # containers_more.e:59
 _S.register('CONTAINERS_MORE', CONTAINERS_MORE)
 import eiffel_base.array as _L_array
 import eiffel_base.arrayed_set as _L_arrayed_set

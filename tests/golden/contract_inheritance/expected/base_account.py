@@ -16,44 +16,44 @@ class BASE_ACCOUNT(ANY):
     _conforms_ = frozenset(['ANY', 'BASE_ACCOUNT'])
 
     @_rt.leaf
-    def make(self, initial):
-        self.balance = initial
+    def make(self, initial):  # base_account.e:9
+        self.balance = initial  # base_account.e:11
     balance = 0
 
     @_rt.leaf
-    def withdraw(self, amount):
-        if not amount > 0:
+    def withdraw(self, amount):  # base_account.e:20
+        if not amount > 0:  # base_account.e:22
             _S.assertion_failed('precondition', 'positive', _W_2)
-        if not amount <= self.balance:
+        if not amount <= self.balance:  # base_account.e:23
             _S.assertion_failed('precondition', 'covered', _W_3)
-        _old1 = _S.old(lambda: self.balance)
-        self.balance = self.balance - amount
+        _old1 = _S.old(lambda: self.balance)  # base_account.e:27
+        self.balance = self.balance - amount  # base_account.e:25
         if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
-        if not self.balance == _B.i32(_old1 - amount):
+        if not self.balance == _B.i32(_old1 - amount):  # base_account.e:27
             _S.assertion_failed('postcondition', 'decreased', _W_1)
 
     @_rt.leaf
-    def deposit(self, amount):
-        if not amount > 0:
+    def deposit(self, amount):  # base_account.e:30
+        if not amount > 0:  # base_account.e:32
             _S.assertion_failed('precondition', 'positive', _W_5)
-        _old1 = _S.old(lambda: self.balance)
-        self.balance = self.balance + amount
+        _old1 = _S.old(lambda: self.balance)  # base_account.e:36
+        self.balance = self.balance + amount  # base_account.e:34
         if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
-        if not self.balance == _B.i32(_old1 + amount):
+        if not self.balance == _B.i32(_old1 + amount):  # base_account.e:36
             _S.assertion_failed('postcondition', 'increased', _W_4)
 
     @property
     @_rt.leaf
-    def fee(self):
-        Result = 1
-        if not Result <= 5:
+    def fee(self):  # base_account.e:39
+        Result = 1  # base_account.e:41
+        if not Result <= 5:  # base_account.e:43
             _S.assertion_failed('postcondition', 'small', _W_6)
-        return Result
+        return Result  # base_account.e:39
 
-    def _invariant_(self):
+    def _invariant_(self):  # base_account.e:1
         _S.parent_invariant(ANY, self)
-        if not self.balance >= -100:
+        if not self.balance >= -100:  # base_account.e:47
             _S.assertion_failed('invariant', 'not_too_negative', _W_7)
 _S.register('BASE_ACCOUNT', BASE_ACCOUNT)

@@ -10,43 +10,43 @@ class CONTRACT_INHERITANCE(EXCEPTION_MANAGER_FACTORY):
     _key_ = 'CONTRACT_INHERITANCE'
     _conforms_ = frozenset(['ANY', 'CONTRACT_INHERITANCE', 'EXCEPTION_MANAGER_FACTORY'])
 
-    def make(self):
+    def make(self):  # contract_inheritance.e:15
         here = self._region_
-        acc = None
-        base = None
-        acc = here.new(_M_credit_account.CREDIT_ACCOUNT)
+        acc = None  # contract_inheritance.e:17
+        base = None  # contract_inheritance.e:18
+        acc = here.new(_M_credit_account.CREDIT_ACCOUNT)  # contract_inheritance.e:20
         acc.make(50)
         _S.check_invariant(acc)
-        _S.call_checked(acc, 'withdraw', (120,))
-        self.print_(_KS.s8(here, 'credit withdrawal: ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, ' after ')).plus(_B.out_int(here, acc.withdrawals)).plus(_KS.s8(here, '\n')))
-        _S.call_checked(acc, 'deposit', (60,))
-        self.print_(_KS.s8(here, 'deposit through Precursor: ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, ' deposits ')).plus(_B.out_int(here, acc.deposits)).plus(_KS.s8(here, '\n')))
-        base = acc
-        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 40], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 100], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('deposit', False), [base, 0], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, _L_function.FUNCTION, (_T_1, _T_2), _S.dispatcher('fee', True), [base], ())).plus(_KS.s8(here, '\n')))
-        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('force_debt', False), [acc, 500], ())).plus(_KS.s8(here, '\n')))
+        _S.call_checked(acc, 'withdraw', (120,))  # contract_inheritance.e:21
+        self.print_(_KS.s8(here, 'credit withdrawal: ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, ' after ')).plus(_B.out_int(here, acc.withdrawals)).plus(_KS.s8(here, '\n')))  # contract_inheritance.e:22
+        _S.call_checked(acc, 'deposit', (60,))  # contract_inheritance.e:23
+        self.print_(_KS.s8(here, 'deposit through Precursor: ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, ' deposits ')).plus(_B.out_int(here, acc.deposits)).plus(_KS.s8(here, '\n')))  # contract_inheritance.e:24
+        base = acc  # contract_inheritance.e:25
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 40], ())).plus(_KS.s8(here, '\n')))  # contract_inheritance.e:26
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('withdraw', False), [base, 100], ())).plus(_KS.s8(here, '\n')))  # contract_inheritance.e:27
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('deposit', False), [base, 0], ())).plus(_KS.s8(here, '\n')))  # contract_inheritance.e:28
+        self.print_(self.attempt(_S.new_agent(here, _L_function.FUNCTION, (_T_1, _T_2), _S.dispatcher('fee', True), [base], ())).plus(_KS.s8(here, '\n')))  # contract_inheritance.e:29
+        self.print_(self.attempt(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_1,), _S.dispatcher('force_debt', False), [acc, 500], ())).plus(_KS.s8(here, '\n')))  # contract_inheritance.e:30
 
-    def attempt(self, action):
+    def attempt(self, action):  # contract_inheritance.e:35
         here = self._region_
-        failed = False
-        Result = None
+        failed = False  # contract_inheritance.e:37
+        Result = None  # contract_inheritance.e:35
         while True:
             try:
-                if failed:
-                    Result = _KS.s8(here, 'failed')
-                    if (e := self.exception_manager.last_exception) is not None:
-                        Result = Result.plus(_KS.s8(here, ': ')).plus(e.original.generator)
+                if failed:  # contract_inheritance.e:39
+                    Result = _KS.s8(here, 'failed')  # contract_inheritance.e:40
+                    if (e := self.exception_manager.last_exception) is not None:  # contract_inheritance.e:41
+                        Result = Result.plus(_KS.s8(here, ': ')).plus(e.original.generator)  # contract_inheritance.e:42
                 else:
-                    action.apply()
-                    Result = _KS.s8(here, 'done')
-                break
+                    action.apply()  # contract_inheritance.e:45
+                    Result = _KS.s8(here, 'done')  # contract_inheritance.e:46
+                break  # contract_inheritance.e:35
             except Exception as _exception1:
                 _S.caught(here, _exception1)
-                failed = True
-                continue
-                raise
+                failed = True  # contract_inheritance.e:49
+                continue  # contract_inheritance.e:50
+                raise  # contract_inheritance.e:35
         return Result
 _S.register('CONTRACT_INHERITANCE', CONTRACT_INHERITANCE)
 import contract_inheritance.credit_account as _M_credit_account

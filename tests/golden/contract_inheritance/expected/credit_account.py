@@ -16,53 +16,53 @@ class CREDIT_ACCOUNT(BASE_ACCOUNT):
     _conforms_ = frozenset(['ANY', 'BASE_ACCOUNT', 'CREDIT_ACCOUNT'])
 
     @_rt.leaf
-    def withdraw(self, amount):
+    def withdraw(self, amount):  # credit_account.e:17
         if not (amount <= _B.i32(self.balance + 100) or (amount > 0 and amount <= self.balance)):
-            if not amount <= _B.i32(self.balance + 100):
+            if not amount <= _B.i32(self.balance + 100):  # credit_account.e:20
                 _S.assertion_failed('precondition', 'within_credit', _W_3)
-            _S.assertion_failed('precondition', 'within_credit', _W_3)
-        _old1 = _S.old(lambda: self.balance)
-        _old2 = _S.old(lambda: self.withdrawals)
-        self.balance = self.balance - amount
+            _S.assertion_failed('precondition', 'within_credit', _W_3)  # credit_account.e:17
+        _old1 = _S.old(lambda: self.balance)  # credit_account.e:27
+        _old2 = _S.old(lambda: self.withdrawals)  # credit_account.e:25
+        self.balance = self.balance - amount  # credit_account.e:22
         if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
-        self.withdrawals = self.withdrawals + 1
+        self.withdrawals = self.withdrawals + 1  # credit_account.e:23
         if self.withdrawals > 2147483647:
             self.withdrawals = _B.wrap_i32(self.withdrawals)
-        if not self.balance == _B.i32(_old1 - amount):
+        if not self.balance == _B.i32(_old1 - amount):  # credit_account.e:27
             _S.assertion_failed('postcondition', 'decreased', _W_1)
-        if not self.withdrawals == _B.i32(_old2 + 1):
+        if not self.withdrawals == _B.i32(_old2 + 1):  # credit_account.e:25
             _S.assertion_failed('postcondition', 'counted', _W_2)
 
     @_rt.leaf
-    def deposit(self, amount):
-        if not amount > 0:
+    def deposit(self, amount):  # credit_account.e:28
+        if not amount > 0:  # credit_account.e:32
             _S.assertion_failed('precondition', 'positive', _W_5)
-        _old1 = _S.old(lambda: self.balance)
-        BASE_ACCOUNT.deposit(self, amount)
-        self.deposits = self.deposits + 1
+        _old1 = _S.old(lambda: self.balance)  # credit_account.e:36
+        BASE_ACCOUNT.deposit(self, amount)  # credit_account.e:30
+        self.deposits = self.deposits + 1  # credit_account.e:31
         if self.deposits > 2147483647:
             self.deposits = _B.wrap_i32(self.deposits)
-        if not self.balance == _B.i32(_old1 + amount):
+        if not self.balance == _B.i32(_old1 + amount):  # credit_account.e:36
             _S.assertion_failed('postcondition', 'increased', _W_4)
     deposits = 0
 
     @property
     @_rt.leaf
-    def fee(self):
-        Result = BASE_ACCOUNT.fee.fget(self) + 5
+    def fee(self):  # credit_account.e:36
+        Result = BASE_ACCOUNT.fee.fget(self) + 5  # credit_account.e:38
         if Result > 2147483647:
             Result = _B.wrap_i32(Result)
-        if not Result <= 5:
+        if not Result <= 5:  # credit_account.e:43
             _S.assertion_failed('postcondition', 'small', _W_6)
-        if not (Result % 2 if Result >= 0 else -(-Result % 2)) == 0:
+        if not (Result % 2 if Result >= 0 else -(-Result % 2)) == 0:  # credit_account.e:40
             _S.assertion_failed('postcondition', 'even', _W_7)
-        return Result
+        return Result  # credit_account.e:36
     withdrawals = 0
 
     @_rt.leaf
-    def force_debt(self, amount):
-        self.balance = self.balance - amount
+    def force_debt(self, amount):  # credit_account.e:45
+        self.balance = self.balance - amount  # credit_account.e:47
         if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
 _S.register('CREDIT_ACCOUNT', CREDIT_ACCOUNT)

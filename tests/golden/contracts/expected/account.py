@@ -22,74 +22,74 @@ class ACCOUNT(ANY):
     _conforms_ = frozenset(['ACCOUNT', 'ANY'])
 
     @_rt.leaf
-    def make(self, initial):
-        if not initial >= 0:
+    def make(self, initial):  # account.e:9
+        if not initial >= 0:  # account.e:11
             _S.assertion_failed('precondition', 'non_negative', _W_2)
-        self.balance = initial
-        if not self.balance == initial:
+        self.balance = initial  # account.e:13
+        if not self.balance == initial:  # account.e:15
             _S.assertion_failed('postcondition', 'set', _W_1)
     balance = 0
 
-    def history_init_(self):
+    def history_init_(self):  # account.e:22
         here = self._region_
         Result = None
-        Result = here.new(_L_arrayed_list.ARRAYED_LIST)
+        Result = here.new(_L_arrayed_list.ARRAYED_LIST)  # account.e:24
         Result._gen_ = (_T_3,)
         Result.make(4)
-        return Result
+        return Result  # account.e:22
     history = _S.SelfInitialising(history_init_, 'history')
 
-    def deposit(self, amount):
-        if not amount > 0:
+    def deposit(self, amount):  # account.e:29
+        if not amount > 0:  # account.e:31
             _S.assertion_failed('precondition', 'positive', _W_6)
-        _old1 = _S.old(lambda: self.balance)
-        _old2 = _S.old(lambda: self.history.count)
-        self.balance = self.balance + amount
+        _old1 = _S.old(lambda: self.balance)  # account.e:36
+        _old2 = _S.old(lambda: self.history.count)  # account.e:37
+        self.balance = self.balance + amount  # account.e:33
         if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
-        self.history.extend(amount)
-        if not self.balance == _B.i32(_old1 + amount):
+        self.history.extend(amount)  # account.e:34
+        if not self.balance == _B.i32(_old1 + amount):  # account.e:36
             _S.assertion_failed('postcondition', 'increased', _W_4)
-        if not self.history.count == _B.i32(_old2 + 1):
+        if not self.history.count == _B.i32(_old2 + 1):  # account.e:37
             _S.assertion_failed('postcondition', 'recorded', _W_5)
 
-    def withdraw(self, amount):
-        if not amount > 0:
+    def withdraw(self, amount):  # account.e:40
+        if not amount > 0:  # account.e:42
             _S.assertion_failed('precondition', 'positive', _W_8)
-        if not amount <= self.balance:
+        if not amount <= self.balance:  # account.e:43
             _S.assertion_failed('precondition', 'enough', _W_9)
-        _old1 = _S.old(lambda: self.balance)
-        self.balance = self.balance - amount
+        _old1 = _S.old(lambda: self.balance)  # account.e:48
+        self.balance = self.balance - amount  # account.e:45
         if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
-        self.history.extend(_B.i32(-amount))
-        if not self.balance == _B.i32(_old1 - amount):
+        self.history.extend(_B.i32(-amount))  # account.e:46
+        if not self.balance == _B.i32(_old1 - amount):  # account.e:48
             _S.assertion_failed('postcondition', 'decreased', _W_7)
 
     @_rt.leaf
-    def faulty_deposit(self, amount):
-        _old1 = _S.old(lambda: self.balance)
-        self.balance = self.balance + amount + 1
-        if self.balance > 2147483647:
+    def faulty_deposit(self, amount):  # account.e:51
+        _old1 = _S.old(lambda: self.balance)  # account.e:56
+        self.balance = self.balance + amount + 1  # account.e:54
+        if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
-        if not self.balance == _B.i32(_old1 + amount):
+        if not self.balance == _B.i32(_old1 + amount):  # account.e:56
             _S.assertion_failed('postcondition', 'increased', _W_10)
 
     @property
     @_rt.leaf
-    def doubled(self):
-        Result = 2 * self.balance
+    def doubled(self):  # account.e:59
+        Result = 2 * self.balance  # account.e:61
         if not -2147483648 <= Result <= 2147483647:
             Result = _B.wrap_i32(Result)
-        if not Result == _B.i32(self.balance * 2):
+        if not Result == _B.i32(self.balance * 2):  # account.e:63
             _S.assertion_failed('postcondition', 'twice', _W_11)
-        if not Result >= self.balance:
+        if not Result >= self.balance:  # account.e:64
             _S.assertion_failed('postcondition', 'not_smaller', _W_12)
-        return Result
+        return Result  # account.e:59
 
-    def _invariant_(self):
+    def _invariant_(self):  # account.e:1
         _S.parent_invariant(ANY, self)
-        if not self.balance >= 0:
+        if not self.balance >= 0:  # account.e:68
             _S.assertion_failed('invariant', 'non_negative_balance', _W_13)
 _S.register('ACCOUNT', ACCOUNT)
 import eiffel_base.arrayed_list as _L_arrayed_list

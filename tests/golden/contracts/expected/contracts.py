@@ -8,46 +8,46 @@ class CONTRACTS(EXCEPTION_MANAGER_FACTORY):
     _key_ = 'CONTRACTS'
     _conforms_ = frozenset(['ANY', 'CONTRACTS', 'EXCEPTION_MANAGER_FACTORY'])
 
-    def make(self):
+    def make(self):  # contracts.e:15
         here = self._region_
-        acc = None
-        acc = here.new(_M_account.ACCOUNT)
+        acc = None  # contracts.e:17
+        acc = here.new(_M_account.ACCOUNT)  # contracts.e:19
         acc.make(100)
         _S.check_invariant(acc)
-        _S.call_checked(acc, 'deposit', (50,))
-        _S.call_checked(acc, 'withdraw', (30,))
-        self.print_(_KS.s8(here, 'balance ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, ' doubled ')).plus(_B.out_int(here, _S.call_checked(acc, 'doubled', ()))).plus(_KS.s8(here, ' history ')).plus(_B.out_int(here, acc.history.count)).plus(_KS.s8(here, '\n')))
-        self.try_(acc, _KS.s8(here, 'deposit zero'))
-        self.try_(acc, _KS.s8(here, 'overdraw'))
-        self.try_(acc, _KS.s8(here, 'faulty deposit'))
-        self.print_(_KS.s8(here, 'balance ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, '\n')))
-        self.try_(acc, _KS.s8(here, 'negative opening'))
+        _S.call_checked(acc, 'deposit', (50,))  # contracts.e:20
+        _S.call_checked(acc, 'withdraw', (30,))  # contracts.e:21
+        self.print_(_KS.s8(here, 'balance ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, ' doubled ')).plus(_B.out_int(here, _S.call_checked(acc, 'doubled', ()))).plus(_KS.s8(here, ' history ')).plus(_B.out_int(here, acc.history.count)).plus(_KS.s8(here, '\n')))  # contracts.e:22
+        self.try_(acc, _KS.s8(here, 'deposit zero'))  # contracts.e:23
+        self.try_(acc, _KS.s8(here, 'overdraw'))  # contracts.e:24
+        self.try_(acc, _KS.s8(here, 'faulty deposit'))  # contracts.e:25
+        self.print_(_KS.s8(here, 'balance ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, '\n')))  # contracts.e:26
+        self.try_(acc, _KS.s8(here, 'negative opening'))  # contracts.e:27
 
-    def try_(self, acc, what):
+    def try_(self, acc, what):  # contracts.e:32
         here = self._region_
-        failed = False
-        other = None
-        while True:
+        failed = False  # contracts.e:34
+        other = None  # contracts.e:35
+        while True:  # contracts.e:32
             try:
-                if not failed:
-                    if _B.equal(what, _KS.s8(here, 'deposit zero')):
-                        _S.call_checked(acc, 'deposit', (0,))
-                    elif _B.equal(what, _KS.s8(here, 'overdraw')):
-                        _S.call_checked(acc, 'withdraw', (1000,))
-                    elif _B.equal(what, _KS.s8(here, 'faulty deposit')):
-                        _S.call_checked(acc, 'faulty_deposit', (10,))
+                if not failed:  # contracts.e:37
+                    if _B.equal(what, _KS.s8(here, 'deposit zero')):  # contracts.e:38
+                        _S.call_checked(acc, 'deposit', (0,))  # contracts.e:39
+                    elif _B.equal(what, _KS.s8(here, 'overdraw')):  # contracts.e:40
+                        _S.call_checked(acc, 'withdraw', (1000,))  # contracts.e:41
+                    elif _B.equal(what, _KS.s8(here, 'faulty deposit')):  # contracts.e:42
+                        _S.call_checked(acc, 'faulty_deposit', (10,))  # contracts.e:43
                     else:
-                        other = here.new(_M_account.ACCOUNT)
+                        other = here.new(_M_account.ACCOUNT)  # contracts.e:45
                         other.make(-5)
                         _S.check_invariant(other)
-                    self.print_(what.plus(_KS.s8(here, ': accepted\n')))
-                break
+                    self.print_(what.plus(_KS.s8(here, ': accepted\n')))  # contracts.e:47
+                break  # contracts.e:32
             except Exception as _exception1:
                 _S.caught(here, _exception1)
-                if (e := self.exception_manager.last_exception) is not None:
-                    self.print_(what.plus(_KS.s8(here, ': ')).plus(e.original.generator).plus(_KS.s8(here, ' ')).plus(e.original.tag).plus(_KS.s8(here, '\n')))
-                failed = True
-                continue
-                raise
+                if (e := self.exception_manager.last_exception) is not None:  # contracts.e:50
+                    self.print_(what.plus(_KS.s8(here, ': ')).plus(e.original.generator).plus(_KS.s8(here, ' ')).plus(e.original.tag).plus(_KS.s8(here, '\n')))  # contracts.e:51
+                failed = True  # contracts.e:53
+                continue  # contracts.e:54
+                raise  # contracts.e:32
 _S.register('CONTRACTS', CONTRACTS)
 import contracts.account as _M_account

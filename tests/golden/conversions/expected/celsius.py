@@ -9,24 +9,24 @@ class CELSIUS(ANY):
     _conforms_ = frozenset(['ANY', 'CELSIUS'])
 
     @_rt.leaf
-    def make(self, d):
-        self.degrees = d
+    def make(self, d):  # celsius.e:20
+        self.degrees = d  # celsius.e:22
 
     @_rt.leaf
-    def from_integer(self, d):
-        self.degrees = d + 0.0
+    def from_integer(self, d):  # celsius.e:25
+        self.degrees = d + 0.0  # celsius.e:27
     degrees = 0.0
 
     @property
     @_rt.leaf
-    def to_kelvin(self):
-        Result = self.degrees + 273.15
-        return Result
+    def to_kelvin(self):  # celsius.e:34
+        Result = self.degrees + 273.15  # celsius.e:36
+        return Result  # celsius.e:34
 
     @property
     @_rt.leaf
-    def out(self):
+    def out(self):  # celsius.e:39
         here = self._region_
-        Result = _B.out_r64(here, self.degrees).plus(_KS.s8(here, ' C'))
-        return Result
+        Result = _B.out_r64(here, self.degrees).plus(_KS.s8(here, ' C'))  # celsius.e:41
+        return Result  # celsius.e:39
 _S.register('CELSIUS', CELSIUS)

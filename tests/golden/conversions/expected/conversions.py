@@ -8,40 +8,40 @@ class CONVERSIONS(ANY):
     _key_ = 'CONVERSIONS'
     _conforms_ = frozenset(['ANY', 'CONVERSIONS'])
 
-    def make(self):
+    def make(self):  # conversions.e:12
         here = self._region_
-        c = None
-        k_ = 0.0
-        d = 0.0
-        i = 0
-        big = 0
-        small = 0
-        n = 0
-        f = 0.0
-        c = _S.create(here, _M_celsius.CELSIUS, None, 'from_integer', (21,))
-        self.print_(_KS.s8(here, 'from INTEGER: ').plus(c.out).plus(_KS.s8(here, '\n')))
-        k_ = c.to_kelvin
-        self.print_(_KS.s8(here, 'to REAL_64: ').plus(_B.out_r64(here, k_)).plus(_KS.s8(here, '\n')))
-        self.show(_S.create(here, _M_celsius.CELSIUS, None, 'from_integer', (30,)))
-        self.print_(_KS.s8(here, 'sum: ').plus(_B.out_r64(here, self.kelvin(c.to_kelvin) + self.kelvin(_S.create(here, _M_celsius.CELSIUS, None, 'make', (-273.15,)).to_kelvin))).plus(_KS.s8(here, '\n')))
-        i = 7
-        d = i + 0.0
-        big = i
-        f = _B.r32(i + 0.0)
-        self.print_(_KS.s8(here, 'promotions: ').plus(_B.out_r64(here, d)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, big)).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, f)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i / 2)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i + 0.0 + 0.0 + 0.5)).plus(_KS.s8(here, '\n')))
-        small = 100
-        self.print_(_KS.s8(here, 'INTEGER_8 + INTEGER: ').plus(_B.out_int(here, _B.i32(small + 1000))).plus(_KS.s8(here, '\n')))
-        n = 4000000000
-        self.print_(_KS.s8(here, 'NATURAL_32 to INTEGER_64: ').plus(_B.out_int(here, _B.i64(n + 1))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'explicit: ').plus(_B.out_int(here, _B.trunc32(3.99))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(-3.5))).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.chr(65 & 255))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('A'))).plus(_KS.s8(here, '\n')))
+        c = None  # conversions.e:14
+        k_ = 0.0  # conversions.e:15
+        d = 0.0  # conversions.e:16
+        i = 0  # conversions.e:17
+        big = 0  # conversions.e:18
+        small = 0  # conversions.e:19
+        n = 0  # conversions.e:20
+        f = 0.0  # conversions.e:21
+        c = _S.create(here, _M_celsius.CELSIUS, None, 'from_integer', (21,))  # conversions.e:23
+        self.print_(_KS.s8(here, 'from INTEGER: ').plus(c.out).plus(_KS.s8(here, '\n')))  # conversions.e:24
+        k_ = c.to_kelvin  # conversions.e:25
+        self.print_(_KS.s8(here, 'to REAL_64: ').plus(_B.out_r64(here, k_)).plus(_KS.s8(here, '\n')))  # conversions.e:26
+        self.show(_S.create(here, _M_celsius.CELSIUS, None, 'from_integer', (30,)))  # conversions.e:27
+        self.print_(_KS.s8(here, 'sum: ').plus(_B.out_r64(here, self.kelvin(c.to_kelvin) + self.kelvin(_S.create(here, _M_celsius.CELSIUS, None, 'make', (-273.15,)).to_kelvin))).plus(_KS.s8(here, '\n')))  # conversions.e:28
+        i = 7  # conversions.e:29
+        d = i + 0.0  # conversions.e:30
+        big = i  # conversions.e:31
+        f = _B.r32(i + 0.0)  # conversions.e:32
+        self.print_(_KS.s8(here, 'promotions: ').plus(_B.out_r64(here, d)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, big)).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, f)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i / 2)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i + 0.0 + 0.0 + 0.5)).plus(_KS.s8(here, '\n')))  # conversions.e:33
+        small = 100  # conversions.e:34
+        self.print_(_KS.s8(here, 'INTEGER_8 + INTEGER: ').plus(_B.out_int(here, _B.i32(small + 1000))).plus(_KS.s8(here, '\n')))  # conversions.e:35
+        n = 4000000000  # conversions.e:36
+        self.print_(_KS.s8(here, 'NATURAL_32 to INTEGER_64: ').plus(_B.out_int(here, _B.i64(n + 1))).plus(_KS.s8(here, '\n')))  # conversions.e:37
+        self.print_(_KS.s8(here, 'explicit: ').plus(_B.out_int(here, _B.trunc32(3.99))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(-3.5))).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.chr(65 & 255))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('A'))).plus(_KS.s8(here, '\n')))  # conversions.e:38
 
-    def show(self, c):
+    def show(self, c):  # conversions.e:43
         here = self._region_
-        self.print_(_KS.s8(here, 'argument converted: ').plus(c.out).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'argument converted: ').plus(c.out).plus(_KS.s8(here, '\n')))  # conversions.e:45
 
     @_rt.leaf
-    def kelvin(self, k_):
-        Result = k_
-        return Result
+    def kelvin(self, k_):  # conversions.e:48
+        Result = k_  # conversions.e:50
+        return Result  # conversions.e:48
 _S.register('CONVERSIONS', CONVERSIONS)
 import conversions.celsius as _M_celsius

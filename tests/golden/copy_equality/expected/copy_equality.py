@@ -8,26 +8,26 @@ class COPY_EQUALITY(ANY):
     _key_ = 'COPY_EQUALITY'
     _conforms_ = frozenset(['ANY', 'COPY_EQUALITY'])
 
-    def make(self):
+    def make(self):  # copy_equality.e:12
         here = self._region_
-        a = None
+        a = None  # copy_equality.e:14
         b_ = None
         c = None
-        a = here.new(_M_node.NODE)
+        a = here.new(_M_node.NODE)  # copy_equality.e:16
         a.make(1, _KS.s8(here, 'a'))
-        a.add(_S.create(here, _M_node.NODE, None, 'make', (2, _KS.s8(here, 'child'))))
-        b_ = a.twin
-        self.print_(_KS.s8(here, 'twin: ').plus(_B.out_bool(here, a is b_)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' copies ')).plus(_B.out_int(here, b_.copies)).plus(_KS.s8(here, ' shares children ')).plus(_B.out_bool(here, a.children is b_.children)).plus(_KS.s8(here, '\n')))
-        c = a.deep_twin
-        self.print_(_KS.s8(here, 'deep_twin: ').plus(_B.out_bool(here, a.children is c.children)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.children.first is c.children.first)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a.children.first.label, c.children.first.label))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_deep_equal(c))).plus(_KS.s8(here, '\n')))
-        c = here.new(_M_node.NODE)
+        a.add(_S.create(here, _M_node.NODE, None, 'make', (2, _KS.s8(here, 'child'))))  # copy_equality.e:17
+        b_ = a.twin  # copy_equality.e:18
+        self.print_(_KS.s8(here, 'twin: ').plus(_B.out_bool(here, a is b_)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' copies ')).plus(_B.out_int(here, b_.copies)).plus(_KS.s8(here, ' shares children ')).plus(_B.out_bool(here, a.children is b_.children)).plus(_KS.s8(here, '\n')))  # copy_equality.e:19
+        c = a.deep_twin  # copy_equality.e:20
+        self.print_(_KS.s8(here, 'deep_twin: ').plus(_B.out_bool(here, a.children is c.children)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.children.first is c.children.first)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a.children.first.label, c.children.first.label))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_deep_equal(c))).plus(_KS.s8(here, '\n')))  # copy_equality.e:21
+        c = here.new(_M_node.NODE)  # copy_equality.e:22
         c.make(1, _KS.s8(here, 'other'))
-        self.print_(_KS.s8(here, 'is_equal redefined: ').plus(_B.out_bool(here, _B.equal(a, c))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_equal(c))).plus(_KS.s8(here, ' standard ')).plus(_B.out_bool(here, a.standard_is_equal(c))).plus(_KS.s8(here, '\n')))
-        c.set_value(5)
-        self.print_(_KS.s8(here, 'assigner: ').plus(_B.out_int(here, c.value)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, c))).plus(_KS.s8(here, '\n')))
-        c.copy(a)
-        self.print_(_KS.s8(here, 'copy: ').plus(_B.out_int(here, c.value)).plus(_KS.s8(here, ' ')).plus(c.label).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(c, a))).plus(_KS.s8(here, ' copies ')).plus(_B.out_int(here, c.copies)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'equal: ').plus(_B.out_bool(here, self.equal(a, c))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.equal(a, None))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.deep_equal(a, a.deep_twin))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'strings: ').plus(_B.out_bool(here, _KS.s8(here, 'abc').twin.same_string__readable_string_8(_KS.s8(here, 'abc')))).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'is_equal redefined: ').plus(_B.out_bool(here, _B.equal(a, c))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_equal(c))).plus(_KS.s8(here, ' standard ')).plus(_B.out_bool(here, a.standard_is_equal(c))).plus(_KS.s8(here, '\n')))  # copy_equality.e:23
+        c.set_value(5)  # copy_equality.e:24
+        self.print_(_KS.s8(here, 'assigner: ').plus(_B.out_int(here, c.value)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, c))).plus(_KS.s8(here, '\n')))  # copy_equality.e:25
+        c.copy(a)  # copy_equality.e:26
+        self.print_(_KS.s8(here, 'copy: ').plus(_B.out_int(here, c.value)).plus(_KS.s8(here, ' ')).plus(c.label).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(c, a))).plus(_KS.s8(here, ' copies ')).plus(_B.out_int(here, c.copies)).plus(_KS.s8(here, '\n')))  # copy_equality.e:27
+        self.print_(_KS.s8(here, 'equal: ').plus(_B.out_bool(here, self.equal(a, c))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.equal(a, None))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.deep_equal(a, a.deep_twin))).plus(_KS.s8(here, '\n')))  # copy_equality.e:28
+        self.print_(_KS.s8(here, 'strings: ').plus(_B.out_bool(here, _KS.s8(here, 'abc').twin.same_string__readable_string_8(_KS.s8(here, 'abc')))).plus(_KS.s8(here, '\n')))  # copy_equality.e:29
 _S.register('COPY_EQUALITY', COPY_EQUALITY)
 import copy_equality.node as _M_node

@@ -9,34 +9,34 @@ class NODE(ANY):
     _key_ = 'NODE'
     _conforms_ = frozenset(['ANY', 'NODE'])
 
-    def make(self, v, l):
+    def make(self, v, l):  # node.e:16
         here = self._region_
-        self.value = v
-        self.label = l
-        self.children = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (2,))
+        self.value = v  # node.e:18
+        self.label = l  # node.e:19
+        self.children = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (2,))  # node.e:20
     value = 0
     label = None
     children = None
     copies = 0
 
     @_rt.leaf
-    def set_value(self, v):
-        self.value = v
+    def set_value(self, v):  # node.e:36
+        self.value = v  # node.e:38
 
-    def add(self, n):
-        self.children.extend(n)
-
-    @_rt.leaf
-    def is_equal(self, other):
-        Result = self.value == other.value
-        return Result
+    def add(self, n):  # node.e:41
+        self.children.extend(n)  # node.e:43
 
     @_rt.leaf
-    def copy(self, other):
-        self.value = other.value
-        self.label = other.label
-        self.children = other.children
-        self.copies = other.copies + 1
+    def is_equal(self, other):  # node.e:48
+        Result = self.value == other.value  # node.e:51
+        return Result  # node.e:48
+
+    @_rt.leaf
+    def copy(self, other):  # node.e:56
+        self.value = other.value  # node.e:58
+        self.label = other.label  # node.e:59
+        self.children = other.children  # node.e:60
+        self.copies = other.copies + 1  # node.e:61
         if self.copies > 2147483647:
             self.copies = _B.wrap_i32(self.copies)
 _S.register('NODE', NODE)

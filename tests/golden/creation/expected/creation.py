@@ -9,45 +9,45 @@ class CREATION(ANY):
     _key_ = 'CREATION'
     _conforms_ = frozenset(['ANY', 'CREATION'])
 
-    def make(self):
+    def make(self):  # creation.e:12
         here = self._region_
-        p = None
-        a = None
-        thing = None
-        list = None
-        p = here.new(_M_point.POINT)
+        p = None  # creation.e:14
+        a = None  # creation.e:15
+        thing = None  # creation.e:16
+        list = None  # creation.e:17
+        p = here.new(_M_point.POINT)  # creation.e:19
         p.make(1, 2)
-        self.print_(_KS.s8(here, 'make: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        p = here.new(_M_point.POINT)
+        self.print_(_KS.s8(here, 'make: ').plus(p.out).plus(_KS.s8(here, '\n')))  # creation.e:20
+        p = here.new(_M_point.POINT)  # creation.e:21
         p.make_origin()
-        self.print_(_KS.s8(here, 'make_origin: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        p = here.new(_M_point.POINT)
+        self.print_(_KS.s8(here, 'make_origin: ').plus(p.out).plus(_KS.s8(here, '\n')))  # creation.e:22
+        p = here.new(_M_point.POINT)  # creation.e:23
         p.default_create()
-        self.print_(_KS.s8(here, 'default_create: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        p = _S.create(here, _M_point.POINT, None, 'make', (3, 4))
-        self.print_(_KS.s8(here, 'creation expression: ').plus(p.out).plus(_KS.s8(here, '\n')))
-        a = here.new(_M_point.POINT)
+        self.print_(_KS.s8(here, 'default_create: ').plus(p.out).plus(_KS.s8(here, '\n')))  # creation.e:24
+        p = _S.create(here, _M_point.POINT, None, 'make', (3, 4))  # creation.e:25
+        self.print_(_KS.s8(here, 'creation expression: ').plus(p.out).plus(_KS.s8(here, '\n')))  # creation.e:26
+        a = here.new(_M_point.POINT)  # creation.e:27
         a.make(5, 6)
-        self.print_(_KS.s8(here, 'create {T}: ').plus(_B.query(a, 'out', here)).plus(_KS.s8(here, ' ')).plus(_B.query(a, 'generator', here)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'inline: ').plus(_B.out_int(here, _S.create(here, _M_point.POINT, None, 'make', (7, 8)).x)).plus(_KS.s8(here, '\n')))
-        thing = here.new(_M_plain.PLAIN)
+        self.print_(_KS.s8(here, 'create {T}: ').plus(_B.query(a, 'out', here)).plus(_KS.s8(here, ' ')).plus(_B.query(a, 'generator', here)).plus(_KS.s8(here, '\n')))  # creation.e:28
+        self.print_(_KS.s8(here, 'inline: ').plus(_B.out_int(here, _S.create(here, _M_point.POINT, None, 'make', (7, 8)).x)).plus(_KS.s8(here, '\n')))  # creation.e:29
+        thing = here.new(_M_plain.PLAIN)  # creation.e:30
         thing.default_create()
-        thing.set_value(9)
-        self.print_(_KS.s8(here, 'no create clause: ').plus(_B.out_int(here, thing.value)).plus(_KS.s8(here, '\n')))
-        list = here.new(_L_arrayed_list.ARRAYED_LIST)
+        thing.set_value(9)  # creation.e:31
+        self.print_(_KS.s8(here, 'no create clause: ').plus(_B.out_int(here, thing.value)).plus(_KS.s8(here, '\n')))  # creation.e:32
+        list = here.new(_L_arrayed_list.ARRAYED_LIST)  # creation.e:33
         list._gen_ = (_T_1,)
         list.make(2)
-        list.extend(_KS.s8(here, 'generic'))
-        self.print_(_KS.s8(here, 'create {ARRAYED_LIST [STRING]}: ').plus(list.first).plus(_KS.s8(here, ' ')).plus(list.generator).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'each creation is new: ').plus(_B.out_bool(here, _S.create(here, _M_point.POINT, None, 'make', (1, 1)) is _S.create(here, _M_point.POINT, None, 'make', (1, 1)))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'attribute default: ').plus(self.point.out).plus(_KS.s8(here, '\n')))
+        list.extend(_KS.s8(here, 'generic'))  # creation.e:34
+        self.print_(_KS.s8(here, 'create {ARRAYED_LIST [STRING]}: ').plus(list.first).plus(_KS.s8(here, ' ')).plus(list.generator).plus(_KS.s8(here, '\n')))  # creation.e:35
+        self.print_(_KS.s8(here, 'each creation is new: ').plus(_B.out_bool(here, _S.create(here, _M_point.POINT, None, 'make', (1, 1)) is _S.create(here, _M_point.POINT, None, 'make', (1, 1)))).plus(_KS.s8(here, '\n')))  # creation.e:36
+        self.print_(_KS.s8(here, 'attribute default: ').plus(self.point.out).plus(_KS.s8(here, '\n')))  # creation.e:37
 
-    def point_init_(self):
+    def point_init_(self):  # creation.e:40
         here = self._region_
         Result = None
-        Result = here.new(_M_point.POINT)
+        Result = here.new(_M_point.POINT)  # creation.e:42
         Result.make(10, 20)
-        return Result
+        return Result  # creation.e:40
     point = _S.SelfInitialising(point_init_, 'point')
 _S.register('CREATION', CREATION)
 import eiffel_base.arrayed_list as _L_arrayed_list

@@ -10,6 +10,6 @@ class PLAIN(ANY):
     value = 0
 
     @_rt.leaf
-    def set_value(self, v):
-        self.value = v
+    def set_value(self, v):  # plain.e:8
+        self.value = v  # plain.e:10
 _S.register('PLAIN', PLAIN)

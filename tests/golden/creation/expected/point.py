@@ -9,29 +9,29 @@ class POINT(ANY):
     _conforms_ = frozenset(['ANY', 'POINT'])
 
     @_rt.leaf
-    def make(self, ax, ay):
-        self.x = ax
-        self.y = ay
-        self.creations = self.creations + 1
+    def make(self, ax, ay):  # point.e:18
+        self.x = ax  # point.e:20
+        self.y = ay  # point.e:21
+        self.creations = self.creations + 1  # point.e:22
         if self.creations > 2147483647:
             self.creations = _B.wrap_i32(self.creations)
 
     @_rt.leaf
-    def make_origin(self):
+    def make_origin(self):  # point.e:25
         pass
 
     @_rt.leaf
-    def default_create(self):
-        self.x = -1
-        self.y = -1
+    def default_create(self):  # point.e:29
+        self.x = -1  # point.e:31
+        self.y = -1  # point.e:32
     x = 0
     y = 0
     creations = 0
 
     @property
     @_rt.leaf
-    def out(self):
+    def out(self):  # point.e:41
         here = self._region_
-        Result = _KS.s8(here, '(').plus(_B.out_int(here, self.x)).plus(_KS.s8(here, ', ')).plus(_B.out_int(here, self.y)).plus(_KS.s8(here, ')'))
-        return Result
+        Result = _KS.s8(here, '(').plus(_B.out_int(here, self.x)).plus(_KS.s8(here, ', ')).plus(_B.out_int(here, self.y)).plus(_KS.s8(here, ')'))  # point.e:43
+        return Result  # point.e:41
 _S.register('POINT', POINT)

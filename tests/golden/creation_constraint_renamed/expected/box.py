@@ -8,9 +8,9 @@ class BOX(ANY):
     _key_ = 'BOX'
     _conforms_ = frozenset(['ANY', 'BOX'])
 
-    def fresh(self, n):
+    def fresh(self, n):  # box.e:6
         here = self._region_
         Result = _T.formal(self, 'BOX', 0).default(here)
-        Result = _S.create_formal(here, _T.formal(self, 'BOX', 0), 'make', (n,))
-        return Result
+        Result = _S.create_formal(here, _T.formal(self, 'BOX', 0), 'make', (n,))  # box.e:9
+        return Result  # box.e:6
 _S.register('BOX', BOX)

@@ -9,7 +9,7 @@ class CELL(ANY):
     _conforms_ = frozenset(['ANY', 'CELL'])
 
     @_rt.leaf
-    def make(self, n):
-        self.value = n
+    def make(self, n):  # cell.e:9
+        self.value = n  # cell.e:12
     value = 0
 _S.register('CELL', CELL)

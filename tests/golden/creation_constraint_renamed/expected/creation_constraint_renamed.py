@@ -9,12 +9,12 @@ class CREATION_CONSTRAINT_RENAMED(ANY):
     _key_ = 'CREATION_CONSTRAINT_RENAMED'
     _conforms_ = frozenset(['ANY', 'CREATION_CONSTRAINT_RENAMED'])
 
-    def make(self):
+    def make(self):  # creation_constraint_renamed.e:9
         here = self._region_
-        b_ = None
-        b_ = here.new(_M_box.BOX)
+        b_ = None  # creation_constraint_renamed.e:12
+        b_ = here.new(_M_box.BOX)  # creation_constraint_renamed.e:14
         b_._gen_ = (_T_1,)
         b_.default_create()
-        self.print_(_B.out_int(here, b_.fresh(7).value).plus(_KS.s8(here, '\n')))
+        self.print_(_B.out_int(here, b_.fresh(7).value).plus(_KS.s8(here, '\n')))  # creation_constraint_renamed.e:15
 _S.register('CREATION_CONSTRAINT_RENAMED', CREATION_CONSTRAINT_RENAMED)
 import creation_constraint_renamed.box as _M_box

@@ -10,25 +10,25 @@ class COUNTER_SENSOR(SENSOR):
 
     @property
     @_rt.leaf
-    def name(self):
+    def name(self):  # counter_sensor.e:9
         here = self._region_
-        Result = _KS.s8(here, 'counter')
-        return Result
+        Result = _KS.s8(here, 'counter')  # counter_sensor.e:11
+        return Result  # counter_sensor.e:9
 
     @property
     @_rt.leaf
-    def raw(self):
+    def raw(self):  # counter_sensor.e:14
         Result = 0
-        self.count = self.count + 1
+        self.count = self.count + 1  # counter_sensor.e:16
         if self.count > 2147483647:
             self.count = _B.wrap_i32(self.count)
-        Result = self.count
-        return Result
+        Result = self.count  # counter_sensor.e:17
+        return Result  # counter_sensor.e:14
     count = 0
 
     @property
     @_rt.leaf
-    def is_calibrated(self):
-        Result = self.count > 1
-        return Result
+    def is_calibrated(self):  # counter_sensor.e:22
+        Result = self.count > 1  # counter_sensor.e:24
+        return Result  # counter_sensor.e:22
 _S.register('COUNTER_SENSOR', COUNTER_SENSOR)

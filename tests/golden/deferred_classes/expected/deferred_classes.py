@@ -9,18 +9,18 @@ class DEFERRED_CLASSES(ANY):
     _key_ = 'DEFERRED_CLASSES'
     _conforms_ = frozenset(['ANY', 'DEFERRED_CLASSES'])
 
-    def make(self):
+    def make(self):  # deferred_classes.e:12
         here = self._region_
-        sensors = None
-        c = None
-        c = here.new(_M_counter_sensor.COUNTER_SENSOR)
+        sensors = None  # deferred_classes.e:14
+        c = None  # deferred_classes.e:15
+        c = here.new(_M_counter_sensor.COUNTER_SENSOR)  # deferred_classes.e:17
         c.default_create()
-        sensors = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_S.create(here, _M_thermometer.THERMOMETER, None, 'make', (21,)), c])
-        for s_ in _S.cursors(sensors):
-            self.print_(s_.item.reading.plus(_KS.s8(here, ' calibrated: ')).plus(_B.out_bool(here, s_.item.is_calibrated)).plus(_KS.s8(here, '\n')))
-        for s_ in _S.cursors(sensors):
-            self.print_(s_.item.reading.plus(_KS.s8(here, ' calibrated: ')).plus(_B.out_bool(here, s_.item.is_calibrated)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'count ').plus(_B.out_int(here, c.count)).plus(_KS.s8(here, '\n')))
+        sensors = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_S.create(here, _M_thermometer.THERMOMETER, None, 'make', (21,)), c])  # deferred_classes.e:18
+        for s_ in _S.cursors(sensors):  # deferred_classes.e:19
+            self.print_(s_.item.reading.plus(_KS.s8(here, ' calibrated: ')).plus(_B.out_bool(here, s_.item.is_calibrated)).plus(_KS.s8(here, '\n')))  # deferred_classes.e:20
+        for s_ in _S.cursors(sensors):  # deferred_classes.e:22
+            self.print_(s_.item.reading.plus(_KS.s8(here, ' calibrated: ')).plus(_B.out_bool(here, s_.item.is_calibrated)).plus(_KS.s8(here, '\n')))  # deferred_classes.e:23
+        self.print_(_KS.s8(here, 'count ').plus(_B.out_int(here, c.count)).plus(_KS.s8(here, '\n')))  # deferred_classes.e:25
 _S.register('DEFERRED_CLASSES', DEFERRED_CLASSES)
 import eiffel_base.array as _L_array
 import deferred_classes.counter_sensor as _M_counter_sensor

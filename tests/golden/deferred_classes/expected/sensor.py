@@ -11,14 +11,14 @@ class SENSOR(ANY):
 
     @property
     @_rt.leaf
-    def reading(self):
+    def reading(self):  # sensor.e:14
         here = self._region_
-        Result = self.name.plus(_KS.s8(here, ' reads ')).plus(_B.out_int(here, _B.i32(self.raw * self.scale)))
-        return Result
+        Result = self.name.plus(_KS.s8(here, ' reads ')).plus(_B.out_int(here, _B.i32(self.raw * self.scale)))  # sensor.e:17
+        return Result  # sensor.e:14
 
     @property
     @_rt.leaf
-    def scale(self):
-        Result = 1
-        return Result
+    def scale(self):  # sensor.e:20
+        Result = 1  # sensor.e:22
+        return Result  # sensor.e:20
 _S.register('SENSOR', SENSOR)

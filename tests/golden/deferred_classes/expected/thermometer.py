@@ -9,20 +9,20 @@ class THERMOMETER(SENSOR):
     _conforms_ = frozenset(['ANY', 'SENSOR', 'THERMOMETER'])
 
     @_rt.leaf
-    def make(self, t_):
-        self.raw = t_
-        self.is_calibrated = True
+    def make(self, t_):  # thermometer.e:15
+        self.raw = t_  # thermometer.e:17
+        self.is_calibrated = True  # thermometer.e:18
 
     @property
-    def name(self):
+    def name(self):  # thermometer.e:23
         here = self._region_
         return _KS.s8(here, 'thermometer')
     raw = 0
 
     @property
     @_rt.leaf
-    def scale(self):
-        Result = 10
-        return Result
+    def scale(self):  # thermometer.e:27
+        Result = 10  # thermometer.e:29
+        return Result  # thermometer.e:27
     is_calibrated = False
 _S.register('THERMOMETER', THERMOMETER)
