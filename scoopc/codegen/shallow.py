@@ -90,7 +90,7 @@ class Shallow:
             holder, field, child, conditional = deepest
             if conditional:
                 inner_scoped = scoped or not isinstance(node, (ast.BoolOp, ast.IfExp, ast.Compare))
-                if inner_scoped or _binds(child):
+                if inner_scoped or (heights[id(child)] <= LIMIT_CUT and _binds(child)):
                     _put(holder, field, self.region(child, inner_scoped))
                     return hoisted
                 if heights[id(child)] <= LIMIT_CUT:

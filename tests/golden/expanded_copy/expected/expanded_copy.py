@@ -10,57 +10,57 @@ class EXPANDED_COPY(ANY):
     _key_ = 'EXPANDED_COPY'
     _conforms_ = frozenset(['ANY', 'EXPANDED_COPY'])
 
-    def make(self):
+    def make(self):  # expanded_copy.e:18
         here = self._region_
-        a = _T_1.default(here)
+        a = _T_1.default(here)  # expanded_copy.e:20
         b_ = _T_1.default(here)
-        t_ = None
-        items = None
-        f = None
-        a.set(1)
-        self.print_(_KS.s8(here, 'source: ').plus(a.out).plus(_KS.s8(here, '\n')))
-        b_ = _S.copy_expanded(a)
-        a.set(2)
-        self.print_(_KS.s8(here, 'assignment: ').plus(b_.out).plus(_KS.s8(here, '\n')))
-        self.show(_S.copy_expanded(a))
-        self.print_(_KS.s8(here, 'after the call: ').plus(a.out).plus(_KS.s8(here, '\n')))
-        b_ = _S.copy_expanded(self.made(3))
-        self.print_(_KS.s8(here, 'result: ').plus(b_.out).plus(_KS.s8(here, '\n')))
-        t_ = _S.new_tuple(here, [_S.copy_expanded(a)], (_T_1,))
-        a.set(4)
-        self.print_(_KS.s8(here, 'tuple item: ').plus(t_._items[0].out).plus(_KS.s8(here, '\n')))
-        items = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_S.copy_expanded(a)])
-        a.set(5)
-        self.print_(_KS.s8(here, 'array item: ').plus(items.item(1).out).plus(_KS.s8(here, '\n')))
-        f = _S.new_agent(here, _L_function.FUNCTION, (_T_2, _T_1), _S.dispatcher('same_tally', False), [self, _S.copy_expanded(a)], ())
-        a.set(6)
-        self.print_(_KS.s8(here, 'agent operand: ').plus(f.item(_S.new_tuple(here, [], ())).out).plus(_KS.s8(here, '\n')))
-        b_ = _S.copy_expanded(a.twin)
-        a.set(7)
-        self.print_(_KS.s8(here, 'twin: ').plus(b_.out).plus(_KS.s8(here, '\n')))
-        b_.standard_copy(a)
-        self.print_(_KS.s8(here, 'standard_copy: ').plus(b_.out).plus(_KS.s8(here, '\n')))
-        b_.set(8)
-        b_.copy(a)
-        self.print_(_KS.s8(here, 'copy: ').plus(b_.out).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'standard_is_equal: ').plus(_B.out_bool(here, b_.standard_is_equal(a))).plus(_KS.s8(here, ', is_equal: ')).plus(_B.out_bool(here, b_.is_equal(a))).plus(_KS.s8(here, ', =: ')).plus(_B.out_bool(here, _B.equal(b_, a))).plus(_KS.s8(here, '\n')))
-        b_.standard_copy(a)
-        self.print_(_KS.s8(here, 'after standard_copy, standard_is_equal: ').plus(_B.out_bool(here, b_.standard_is_equal(a))).plus(_KS.s8(here, '\n')))
+        t_ = None  # expanded_copy.e:21
+        items = None  # expanded_copy.e:22
+        f = None  # expanded_copy.e:23
+        a.set(1)  # expanded_copy.e:25
+        self.print_(_KS.s8(here, 'source: ').plus(a.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:26
+        b_ = _S.copy_expanded(a)  # expanded_copy.e:27
+        a.set(2)  # expanded_copy.e:28
+        self.print_(_KS.s8(here, 'assignment: ').plus(b_.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:29
+        self.show(_S.copy_expanded(a))  # expanded_copy.e:30
+        self.print_(_KS.s8(here, 'after the call: ').plus(a.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:31
+        b_ = _S.copy_expanded(self.made(3))  # expanded_copy.e:32
+        self.print_(_KS.s8(here, 'result: ').plus(b_.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:33
+        t_ = _S.new_tuple(here, [_S.copy_expanded(a)], (_T_1,))  # expanded_copy.e:34
+        a.set(4)  # expanded_copy.e:35
+        self.print_(_KS.s8(here, 'tuple item: ').plus(t_._items[0].out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:36
+        items = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_S.copy_expanded(a)])  # expanded_copy.e:37
+        a.set(5)  # expanded_copy.e:38
+        self.print_(_KS.s8(here, 'array item: ').plus(items.item(1).out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:39
+        f = _S.new_agent(here, _L_function.FUNCTION, (_T_2, _T_1), _S.dispatcher('same_tally', False), [self, _S.copy_expanded(a)], ())  # expanded_copy.e:40
+        a.set(6)  # expanded_copy.e:41
+        self.print_(_KS.s8(here, 'agent operand: ').plus(f.item(_S.new_tuple(here, [], ())).out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:42
+        b_ = _S.copy_expanded(a.twin)  # expanded_copy.e:43
+        a.set(7)  # expanded_copy.e:44
+        self.print_(_KS.s8(here, 'twin: ').plus(b_.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:45
+        b_.standard_copy(a)  # expanded_copy.e:46
+        self.print_(_KS.s8(here, 'standard_copy: ').plus(b_.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:47
+        b_.set(8)  # expanded_copy.e:48
+        b_.copy(a)  # expanded_copy.e:49
+        self.print_(_KS.s8(here, 'copy: ').plus(b_.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:50
+        self.print_(_KS.s8(here, 'standard_is_equal: ').plus(_B.out_bool(here, b_.standard_is_equal(a))).plus(_KS.s8(here, ', is_equal: ')).plus(_B.out_bool(here, b_.is_equal(a))).plus(_KS.s8(here, ', =: ')).plus(_B.out_bool(here, _B.equal(b_, a))).plus(_KS.s8(here, '\n')))  # expanded_copy.e:51
+        b_.standard_copy(a)  # expanded_copy.e:52
+        self.print_(_KS.s8(here, 'after standard_copy, standard_is_equal: ').plus(_B.out_bool(here, b_.standard_is_equal(a))).plus(_KS.s8(here, '\n')))  # expanded_copy.e:53
 
-    def show(self, x):
+    def show(self, x):  # expanded_copy.e:58
         here = self._region_
-        self.print_(_KS.s8(here, 'argument: ').plus(x.out).plus(_KS.s8(here, '\n')))
-        x.set(100)
+        self.print_(_KS.s8(here, 'argument: ').plus(x.out).plus(_KS.s8(here, '\n')))  # expanded_copy.e:60
+        x.set(100)  # expanded_copy.e:61
 
-    def made(self, v):
+    def made(self, v):  # expanded_copy.e:64
         here = self._region_
         Result = _T_1.default(here)
-        Result.set(v)
-        return Result
+        Result.set(v)  # expanded_copy.e:66
+        return Result  # expanded_copy.e:64
 
-    def same_tally(self, x):
-        Result = _S.copy_expanded(x)
-        return Result
+    def same_tally(self, x):  # expanded_copy.e:69
+        Result = _S.copy_expanded(x)  # expanded_copy.e:71
+        return Result  # expanded_copy.e:69
 _S.register('EXPANDED_COPY', EXPANDED_COPY)
 import eiffel_base.array as _L_array
 import eiffel_base.function as _L_function

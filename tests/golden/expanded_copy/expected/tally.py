@@ -12,23 +12,23 @@ class TALLY(ANY):
     copied = False
 
     @property
-    def out(self):
+    def out(self):  # tally.e:20
         here = self._region_
-        Result = _B.out_int(here, self.value)
-        if self.copied:
-            Result.append__string_8(_KS.s8(here, ' (copied)'))
+        Result = _B.out_int(here, self.value)  # tally.e:22
+        if self.copied:  # tally.e:23
+            Result.append__string_8(_KS.s8(here, ' (copied)'))  # tally.e:24
         else:
-            Result.append__string_8(_KS.s8(here, ' (original)'))
-        return Result
+            Result.append__string_8(_KS.s8(here, ' (original)'))  # tally.e:26
+        return Result  # tally.e:20
 
-    def set(self, v):
-        self.value = v
+    def set(self, v):  # tally.e:32
+        self.value = v  # tally.e:34
 
-    def copy(self, other):
-        self.value = other.value
-        self.copied = True
+    def copy(self, other):  # tally.e:37
+        self.value = other.value  # tally.e:39
+        self.copied = True  # tally.e:40
 
-    def is_equal(self, other):
-        Result = self.value == other.value
-        return Result
+    def is_equal(self, other):  # tally.e:43
+        Result = self.value == other.value  # tally.e:45
+        return Result  # tally.e:43
 _S.register('TALLY', TALLY)

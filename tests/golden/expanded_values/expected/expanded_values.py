@@ -9,42 +9,42 @@ class EXPANDED_VALUES(ANY):
     _key_ = 'EXPANDED_VALUES'
     _conforms_ = frozenset(['ANY', 'EXPANDED_VALUES'])
 
-    def make(self):
+    def make(self):  # expanded_values.e:12
         here = self._region_
-        a = _T_1.default(here)
+        a = _T_1.default(here)  # expanded_values.e:14
         b_ = _T_1.default(here)
-        p = None
-        list = None
-        i = 0
+        p = None  # expanded_values.e:15
+        list = None  # expanded_values.e:16
+        i = 0  # expanded_values.e:17
         j = 0
-        self.print_(_KS.s8(here, 'default: ').plus(a.out).plus(_KS.s8(here, '\n')))
-        a.set(1, 2)
-        b_ = _S.copy_expanded(a)
-        b_.set(10, 20)
-        self.print_(_KS.s8(here, 'assignment copies: ').plus(a.out).plus(_KS.s8(here, ' ')).plus(b_.out).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'equality: ').plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, a))))
-        b_.set(1, 2)
-        self.print_(_KS.s8(here, ' ').plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, '\n')))
-        p = here.new(_M_particle.PARTICLE)
+        self.print_(_KS.s8(here, 'default: ').plus(a.out).plus(_KS.s8(here, '\n')))  # expanded_values.e:19
+        a.set(1, 2)  # expanded_values.e:20
+        b_ = _S.copy_expanded(a)  # expanded_values.e:21
+        b_.set(10, 20)  # expanded_values.e:22
+        self.print_(_KS.s8(here, 'assignment copies: ').plus(a.out).plus(_KS.s8(here, ' ')).plus(b_.out).plus(_KS.s8(here, '\n')))  # expanded_values.e:23
+        self.print_(_KS.s8(here, 'equality: ').plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, a))))  # expanded_values.e:24
+        b_.set(1, 2)  # expanded_values.e:25
+        self.print_(_KS.s8(here, ' ').plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(a, b_))).plus(_KS.s8(here, '\n')))  # expanded_values.e:26
+        p = here.new(_M_particle.PARTICLE)  # expanded_values.e:27
         p.default_create()
-        p.move(_S.copy_expanded(a))
-        p.move(_S.copy_expanded(a))
-        self.print_(_KS.s8(here, 'argument copies: ').plus(p.position.out).plus(_KS.s8(here, ' ')).plus(a.out).plus(_KS.s8(here, '\n')))
-        list = here.new(_L_arrayed_list.ARRAYED_LIST)
+        p.move(_S.copy_expanded(a))  # expanded_values.e:28
+        p.move(_S.copy_expanded(a))  # expanded_values.e:29
+        self.print_(_KS.s8(here, 'argument copies: ').plus(p.position.out).plus(_KS.s8(here, ' ')).plus(a.out).plus(_KS.s8(here, '\n')))  # expanded_values.e:30
+        list = here.new(_L_arrayed_list.ARRAYED_LIST)  # expanded_values.e:31
         list._gen_ = (_T_1,)
         list.make(2)
-        list.extend(_S.copy_expanded(a))
-        a.scale(5)
-        self.print_(_KS.s8(here, 'container copies: ').plus(list.first.out).plus(_KS.s8(here, ' ')).plus(a.out).plus(_KS.s8(here, '\n')))
-        b_ = _S.copy_expanded(list.first)
-        b_.scale(3)
-        self.print_(_KS.s8(here, 'retrieval copies: ').plus(list.first.out).plus(_KS.s8(here, ' ')).plus(b_.out).plus(_KS.s8(here, '\n')))
-        i = 5
-        j = i
-        j = j + 1
+        list.extend(_S.copy_expanded(a))  # expanded_values.e:32
+        a.scale(5)  # expanded_values.e:33
+        self.print_(_KS.s8(here, 'container copies: ').plus(list.first.out).plus(_KS.s8(here, ' ')).plus(a.out).plus(_KS.s8(here, '\n')))  # expanded_values.e:34
+        b_ = _S.copy_expanded(list.first)  # expanded_values.e:35
+        b_.scale(3)  # expanded_values.e:36
+        self.print_(_KS.s8(here, 'retrieval copies: ').plus(list.first.out).plus(_KS.s8(here, ' ')).plus(b_.out).plus(_KS.s8(here, '\n')))  # expanded_values.e:37
+        i = 5  # expanded_values.e:38
+        j = i  # expanded_values.e:39
+        j = j + 1  # expanded_values.e:40
         if j > 2147483647:
             j = _B.wrap_i32(j)
-        self.print_(_KS.s8(here, 'integers: ').plus(_B.out_int(here, i)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, j)).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'integers: ').plus(_B.out_int(here, i)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, j)).plus(_KS.s8(here, '\n')))  # expanded_values.e:41
 _S.register('EXPANDED_VALUES', EXPANDED_VALUES)
 import eiffel_base.arrayed_list as _L_arrayed_list
 import expanded_values.particle as _M_particle

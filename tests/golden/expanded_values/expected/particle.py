@@ -10,7 +10,7 @@ class PARTICLE(ANY):
     _conforms_ = frozenset(['ANY', 'PARTICLE'])
     position = _S.ExpandedDefault(_T_1, 'position')
 
-    def move(self, v):
-        self.position.set(_B.i32(self.position.x + v.x), _B.i32(self.position.y + v.y))
-        v.scale(100)
+    def move(self, v):  # particle.e:8
+        self.position.set(_B.i32(self.position.x + v.x), _B.i32(self.position.y + v.y))  # particle.e:10
+        v.scale(100)  # particle.e:11
 _S.register('PARTICLE', PARTICLE)

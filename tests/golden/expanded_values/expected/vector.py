@@ -12,20 +12,20 @@ class VECTOR(ANY):
     y = 0
 
     @property
-    def out(self):
+    def out(self):  # vector.e:14
         here = self._region_
-        Result = _KS.s8(here, '<').plus(_B.out_int(here, self.x)).plus(_KS.s8(here, ',')).plus(_B.out_int(here, self.y)).plus(_KS.s8(here, '>'))
-        return Result
+        Result = _KS.s8(here, '<').plus(_B.out_int(here, self.x)).plus(_KS.s8(here, ',')).plus(_B.out_int(here, self.y)).plus(_KS.s8(here, '>'))  # vector.e:16
+        return Result  # vector.e:14
 
-    def set(self, ax, ay):
-        self.x = ax
-        self.y = ay
+    def set(self, ax, ay):  # vector.e:21
+        self.x = ax  # vector.e:23
+        self.y = ay  # vector.e:24
 
-    def scale(self, f):
-        self.x = self.x * f
+    def scale(self, f):  # vector.e:27
+        self.x = self.x * f  # vector.e:29
         if not -2147483648 <= self.x <= 2147483647:
             self.x = _B.wrap_i32(self.x)
-        self.y = self.y * f
+        self.y = self.y * f  # vector.e:30
         if not -2147483648 <= self.y <= 2147483647:
             self.y = _B.wrap_i32(self.y)
 _S.register('VECTOR', VECTOR)

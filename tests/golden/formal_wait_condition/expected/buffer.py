@@ -10,8 +10,8 @@ class BUFFER(ANY):
     count = 0
 
     @_rt.leaf
-    def put(self):
-        self.count = self.count + 1
+    def put(self):  # buffer.e:11
+        self.count = self.count + 1  # buffer.e:14
         if self.count > 2147483647:
             self.count = _B.wrap_i32(self.count)
 _S.register('BUFFER', BUFFER)

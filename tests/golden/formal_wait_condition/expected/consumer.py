@@ -12,8 +12,8 @@ class CONSUMER(ANY):
     _key_ = 'CONSUMER'
     _conforms_ = frozenset(['ANY', 'CONSUMER'])
 
-    def take(self, a_buffer):
+    def take(self, a_buffer):  # consumer.e:6
         here = self._region_
         with here.reserve1(a_buffer, _W_2, _PRE_4, (here, self, a_buffer)):
-            self.print_(_KS.s8(here, 'took one of ').plus(_B.out_int(here, _S.squery(here, a_buffer, 'count', (), False, _W_1))).plus(_KS.s8(here, '\n')))
+            self.print_(_KS.s8(here, 'took one of ').plus(_B.out_int(here, _S.squery(here, a_buffer, 'count', (), False, _W_1))).plus(_KS.s8(here, '\n')))  # consumer.e:11
 _S.register('CONSUMER', CONSUMER)

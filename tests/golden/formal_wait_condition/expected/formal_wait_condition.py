@@ -10,22 +10,22 @@ class FORMAL_WAIT_CONDITION(ANY):
     _key_ = 'FORMAL_WAIT_CONDITION'
     _conforms_ = frozenset(['ANY', 'FORMAL_WAIT_CONDITION'])
 
-    def make(self):
+    def make(self):  # formal_wait_condition.e:9
         here = self._region_
-        b_ = None
-        c = None
-        p = None
-        b_ = here.new_separate(_M_buffer.BUFFER, _M_buffer.BUFFER.default_create, ())
-        c = here.new(_M_consumer.CONSUMER)
+        b_ = None  # formal_wait_condition.e:13
+        c = None  # formal_wait_condition.e:14
+        p = None  # formal_wait_condition.e:15
+        b_ = here.new_separate(_M_buffer.BUFFER, _M_buffer.BUFFER.default_create, ())  # formal_wait_condition.e:17
+        c = here.new(_M_consumer.CONSUMER)  # formal_wait_condition.e:18
         c._gen_ = (_T_1,)
         c.default_create()
-        p = here.new_separate(_M_producer.PRODUCER, _M_producer.PRODUCER.make, (b_,))
-        self.start(p)
-        c.take(b_)
+        p = here.new_separate(_M_producer.PRODUCER, _M_producer.PRODUCER.make, (b_,))  # formal_wait_condition.e:19
+        self.start(p)  # formal_wait_condition.e:20
+        c.take(b_)  # formal_wait_condition.e:21
 
-    def start(self, a_producer):
+    def start(self, a_producer):  # formal_wait_condition.e:24
         here = self._region_
-        here.command1(a_producer, _M_producer.PRODUCER.fill_later, (), _W_2)
+        here.command1(a_producer, _M_producer.PRODUCER.fill_later, (), _W_2)  # formal_wait_condition.e:27
 _S.register('FORMAL_WAIT_CONDITION', FORMAL_WAIT_CONDITION)
 import formal_wait_condition.buffer as _M_buffer
 import formal_wait_condition.consumer as _M_consumer

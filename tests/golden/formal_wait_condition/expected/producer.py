@@ -11,17 +11,17 @@ class PRODUCER(ANY):
     _conforms_ = frozenset(['ANY', 'PRODUCER'])
 
     @_rt.leaf
-    def make(self, a_buffer):
-        self.buffer = a_buffer
+    def make(self, a_buffer):  # producer.e:9
+        self.buffer = a_buffer  # producer.e:12
 
-    def fill_later(self):
+    def fill_later(self):  # producer.e:17
         here = self._region_
-        _S.create(here, _L_execution_environment.EXECUTION_ENVIRONMENT, None, 'default_create', ()).sleep(100000000)
-        self.put_into(self.buffer)
+        _S.create(here, _L_execution_environment.EXECUTION_ENVIRONMENT, None, 'default_create', ()).sleep(100000000)  # producer.e:20
+        self.put_into(self.buffer)  # producer.e:21
 
-    def put_into(self, a_buffer):
+    def put_into(self, a_buffer):  # producer.e:24
         here = self._region_
-        here.command1(a_buffer, _M_buffer.BUFFER.put, (), _W_2)
+        here.command1(a_buffer, _M_buffer.BUFFER.put, (), _W_2)  # producer.e:27
     buffer = None
 _S.register('PRODUCER', PRODUCER)
 import formal_wait_condition.buffer as _M_buffer

@@ -10,42 +10,42 @@ class BOX(ANY):
     _conforms_ = frozenset(['ANY', 'BOX'])
 
     @_rt.leaf
-    def make(self, v):
-        self.item = v
-        self.has_item = True
+    def make(self, v):  # box.e:10
+        self.item = v  # box.e:12
+        self.has_item = True  # box.e:13
 
     @_rt.leaf
-    def make_empty(self):
+    def make_empty(self):  # box.e:16
         pass
     item = _S.FormalDefault('BOX', 0, 'item')
     has_item = False
 
     @property
-    def image(self):
+    def image(self):  # box.e:27
         here = self._region_
         Result = None
-        if (i := self.item) is not None:
-            Result = _S.formal_query(i, 'out', here, _T.formal(self, 'BOX', 0)).plus(_KS.s8(here, ' ')).plus(_S.formal_query(i, 'generator', here, _T.formal(self, 'BOX', 0)))
+        if (i := self.item) is not None:  # box.e:30
+            Result = _S.formal_query(i, 'out', here, _T.formal(self, 'BOX', 0)).plus(_KS.s8(here, ' ')).plus(_S.formal_query(i, 'generator', here, _T.formal(self, 'BOX', 0)))  # box.e:31
         else:
-            Result = _KS.s8(here, 'Void')
-        return Result
+            Result = _KS.s8(here, 'Void')  # box.e:33
+        return Result  # box.e:27
 
-    def mapped(self, f):
+    def mapped(self, f):  # box.e:37
         here = self._region_
         Result = None
-        if not (i := self.item) is not None:
+        if not (i := self.item) is not None:  # box.e:39
             _S.assertion_failed('check', None, _W_1)
-        Result = here.new(BOX)
+        Result = here.new(BOX)  # box.e:40
         Result._gen_ = (_T.formal(self, 'BOX', 0),)
         Result.make(f.item(_S.new_tuple(here, [i], ())))
-        return Result
+        return Result  # box.e:37
 
-    def replaced(self, v):
-        Result = self.twin
-        Result.set(v)
-        return Result
+    def replaced(self, v):  # box.e:44
+        Result = self.twin  # box.e:46
+        Result.set(v)  # box.e:47
+        return Result  # box.e:44
 
     @_rt.leaf
-    def set(self, v):
-        self.item = v
+    def set(self, v):  # box.e:52
+        self.item = v  # box.e:54
 _S.register('BOX', BOX)

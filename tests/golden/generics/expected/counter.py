@@ -9,11 +9,11 @@ class COUNTER(ANY):
     _conforms_ = frozenset(['ANY', 'COUNTER'])
 
     @_rt.leaf
-    def default_create(self):
-        self.value = 100
+    def default_create(self):  # counter.e:16
+        self.value = 100  # counter.e:18
 
     @_rt.leaf
-    def make_at(self, v):
-        self.value = v
+    def make_at(self, v):  # counter.e:21
+        self.value = v  # counter.e:23
     value = 0
 _S.register('COUNTER', COUNTER)

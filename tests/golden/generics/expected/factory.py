@@ -9,15 +9,15 @@ class FACTORY(ANY):
     _conforms_ = frozenset(['ANY', 'FACTORY'])
 
     @property
-    def new_default(self):
+    def new_default(self):  # factory.e:6
         here = self._region_
         Result = _T.formal(self, 'FACTORY', 0).default(here)
-        Result = _S.create_formal(here, _T.formal(self, 'FACTORY', 0), 'default_create', ())
-        return Result
+        Result = _S.create_formal(here, _T.formal(self, 'FACTORY', 0), 'default_create', ())  # factory.e:8
+        return Result  # factory.e:6
 
-    def new_at(self, v):
+    def new_at(self, v):  # factory.e:11
         here = self._region_
         Result = _T.formal(self, 'FACTORY', 0).default(here)
-        Result = _S.create_formal(here, _T.formal(self, 'FACTORY', 0), 'make_at', (v,))
-        return Result
+        Result = _S.create_formal(here, _T.formal(self, 'FACTORY', 0), 'make_at', (v,))  # factory.e:13
+        return Result  # factory.e:11
 _S.register('FACTORY', FACTORY)

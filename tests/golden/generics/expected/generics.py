@@ -14,53 +14,53 @@ class GENERICS(ANY):
     _key_ = 'GENERICS'
     _conforms_ = frozenset(['ANY', 'GENERICS'])
 
-    def make(self):
+    def make(self):  # generics.e:12
         here = self._region_
-        ib = None
-        sb = None
-        lb = None
-        p = None
-        q = None
-        f = None
-        rb = None
-        real_box = None
-        ib = here.new(_M_box.BOX)
+        ib = None  # generics.e:14
+        sb = None  # generics.e:15
+        lb = None  # generics.e:16
+        p = None  # generics.e:17
+        q = None  # generics.e:18
+        f = None  # generics.e:19
+        rb = None  # generics.e:20
+        real_box = None  # generics.e:21
+        ib = here.new(_M_box.BOX)  # generics.e:23
         ib._gen_ = (_T_1,)
         ib.make_empty()
-        sb = here.new(_M_box.BOX)
+        sb = here.new(_M_box.BOX)  # generics.e:24
         sb._gen_ = (_T_2,)
         sb.make_empty()
-        self.print_(_KS.s8(here, 'defaults: ').plus(_B.out_int(here, ib.item)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, sb.item is None)).plus(_KS.s8(here, '\n')))
-        ib = here.new(_M_box.BOX)
+        self.print_(_KS.s8(here, 'defaults: ').plus(_B.out_int(here, ib.item)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, sb.item is None)).plus(_KS.s8(here, '\n')))  # generics.e:25
+        ib = here.new(_M_box.BOX)  # generics.e:26
         ib._gen_ = (_T_1,)
         ib.make(21)
-        self.print_(_KS.s8(here, 'mapped: ').plus(_B.out_int(here, ib.mapped(_S.new_agent(here, _L_function.FUNCTION, (_T_4, _T_1), _agent_3, [self, None], (1,))).item)).plus(_KS.s8(here, '\n')))
-        lb = here.new(_M_labeled_box.LABELED_BOX)
+        self.print_(_KS.s8(here, 'mapped: ').plus(_B.out_int(here, ib.mapped(_S.new_agent(here, _L_function.FUNCTION, (_T_4, _T_1), _agent_3, [self, None], (1,))).item)).plus(_KS.s8(here, '\n')))  # generics.e:27
+        lb = here.new(_M_labeled_box.LABELED_BOX)  # generics.e:28
         lb._gen_ = (_T_1,)
         lb.make_labeled(7, _KS.s8(here, 'seven'))
-        rb = lb.replaced(8)
-        self.print_(_KS.s8(here, 'like Current: ').plus(rb.generator).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, rb.item)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, lb.item)).plus(_KS.s8(here, '\n')))
-        if (l := rb) is not None and _T_5.accepts(l):
-            self.print_(_KS.s8(here, 'label kept: ').plus(l.label).plus(_KS.s8(here, '\n')))
-        p = here.new(_M_ordered_pair.ORDERED_PAIR)
+        rb = lb.replaced(8)  # generics.e:29
+        self.print_(_KS.s8(here, 'like Current: ').plus(rb.generator).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, rb.item)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, lb.item)).plus(_KS.s8(here, '\n')))  # generics.e:30
+        if (l := rb) is not None and _T_5.accepts(l):  # generics.e:31
+            self.print_(_KS.s8(here, 'label kept: ').plus(l.label).plus(_KS.s8(here, '\n')))  # generics.e:32
+        p = here.new(_M_ordered_pair.ORDERED_PAIR)  # generics.e:34
         p._gen_ = (_T_1,)
         p.make(9, 3)
-        self.print_(_KS.s8(here, 'pair: ').plus(_B.out_int(here, p.low)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, p.high)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, p.contains(5))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, p.contains(10))).plus(_KS.s8(here, '\n')))
-        q = here.new(_M_ordered_pair.ORDERED_PAIR)
+        self.print_(_KS.s8(here, 'pair: ').plus(_B.out_int(here, p.low)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, p.high)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, p.contains(5))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, p.contains(10))).plus(_KS.s8(here, '\n')))  # generics.e:35
+        q = here.new(_M_ordered_pair.ORDERED_PAIR)  # generics.e:36
         q._gen_ = (_T_2,)
         q.make(_KS.s8(here, 'pear'), _KS.s8(here, 'apple'))
-        self.print_(_KS.s8(here, 'strings: ').plus(q.low).plus(_KS.s8(here, ' ')).plus(q.high).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, q.contains(_KS.s8(here, 'banana')))).plus(_KS.s8(here, '\n')))
-        f = here.new(_M_factory.FACTORY)
+        self.print_(_KS.s8(here, 'strings: ').plus(q.low).plus(_KS.s8(here, ' ')).plus(q.high).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, q.contains(_KS.s8(here, 'banana')))).plus(_KS.s8(here, '\n')))  # generics.e:37
+        f = here.new(_M_factory.FACTORY)  # generics.e:38
         f._gen_ = (_T_6,)
         f.default_create()
-        self.print_(_KS.s8(here, 'created on formal: ').plus(_B.out_int(here, f.new_default.value)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, f.new_at(5).value)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'generating types: ').plus(ib.generating_type.name).plus(_KS.s8(here, '\n')))
-        real_box = here.new(_M_box.BOX)
+        self.print_(_KS.s8(here, 'created on formal: ').plus(_B.out_int(here, f.new_default.value)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, f.new_at(5).value)).plus(_KS.s8(here, '\n')))  # generics.e:39
+        self.print_(_KS.s8(here, 'generating types: ').plus(ib.generating_type.name).plus(_KS.s8(here, '\n')))  # generics.e:40
+        real_box = here.new(_M_box.BOX)  # generics.e:41
         real_box._gen_ = (_T_7,)
         real_box.make(0.10000000149011612)
-        self.print_(_KS.s8(here, 'images: ').plus(real_box.image).plus(_KS.s8(here, ', ')).plus(ib.image).plus(_KS.s8(here, ', ')).plus(sb.image).plus(_KS.s8(here, ', ')).plus(q.low).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'images: ').plus(real_box.image).plus(_KS.s8(here, ', ')).plus(ib.image).plus(_KS.s8(here, ', ')).plus(sb.image).plus(_KS.s8(here, ', ')).plus(q.low).plus(_KS.s8(here, '\n')))  # generics.e:42
 
-def _agent_3(self, x):
+def _agent_3(self, x):  # generics.e:27
     Result = x * 2
     if not -2147483648 <= Result <= 2147483647:
         Result = _B.wrap_i32(Result)

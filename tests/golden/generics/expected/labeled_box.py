@@ -10,14 +10,14 @@ class LABELED_BOX(BOX):
     _ancestor_gen_ = {'BOX': lambda g: (g[0],)}
 
     @_rt.leaf
-    def make_labeled(self, v, l):
-        self.make(v)
-        self.label = l
+    def make_labeled(self, v, l):  # labeled_box.e:12
+        self.make(v)  # labeled_box.e:14
+        self.label = l  # labeled_box.e:15
 
-    def label_init_(self):
+    def label_init_(self):  # labeled_box.e:20
         here = self._region_
         Result = None
-        Result = _KS.s8(here, '')
-        return Result
+        Result = _KS.s8(here, '')  # labeled_box.e:22
+        return Result  # labeled_box.e:20
     label = _S.SelfInitialising(label_init_, 'label')
 _S.register('LABELED_BOX', LABELED_BOX)

@@ -8,19 +8,19 @@ class ORDERED_PAIR(ANY):
     _key_ = 'ORDERED_PAIR'
     _conforms_ = frozenset(['ANY', 'ORDERED_PAIR'])
 
-    def make(self, a, b_):
+    def make(self, a, b_):  # ordered_pair.e:9
         here = self._region_
-        if _B.call(a, 'is_less_equal', (b_,), here):
-            self.low = a
-            self.high = b_
+        if _B.call(a, 'is_less_equal', (b_,), here):  # ordered_pair.e:11
+            self.low = a  # ordered_pair.e:12
+            self.high = b_  # ordered_pair.e:13
         else:
-            self.low = b_
-            self.high = a
+            self.low = b_  # ordered_pair.e:15
+            self.high = a  # ordered_pair.e:16
     low = _S.FormalDefault('ORDERED_PAIR', 0, 'low')
     high = _S.FormalDefault('ORDERED_PAIR', 0, 'high')
 
-    def contains(self, v):
+    def contains(self, v):  # ordered_pair.e:24
         here = self._region_
-        Result = _B.call(self.low, 'is_less_equal', (v,), here) and _B.call(v, 'is_less_equal', (self.high,), here)
-        return Result
+        Result = _B.call(self.low, 'is_less_equal', (v,), here) and _B.call(v, 'is_less_equal', (self.high,), here)  # ordered_pair.e:26
+        return Result  # ordered_pair.e:24
 _S.register('ORDERED_PAIR', ORDERED_PAIR)

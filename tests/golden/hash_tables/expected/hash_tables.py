@@ -10,78 +10,78 @@ class HASH_TABLES(ANY):
     _key_ = 'HASH_TABLES'
     _conforms_ = frozenset(['ANY', 'HASH_TABLES'])
 
-    def make(self):
+    def make(self):  # hash_tables.e:12
         here = self._region_
-        t_ = None
-        n = None
-        keys = None
-        t_ = here.new(_L_hash_table.HASH_TABLE)
+        t_ = None  # hash_tables.e:14
+        n = None  # hash_tables.e:15
+        keys = None  # hash_tables.e:16
+        t_ = here.new(_L_hash_table.HASH_TABLE)  # hash_tables.e:18
         t_._gen_ = (_T_1, _T_2)
         t_.make(3)
-        t_.put(1, _KS.s8(here, 'one'))
-        t_.put(2, _KS.s8(here, 'two'))
-        t_.put(3, _KS.s8(here, 'three'))
-        self.show(_KS.s8(here, 'count'), _B.out_int(here, t_.count).plus(_KS.s8(here, ' inserted ')).plus(_B.out_bool(here, t_.inserted)))
-        t_.put(33, _KS.s8(here, 'three'))
-        self.show(_KS.s8(here, 'put existing'), _B.out_bool(here, t_.inserted).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.conflict)).plus(_KS.s8(here, ' found_item ')).plus(_B.out_int(here, t_.found_item)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, t_.item(_KS.s8(here, 'three')))))
-        t_.force(30, _KS.s8(here, 'three'))
-        self.show(_KS.s8(here, 'force existing'), _B.out_int(here, t_.item(_KS.s8(here, 'three'))).plus(_KS.s8(here, ' found ')).plus(_B.out_bool(here, t_.found)).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, t_.count)))
-        self.show(_KS.s8(here, 'item, absent'), _B.out_int(here, t_.item(_KS.s8(here, 'two'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.item(_KS.s8(here, 'zero')))))
-        self.show(_KS.s8(here, 'has'), _B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'one'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'four')))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.has(30))))
-        self.print_table(t_)
-        t_.remove(_KS.s8(here, 'two'))
-        self.show(_KS.s8(here, 'remove'), _B.out_bool(here, t_.removed).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, t_.count)).plus(_KS.s8(here, ' has ')).plus(_B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'two')))))
-        t_.remove(_KS.s8(here, 'two'))
-        self.show(_KS.s8(here, 'remove again'), _B.out_bool(here, t_.removed).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.not_found)))
-        t_.put(4, _KS.s8(here, 'four'))
-        self.print_table(t_)
-        t_.put(5, _KS.s8(here, 'five'))
-        t_.force(6, _KS.s8(here, 'six'))
-        t_.extend(7, _KS.s8(here, 'seven'))
-        self.print_table(t_)
-        t_.search(_KS.s8(here, 'five'))
-        self.show(_KS.s8(here, 'search five'), _B.out_bool(here, t_.found).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.found_item)))
-        t_.search(_KS.s8(here, 'nine'))
-        self.show(_KS.s8(here, 'search nine'), _B.out_bool(here, t_.found).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.found_item)))
-        t_.force(100, _KS.s8(here, 'one'))
-        self.show(_KS.s8(here, 'assigner'), _B.out_int(here, t_.item(_KS.s8(here, 'one'))))
-        t_.replace(300, _KS.s8(here, 'three'))
-        t_.replace_key(_KS.s8(here, 'drei'), _KS.s8(here, 'three'))
-        self.show(_KS.s8(here, 'replace_key'), _B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'three'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.item(_KS.s8(here, 'drei')))))
-        self.print_table(t_)
-        keys = t_.current_keys
-        self.show(_KS.s8(here, 'current_keys'), _B.out_int(here, keys.count).plus(_KS.s8(here, ' first ')).plus(keys.item(1)).plus(_KS.s8(here, ' last ')).plus(keys.item(keys.count)))
-        t_.start()
-        while not t_.after:
-            self.print_(t_.key_for_iteration.plus(_KS.s8(here, ':')).plus(_B.out_int(here, t_.item_for_iteration)).plus(_KS.s8(here, ' ')))
-            t_.forth()
-        self.print_(_KS.s8(here, '\n'))
-        n = here.new(_L_hash_table.HASH_TABLE)
+        t_.put(1, _KS.s8(here, 'one'))  # hash_tables.e:19
+        t_.put(2, _KS.s8(here, 'two'))  # hash_tables.e:20
+        t_.put(3, _KS.s8(here, 'three'))  # hash_tables.e:21
+        self.show(_KS.s8(here, 'count'), _B.out_int(here, t_.count).plus(_KS.s8(here, ' inserted ')).plus(_B.out_bool(here, t_.inserted)))  # hash_tables.e:22
+        t_.put(33, _KS.s8(here, 'three'))  # hash_tables.e:23
+        self.show(_KS.s8(here, 'put existing'), _B.out_bool(here, t_.inserted).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.conflict)).plus(_KS.s8(here, ' found_item ')).plus(_B.out_int(here, t_.found_item)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, t_.item(_KS.s8(here, 'three')))))  # hash_tables.e:24
+        t_.force(30, _KS.s8(here, 'three'))  # hash_tables.e:25
+        self.show(_KS.s8(here, 'force existing'), _B.out_int(here, t_.item(_KS.s8(here, 'three'))).plus(_KS.s8(here, ' found ')).plus(_B.out_bool(here, t_.found)).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, t_.count)))  # hash_tables.e:26
+        self.show(_KS.s8(here, 'item, absent'), _B.out_int(here, t_.item(_KS.s8(here, 'two'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.item(_KS.s8(here, 'zero')))))  # hash_tables.e:27
+        self.show(_KS.s8(here, 'has'), _B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'one'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'four')))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.has(30))))  # hash_tables.e:28
+        self.print_table(t_)  # hash_tables.e:29
+        t_.remove(_KS.s8(here, 'two'))  # hash_tables.e:30
+        self.show(_KS.s8(here, 'remove'), _B.out_bool(here, t_.removed).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, t_.count)).plus(_KS.s8(here, ' has ')).plus(_B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'two')))))  # hash_tables.e:31
+        t_.remove(_KS.s8(here, 'two'))  # hash_tables.e:32
+        self.show(_KS.s8(here, 'remove again'), _B.out_bool(here, t_.removed).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.not_found)))  # hash_tables.e:33
+        t_.put(4, _KS.s8(here, 'four'))  # hash_tables.e:34
+        self.print_table(t_)  # hash_tables.e:35
+        t_.put(5, _KS.s8(here, 'five'))  # hash_tables.e:36
+        t_.force(6, _KS.s8(here, 'six'))  # hash_tables.e:37
+        t_.extend(7, _KS.s8(here, 'seven'))  # hash_tables.e:38
+        self.print_table(t_)  # hash_tables.e:39
+        t_.search(_KS.s8(here, 'five'))  # hash_tables.e:40
+        self.show(_KS.s8(here, 'search five'), _B.out_bool(here, t_.found).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.found_item)))  # hash_tables.e:41
+        t_.search(_KS.s8(here, 'nine'))  # hash_tables.e:42
+        self.show(_KS.s8(here, 'search nine'), _B.out_bool(here, t_.found).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.found_item)))  # hash_tables.e:43
+        t_.force(100, _KS.s8(here, 'one'))  # hash_tables.e:44
+        self.show(_KS.s8(here, 'assigner'), _B.out_int(here, t_.item(_KS.s8(here, 'one'))))  # hash_tables.e:45
+        t_.replace(300, _KS.s8(here, 'three'))  # hash_tables.e:46
+        t_.replace_key(_KS.s8(here, 'drei'), _KS.s8(here, 'three'))  # hash_tables.e:47
+        self.show(_KS.s8(here, 'replace_key'), _B.out_bool(here, t_.has__hash_table(_KS.s8(here, 'three'))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.item(_KS.s8(here, 'drei')))))  # hash_tables.e:48
+        self.print_table(t_)  # hash_tables.e:49
+        keys = t_.current_keys  # hash_tables.e:50
+        self.show(_KS.s8(here, 'current_keys'), _B.out_int(here, keys.count).plus(_KS.s8(here, ' first ')).plus(keys.item(1)).plus(_KS.s8(here, ' last ')).plus(keys.item(keys.count)))  # hash_tables.e:51
+        t_.start()  # hash_tables.e:53
+        while not t_.after:  # hash_tables.e:52
+            self.print_(t_.key_for_iteration.plus(_KS.s8(here, ':')).plus(_B.out_int(here, t_.item_for_iteration)).plus(_KS.s8(here, ' ')))  # hash_tables.e:57
+            t_.forth()  # hash_tables.e:58
+        self.print_(_KS.s8(here, '\n'))  # hash_tables.e:60
+        n = here.new(_L_hash_table.HASH_TABLE)  # hash_tables.e:61
         n._gen_ = (_T_2, _T_1)
         n.make(10)
-        for k_ in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [10, 3, 0, 25, 100003, 7])):
-            n.put(_KS.s8(here, 'v').plus(_B.out_int(here, k_.item)), k_.item)
-        n.remove(3)
-        n.put(_KS.s8(here, 'again'), 3)
-        for c in _S.cursors(n):
-            self.print_(_B.out_int(here, c.key).plus(_KS.s8(here, '->')).plus(c.item).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
-        if (v := n.item(0)) is not None:
-            self.show(_KS.s8(here, 'default key'), _B.out_bool(here, n.has__hash_table(0)).plus(_KS.s8(here, ' ')).plus(v))
-        n.remove(0)
-        self.show(_KS.s8(here, 'default key removed'), _B.out_bool(here, n.has__hash_table(0)).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, n.count)))
-        n.wipe_out()
-        self.show(_KS.s8(here, 'wipe_out'), _B.out_int(here, n.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, n.is_empty)))
+        for k_ in _S.cursors(_S.manifest_array(here, _L_array.ARRAY, (_T_1,), [10, 3, 0, 25, 100003, 7])):  # hash_tables.e:62
+            n.put(_KS.s8(here, 'v').plus(_B.out_int(here, k_.item)), k_.item)  # hash_tables.e:63
+        n.remove(3)  # hash_tables.e:65
+        n.put(_KS.s8(here, 'again'), 3)  # hash_tables.e:66
+        for c in _S.cursors(n):  # hash_tables.e:67
+            self.print_(_B.out_int(here, c.key).plus(_KS.s8(here, '->')).plus(c.item).plus(_KS.s8(here, ' ')))  # hash_tables.e:68
+        self.print_(_KS.s8(here, '\n'))  # hash_tables.e:70
+        if (v := n.item(0)) is not None:  # hash_tables.e:71
+            self.show(_KS.s8(here, 'default key'), _B.out_bool(here, n.has__hash_table(0)).plus(_KS.s8(here, ' ')).plus(v))  # hash_tables.e:72
+        n.remove(0)  # hash_tables.e:74
+        self.show(_KS.s8(here, 'default key removed'), _B.out_bool(here, n.has__hash_table(0)).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, n.count)))  # hash_tables.e:75
+        n.wipe_out()  # hash_tables.e:76
+        self.show(_KS.s8(here, 'wipe_out'), _B.out_int(here, n.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, n.is_empty)))  # hash_tables.e:77
 
-    def print_table(self, t_):
+    def print_table(self, t_):  # hash_tables.e:82
         here = self._region_
-        for c in _S.cursors(t_):
-            self.print_(c.key.plus(_KS.s8(here, '=')).plus(_B.out_int(here, c.item)).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
+        for c in _S.cursors(t_):  # hash_tables.e:84
+            self.print_(c.key.plus(_KS.s8(here, '=')).plus(_B.out_int(here, c.item)).plus(_KS.s8(here, ' ')))  # hash_tables.e:85
+        self.print_(_KS.s8(here, '\n'))  # hash_tables.e:87
 
-    def show(self, label, value):
+    def show(self, label, value):  # hash_tables.e:90
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # hash_tables.e:92
 _S.register('HASH_TABLES', HASH_TABLES)
 import eiffel_base.array as _L_array
 import eiffel_base.hash_table as _L_hash_table

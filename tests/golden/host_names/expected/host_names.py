@@ -8,9 +8,9 @@ class HOST_NAMES(ANY):
     _key_ = 'HOST_NAMES'
     _conforms_ = frozenset(['ANY', 'HOST_NAMES'])
 
-    def make(self):
+    def make(self):  # host_names.e:12
         here = self._region_
-        list = 0
+        list = 0  # host_names.e:14
         str = 0
         sum = 0
         len_ = 0
@@ -27,7 +27,7 @@ class HOST_NAMES(ANY):
         here_ = 0
         self_ = 0
         dict = 0
-        id = None
+        id = None  # host_names.e:15
         next = None
         iter = None
         open = None
@@ -38,80 +38,80 @@ class HOST_NAMES(ANY):
         abs = None
         hash = None
         super_ = None
-        list = 1
-        str = 2
-        sum = 3
-        len_ = 4
-        type_ = 5
-        object_ = 6
-        range_ = 7
-        int = 8
-        s_ = 9
-        b_ = 10
-        t_ = 11
-        k_ = 12
-        rt_ = 13
-        ks_ = 14
-        here_ = 15
-        self_ = 16
-        dict = 17
-        self.print_(_B.out_int(here, _B.i32(list + str + sum + len_ + type_ + object_ + range_ + int + s_ + b_ + t_ + k_ + rt_ + ks_ + here_ + self_ + dict)).plus(_KS.s8(here, '\n')))
-        id = _KS.s8(here, 'id')
-        next = _KS.s8(here, 'next')
-        iter = _KS.s8(here, 'iter')
-        open = _KS.s8(here, 'open')
-        format = _KS.s8(here, 'format')
-        input = _KS.s8(here, 'input')
-        min = _KS.s8(here, 'min')
-        max = _KS.s8(here, 'max')
-        abs = _KS.s8(here, 'abs')
-        hash = _KS.s8(here, 'hash')
-        super_ = _KS.s8(here, 'super')
-        self.print_(id.plus(next).plus(iter).plus(open).plus(format).plus(input).plus(min).plus(max).plus(abs).plus(hash).plus(super_).plus(_KS.s8(here, '\n')))
-        self.pass_()
-        self.lambda_(2)
-        self.print_(_B.out_int(here, self.yield_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.global_)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.del_(3))).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, self.try_)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, self.with_)).plus(_KS.s8(here, ' ')).plus(self.import_).plus(_KS.s8(here, ' ')).plus(self.def_).plus(_KS.s8(here, '\n')))
-        self.print_(self.none_of_these.plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.object_count)).plus(_KS.s8(here, '\n')))
+        list = 1  # host_names.e:17
+        str = 2  # host_names.e:18
+        sum = 3  # host_names.e:19
+        len_ = 4  # host_names.e:20
+        type_ = 5  # host_names.e:21
+        object_ = 6  # host_names.e:22
+        range_ = 7  # host_names.e:23
+        int = 8  # host_names.e:24
+        s_ = 9  # host_names.e:25
+        b_ = 10  # host_names.e:26
+        t_ = 11  # host_names.e:27
+        k_ = 12  # host_names.e:28
+        rt_ = 13  # host_names.e:29
+        ks_ = 14  # host_names.e:30
+        here_ = 15  # host_names.e:31
+        self_ = 16  # host_names.e:32
+        dict = 17  # host_names.e:33
+        self.print_(_B.out_int(here, _B.i32(list + str + sum + len_ + type_ + object_ + range_ + int + s_ + b_ + t_ + k_ + rt_ + ks_ + here_ + self_ + dict)).plus(_KS.s8(here, '\n')))  # host_names.e:34
+        id = _KS.s8(here, 'id')  # host_names.e:35
+        next = _KS.s8(here, 'next')  # host_names.e:36
+        iter = _KS.s8(here, 'iter')  # host_names.e:37
+        open = _KS.s8(here, 'open')  # host_names.e:38
+        format = _KS.s8(here, 'format')  # host_names.e:39
+        input = _KS.s8(here, 'input')  # host_names.e:40
+        min = _KS.s8(here, 'min')  # host_names.e:41
+        max = _KS.s8(here, 'max')  # host_names.e:42
+        abs = _KS.s8(here, 'abs')  # host_names.e:43
+        hash = _KS.s8(here, 'hash')  # host_names.e:44
+        super_ = _KS.s8(here, 'super')  # host_names.e:45
+        self.print_(id.plus(next).plus(iter).plus(open).plus(format).plus(input).plus(min).plus(max).plus(abs).plus(hash).plus(super_).plus(_KS.s8(here, '\n')))  # host_names.e:46
+        self.pass_()  # host_names.e:47
+        self.lambda_(2)  # host_names.e:48
+        self.print_(_B.out_int(here, self.yield_).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.global_)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.del_(3))).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, self.try_)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, self.with_)).plus(_KS.s8(here, ' ')).plus(self.import_).plus(_KS.s8(here, ' ')).plus(self.def_).plus(_KS.s8(here, '\n')))  # host_names.e:49
+        self.print_(self.none_of_these.plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.object_count)).plus(_KS.s8(here, '\n')))  # host_names.e:50
 
-    def pass_(self):
+    def pass_(self):  # host_names.e:55
         here = self._region_
-        self.print_(_KS.s8(here, 'pass\n'))
+        self.print_(_KS.s8(here, 'pass\n'))  # host_names.e:57
 
-    def lambda_(self, x):
+    def lambda_(self, x):  # host_names.e:60
         here = self._region_
-        self.print_(_KS.s8(here, 'lambda ').plus(_B.out_int(here, x)).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'lambda ').plus(_B.out_int(here, x)).plus(_KS.s8(here, '\n')))  # host_names.e:62
     yield_ = 1
     global_ = True
 
     @_rt.leaf
-    def del_(self, x):
-        Result = x * 2
+    def del_(self, x):  # host_names.e:69
+        Result = x * 2  # host_names.e:71
         if not -2147483648 <= Result <= 2147483647:
             Result = _B.wrap_i32(Result)
-        return Result
+        return Result  # host_names.e:69
     try_ = 't'
     with_ = 2.5
 
     @property
-    def import_(self):
+    def import_(self):  # host_names.e:78
         here = self._region_
         return _KS.s8(here, 'import')
 
     @property
     @_rt.leaf
-    def def_(self):
+    def def_(self):  # host_names.e:80
         here = self._region_
-        Result = _KS.s8(here, 'def')
-        return Result
+        Result = _KS.s8(here, 'def')  # host_names.e:82
+        return Result  # host_names.e:80
 
     @property
-    def none_of_these(self):
+    def none_of_these(self):  # host_names.e:85
         here = self._region_
         return _KS.s8(here, 'none')
 
     @property
     @_rt.leaf
-    def object_count(self):
-        Result = 42
-        return Result
+    def object_count(self):  # host_names.e:87
+        Result = 42  # host_names.e:89
+        return Result  # host_names.e:87
 _S.register('HOST_NAMES', HOST_NAMES)

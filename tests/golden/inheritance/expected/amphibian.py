@@ -12,8 +12,8 @@ class AMPHIBIAN(CAR, BOAT):
 
     @property
     @_rt.leaf
-    def both(self):
+    def both(self):  # amphibian.e:19
         here = self._region_
-        Result = _B.out_int(here, self.speed).plus(_KS.s8(here, '/')).plus(_B.out_int(here, self.water_speed__amphibian))
-        return Result
+        Result = _B.out_int(here, self.speed).plus(_KS.s8(here, '/')).plus(_B.out_int(here, self.water_speed__amphibian))  # amphibian.e:21
+        return Result  # amphibian.e:19
 _S.register('AMPHIBIAN', AMPHIBIAN)

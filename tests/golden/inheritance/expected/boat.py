@@ -10,10 +10,10 @@ class BOAT(VEHICLE):
 
     @property
     @_rt.leaf
-    def speed(self):
-        Result = VEHICLE.speed.fget(self) * 3
+    def speed(self):  # boat.e:12
+        Result = VEHICLE.speed.fget(self) * 3  # boat.e:14
         if not -2147483648 <= Result <= 2147483647:
             Result = _B.wrap_i32(Result)
-        return Result
+        return Result  # boat.e:12
     speed__boat = speed
 _S.register('BOAT', BOAT)

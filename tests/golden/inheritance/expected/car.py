@@ -10,7 +10,7 @@ class CAR(VEHICLE):
 
     @property
     @_rt.leaf
-    def speed(self):
-        Result = 100
-        return Result
+    def speed(self):  # car.e:12
+        Result = 100  # car.e:14
+        return Result  # car.e:12
 _S.register('CAR', CAR)

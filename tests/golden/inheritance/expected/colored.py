@@ -8,28 +8,28 @@ class COLORED(ANY):
     _key_ = 'COLORED'
     _conforms_ = frozenset(['ANY', 'COLORED'])
 
-    def color_init_(self):
+    def color_init_(self):  # colored.e:6
         here = self._region_
         Result = None
-        Result = _KS.s8(here, 'colorless')
-        return Result
+        Result = _KS.s8(here, 'colorless')  # colored.e:8
+        return Result  # colored.e:6
     color = _S.SelfInitialising(color_init_, 'color')
 
     @property
     @_rt.leaf
-    def name(self):
+    def name(self):  # colored.e:11
         here = self._region_
-        Result = _KS.s8(here, 'colored thing')
-        return Result
+        Result = _KS.s8(here, 'colored thing')  # colored.e:13
+        return Result  # colored.e:11
 
     @property
     @_rt.leaf
-    def describe(self):
+    def describe(self):  # colored.e:16
         here = self._region_
-        Result = self.color.plus(_KS.s8(here, ' ')).plus(self.name)
-        return Result
+        Result = self.color.plus(_KS.s8(here, ' ')).plus(self.name)  # colored.e:18
+        return Result  # colored.e:16
 
     @_rt.leaf
-    def set_color(self, c):
-        self.color = c
+    def set_color(self, c):  # colored.e:23
+        self.color = c  # colored.e:25
 _S.register('COLORED', COLORED)

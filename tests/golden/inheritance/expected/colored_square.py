@@ -11,15 +11,15 @@ class COLORED_SQUARE(SQUARE, COLORED):
     _conforms_ = frozenset(['ANY', 'COLORED', 'COLORED_SQUARE', 'RECTANGLE', 'SHAPE', 'SQUARE'])
 
     @_rt.leaf
-    def make_colored(self, side, c):
-        self.make__square(side)
-        self.set_color(c)
+    def make_colored(self, side, c):  # colored_square.e:22
+        self.make__square(side)  # colored_square.e:24
+        self.set_color(c)  # colored_square.e:25
 
     @property
     @_rt.leaf
-    def describe__shape(self):
+    def describe__shape(self):  # colored_square.e:30
         here = self._region_
-        Result = SHAPE.describe__shape.fget(self).plus(_KS.s8(here, ', ')).plus(self.describe)
-        return Result
+        Result = SHAPE.describe__shape.fget(self).plus(_KS.s8(here, ', ')).plus(self.describe)  # colored_square.e:32
+        return Result  # colored_square.e:30
     describe__colored_square = describe__shape
 _S.register('COLORED_SQUARE', COLORED_SQUARE)

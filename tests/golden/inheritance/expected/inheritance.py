@@ -9,40 +9,40 @@ class INHERITANCE(ANY):
     _key_ = 'INHERITANCE'
     _conforms_ = frozenset(['ANY', 'INHERITANCE'])
 
-    def make(self):
+    def make(self):  # inheritance.e:12
         here = self._region_
-        shapes = None
-        cs = None
-        c = None
-        v = None
-        b_ = None
-        amphibian = None
-        shapes = here.new(_L_arrayed_list.ARRAYED_LIST)
+        shapes = None  # inheritance.e:14
+        cs = None  # inheritance.e:15
+        c = None  # inheritance.e:16
+        v = None  # inheritance.e:17
+        b_ = None  # inheritance.e:18
+        amphibian = None  # inheritance.e:19
+        shapes = here.new(_L_arrayed_list.ARRAYED_LIST)  # inheritance.e:21
         shapes._gen_ = (_T_1,)
         shapes.make(3)
-        shapes.extend(_S.create(here, _M_rectangle.RECTANGLE, None, 'make', (2.0, 3.0)))
-        shapes.extend(_S.create(here, _M_square.SQUARE, None, 'make__square', (4.0,)))
-        cs = here.new(_M_colored_square.COLORED_SQUARE)
+        shapes.extend(_S.create(here, _M_rectangle.RECTANGLE, None, 'make', (2.0, 3.0)))  # inheritance.e:22
+        shapes.extend(_S.create(here, _M_square.SQUARE, None, 'make__square', (4.0,)))  # inheritance.e:23
+        cs = here.new(_M_colored_square.COLORED_SQUARE)  # inheritance.e:24
         cs.make_colored(1.5, _KS.s8(here, 'red'))
-        shapes.extend(cs)
-        for s_ in _S.cursors(shapes):
-            self.print_(s_.item.describe__shape.plus(_KS.s8(here, '\n')))
-        c = cs
-        self.print_(_KS.s8(here, 'as COLORED: ').plus(c.describe).plus(_KS.s8(here, ' / ')).plus(c.name).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'color_description: ').plus(cs.describe).plus(_KS.s8(here, '\n')))
-        v = here.new(_M_car.CAR)
+        shapes.extend(cs)  # inheritance.e:25
+        for s_ in _S.cursors(shapes):  # inheritance.e:26
+            self.print_(s_.item.describe__shape.plus(_KS.s8(here, '\n')))  # inheritance.e:27
+        c = cs  # inheritance.e:29
+        self.print_(_KS.s8(here, 'as COLORED: ').plus(c.describe).plus(_KS.s8(here, ' / ')).plus(c.name).plus(_KS.s8(here, '\n')))  # inheritance.e:30
+        self.print_(_KS.s8(here, 'color_description: ').plus(cs.describe).plus(_KS.s8(here, '\n')))  # inheritance.e:31
+        v = here.new(_M_car.CAR)  # inheritance.e:32
         v.default_create()
-        self.print_(v.describe.plus(_KS.s8(here, '\n')))
-        v = here.new(_M_boat.BOAT)
+        self.print_(v.describe.plus(_KS.s8(here, '\n')))  # inheritance.e:33
+        v = here.new(_M_boat.BOAT)  # inheritance.e:34
         v.default_create()
-        self.print_(v.describe.plus(_KS.s8(here, '\n')))
-        amphibian = here.new(_M_amphibian.AMPHIBIAN)
+        self.print_(v.describe.plus(_KS.s8(here, '\n')))  # inheritance.e:35
+        amphibian = here.new(_M_amphibian.AMPHIBIAN)  # inheritance.e:36
         amphibian.default_create()
-        v = amphibian
-        b_ = amphibian
-        self.print_(_KS.s8(here, 'amphibian as VEHICLE: ').plus(_B.out_int(here, v.speed)).plus(_KS.s8(here, ', ')).plus(v.describe).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'amphibian as BOAT: ').plus(_B.out_int(here, b_.speed)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'amphibian: ').plus(amphibian.both).plus(_KS.s8(here, '\n')))
+        v = amphibian  # inheritance.e:37
+        b_ = amphibian  # inheritance.e:38
+        self.print_(_KS.s8(here, 'amphibian as VEHICLE: ').plus(_B.out_int(here, v.speed)).plus(_KS.s8(here, ', ')).plus(v.describe).plus(_KS.s8(here, '\n')))  # inheritance.e:39
+        self.print_(_KS.s8(here, 'amphibian as BOAT: ').plus(_B.out_int(here, b_.speed)).plus(_KS.s8(here, '\n')))  # inheritance.e:40
+        self.print_(_KS.s8(here, 'amphibian: ').plus(amphibian.both).plus(_KS.s8(here, '\n')))  # inheritance.e:41
 _S.register('INHERITANCE', INHERITANCE)
 import inheritance.amphibian as _M_amphibian
 import eiffel_base.arrayed_list as _L_arrayed_list

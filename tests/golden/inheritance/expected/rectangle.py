@@ -9,22 +9,22 @@ class RECTANGLE(SHAPE):
     _conforms_ = frozenset(['ANY', 'RECTANGLE', 'SHAPE'])
 
     @_rt.leaf
-    def make(self, w, h):
-        self.width = w
-        self.height = h
+    def make(self, w, h):  # rectangle.e:12
+        self.width = w  # rectangle.e:14
+        self.height = h  # rectangle.e:15
     width = 0.0
     height = 0.0
 
     @property
     @_rt.leaf
-    def area(self):
-        Result = self.width * self.height
-        return Result
+    def area(self):  # rectangle.e:22
+        Result = self.width * self.height  # rectangle.e:24
+        return Result  # rectangle.e:22
 
     @property
     @_rt.leaf
-    def name(self):
+    def name(self):  # rectangle.e:27
         here = self._region_
-        Result = _KS.s8(here, 'rectangle')
-        return Result
+        Result = _KS.s8(here, 'rectangle')  # rectangle.e:29
+        return Result  # rectangle.e:27
 _S.register('RECTANGLE', RECTANGLE)

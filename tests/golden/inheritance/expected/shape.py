@@ -11,8 +11,8 @@ class SHAPE(ANY):
 
     @property
     @_rt.leaf
-    def describe__shape(self):
+    def describe__shape(self):  # shape.e:14
         here = self._region_
-        Result = self.name.plus(_KS.s8(here, ' of area ')).plus(_B.out_r64(here, self.area))
-        return Result
+        Result = self.name.plus(_KS.s8(here, ' of area ')).plus(_B.out_r64(here, self.area))  # shape.e:16
+        return Result  # shape.e:14
 _S.register('SHAPE', SHAPE)

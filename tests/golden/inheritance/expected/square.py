@@ -9,13 +9,13 @@ class SQUARE(RECTANGLE):
     _conforms_ = frozenset(['ANY', 'RECTANGLE', 'SHAPE', 'SQUARE'])
 
     @_rt.leaf
-    def make__square(self, side):
-        self.make(side, side)
+    def make__square(self, side):  # square.e:17
+        self.make(side, side)  # square.e:19
 
     @property
     @_rt.leaf
-    def name(self):
+    def name(self):  # square.e:24
         here = self._region_
-        Result = _KS.s8(here, 'square')
-        return Result
+        Result = _KS.s8(here, 'square')  # square.e:26
+        return Result  # square.e:24
 _S.register('SQUARE', SQUARE)

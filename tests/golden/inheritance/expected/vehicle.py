@@ -10,14 +10,14 @@ class VEHICLE(ANY):
 
     @property
     @_rt.leaf
-    def speed(self):
-        Result = 10
-        return Result
+    def speed(self):  # vehicle.e:6
+        Result = 10  # vehicle.e:8
+        return Result  # vehicle.e:6
 
     @property
     @_rt.leaf
-    def describe(self):
+    def describe(self):  # vehicle.e:11
         here = self._region_
-        Result = self.generator.as_lower.plus(_KS.s8(here, ' at ')).plus(_B.out_int(here, self.speed))
-        return Result
+        Result = self.generator.as_lower.plus(_KS.s8(here, ' at ')).plus(_B.out_int(here, self.speed))  # vehicle.e:13
+        return Result  # vehicle.e:11
 _S.register('VEHICLE', VEHICLE)

@@ -10,97 +10,97 @@ class INSPECT_BRANCHES(EXCEPTION_MANAGER_FACTORY):
     _key_ = 'INSPECT_BRANCHES'
     _conforms_ = frozenset(['ANY', 'EXCEPTION_MANAGER_FACTORY', 'INSPECT_BRANCHES'])
 
-    def make(self):
+    def make(self):  # inspect_branches.e:15
         here = self._region_
-        i = 0
-        i = -1
-        while not i > 12:
-            self.print_(_B.out_int(here, i).plus(_KS.s8(here, ': ')).plus(self.number_kind(i)).plus(_KS.s8(here, '\n')))
-            i = i + 1
+        i = 0  # inspect_branches.e:17
+        i = -1  # inspect_branches.e:20
+        while not i > 12:  # inspect_branches.e:19
+            self.print_(_B.out_int(here, i).plus(_KS.s8(here, ': ')).plus(self.number_kind(i)).plus(_KS.s8(here, '\n')))  # inspect_branches.e:24
+            i = i + 1  # inspect_branches.e:25
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        for c in _S.cursors(_KS.s8(here, 'aZ7 ?\n')):
-            self.print_(self.character_kind(c.item).plus(_KS.s8(here, ' ')))
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(self.color_name(self.green).plus(_KS.s8(here, ' ')).plus(self.color_name(self.blue)).plus(_KS.s8(here, '\n')))
-        self.print_(self.unmatched(2).plus(_KS.s8(here, '\n')))
-        self.print_(self.unmatched(5).plus(_KS.s8(here, '\n')))
+        for c in _S.cursors(_KS.s8(here, 'aZ7 ?\n')):  # inspect_branches.e:27
+            self.print_(self.character_kind(c.item).plus(_KS.s8(here, ' ')))  # inspect_branches.e:28
+        self.print_(_KS.s8(here, '\n'))  # inspect_branches.e:30
+        self.print_(self.color_name(self.green).plus(_KS.s8(here, ' ')).plus(self.color_name(self.blue)).plus(_KS.s8(here, '\n')))  # inspect_branches.e:31
+        self.print_(self.unmatched(2).plus(_KS.s8(here, '\n')))  # inspect_branches.e:32
+        self.print_(self.unmatched(5).plus(_KS.s8(here, '\n')))  # inspect_branches.e:33
     red = 1
     green = 2
     blue = 3
 
     @_rt.leaf
-    def number_kind(self, n):
+    def number_kind(self, n):  # inspect_branches.e:42
         here = self._region_
         Result = None
-        _inspect1 = n
-        if _inspect1 == 0:
-            Result = _KS.s8(here, 'zero')
-        elif _inspect1 == 1:
-            Result = _KS.s8(here, 'one')
-        elif _inspect1 == 2 or _inspect1 == 3:
-            Result = _KS.s8(here, 'two or three')
-        elif 4 <= _inspect1 <= 6:
-            Result = _KS.s8(here, 'four to six')
-        elif 7 <= _inspect1 <= 9 or _inspect1 == 11:
-            Result = _KS.s8(here, 'seven to nine, or eleven')
+        _inspect1 = n  # inspect_branches.e:44
+        if _inspect1 == 0:  # inspect_branches.e:45
+            Result = _KS.s8(here, 'zero')  # inspect_branches.e:46
+        elif _inspect1 == 1:  # inspect_branches.e:47
+            Result = _KS.s8(here, 'one')  # inspect_branches.e:48
+        elif _inspect1 == 2 or _inspect1 == 3:  # inspect_branches.e:49
+            Result = _KS.s8(here, 'two or three')  # inspect_branches.e:50
+        elif 4 <= _inspect1 <= 6:  # inspect_branches.e:51
+            Result = _KS.s8(here, 'four to six')  # inspect_branches.e:52
+        elif 7 <= _inspect1 <= 9 or _inspect1 == 11:  # inspect_branches.e:53
+            Result = _KS.s8(here, 'seven to nine, or eleven')  # inspect_branches.e:54
         else:
-            Result = _KS.s8(here, 'other')
-        return Result
+            Result = _KS.s8(here, 'other')  # inspect_branches.e:56
+        return Result  # inspect_branches.e:42
 
     @_rt.leaf
-    def character_kind(self, c):
+    def character_kind(self, c):  # inspect_branches.e:60
         here = self._region_
         Result = None
-        _inspect1 = c
-        if 'a' <= _inspect1 <= 'z':
-            Result = _KS.s8(here, 'lower')
-        elif 'A' <= _inspect1 <= 'Z':
-            Result = _KS.s8(here, 'upper')
-        elif '0' <= _inspect1 <= '9':
-            Result = _KS.s8(here, 'digit')
-        elif _inspect1 == ' ' or _inspect1 == '\n' or _inspect1 == '\t':
-            Result = _KS.s8(here, 'blank')
+        _inspect1 = c  # inspect_branches.e:62
+        if 'a' <= _inspect1 <= 'z':  # inspect_branches.e:63
+            Result = _KS.s8(here, 'lower')  # inspect_branches.e:64
+        elif 'A' <= _inspect1 <= 'Z':  # inspect_branches.e:65
+            Result = _KS.s8(here, 'upper')  # inspect_branches.e:66
+        elif '0' <= _inspect1 <= '9':  # inspect_branches.e:67
+            Result = _KS.s8(here, 'digit')  # inspect_branches.e:68
+        elif _inspect1 == ' ' or _inspect1 == '\n' or _inspect1 == '\t':  # inspect_branches.e:69
+            Result = _KS.s8(here, 'blank')  # inspect_branches.e:70
         else:
-            Result = _KS.s8(here, 'other')
-        return Result
+            Result = _KS.s8(here, 'other')  # inspect_branches.e:72
+        return Result  # inspect_branches.e:60
 
     @_rt.leaf
-    def color_name(self, c):
+    def color_name(self, c):  # inspect_branches.e:76
         here = self._region_
         Result = None
-        _inspect1 = c
-        if _inspect1 == self.red:
-            Result = _KS.s8(here, 'red')
-        elif _inspect1 == self.green:
-            Result = _KS.s8(here, 'green')
-        elif _inspect1 == self.blue:
-            Result = _KS.s8(here, 'blue')
+        _inspect1 = c  # inspect_branches.e:78
+        if _inspect1 == self.red:  # inspect_branches.e:79
+            Result = _KS.s8(here, 'red')  # inspect_branches.e:80
+        elif _inspect1 == self.green:  # inspect_branches.e:81
+            Result = _KS.s8(here, 'green')  # inspect_branches.e:82
+        elif _inspect1 == self.blue:  # inspect_branches.e:83
+            Result = _KS.s8(here, 'blue')  # inspect_branches.e:84
         else:
-            _S.bad_inspect(_inspect1, _W_1)
-        return Result
+            _S.bad_inspect(_inspect1, _W_1)  # inspect_branches.e:83
+        return Result  # inspect_branches.e:76
 
-    def unmatched(self, n):
+    def unmatched(self, n):  # inspect_branches.e:88
         here = self._region_
-        failed = False
-        Result = None
+        failed = False  # inspect_branches.e:91
+        Result = None  # inspect_branches.e:88
         while True:
             try:
-                if failed:
-                    Result = _KS.s8(here, 'no branch for ').plus(_B.out_int(here, n))
+                if failed:  # inspect_branches.e:93
+                    Result = _KS.s8(here, 'no branch for ').plus(_B.out_int(here, n))  # inspect_branches.e:94
                 else:
-                    _inspect1 = n
-                    if _inspect1 == 1 or _inspect1 == 2:
-                        Result = _KS.s8(here, 'branch for ').plus(_B.out_int(here, n))
+                    _inspect1 = n  # inspect_branches.e:96
+                    if _inspect1 == 1 or _inspect1 == 2:  # inspect_branches.e:97
+                        Result = _KS.s8(here, 'branch for ').plus(_B.out_int(here, n))  # inspect_branches.e:98
                     else:
-                        _S.bad_inspect(_inspect1, _W_2)
-                break
+                        _S.bad_inspect(_inspect1, _W_2)  # inspect_branches.e:97
+                break  # inspect_branches.e:88
             except Exception as _exception2:
                 _S.caught(here, _exception2)
-                if (e := self.exception_manager.last_exception) is not None:
-                    self.print_(_KS.s8(here, 'rescued ').plus(e.generator).plus(_KS.s8(here, '\n')))
-                failed = True
-                continue
-                raise
+                if (e := self.exception_manager.last_exception) is not None:  # inspect_branches.e:102
+                    self.print_(_KS.s8(here, 'rescued ').plus(e.generator).plus(_KS.s8(here, '\n')))  # inspect_branches.e:103
+                failed = True  # inspect_branches.e:105
+                continue  # inspect_branches.e:106
+                raise  # inspect_branches.e:88
         return Result
 _S.register('INSPECT_BRANCHES', INSPECT_BRANCHES)

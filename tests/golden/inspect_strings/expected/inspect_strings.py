@@ -12,52 +12,52 @@ class INSPECT_STRINGS(ANY):
     _key_ = 'INSPECT_STRINGS'
     _conforms_ = frozenset(['ANY', 'INSPECT_STRINGS'])
 
-    def make(self):
+    def make(self):  # inspect_strings.e:13
         here = self._region_
-        words = None
-        s_ = None
-        w = None
-        words = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_KS.s8(here, 'one'), _KS.s8(here, 'many'), _KS.s8(here, 'none'), _KS.s8(here, 'zero')])
-        for c in _S.cursors(words):
-            s_ = here.new(_L_string_8.STRING_8)
+        words = None  # inspect_strings.e:15
+        s_ = None  # inspect_strings.e:16
+        w = None  # inspect_strings.e:17
+        words = _S.manifest_array(here, _L_array.ARRAY, (_T_1,), [_KS.s8(here, 'one'), _KS.s8(here, 'many'), _KS.s8(here, 'none'), _KS.s8(here, 'zero')])  # inspect_strings.e:19
+        for c in _S.cursors(words):  # inspect_strings.e:20
+            s_ = here.new(_L_string_8.STRING_8)  # inspect_strings.e:21
             s_.make_from_string(c.item)
-            self.print_(s_.plus(_KS.s8(here, ': ')).plus(self.kind(s_)).plus(_KS.s8(here, ', ')).plus(self.size(s_)).plus(_KS.s8(here, '\n')))
-        s_ = _KS.s8(here, 'ma')
-        s_.append__string_8(_KS.s8(here, 'ny'))
-        self.print_(self.kind(s_).plus(_KS.s8(here, '\n')))
-        w = here.new(_L_string_32.STRING_32)
+            self.print_(s_.plus(_KS.s8(here, ': ')).plus(self.kind(s_)).plus(_KS.s8(here, ', ')).plus(self.size(s_)).plus(_KS.s8(here, '\n')))  # inspect_strings.e:22
+        s_ = _KS.s8(here, 'ma')  # inspect_strings.e:24
+        s_.append__string_8(_KS.s8(here, 'ny'))  # inspect_strings.e:25
+        self.print_(self.kind(s_).plus(_KS.s8(here, '\n')))  # inspect_strings.e:26
+        w = here.new(_L_string_32.STRING_32)  # inspect_strings.e:27
         w.make_from_string(_KS.s32(here, 'été'))
-        _inspect1 = _S.inspect_text(w, _W_2)
-        if _inspect1 == 'été':
-            self.print_(_KS.s8(here, 'summer\n'))
+        _inspect1 = _S.inspect_text(w, _W_2)  # inspect_strings.e:28
+        if _inspect1 == 'été':  # inspect_strings.e:29
+            self.print_(_KS.s8(here, 'summer\n'))  # inspect_strings.e:30
         else:
-            self.print_(_KS.s8(here, 'not summer\n'))
+            self.print_(_KS.s8(here, 'not summer\n'))  # inspect_strings.e:32
 
     @property
-    def many(self):
+    def many(self):  # inspect_strings.e:38
         here = self._region_
         return _KS.s8(here, 'many')
 
     @_rt.leaf
-    def kind(self, s_):
+    def kind(self, s_):  # inspect_strings.e:40
         here = self._region_
         Result = None
-        _inspect1 = _S.inspect_text(s_, _W_3)
-        if _inspect1 == 'one':
-            Result = _KS.s8(here, 'single')
-        elif _inspect1 == self.many._s:
-            Result = _KS.s8(here, 'several')
-        elif _inspect1 == 'zero' or _inspect1 == 'none':
-            Result = _KS.s8(here, 'nothing')
+        _inspect1 = _S.inspect_text(s_, _W_3)  # inspect_strings.e:42
+        if _inspect1 == 'one':  # inspect_strings.e:43
+            Result = _KS.s8(here, 'single')  # inspect_strings.e:44
+        elif _inspect1 == self.many._s:  # inspect_strings.e:45
+            Result = _KS.s8(here, 'several')  # inspect_strings.e:46
+        elif _inspect1 == 'zero' or _inspect1 == 'none':  # inspect_strings.e:47
+            Result = _KS.s8(here, 'nothing')  # inspect_strings.e:48
         else:
-            Result = _KS.s8(here, 'unknown')
-        return Result
+            Result = _KS.s8(here, 'unknown')  # inspect_strings.e:50
+        return Result  # inspect_strings.e:40
 
     @_rt.leaf
-    def size(self, s_):
+    def size(self, s_):  # inspect_strings.e:54
         here = self._region_
-        Result = _KS.s8(here, '1') if (_inspect1 := _S.inspect_text(s_, _W_4)) == 'one' else _KS.s8(here, 'n') if _inspect1 == 'many' else _KS.s8(here, '0')
-        return Result
+        Result = _KS.s8(here, '1') if (_inspect1 := _S.inspect_text(s_, _W_4)) == 'one' else _KS.s8(here, 'n') if _inspect1 == 'many' else _KS.s8(here, '0')  # inspect_strings.e:56
+        return Result  # inspect_strings.e:54
 _S.register('INSPECT_STRINGS', INSPECT_STRINGS)
 import eiffel_base.array as _L_array
 import eiffel_base.string_32 as _L_string_32

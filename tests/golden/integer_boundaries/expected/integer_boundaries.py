@@ -20,21 +20,21 @@ class INTEGER_BOUNDARIES(ANY):
     maxn32 = 4294967295
     maxn64 = 18446744073709551615
 
-    def make(self):
+    def make(self):  # integer_boundaries.e:22
         here = self._region_
-        i = 0
-        j = 0
-        n = 0
-        i = -2147483648
-        j = -9223372036854775808
-        n = 18446744073709551615
-        self.print_(_B.out_int(here, self.max8).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min8)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, self.max16).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min16)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, self.max32).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min32)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, self.max64).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min64)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, self.maxn8).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.maxn16)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.maxn32)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.maxn64)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, i).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, j)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, _B.i64(3000000000 + 1)).plus(_KS.s8(here, '\n')))
-        self.print_(_S.box('INTEGER_64', _B.i64(9223372036854775807 + 0)))
-        self.print_(_KS.s8(here, '\n'))
+        i = 0  # integer_boundaries.e:24
+        j = 0  # integer_boundaries.e:25
+        n = 0  # integer_boundaries.e:26
+        i = -2147483648  # integer_boundaries.e:28
+        j = -9223372036854775808  # integer_boundaries.e:29
+        n = 18446744073709551615  # integer_boundaries.e:30
+        self.print_(_B.out_int(here, self.max8).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min8)).plus(_KS.s8(here, '\n')))  # integer_boundaries.e:31
+        self.print_(_B.out_int(here, self.max16).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min16)).plus(_KS.s8(here, '\n')))  # integer_boundaries.e:32
+        self.print_(_B.out_int(here, self.max32).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min32)).plus(_KS.s8(here, '\n')))  # integer_boundaries.e:33
+        self.print_(_B.out_int(here, self.max64).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.min64)).plus(_KS.s8(here, '\n')))  # integer_boundaries.e:34
+        self.print_(_B.out_int(here, self.maxn8).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.maxn16)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.maxn32)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.maxn64)).plus(_KS.s8(here, '\n')))  # integer_boundaries.e:35
+        self.print_(_B.out_int(here, i).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, j)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n)).plus(_KS.s8(here, '\n')))  # integer_boundaries.e:36
+        self.print_(_B.out_int(here, _B.i64(3000000000 + 1)).plus(_KS.s8(here, '\n')))  # integer_boundaries.e:37
+        self.print_(_S.box('INTEGER_64', _B.i64(9223372036854775807 + 0)))  # integer_boundaries.e:38
+        self.print_(_KS.s8(here, '\n'))  # integer_boundaries.e:39
 _S.register('INTEGER_BOUNDARIES', INTEGER_BOUNDARIES)

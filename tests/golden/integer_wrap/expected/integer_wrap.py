@@ -8,131 +8,131 @@ class INTEGER_WRAP(ANY):
     _key_ = 'INTEGER_WRAP'
     _conforms_ = frozenset(['ANY', 'INTEGER_WRAP'])
 
-    def make(self):
+    def make(self):  # integer_wrap.e:12
         here = self._region_
-        i8 = 0
-        i16 = 0
-        i32 = 0
-        i64 = 0
-        n8 = 0
-        n16 = 0
-        n32 = 0
-        n64 = 0
-        i8 = 127
-        i8 = i8 + 1
+        i8 = 0  # integer_wrap.e:14
+        i16 = 0  # integer_wrap.e:15
+        i32 = 0  # integer_wrap.e:16
+        i64 = 0  # integer_wrap.e:17
+        n8 = 0  # integer_wrap.e:18
+        n16 = 0  # integer_wrap.e:19
+        n32 = 0  # integer_wrap.e:20
+        n64 = 0  # integer_wrap.e:21
+        i8 = 127  # integer_wrap.e:23
+        i8 = i8 + 1  # integer_wrap.e:24
         if i8 > 127:
             i8 = _B.wrap_i8(i8)
-        self.show(_KS.s8(here, 'i8 127 + 1'), _B.out_int(here, i8))
-        i8 = i8 - 1
+        self.show(_KS.s8(here, 'i8 127 + 1'), _B.out_int(here, i8))  # integer_wrap.e:25
+        i8 = i8 - 1  # integer_wrap.e:26
         if i8 < -128:
             i8 = _B.wrap_i8(i8)
-        self.show(_KS.s8(here, 'i8 -128 - 1'), _B.out_int(here, i8))
-        i8 = 100
-        i8 = i8 * 3
+        self.show(_KS.s8(here, 'i8 -128 - 1'), _B.out_int(here, i8))  # integer_wrap.e:27
+        i8 = 100  # integer_wrap.e:28
+        i8 = i8 * 3  # integer_wrap.e:29
         if not -128 <= i8 <= 127:
             i8 = _B.wrap_i8(i8)
-        self.show(_KS.s8(here, 'i8 100 * 3'), _B.out_int(here, i8))
-        i8 = -128
-        i8 = _B.idiv_i8(i8, -1)
-        self.show(_KS.s8(here, 'i8 -128 // -1'), _B.out_int(here, i8))
-        i8 = -128
-        self.show(_KS.s8(here, 'i8 abs'), _B.out_int(here, i8 if i8 >= 0 else _B.i8(-i8)))
-        i16 = 32767
-        i16 = i16 + 2
+        self.show(_KS.s8(here, 'i8 100 * 3'), _B.out_int(here, i8))  # integer_wrap.e:30
+        i8 = -128  # integer_wrap.e:31
+        i8 = _B.idiv_i8(i8, -1)  # integer_wrap.e:32
+        self.show(_KS.s8(here, 'i8 -128 // -1'), _B.out_int(here, i8))  # integer_wrap.e:33
+        i8 = -128  # integer_wrap.e:34
+        self.show(_KS.s8(here, 'i8 abs'), _B.out_int(here, i8 if i8 >= 0 else _B.i8(-i8)))  # integer_wrap.e:35
+        i16 = 32767  # integer_wrap.e:36
+        i16 = i16 + 2  # integer_wrap.e:37
         if i16 > 32767:
             i16 = _B.wrap_i16(i16)
-        self.show(_KS.s8(here, 'i16 32767 + 2'), _B.out_int(here, i16))
-        i32 = _L_integer_32.INTEGER_32.max_value
-        i32 = i32 + 1
+        self.show(_KS.s8(here, 'i16 32767 + 2'), _B.out_int(here, i16))  # integer_wrap.e:38
+        i32 = _L_integer_32.INTEGER_32.max_value  # integer_wrap.e:39
+        i32 = i32 + 1  # integer_wrap.e:40
         if i32 > 2147483647:
             i32 = _B.wrap_i32(i32)
-        self.show(_KS.s8(here, 'i32 max + 1'), _B.out_int(here, i32))
-        i32 = 65536
-        i32 = i32 * 65536
+        self.show(_KS.s8(here, 'i32 max + 1'), _B.out_int(here, i32))  # integer_wrap.e:41
+        i32 = 65536  # integer_wrap.e:42
+        i32 = i32 * 65536  # integer_wrap.e:43
         if not -2147483648 <= i32 <= 2147483647:
             i32 = _B.wrap_i32(i32)
-        self.show(_KS.s8(here, 'i32 65536 * 65536'), _B.out_int(here, i32))
-        i32 = _L_integer_32.INTEGER_32.min_value
-        self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, _B.i32(i32 - 1)))
-        i32 = 65536
-        self.show(_KS.s8(here, 'i32 65536 * 65536 + 7 - 3'), _B.out_int(here, _B.i32(i32 * 65536 + 7 - 3)))
-        i32 = _L_integer_32.INTEGER_32.max_value
-        i32 = i32 + 1 - 1
+        self.show(_KS.s8(here, 'i32 65536 * 65536'), _B.out_int(here, i32))  # integer_wrap.e:44
+        i32 = _L_integer_32.INTEGER_32.min_value  # integer_wrap.e:45
+        self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, _B.i32(i32 - 1)))  # integer_wrap.e:46
+        i32 = 65536  # integer_wrap.e:47
+        self.show(_KS.s8(here, 'i32 65536 * 65536 + 7 - 3'), _B.out_int(here, _B.i32(i32 * 65536 + 7 - 3)))  # integer_wrap.e:48
+        i32 = _L_integer_32.INTEGER_32.max_value  # integer_wrap.e:49
+        i32 = i32 + 1 - 1  # integer_wrap.e:50
         if not -2147483648 <= i32 <= 2147483647:
             i32 = _B.wrap_i32(i32)
-        self.show(_KS.s8(here, 'i32 max + 1 - 1'), _B.out_int(here, i32))
-        i32 = i32 + 5 - 1
+        self.show(_KS.s8(here, 'i32 max + 1 - 1'), _B.out_int(here, i32))  # integer_wrap.e:51
+        i32 = i32 + 5 - 1  # integer_wrap.e:52
         if not -2147483648 <= i32 <= 2147483647:
             i32 = _B.wrap_i32(i32)
-        self.show(_KS.s8(here, 'i32 max + 5 - 1'), _B.out_int(here, i32))
-        i8 = 100
-        i8 = i8 * 3 - -(i8 * 2)
+        self.show(_KS.s8(here, 'i32 max + 5 - 1'), _B.out_int(here, i32))  # integer_wrap.e:53
+        i8 = 100  # integer_wrap.e:54
+        i8 = i8 * 3 - -(i8 * 2)  # integer_wrap.e:55
         if not -128 <= i8 <= 127:
             i8 = _B.wrap_i8(i8)
-        self.show(_KS.s8(here, 'i8 100 * 3 - -(100 * 2)'), _B.out_int(here, i8))
-        i64 = _L_integer_64.INTEGER_64.max_value
-        i64 = i64 + 1
+        self.show(_KS.s8(here, 'i8 100 * 3 - -(100 * 2)'), _B.out_int(here, i8))  # integer_wrap.e:56
+        i64 = _L_integer_64.INTEGER_64.max_value  # integer_wrap.e:57
+        i64 = i64 + 1  # integer_wrap.e:58
         if i64 > 9223372036854775807:
             i64 = _B.wrap_i64(i64)
-        self.show(_KS.s8(here, 'i64 max + 1'), _B.out_int(here, i64))
-        i64 = 3000000000
-        i64 = i64 * 4000000000
+        self.show(_KS.s8(here, 'i64 max + 1'), _B.out_int(here, i64))  # integer_wrap.e:59
+        i64 = 3000000000  # integer_wrap.e:60
+        i64 = i64 * 4000000000  # integer_wrap.e:61
         if not -9223372036854775808 <= i64 <= 9223372036854775807:
             i64 = _B.wrap_i64(i64)
-        self.show(_KS.s8(here, 'i64 3e9 * 4e9'), _B.out_int(here, i64))
-        n8 = 0
-        n8 = n8 - 1 & 255
-        self.show(_KS.s8(here, 'n8 0 - 1'), _B.out_int(here, n8))
-        n8 = 200
-        n8 = n8 + 100 & 255
-        self.show(_KS.s8(here, 'n8 200 + 100'), _B.out_int(here, n8))
-        n16 = 65535
-        n16 = n16 + 1 & 65535
-        self.show(_KS.s8(here, 'n16 65535 + 1'), _B.out_int(here, n16))
-        n32 = 0
-        n32 = n32 - 1 & 4294967295
-        self.show(_KS.s8(here, 'n32 0 - 1'), _B.out_int(here, n32))
-        n32 = 7
-        self.show(_KS.s8(here, 'n32 7 // 2, 7 \\\\ 2'), _B.out_int(here, n32 // 2).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n32 % 2)))
-        n64 = 0
-        n64 = n64 - 1 & 18446744073709551615
-        self.show(_KS.s8(here, 'n64 0 - 1'), _B.out_int(here, n64))
-        n64 = 18446744073709551615
-        self.show(_KS.s8(here, 'n64 max // 3'), _B.out_int(here, n64 // 3))
-        self.show(_KS.s8(here, 'n64 max + 2'), _B.out_int(here, n64 + 2 & 18446744073709551615))
-        self.show(_KS.s8(here, '7 // 2, -7 // 2, 7 // -2, -7 // -2'), _B.out_int(here, 7 // 2 if 7 >= 0 else -(-7 // 2)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -7 // 2 if -7 >= 0 else -(--7 // 2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.idiv_i32(7, -2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.idiv_i32(-7, -2))))
-        self.show(_KS.s8(here, '7 \\\\ 2, -7 \\\\ 2, 7 \\\\ -2, -7 \\\\ -2'), _B.out_int(here, 7 % 2 if 7 >= 0 else -(-7 % 2)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -7 % 2 if -7 >= 0 else -(--7 % 2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.irem_i32(7, -2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.irem_i32(-7, -2))))
-        i64 = -9
-        self.show(_KS.s8(here, 'i64 -9 // 4, -9 \\\\ 4'), _B.out_int(here, i64 // 4 if i64 >= 0 else -(-i64 // 4)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, i64 % 4 if i64 >= 0 else -(-i64 % 4))))
-        self.show(_KS.s8(here, '7 / 2'), _B.out_r64(here, 7 / 2))
-        self.show(_KS.s8(here, '2 ^ 10'), _B.out_r64(here, _B.power(2, 10.0)))
-        self.show(_KS.s8(here, '-7 abs, 7 max 9, 3 min -2'), _B.out_int(here, -7 if -7 >= 0 else _B.i32(--7)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 7 if 7 >= 9 else 9)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 3 if 3 <= -2 else -2)))
-        self.show(_KS.s8(here, 'sign'), _B.out_int(here, (-5 > 0) - (-5 < 0)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (0 > 0) - (0 < 0))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (5 > 0) - (5 < 0))))
-        self.show(_KS.s8(here, '12 & 10, 12 | 10, 12 xor 10'), _B.out_int(here, 12 & 10).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 12 | 10)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 12 ^ 10)))
-        self.show(_KS.s8(here, '1 |<< 4, 1 |<< 31, -16 |>> 2'), _B.out_int(here, _B.i32(1 << 4)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.i32(1 << 31))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -16 >> 2)))
-        self.show(_KS.s8(here, 'bit_not 0'), _B.out_int(here, ~0))
-        n8 = 0
-        self.show(_KS.s8(here, 'n8 bit_not 0'), _B.out_int(here, n8 ^ 255))
-        self.show(_KS.s8(here, 'bit_test'), _B.out_bool(here, 5 >> 0 & 1 != 0).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 5 >> 1 & 1 != 0)))
-        self.show(_KS.s8(here, 'to_hex_string'), _B.hex_string(here, 10, 32).plus(_KS.s8(here, ' ')).plus(_B.hex_string(here, -1, 32)))
-        n8 = 255
-        self.show(_KS.s8(here, 'n8 to_hex_string'), _B.hex_string(here, n8, 8))
-        self.show(_KS.s8(here, 'as_integer_8 300, as_natural_8 -1'), _B.out_int(here, (300 + 128 & 255) - 128).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -1 & 255)))
-        self.show(_KS.s8(here, 'as_natural_32 -1'), _B.out_int(here, -1 & 4294967295))
-        n8 = 200
-        self.show(_KS.s8(here, 'n8 200 as_integer_8'), _B.out_int(here, (n8 + 128 & 255) - 128))
-        i8 = -128
-        i32 = 1000
-        self.show(_KS.s8(here, 'i8 + i32'), _B.out_int(here, _B.i32(i8 + i32)))
-        self.show(_KS.s8(here, '0xFF, 1_000_000'), _B.out_int(here, 255).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 1000000)))
-        self.show(_KS.s8(here, 'to_real_64 / 2'), _B.out_r64(here, (7 + 0.0) / 2.0))
-        self.show(_KS.s8(here, 'comparisons'), _B.out_bool(here, 3 < 5).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 3 >= 5)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (3 > 5) - (3 < 5))))
-        self.show(_KS.s8(here, 'hash_code -5'), _B.out_int(here, -5 & 2147483647))
-        self.show(_KS.s8(here, 'is_valid_character_8_code'), _B.out_c8(here, _B.chr(65 & 255)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 0 <= 256 <= 255)))
+        self.show(_KS.s8(here, 'i64 3e9 * 4e9'), _B.out_int(here, i64))  # integer_wrap.e:62
+        n8 = 0  # integer_wrap.e:63
+        n8 = n8 - 1 & 255  # integer_wrap.e:64
+        self.show(_KS.s8(here, 'n8 0 - 1'), _B.out_int(here, n8))  # integer_wrap.e:65
+        n8 = 200  # integer_wrap.e:66
+        n8 = n8 + 100 & 255  # integer_wrap.e:67
+        self.show(_KS.s8(here, 'n8 200 + 100'), _B.out_int(here, n8))  # integer_wrap.e:68
+        n16 = 65535  # integer_wrap.e:69
+        n16 = n16 + 1 & 65535  # integer_wrap.e:70
+        self.show(_KS.s8(here, 'n16 65535 + 1'), _B.out_int(here, n16))  # integer_wrap.e:71
+        n32 = 0  # integer_wrap.e:72
+        n32 = n32 - 1 & 4294967295  # integer_wrap.e:73
+        self.show(_KS.s8(here, 'n32 0 - 1'), _B.out_int(here, n32))  # integer_wrap.e:74
+        n32 = 7  # integer_wrap.e:75
+        self.show(_KS.s8(here, 'n32 7 // 2, 7 \\\\ 2'), _B.out_int(here, n32 // 2).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n32 % 2)))  # integer_wrap.e:76
+        n64 = 0  # integer_wrap.e:77
+        n64 = n64 - 1 & 18446744073709551615  # integer_wrap.e:78
+        self.show(_KS.s8(here, 'n64 0 - 1'), _B.out_int(here, n64))  # integer_wrap.e:79
+        n64 = 18446744073709551615  # integer_wrap.e:80
+        self.show(_KS.s8(here, 'n64 max // 3'), _B.out_int(here, n64 // 3))  # integer_wrap.e:81
+        self.show(_KS.s8(here, 'n64 max + 2'), _B.out_int(here, n64 + 2 & 18446744073709551615))  # integer_wrap.e:82
+        self.show(_KS.s8(here, '7 // 2, -7 // 2, 7 // -2, -7 // -2'), _B.out_int(here, 7 // 2 if 7 >= 0 else -(-7 // 2)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -7 // 2 if -7 >= 0 else -(--7 // 2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.idiv_i32(7, -2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.idiv_i32(-7, -2))))  # integer_wrap.e:83
+        self.show(_KS.s8(here, '7 \\\\ 2, -7 \\\\ 2, 7 \\\\ -2, -7 \\\\ -2'), _B.out_int(here, 7 % 2 if 7 >= 0 else -(-7 % 2)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -7 % 2 if -7 >= 0 else -(--7 % 2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.irem_i32(7, -2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.irem_i32(-7, -2))))  # integer_wrap.e:84
+        i64 = -9  # integer_wrap.e:85
+        self.show(_KS.s8(here, 'i64 -9 // 4, -9 \\\\ 4'), _B.out_int(here, i64 // 4 if i64 >= 0 else -(-i64 // 4)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, i64 % 4 if i64 >= 0 else -(-i64 % 4))))  # integer_wrap.e:86
+        self.show(_KS.s8(here, '7 / 2'), _B.out_r64(here, 7 / 2))  # integer_wrap.e:87
+        self.show(_KS.s8(here, '2 ^ 10'), _B.out_r64(here, _B.power(2, 10.0)))  # integer_wrap.e:88
+        self.show(_KS.s8(here, '-7 abs, 7 max 9, 3 min -2'), _B.out_int(here, -7 if -7 >= 0 else _B.i32(--7)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 7 if 7 >= 9 else 9)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 3 if 3 <= -2 else -2)))  # integer_wrap.e:89
+        self.show(_KS.s8(here, 'sign'), _B.out_int(here, (-5 > 0) - (-5 < 0)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (0 > 0) - (0 < 0))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (5 > 0) - (5 < 0))))  # integer_wrap.e:90
+        self.show(_KS.s8(here, '12 & 10, 12 | 10, 12 xor 10'), _B.out_int(here, 12 & 10).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 12 | 10)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 12 ^ 10)))  # integer_wrap.e:91
+        self.show(_KS.s8(here, '1 |<< 4, 1 |<< 31, -16 |>> 2'), _B.out_int(here, _B.i32(1 << 4)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.i32(1 << 31))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -16 >> 2)))  # integer_wrap.e:92
+        self.show(_KS.s8(here, 'bit_not 0'), _B.out_int(here, ~0))  # integer_wrap.e:93
+        n8 = 0  # integer_wrap.e:94
+        self.show(_KS.s8(here, 'n8 bit_not 0'), _B.out_int(here, n8 ^ 255))  # integer_wrap.e:95
+        self.show(_KS.s8(here, 'bit_test'), _B.out_bool(here, 5 >> 0 & 1 != 0).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 5 >> 1 & 1 != 0)))  # integer_wrap.e:96
+        self.show(_KS.s8(here, 'to_hex_string'), _B.hex_string(here, 10, 32).plus(_KS.s8(here, ' ')).plus(_B.hex_string(here, -1, 32)))  # integer_wrap.e:97
+        n8 = 255  # integer_wrap.e:98
+        self.show(_KS.s8(here, 'n8 to_hex_string'), _B.hex_string(here, n8, 8))  # integer_wrap.e:99
+        self.show(_KS.s8(here, 'as_integer_8 300, as_natural_8 -1'), _B.out_int(here, (300 + 128 & 255) - 128).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, -1 & 255)))  # integer_wrap.e:100
+        self.show(_KS.s8(here, 'as_natural_32 -1'), _B.out_int(here, -1 & 4294967295))  # integer_wrap.e:101
+        n8 = 200  # integer_wrap.e:102
+        self.show(_KS.s8(here, 'n8 200 as_integer_8'), _B.out_int(here, (n8 + 128 & 255) - 128))  # integer_wrap.e:103
+        i8 = -128  # integer_wrap.e:104
+        i32 = 1000  # integer_wrap.e:105
+        self.show(_KS.s8(here, 'i8 + i32'), _B.out_int(here, _B.i32(i8 + i32)))  # integer_wrap.e:106
+        self.show(_KS.s8(here, '0xFF, 1_000_000'), _B.out_int(here, 255).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, 1000000)))  # integer_wrap.e:107
+        self.show(_KS.s8(here, 'to_real_64 / 2'), _B.out_r64(here, (7 + 0.0) / 2.0))  # integer_wrap.e:108
+        self.show(_KS.s8(here, 'comparisons'), _B.out_bool(here, 3 < 5).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 3 >= 5)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, (3 > 5) - (3 < 5))))  # integer_wrap.e:109
+        self.show(_KS.s8(here, 'hash_code -5'), _B.out_int(here, -5 & 2147483647))  # integer_wrap.e:110
+        self.show(_KS.s8(here, 'is_valid_character_8_code'), _B.out_c8(here, _B.chr(65 & 255)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 0 <= 256 <= 255)))  # integer_wrap.e:111
 
-    def show(self, label, value):
+    def show(self, label, value):  # integer_wrap.e:114
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # integer_wrap.e:116
 _S.register('INTEGER_WRAP', INTEGER_WRAP)
 import eiffel_base.integer_32 as _L_integer_32
 import eiffel_base.integer_64 as _L_integer_64

@@ -10,18 +10,18 @@ class ACCOUNT(ANY):
     _conforms_ = frozenset(['ACCOUNT', 'ANY'])
 
     @_rt.leaf
-    def make(self, initial):
-        self.balance = initial
+    def make(self, initial):  # account.e:9
+        self.balance = initial  # account.e:11
     balance = 0
 
     @_rt.leaf
-    def withdraw(self, amount):
-        self.balance = self.balance - amount
+    def withdraw(self, amount):  # account.e:20
+        self.balance = self.balance - amount  # account.e:23
         if not -2147483648 <= self.balance <= 2147483647:
             self.balance = _B.wrap_i32(self.balance)
 
-    def _invariant_(self):
+    def _invariant_(self):  # account.e:1
         _S.parent_invariant(ANY, self)
-        if not self.balance >= 0:
+        if not self.balance >= 0:  # account.e:27
             _S.assertion_failed('invariant', 'non_negative_balance', _W_1)
 _S.register('ACCOUNT', ACCOUNT)

@@ -8,15 +8,15 @@ class INVARIANT_FAILURE(ANY):
     _key_ = 'INVARIANT_FAILURE'
     _conforms_ = frozenset(['ANY', 'INVARIANT_FAILURE'])
 
-    def make(self):
+    def make(self):  # invariant_failure.e:12
         here = self._region_
-        acc = None
-        acc = here.new(_M_account.ACCOUNT)
+        acc = None  # invariant_failure.e:14
+        acc = here.new(_M_account.ACCOUNT)  # invariant_failure.e:16
         acc.make(100)
         _S.check_invariant(acc)
-        _S.call_checked(acc, 'withdraw', (30,))
-        self.print_(_KS.s8(here, 'balance ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, '\n')))
-        _S.call_checked(acc, 'withdraw', (100,))
-        self.print_(_KS.s8(here, 'not reached\n'))
+        _S.call_checked(acc, 'withdraw', (30,))  # invariant_failure.e:17
+        self.print_(_KS.s8(here, 'balance ').plus(_B.out_int(here, acc.balance)).plus(_KS.s8(here, '\n')))  # invariant_failure.e:18
+        _S.call_checked(acc, 'withdraw', (100,))  # invariant_failure.e:19
+        self.print_(_KS.s8(here, 'not reached\n'))  # invariant_failure.e:20
 _S.register('INVARIANT_FAILURE', INVARIANT_FAILURE)
 import invariant_failure.account as _M_account

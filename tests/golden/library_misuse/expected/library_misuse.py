@@ -12,83 +12,83 @@ class LIBRARY_MISUSE(EXCEPTION_MANAGER_FACTORY):
     _key_ = 'LIBRARY_MISUSE'
     _conforms_ = frozenset(['ANY', 'EXCEPTION_MANAGER_FACTORY', 'LIBRARY_MISUSE'])
 
-    def make(self):
+    def make(self):  # library_misuse.e:19
         here = self._region_
-        kind = 0
-        t_ = None
-        i = 0
-        n = 0
-        r = 0.0
-        kind = 1
+        kind = 0  # library_misuse.e:21
+        t_ = None  # library_misuse.e:22
+        i = 0  # library_misuse.e:23
+        n = 0  # library_misuse.e:24
+        r = 0.0  # library_misuse.e:25
+        kind = 1  # library_misuse.e:27
         while not kind > 11:
-            self.attempt(kind)
-            kind = kind + 1
+            self.attempt(kind)  # library_misuse.e:28
+            kind = kind + 1  # library_misuse.e:29
             if kind > 2147483647:
                 kind = _B.wrap_i32(kind)
-        t_ = _S.new_default_tuple(here, (_T_1, _T_2, _T_3))
-        self.print_(_KS.s8(here, 'created tuple: count ').plus(_B.out_int(here, t_.count)).plus(_KS.s8(here, ', x ')).plus(_B.out_int(here, t_._items[0])).plus(_KS.s8(here, ', s is Void ')).plus(_B.out_bool(here, t_._items[1] is None)).plus(_KS.s8(here, ', b ')).plus(_B.out_bool(here, t_._items[2])).plus(_KS.s8(here, '\n')))
-        i = 5
-        self.print_(_KS.s8(here, 'twin ').plus(_B.out_int(here, _B.query_as('INTEGER_32', i, 'twin', here))).plus(_KS.s8(here, ', is_equal ')).plus(_B.out_bool(here, i == 5)).plus(_KS.s8(here, ', standard_is_equal ')).plus(_B.out_bool(here, _B.call_as('INTEGER_32', i, 'standard_is_equal', (6,), here))).plus(_KS.s8(here, '\n')))
-        n = 200
-        r = 2.5
-        self.print_(_KS.s8(here, 'types ').plus(_B.query_as('INTEGER_32', i, 'generating_type', here).out).plus(_KS.s8(here, ' ')).plus(_B.query_as('NATURAL_8', n, 'generating_type', here).out).plus(_KS.s8(here, ' ')).plus(_B.query_as('REAL_64', r, 'generating_type', here).out).plus(_KS.s8(here, '\n')))
-        i = 7
-        self.print_(_KS.s8(here, 'after copy ').plus(_B.out_int(here, i)).plus(_KS.s8(here, '\n')))
+        t_ = _S.new_default_tuple(here, (_T_1, _T_2, _T_3))  # library_misuse.e:31
+        self.print_(_KS.s8(here, 'created tuple: count ').plus(_B.out_int(here, t_.count)).plus(_KS.s8(here, ', x ')).plus(_B.out_int(here, t_._items[0])).plus(_KS.s8(here, ', s is Void ')).plus(_B.out_bool(here, t_._items[1] is None)).plus(_KS.s8(here, ', b ')).plus(_B.out_bool(here, t_._items[2])).plus(_KS.s8(here, '\n')))  # library_misuse.e:32
+        i = 5  # library_misuse.e:33
+        self.print_(_KS.s8(here, 'twin ').plus(_B.out_int(here, _B.query_as('INTEGER_32', i, 'twin', here))).plus(_KS.s8(here, ', is_equal ')).plus(_B.out_bool(here, i == 5)).plus(_KS.s8(here, ', standard_is_equal ')).plus(_B.out_bool(here, _B.call_as('INTEGER_32', i, 'standard_is_equal', (6,), here))).plus(_KS.s8(here, '\n')))  # library_misuse.e:34
+        n = 200  # library_misuse.e:35
+        r = 2.5  # library_misuse.e:36
+        self.print_(_KS.s8(here, 'types ').plus(_B.query_as('INTEGER_32', i, 'generating_type', here).out).plus(_KS.s8(here, ' ')).plus(_B.query_as('NATURAL_8', n, 'generating_type', here).out).plus(_KS.s8(here, ' ')).plus(_B.query_as('REAL_64', r, 'generating_type', here).out).plus(_KS.s8(here, '\n')))  # library_misuse.e:37
+        i = 7  # library_misuse.e:38
+        self.print_(_KS.s8(here, 'after copy ').plus(_B.out_int(here, i)).plus(_KS.s8(here, '\n')))  # library_misuse.e:39
 
-    def attempt(self, kind):
+    def attempt(self, kind):  # library_misuse.e:44
 
-        def _block1():
+        def _block1():  # library_misuse.e:75
             if _inspect1 == 10:
-                self.print_(str.item__readable_string_8(0))
-            elif _inspect1 == 11:
-                str.insert_character('x', 5)
+                self.print_(str.item__readable_string_8(0))  # library_misuse.e:76
+            elif _inspect1 == 11:  # library_misuse.e:77
+                str.insert_character('x', 5)  # library_misuse.e:78
             else:
-                _S.bad_inspect(_inspect1, _W_4)
-        here = self._region_
-        failed = False
-        a = None
-        s_ = None
-        str = None
-        while True:
+                _S.bad_inspect(_inspect1, _W_4)  # library_misuse.e:77
+        here = self._region_  # library_misuse.e:44
+        failed = False  # library_misuse.e:47
+        a = None  # library_misuse.e:48
+        s_ = None  # library_misuse.e:49
+        str = None  # library_misuse.e:50
+        while True:  # library_misuse.e:44
             try:
-                if not failed:
-                    a = here.new(_L_array.ARRAY)
+                if not failed:  # library_misuse.e:52
+                    a = here.new(_L_array.ARRAY)  # library_misuse.e:53
                     a._gen_ = (_T_1,)
                     a.make_filled(0, 1, 3)
-                    s_ = here.new(_L_special.SPECIAL)
+                    s_ = here.new(_L_special.SPECIAL)  # library_misuse.e:54
                     s_._gen_ = (_T_1,)
                     s_.make_filled(0, 2)
-                    str = _KS.s8(here, 'abc')
-                    _inspect1 = kind
-                    if _inspect1 == 1:
-                        self.print_(a.item(4))
-                    elif _inspect1 == 2:
-                        self.print_(a.item(0))
-                    elif _inspect1 == 3:
-                        a.put(1, -1)
-                    elif _inspect1 == 4:
-                        self.print_(s_.item(2))
-                    elif _inspect1 == 5:
-                        self.print_(s_.item(-1))
-                    elif _inspect1 == 6:
-                        s_.put(1, 5)
-                    elif _inspect1 == 7:
-                        s_.extend(3)
-                    elif _inspect1 == 8:
-                        s_.keep_head(3)
-                    elif _inspect1 == 9:
-                        str.put('x', 0)
+                    str = _KS.s8(here, 'abc')  # library_misuse.e:55
+                    _inspect1 = kind  # library_misuse.e:56
+                    if _inspect1 == 1:  # library_misuse.e:57
+                        self.print_(a.item(4))  # library_misuse.e:58
+                    elif _inspect1 == 2:  # library_misuse.e:59
+                        self.print_(a.item(0))  # library_misuse.e:60
+                    elif _inspect1 == 3:  # library_misuse.e:61
+                        a.put(1, -1)  # library_misuse.e:62
+                    elif _inspect1 == 4:  # library_misuse.e:63
+                        self.print_(s_.item(2))  # library_misuse.e:64
+                    elif _inspect1 == 5:  # library_misuse.e:65
+                        self.print_(s_.item(-1))  # library_misuse.e:66
+                    elif _inspect1 == 6:  # library_misuse.e:67
+                        s_.put(1, 5)  # library_misuse.e:68
+                    elif _inspect1 == 7:  # library_misuse.e:69
+                        s_.extend(3)  # library_misuse.e:70
+                    elif _inspect1 == 8:  # library_misuse.e:71
+                        s_.keep_head(3)  # library_misuse.e:72
+                    elif _inspect1 == 9:  # library_misuse.e:73
+                        str.put('x', 0)  # library_misuse.e:74
                     else:
-                        _block1()
-                    self.print_(_KS.s8(here, 'kind ').plus(_B.out_int(here, kind)).plus(_KS.s8(here, ': no failure\n')))
-                break
+                        _block1()  # library_misuse.e:75
+                    self.print_(_KS.s8(here, 'kind ').plus(_B.out_int(here, kind)).plus(_KS.s8(here, ': no failure\n')))  # library_misuse.e:80
+                break  # library_misuse.e:44
             except Exception as _exception2:
                 _S.caught(here, _exception2)
-                if (e := self.exception_manager.last_exception) is not None:
-                    self.print_(_KS.s8(here, 'kind ').plus(_B.out_int(here, kind)).plus(_KS.s8(here, ': ')).plus(e.original.generator).plus(_KS.s8(here, ' ')).plus(e.original.tag).plus(_KS.s8(here, '\n')))
-                failed = True
-                continue
-                raise
+                if (e := self.exception_manager.last_exception) is not None:  # library_misuse.e:83
+                    self.print_(_KS.s8(here, 'kind ').plus(_B.out_int(here, kind)).plus(_KS.s8(here, ': ')).plus(e.original.generator).plus(_KS.s8(here, ' ')).plus(e.original.tag).plus(_KS.s8(here, '\n')))  # library_misuse.e:84
+                failed = True  # library_misuse.e:86
+                continue  # library_misuse.e:87
+                raise  # library_misuse.e:44
 _S.register('LIBRARY_MISUSE', LIBRARY_MISUSE)
 import eiffel_base.array as _L_array
 import eiffel_base.special as _L_special

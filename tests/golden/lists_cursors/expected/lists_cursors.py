@@ -11,112 +11,112 @@ class LISTS_CURSORS(ANY):
     _key_ = 'LISTS_CURSORS'
     _conforms_ = frozenset(['ANY', 'LISTS_CURSORS'])
 
-    def make(self):
+    def make(self):  # lists_cursors.e:12
         here = self._region_
-        a = None
-        k_ = None
-        words = None
-        a = here.new(_L_arrayed_list.ARRAYED_LIST)
+        a = None  # lists_cursors.e:14
+        k_ = None  # lists_cursors.e:15
+        words = None  # lists_cursors.e:16
+        a = here.new(_L_arrayed_list.ARRAYED_LIST)  # lists_cursors.e:18
         a._gen_ = (_T_1,)
         a.make(2)
-        self.print_(_KS.s8(here, 'ARRAYED_LIST\n'))
-        self.exercise(a)
-        k_ = here.new(_L_linked_list.LINKED_LIST)
+        self.print_(_KS.s8(here, 'ARRAYED_LIST\n'))  # lists_cursors.e:19
+        self.exercise(a)  # lists_cursors.e:20
+        k_ = here.new(_L_linked_list.LINKED_LIST)  # lists_cursors.e:21
         k_._gen_ = (_T_1,)
         k_.make()
-        self.print_(_KS.s8(here, 'LINKED_LIST\n'))
-        self.exercise(k_)
-        words = here.new(_L_linked_list.LINKED_LIST)
+        self.print_(_KS.s8(here, 'LINKED_LIST\n'))  # lists_cursors.e:22
+        self.exercise(k_)  # lists_cursors.e:23
+        words = here.new(_L_linked_list.LINKED_LIST)  # lists_cursors.e:24
         words._gen_ = (_T_2,)
         words.make()
-        words.extend(_KS.s8(here, 'alpha'))
-        words.extend(_KS.s8(here, 'beta'))
-        self.show(_KS.s8(here, 'has by reference'), _B.out_bool(here, words.has(_KS.s8(here, 'beta'))))
-        words.compare_objects()
-        self.show(_KS.s8(here, 'has by object'), _B.out_bool(here, words.has(_KS.s8(here, 'beta'))))
-        words.start()
-        words.search(_KS.s8(here, 'beta'))
-        self.show(_KS.s8(here, 'search string'), _B.out_int(here, words.index).plus(_KS.s8(here, ' ')).plus(words.item))
+        words.extend(_KS.s8(here, 'alpha'))  # lists_cursors.e:25
+        words.extend(_KS.s8(here, 'beta'))  # lists_cursors.e:26
+        self.show(_KS.s8(here, 'has by reference'), _B.out_bool(here, words.has(_KS.s8(here, 'beta'))))  # lists_cursors.e:27
+        words.compare_objects()  # lists_cursors.e:28
+        self.show(_KS.s8(here, 'has by object'), _B.out_bool(here, words.has(_KS.s8(here, 'beta'))))  # lists_cursors.e:29
+        words.start()  # lists_cursors.e:30
+        words.search(_KS.s8(here, 'beta'))  # lists_cursors.e:31
+        self.show(_KS.s8(here, 'search string'), _B.out_int(here, words.index).plus(_KS.s8(here, ' ')).plus(words.item))  # lists_cursors.e:32
 
-    def exercise(self, l):
+    def exercise(self, l):  # lists_cursors.e:37
         here = self._region_
-        c = None
-        self.show(_KS.s8(here, 'empty'), _B.out_bool(here, l.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.count)).plus(_KS.s8(here, ' before ')).plus(_B.out_bool(here, l.before)).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))
-        for i in range(1, 6 + 1):
-            l.extend(_B.i32(i * 10))
-        self.show(_KS.s8(here, 'extended'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))
-        l.start()
-        while not l.after:
-            self.print_(_B.out_int(here, l.item).plus(_KS.s8(here, '@')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' ')))
-            l.forth()
-        self.print_(_KS.s8(here, '\n'))
-        self.show(_KS.s8(here, 'after'), _B.out_bool(here, l.after).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' off ')).plus(_B.out_bool(here, l.off)))
-        l.start()
-        l.search(40)
-        self.show(_KS.s8(here, 'search 40'), _B.out_int(here, l.index).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.item)))
-        l.search(20)
-        self.show(_KS.s8(here, 'search 20 from there'), _B.out_bool(here, l.after).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.exhausted)))
-        self.show(_KS.s8(here, 'first, last, i_th'), _B.out_int(here, l.first).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.last)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.i_th(2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.i_th(3))))
-        l.go_i_th(2)
-        c = l.cursor
-        l.finish()
-        self.show(_KS.s8(here, 'finish'), _B.out_int(here, l.index).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.islast)))
-        l.back()
-        self.show(_KS.s8(here, 'back'), _B.out_int(here, l.item))
-        l.go_to(c)
-        self.show(_KS.s8(here, 'go_to'), _B.out_int(here, l.index).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.item)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.isfirst)))
-        l.put_left(15)
-        l.put_right(25)
-        self.show(_KS.s8(here, 'put_left, put_right'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, l.item)))
-        l.replace(21)
-        l.put_front(5)
-        self.show(_KS.s8(here, 'replace, put_front'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))
-        l.put_i_th(1, 1)
-        self.show(_KS.s8(here, 'assigner'), self.image(l))
-        l.start()
-        l.remove()
-        self.show(_KS.s8(here, 'remove first'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, l.item)))
-        l.start()
-        while not l.after:
-            if _B.irem_i32(l.item, 20) == 0:
-                l.remove()
+        c = None  # lists_cursors.e:40
+        self.show(_KS.s8(here, 'empty'), _B.out_bool(here, l.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.count)).plus(_KS.s8(here, ' before ')).plus(_B.out_bool(here, l.before)).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))  # lists_cursors.e:42
+        for i in range(1, 6 + 1):  # lists_cursors.e:43
+            l.extend(_B.i32(i * 10))  # lists_cursors.e:44
+        self.show(_KS.s8(here, 'extended'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))  # lists_cursors.e:46
+        l.start()  # lists_cursors.e:48
+        while not l.after:  # lists_cursors.e:47
+            self.print_(_B.out_int(here, l.item).plus(_KS.s8(here, '@')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' ')))  # lists_cursors.e:52
+            l.forth()  # lists_cursors.e:53
+        self.print_(_KS.s8(here, '\n'))  # lists_cursors.e:55
+        self.show(_KS.s8(here, 'after'), _B.out_bool(here, l.after).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' off ')).plus(_B.out_bool(here, l.off)))  # lists_cursors.e:56
+        l.start()  # lists_cursors.e:57
+        l.search(40)  # lists_cursors.e:58
+        self.show(_KS.s8(here, 'search 40'), _B.out_int(here, l.index).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.item)))  # lists_cursors.e:59
+        l.search(20)  # lists_cursors.e:60
+        self.show(_KS.s8(here, 'search 20 from there'), _B.out_bool(here, l.after).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.exhausted)))  # lists_cursors.e:61
+        self.show(_KS.s8(here, 'first, last, i_th'), _B.out_int(here, l.first).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.last)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.i_th(2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.i_th(3))))  # lists_cursors.e:62
+        l.go_i_th(2)  # lists_cursors.e:63
+        c = l.cursor  # lists_cursors.e:64
+        l.finish()  # lists_cursors.e:65
+        self.show(_KS.s8(here, 'finish'), _B.out_int(here, l.index).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.islast)))  # lists_cursors.e:66
+        l.back()  # lists_cursors.e:67
+        self.show(_KS.s8(here, 'back'), _B.out_int(here, l.item))  # lists_cursors.e:68
+        l.go_to(c)  # lists_cursors.e:69
+        self.show(_KS.s8(here, 'go_to'), _B.out_int(here, l.index).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.item)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.isfirst)))  # lists_cursors.e:70
+        l.put_left(15)  # lists_cursors.e:71
+        l.put_right(25)  # lists_cursors.e:72
+        self.show(_KS.s8(here, 'put_left, put_right'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, l.item)))  # lists_cursors.e:73
+        l.replace(21)  # lists_cursors.e:74
+        l.put_front(5)  # lists_cursors.e:75
+        self.show(_KS.s8(here, 'replace, put_front'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)))  # lists_cursors.e:76
+        l.put_i_th(1, 1)  # lists_cursors.e:77
+        self.show(_KS.s8(here, 'assigner'), self.image(l))  # lists_cursors.e:78
+        l.start()  # lists_cursors.e:79
+        l.remove()  # lists_cursors.e:80
+        self.show(_KS.s8(here, 'remove first'), self.image(l).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, l.index)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, l.item)))  # lists_cursors.e:81
+        l.start()  # lists_cursors.e:83
+        while not l.after:  # lists_cursors.e:82
+            if _B.irem_i32(l.item, 20) == 0:  # lists_cursors.e:87
+                l.remove()  # lists_cursors.e:88
             else:
-                l.forth()
-        self.show(_KS.s8(here, 'multiples of 20 removed'), self.image(l).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, l.count)))
-        l.finish()
-        l.remove()
-        self.show(_KS.s8(here, 'remove last'), self.image(l).plus(_KS.s8(here, ' after ')).plus(_B.out_bool(here, l.after)))
-        self.show(_KS.s8(here, 'index_of'), _B.out_int(here, l.index_of(25, 1)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.index_of(99, 1))))
-        self.show(_KS.s8(here, 'occurrences'), _B.out_int(here, l.occurrences(15)))
-        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, l.for_all(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))
-        self.show(_KS.s8(here, 'there_exists'), _B.out_bool(here, l.there_exists(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_5, [self, None], (1,)))))
-        l.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_4,), _agent_6, [self, None], (1,)))
-        self.print_(_KS.s8(here, '\n'))
-        l.wipe_out()
-        self.show(_KS.s8(here, 'wipe_out'), _B.out_int(here, l.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.is_empty)))
+                l.forth()  # lists_cursors.e:90
+        self.show(_KS.s8(here, 'multiples of 20 removed'), self.image(l).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, l.count)))  # lists_cursors.e:93
+        l.finish()  # lists_cursors.e:94
+        l.remove()  # lists_cursors.e:95
+        self.show(_KS.s8(here, 'remove last'), self.image(l).plus(_KS.s8(here, ' after ')).plus(_B.out_bool(here, l.after)))  # lists_cursors.e:96
+        self.show(_KS.s8(here, 'index_of'), _B.out_int(here, l.index_of(25, 1)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.index_of(99, 1))))  # lists_cursors.e:97
+        self.show(_KS.s8(here, 'occurrences'), _B.out_int(here, l.occurrences(15)))  # lists_cursors.e:98
+        self.show(_KS.s8(here, 'for_all'), _B.out_bool(here, l.for_all(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_3, [self, None], (1,)))))  # lists_cursors.e:99
+        self.show(_KS.s8(here, 'there_exists'), _B.out_bool(here, l.there_exists(_S.new_agent(here, _L_predicate.PREDICATE, (_T_4,), _agent_5, [self, None], (1,)))))  # lists_cursors.e:100
+        l.do_all(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_4,), _agent_6, [self, None], (1,)))  # lists_cursors.e:101
+        self.print_(_KS.s8(here, '\n'))  # lists_cursors.e:102
+        l.wipe_out()  # lists_cursors.e:103
+        self.show(_KS.s8(here, 'wipe_out'), _B.out_int(here, l.count).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, l.is_empty)))  # lists_cursors.e:104
 
-    def image(self, l):
+    def image(self, l):  # lists_cursors.e:107
         here = self._region_
-        Result = _KS.s8(here, '')
-        for c in _S.cursors(l):
-            if not Result.is_empty:
-                Result.append__string_8(_KS.s8(here, ','))
-            Result.append__string_8(_B.out_int(here, c.item))
-        return Result
+        Result = _KS.s8(here, '')  # lists_cursors.e:109
+        for c in _S.cursors(l):  # lists_cursors.e:110
+            if not Result.is_empty:  # lists_cursors.e:111
+                Result.append__string_8(_KS.s8(here, ','))  # lists_cursors.e:112
+            Result.append__string_8(_B.out_int(here, c.item))  # lists_cursors.e:114
+        return Result  # lists_cursors.e:107
 
-    def show(self, label, value):
+    def show(self, label, value):  # lists_cursors.e:118
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # lists_cursors.e:120
 
-def _agent_3(self, x):
+def _agent_3(self, x):  # lists_cursors.e:99
     Result = x > 10
     return Result
 
-def _agent_5(self, x):
+def _agent_5(self, x):  # lists_cursors.e:100
     Result = x == 30
     return Result
 
-def _agent_6(self, x):
+def _agent_6(self, x):  # lists_cursors.e:101
     here = self._region_
     self.print_(_B.out_int(here, x).plus(_KS.s8(here, ';')))
 _S.register('LISTS_CURSORS', LISTS_CURSORS)

@@ -18,117 +18,117 @@ class LOOPS_CHECKS(EXCEPTION_MANAGER_FACTORY):
     _key_ = 'LOOPS_CHECKS'
     _conforms_ = frozenset(['ANY', 'EXCEPTION_MANAGER_FACTORY', 'LOOPS_CHECKS'])
 
-    def make(self):
+    def make(self):  # loops_checks.e:15
         here = self._region_
-        i = 0
+        i = 0  # loops_checks.e:17
         sum = 0
-        s_ = None
-        i = 1
-        sum = 0
-        _variant1 = _S.variant_start(_B.i32(11 - i), _W_3)
-        if not (i >= 1 and i <= 11):
+        s_ = None  # loops_checks.e:18
+        i = 1  # loops_checks.e:21
+        sum = 0  # loops_checks.e:22
+        _variant1 = _S.variant_start(_B.i32(11 - i), _W_3)  # loops_checks.e:20
+        if not (i >= 1 and i <= 11):  # loops_checks.e:24
             _S.assertion_failed('loop_invariant', 'in_range', _W_1)
-        if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):
+        if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):  # loops_checks.e:25
             _S.assertion_failed('loop_invariant', 'partial_sum', _W_2)
-        while not i > 10:
-            if not (i >= 1 and i <= 11):
+        while not i > 10:  # loops_checks.e:20
+            if not (i >= 1 and i <= 11):  # loops_checks.e:24
                 _S.assertion_failed('loop_invariant', 'in_range', _W_1)
-            if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):
+            if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):  # loops_checks.e:25
                 _S.assertion_failed('loop_invariant', 'partial_sum', _W_2)
-            sum = sum + i
+            sum = sum + i  # loops_checks.e:29
             if not -2147483648 <= sum <= 2147483647:
                 sum = _B.wrap_i32(sum)
-            i = i + 1
+            i = i + 1  # loops_checks.e:30
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-            _variant1 = _S.variant_step(_variant1, _B.i32(11 - i), _W_3)
-        if not (i >= 1 and i <= 11):
+            _variant1 = _S.variant_step(_variant1, _B.i32(11 - i), _W_3)  # loops_checks.e:20
+        if not (i >= 1 and i <= 11):  # loops_checks.e:24
             _S.assertion_failed('loop_invariant', 'in_range', _W_1)
-        if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):
+        if not sum == _B.idiv_i32(_B.i32((i - 1) * i), 2):  # loops_checks.e:25
             _S.assertion_failed('loop_invariant', 'partial_sum', _W_2)
-        self.print_(_KS.s8(here, 'sum ').plus(_B.out_int(here, sum)).plus(_KS.s8(here, '\n')))
-        if not sum == 55:
+        self.print_(_KS.s8(here, 'sum ').plus(_B.out_int(here, sum)).plus(_KS.s8(here, '\n')))  # loops_checks.e:34
+        if not sum == 55:  # loops_checks.e:36
             _S.assertion_failed('check', 'expected_sum', _W_4)
-        s_ = _KS.s8(here, 'checked')
-        if not (t_ := s_) is not None:
+        s_ = _KS.s8(here, 'checked')  # loops_checks.e:38
+        if not (t_ := s_) is not None:  # loops_checks.e:39
             _S.assertion_failed('check', None, _W_5)
-        self.print_(t_.plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'gcd ').plus(_B.out_int(here, self.gcd(1071, 462))).plus(_KS.s8(here, '\n')))
-        self.print_(self.guarded(_KS.s8(here, 'variant')).plus(_KS.s8(here, '\n')))
-        self.print_(self.guarded(_KS.s8(here, 'invariant')).plus(_KS.s8(here, '\n')))
-        self.print_(self.guarded(_KS.s8(here, 'check')).plus(_KS.s8(here, '\n')))
+        self.print_(t_.plus(_KS.s8(here, '\n')))  # loops_checks.e:40
+        self.print_(_KS.s8(here, 'gcd ').plus(_B.out_int(here, self.gcd(1071, 462))).plus(_KS.s8(here, '\n')))  # loops_checks.e:48
+        self.print_(self.guarded(_KS.s8(here, 'variant')).plus(_KS.s8(here, '\n')))  # loops_checks.e:49
+        self.print_(self.guarded(_KS.s8(here, 'invariant')).plus(_KS.s8(here, '\n')))  # loops_checks.e:50
+        self.print_(self.guarded(_KS.s8(here, 'check')).plus(_KS.s8(here, '\n')))  # loops_checks.e:51
 
-    def gcd(self, a, b_):
-        x = 0
+    def gcd(self, a, b_):  # loops_checks.e:56
+        x = 0  # loops_checks.e:58
         y = 0
         t_ = 0
-        Result = 0
-        x = a
-        y = b_
-        _variant1 = _S.variant_start(y, _W_7)
-        if not (x > 0 and y >= 0):
+        Result = 0  # loops_checks.e:56
+        x = a  # loops_checks.e:61
+        y = b_  # loops_checks.e:62
+        _variant1 = _S.variant_start(y, _W_7)  # loops_checks.e:60
+        if not (x > 0 and y >= 0):  # loops_checks.e:64
             _S.assertion_failed('loop_invariant', None, _W_6)
-        while not y == 0:
-            if not (x > 0 and y >= 0):
+        while not y == 0:  # loops_checks.e:60
+            if not (x > 0 and y >= 0):  # loops_checks.e:64
                 _S.assertion_failed('loop_invariant', None, _W_6)
-            t_ = _B.irem_i32(x, y)
-            x = y
-            y = t_
-            _variant1 = _S.variant_step(_variant1, y, _W_7)
-        if not (x > 0 and y >= 0):
+            t_ = _B.irem_i32(x, y)  # loops_checks.e:68
+            x = y  # loops_checks.e:69
+            y = t_  # loops_checks.e:70
+            _variant1 = _S.variant_step(_variant1, y, _W_7)  # loops_checks.e:60
+        if not (x > 0 and y >= 0):  # loops_checks.e:64
             _S.assertion_failed('loop_invariant', None, _W_6)
-        Result = x
-        return Result
+        Result = x  # loops_checks.e:74
+        return Result  # loops_checks.e:56
 
-    def guarded(self, what):
+    def guarded(self, what):  # loops_checks.e:77
         here = self._region_
-        failed = False
-        Result = None
+        failed = False  # loops_checks.e:79
+        Result = None  # loops_checks.e:77
         while True:
             try:
-                if failed:
-                    Result = what.plus(_KS.s8(here, ' violation caught'))
-                elif _B.equal(what, _KS.s8(here, 'variant')):
-                    self.bad_variant()
-                    Result = _KS.s8(here, 'no violation')
-                elif _B.equal(what, _KS.s8(here, 'invariant')):
-                    self.bad_invariant()
-                    Result = _KS.s8(here, 'no violation')
+                if failed:  # loops_checks.e:81
+                    Result = what.plus(_KS.s8(here, ' violation caught'))  # loops_checks.e:82
+                elif _B.equal(what, _KS.s8(here, 'variant')):  # loops_checks.e:83
+                    self.bad_variant()  # loops_checks.e:84
+                    Result = _KS.s8(here, 'no violation')  # loops_checks.e:85
+                elif _B.equal(what, _KS.s8(here, 'invariant')):  # loops_checks.e:86
+                    self.bad_invariant()  # loops_checks.e:87
+                    Result = _KS.s8(here, 'no violation')  # loops_checks.e:88
                 else:
-                    if not what.is_empty:
+                    if not what.is_empty:  # loops_checks.e:91
                         _S.assertion_failed('check', 'false_check', _W_8)
-                    Result = _KS.s8(here, 'no violation')
-                break
+                    Result = _KS.s8(here, 'no violation')  # loops_checks.e:93
+                break  # loops_checks.e:77
             except Exception as _exception1:
                 _S.caught(here, _exception1)
-                if (e := self.exception_manager.last_exception) is not None:
-                    self.print_(e.generator.plus(_KS.s8(here, ' ')).plus(e.tag).plus(_KS.s8(here, ': ')))
-                failed = True
-                continue
-                raise
+                if (e := self.exception_manager.last_exception) is not None:  # loops_checks.e:96
+                    self.print_(e.generator.plus(_KS.s8(here, ' ')).plus(e.tag).plus(_KS.s8(here, ': ')))  # loops_checks.e:97
+                failed = True  # loops_checks.e:99
+                continue  # loops_checks.e:100
+                raise  # loops_checks.e:77
         return Result
 
-    def bad_variant(self):
-        i = 0
-        i = 0
-        _variant1 = _S.variant_start(i, _W_9, 'non_decreasing')
+    def bad_variant(self):  # loops_checks.e:103
+        i = 0  # loops_checks.e:105
+        i = 0  # loops_checks.e:108
+        _variant1 = _S.variant_start(i, _W_9, 'non_decreasing')  # loops_checks.e:107
         while not i == 3:
-            i = i + 1
+            i = i + 1  # loops_checks.e:112
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-            _variant1 = _S.variant_step(_variant1, i, _W_9, 'non_decreasing')
+            _variant1 = _S.variant_step(_variant1, i, _W_9, 'non_decreasing')  # loops_checks.e:107
 
-    def bad_invariant(self):
-        i = 0
-        i = 0
-        if not i < 2:
+    def bad_invariant(self):  # loops_checks.e:118
+        i = 0  # loops_checks.e:120
+        i = 0  # loops_checks.e:123
+        if not i < 2:  # loops_checks.e:125
             _S.assertion_failed('loop_invariant', 'small', _W_10)
-        while not i == 5:
-            if not i < 2:
+        while not i == 5:  # loops_checks.e:122
+            if not i < 2:  # loops_checks.e:125
                 _S.assertion_failed('loop_invariant', 'small', _W_10)
-            i = i + 1
+            i = i + 1  # loops_checks.e:129
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        if not i < 2:
+        if not i < 2:  # loops_checks.e:125
             _S.assertion_failed('loop_invariant', 'small', _W_10)
 _S.register('LOOPS_CHECKS', LOOPS_CHECKS)

@@ -11,8 +11,8 @@ class ANIMAL(ANY):
 
     @property
     @_rt.leaf
-    def describe(self):
+    def describe(self):  # animal.e:14
         here = self._region_
-        Result = self.name.plus(_KS.s8(here, ' says ')).plus(self.sound)
-        return Result
+        Result = self.name.plus(_KS.s8(here, ' says ')).plus(self.sound)  # animal.e:16
+        return Result  # animal.e:14
 _S.register('ANIMAL', ANIMAL)

@@ -10,15 +10,15 @@ class CAT(ANIMAL):
 
     @property
     @_rt.leaf
-    def name(self):
+    def name(self):  # cat.e:9
         here = self._region_
-        Result = _KS.s8(here, 'Tom')
-        return Result
+        Result = _KS.s8(here, 'Tom')  # cat.e:11
+        return Result  # cat.e:9
 
     @property
     @_rt.leaf
-    def sound(self):
+    def sound(self):  # cat.e:14
         here = self._region_
-        Result = _KS.s8(here, 'meow')
-        return Result
+        Result = _KS.s8(here, 'meow')  # cat.e:16
+        return Result  # cat.e:14
 _S.register('CAT', CAT)

@@ -9,21 +9,21 @@ class DOG(ANIMAL):
     _conforms_ = frozenset(['ANIMAL', 'ANY', 'DOG'])
 
     @property
-    def name(self):
+    def name(self):  # dog.e:9
         here = self._region_
         return _KS.s8(here, 'Rex')
 
     @property
     @_rt.leaf
-    def sound(self):
+    def sound(self):  # dog.e:11
         here = self._region_
-        Result = _KS.s8(here, 'woof')
-        return Result
+        Result = _KS.s8(here, 'woof')  # dog.e:13
+        return Result  # dog.e:11
 
     @property
     @_rt.leaf
-    def fetch(self):
+    def fetch(self):  # dog.e:16
         here = self._region_
-        Result = self.name.plus(_KS.s8(here, ' fetches'))
-        return Result
+        Result = self.name.plus(_KS.s8(here, ' fetches'))  # dog.e:18
+        return Result  # dog.e:16
 _S.register('DOG', DOG)

@@ -18,60 +18,60 @@ class OBJECT_TESTS(ANY):
     _key_ = 'OBJECT_TESTS'
     _conforms_ = frozenset(['ANY', 'OBJECT_TESTS'])
 
-    def make(self):
+    def make(self):  # object_tests.e:12
         here = self._region_
-        a = None
-        x = None
-        s_ = None
-        zoo = None
-        n = None
-        dogs = 0
-        a = here.new(_M_dog.DOG)
+        a = None  # object_tests.e:14
+        x = None  # object_tests.e:15
+        s_ = None  # object_tests.e:16
+        zoo = None  # object_tests.e:17
+        n = None  # object_tests.e:18
+        dogs = 0  # object_tests.e:19
+        a = here.new(_M_dog.DOG)  # object_tests.e:21
         a.default_create()
-        if (d := a) is not None and _T_1.accepts(d):
-            self.print_(_KS.s8(here, 'a dog: ').plus(d.fetch).plus(_KS.s8(here, '\n')))
-        if (c := a) is not None and _T_2.accepts(c):
-            self.print_(_KS.s8(here, 'a cat: ').plus(c.name).plus(_KS.s8(here, '\n')))
+        if (d := a) is not None and _T_1.accepts(d):  # object_tests.e:22
+            self.print_(_KS.s8(here, 'a dog: ').plus(d.fetch).plus(_KS.s8(here, '\n')))  # object_tests.e:23
+        if (c := a) is not None and _T_2.accepts(c):  # object_tests.e:25
+            self.print_(_KS.s8(here, 'a cat: ').plus(c.name).plus(_KS.s8(here, '\n')))  # object_tests.e:26
         else:
-            self.print_(_KS.s8(here, 'not a cat\n'))
-        if not _S.conforms(a, _T_2):
-            self.print_(_KS.s8(here, 'still not a cat\n'))
-        x = 42
-        if (i := x) is not None and _T_3.accepts(i):
-            self.print_(_KS.s8(here, 'an integer: ').plus(_B.out_int(here, _B.i32(i + 1))).plus(_KS.s8(here, '\n')))
-        if _S.conforms(x, _T_4):
-            self.print_(_KS.s8(here, 'a string\n'))
+            self.print_(_KS.s8(here, 'not a cat\n'))  # object_tests.e:28
+        if not _S.conforms(a, _T_2):  # object_tests.e:30
+            self.print_(_KS.s8(here, 'still not a cat\n'))  # object_tests.e:31
+        x = 42  # object_tests.e:33
+        if (i := x) is not None and _T_3.accepts(i):  # object_tests.e:34
+            self.print_(_KS.s8(here, 'an integer: ').plus(_B.out_int(here, _B.i32(i + 1))).plus(_KS.s8(here, '\n')))  # object_tests.e:35
+        if _S.conforms(x, _T_4):  # object_tests.e:37
+            self.print_(_KS.s8(here, 'a string\n'))  # object_tests.e:38
         else:
-            self.print_(_KS.s8(here, 'not a string\n'))
-        x = _KS.s8(here, 'text')
-        if (str := x) is not None and _T_4.accepts(str):
-            self.print_(_KS.s8(here, 'a string of ').plus(_B.out_int(here, str.count)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'Void attached: ').plus(_B.out_bool(here, s_ is not None)).plus(_KS.s8(here, '\n')))
-        s_ = _KS.s8(here, 'here')
-        if (t_ := s_) is not None and t_.count == 4:
-            self.print_(_KS.s8(here, 'attached local: ').plus(t_).plus(_KS.s8(here, '\n')))
-        zoo = here.new(_L_arrayed_list.ARRAYED_LIST)
+            self.print_(_KS.s8(here, 'not a string\n'))  # object_tests.e:40
+        x = _KS.s8(here, 'text')  # object_tests.e:42
+        if (str := x) is not None and _T_4.accepts(str):  # object_tests.e:43
+            self.print_(_KS.s8(here, 'a string of ').plus(_B.out_int(here, str.count)).plus(_KS.s8(here, '\n')))  # object_tests.e:44
+        self.print_(_KS.s8(here, 'Void attached: ').plus(_B.out_bool(here, s_ is not None)).plus(_KS.s8(here, '\n')))  # object_tests.e:46
+        s_ = _KS.s8(here, 'here')  # object_tests.e:47
+        if (t_ := s_) is not None and t_.count == 4:  # object_tests.e:48
+            self.print_(_KS.s8(here, 'attached local: ').plus(t_).plus(_KS.s8(here, '\n')))  # object_tests.e:49
+        zoo = here.new(_L_arrayed_list.ARRAYED_LIST)  # object_tests.e:51
         zoo._gen_ = (_T_5,)
         zoo.make(3)
-        zoo.extend(a)
-        zoo.extend(_S.create(here, _M_cat.CAT, None, 'default_create', ()))
-        zoo.extend(_S.create(here, _M_dog.DOG, None, 'default_create', ()))
-        for z in _S.cursors(zoo):
-            if _S.conforms(z.item, _T_1):
-                dogs = dogs + 1
+        zoo.extend(a)  # object_tests.e:52
+        zoo.extend(_S.create(here, _M_cat.CAT, None, 'default_create', ()))  # object_tests.e:53
+        zoo.extend(_S.create(here, _M_dog.DOG, None, 'default_create', ()))  # object_tests.e:54
+        for z in _S.cursors(zoo):  # object_tests.e:55
+            if _S.conforms(z.item, _T_1):  # object_tests.e:56
+                dogs = dogs + 1  # object_tests.e:57
                 if dogs > 2147483647:
                     dogs = _B.wrap_i32(dogs)
-            self.print_(z.item.describe.plus(_KS.s8(here, ' (')).plus(z.item.generator).plus(_KS.s8(here, ')\n')))
-        self.print_(_KS.s8(here, 'dogs: ').plus(_B.out_int(here, dogs)).plus(_KS.s8(here, '\n')))
-        n = _S.attempt(zoo.i_th(2), _T_6)
-        self.print_(_KS.s8(here, 'attempt on a cat: ').plus(_B.out_bool(here, n is None)).plus(_KS.s8(here, '\n')))
-        n = _S.attempt(zoo.i_th(3), _T_6)
-        self.print_(_KS.s8(here, 'attempt on a dog: ').plus(_B.out_bool(here, n is not None)).plus(_KS.s8(here, '\n')))
-        x = zoo
-        self.print_(_KS.s8(here, 'generics: ').plus(_B.out_bool(here, _S.conforms(x, _T_7))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _S.conforms(x, _T_8))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _S.conforms(x, _T_9))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _S.conforms(x, _T_10))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'generator: ').plus(_B.query(x, 'generator', here)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'same_type: ').plus(_B.out_bool(here, a.same_type(zoo.i_th(3)))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.same_type(zoo.i_th(2)))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'conforms_to: ').plus(_B.out_bool(here, a.conforms_to(zoo.i_th(3)))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.conforms_to(zoo.i_th(2)))).plus(_KS.s8(here, '\n')))
+            self.print_(z.item.describe.plus(_KS.s8(here, ' (')).plus(z.item.generator).plus(_KS.s8(here, ')\n')))  # object_tests.e:59
+        self.print_(_KS.s8(here, 'dogs: ').plus(_B.out_int(here, dogs)).plus(_KS.s8(here, '\n')))  # object_tests.e:61
+        n = _S.attempt(zoo.i_th(2), _T_6)  # object_tests.e:62
+        self.print_(_KS.s8(here, 'attempt on a cat: ').plus(_B.out_bool(here, n is None)).plus(_KS.s8(here, '\n')))  # object_tests.e:63
+        n = _S.attempt(zoo.i_th(3), _T_6)  # object_tests.e:64
+        self.print_(_KS.s8(here, 'attempt on a dog: ').plus(_B.out_bool(here, n is not None)).plus(_KS.s8(here, '\n')))  # object_tests.e:65
+        x = zoo  # object_tests.e:66
+        self.print_(_KS.s8(here, 'generics: ').plus(_B.out_bool(here, _S.conforms(x, _T_7))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _S.conforms(x, _T_8))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _S.conforms(x, _T_9))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _S.conforms(x, _T_10))).plus(_KS.s8(here, '\n')))  # object_tests.e:67
+        self.print_(_KS.s8(here, 'generator: ').plus(_B.query(x, 'generator', here)).plus(_KS.s8(here, '\n')))  # object_tests.e:69
+        self.print_(_KS.s8(here, 'same_type: ').plus(_B.out_bool(here, a.same_type(zoo.i_th(3)))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.same_type(zoo.i_th(2)))).plus(_KS.s8(here, '\n')))  # object_tests.e:70
+        self.print_(_KS.s8(here, 'conforms_to: ').plus(_B.out_bool(here, a.conforms_to(zoo.i_th(3)))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.conforms_to(zoo.i_th(2)))).plus(_KS.s8(here, '\n')))  # object_tests.e:71
 _S.register('OBJECT_TESTS', OBJECT_TESTS)
 import eiffel_base.arrayed_list as _L_arrayed_list
 import object_tests.cat as _M_cat

@@ -9,17 +9,17 @@ class NODE(ANY):
     _conforms_ = frozenset(['ANY', 'NODE'])
 
     @_rt.leaf
-    def make(self, a_value):
-        self.value = a_value
+    def make(self, a_value):  # node.e:9
+        self.value = a_value  # node.e:11
     value = 0
 
-    def total_once_(self, _once_):
+    def total_once_(self, _once_):  # node.e:18
         _once_.result = 0
-        _once_.result = self.value
-        _once_.result = _B.i32(_once_.result + self.total)
-        return _once_.result
+        _once_.result = self.value  # node.e:21
+        _once_.result = _B.i32(_once_.result + self.total)  # node.e:22
+        return _once_.result  # node.e:18
 
     @property
-    def total(self):
+    def total(self):  # node.e:18
         return _rt.once_object(self, 'NODE.total', NODE.total_once_, (self,))
 _S.register('NODE', NODE)

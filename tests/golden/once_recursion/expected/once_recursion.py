@@ -8,66 +8,66 @@ class ONCE_RECURSION(ANY):
     _key_ = 'ONCE_RECURSION'
     _conforms_ = frozenset(['ANY', 'ONCE_RECURSION'])
 
-    def make(self):
+    def make(self):  # once_recursion.e:17
         here = self._region_
-        n1 = None
+        n1 = None  # once_recursion.e:19
         n2 = None
-        self.print_(_KS.s8(here, 'default: ').plus(_B.out_int(here, self.counter)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'default again: ').plus(_B.out_int(here, self.counter)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'before any assignment: ').plus(_B.out_int(here, self.fresh)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'process: ').plus(_B.out_int(here, self.shared_code)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'process again: ').plus(_B.out_int(here, self.shared_code)).plus(_KS.s8(here, '\n')))
-        n1 = here.new(_M_node.NODE)
+        self.print_(_KS.s8(here, 'default: ').plus(_B.out_int(here, self.counter)).plus(_KS.s8(here, '\n')))  # once_recursion.e:21
+        self.print_(_KS.s8(here, 'default again: ').plus(_B.out_int(here, self.counter)).plus(_KS.s8(here, '\n')))  # once_recursion.e:22
+        self.print_(_KS.s8(here, 'before any assignment: ').plus(_B.out_int(here, self.fresh)).plus(_KS.s8(here, '\n')))  # once_recursion.e:23
+        self.print_(_KS.s8(here, 'process: ').plus(_B.out_int(here, self.shared_code)).plus(_KS.s8(here, '\n')))  # once_recursion.e:24
+        self.print_(_KS.s8(here, 'process again: ').plus(_B.out_int(here, self.shared_code)).plus(_KS.s8(here, '\n')))  # once_recursion.e:25
+        n1 = here.new(_M_node.NODE)  # once_recursion.e:26
         n1.make(10)
-        n2 = here.new(_M_node.NODE)
+        n2 = here.new(_M_node.NODE)  # once_recursion.e:27
         n2.make(20)
-        self.print_(_KS.s8(here, 'object: ').plus(_B.out_int(here, n1.total)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n2.total)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n1.total)).plus(_KS.s8(here, '\n')))
-        self.setup()
-        self.setup()
-        self.print_(_KS.s8(here, 'setup ran ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, ' time(s)\n')))
+        self.print_(_KS.s8(here, 'object: ').plus(_B.out_int(here, n1.total)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n2.total)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n1.total)).plus(_KS.s8(here, '\n')))  # once_recursion.e:28
+        self.setup()  # once_recursion.e:29
+        self.setup()  # once_recursion.e:30
+        self.print_(_KS.s8(here, 'setup ran ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, ' time(s)\n')))  # once_recursion.e:31
 
-    def counter_once_(self, _once_):
+    def counter_once_(self, _once_):  # once_recursion.e:36
         here = self._region_
         _once_.result = 0
-        _once_.result = 1
-        self.print_(_KS.s8(here, 'counter: recursive call sees ').plus(_B.out_int(here, self.counter)).plus(_KS.s8(here, '\n')))
-        _once_.result = _B.i32(_once_.result + self.counter + 1)
-        return _once_.result
+        _once_.result = 1  # once_recursion.e:39
+        self.print_(_KS.s8(here, 'counter: recursive call sees ').plus(_B.out_int(here, self.counter)).plus(_KS.s8(here, '\n')))  # once_recursion.e:40
+        _once_.result = _B.i32(_once_.result + self.counter + 1)  # once_recursion.e:41
+        return _once_.result  # once_recursion.e:36
 
     @property
-    def counter(self):
+    def counter(self):  # once_recursion.e:36
         return self._region_.once('ONCE_RECURSION.counter', ONCE_RECURSION.counter_once_, (self,))
 
-    def fresh_once_(self, _once_):
+    def fresh_once_(self, _once_):  # once_recursion.e:44
         _once_.result = 0
-        _once_.result = _B.i32(self.counter + self.fresh + 100)
-        return _once_.result
+        _once_.result = _B.i32(self.counter + self.fresh + 100)  # once_recursion.e:47
+        return _once_.result  # once_recursion.e:44
 
     @property
-    def fresh(self):
+    def fresh(self):  # once_recursion.e:44
         return self._region_.once('ONCE_RECURSION.fresh', ONCE_RECURSION.fresh_once_, (self,))
 
-    def shared_code_once_(self, _once_):
+    def shared_code_once_(self, _once_):  # once_recursion.e:50
         _once_.result = 0
-        _once_.result = 7
-        _once_.result = _B.i32(_once_.result * 10 + self.shared_code)
-        return _once_.result
+        _once_.result = 7  # once_recursion.e:53
+        _once_.result = _B.i32(_once_.result * 10 + self.shared_code)  # once_recursion.e:54
+        return _once_.result  # once_recursion.e:50
 
     @property
-    def shared_code(self):
+    def shared_code(self):  # once_recursion.e:50
         return _rt.once_process('ONCE_RECURSION.shared_code', ONCE_RECURSION.shared_code_once_, (self,))
     setups = 0
 
-    def setup_once_(self, _once_):
+    def setup_once_(self, _once_):  # once_recursion.e:59
         here = self._region_
-        self.setups = self.setups + 1
+        self.setups = self.setups + 1  # once_recursion.e:62
         if self.setups > 2147483647:
             self.setups = _B.wrap_i32(self.setups)
-        self.print_(_KS.s8(here, 'setup: ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, '\n')))
-        self.setup()
-        self.print_(_KS.s8(here, 'setup: after the recursive call\n'))
+        self.print_(_KS.s8(here, 'setup: ').plus(_B.out_int(here, self.setups)).plus(_KS.s8(here, '\n')))  # once_recursion.e:63
+        self.setup()  # once_recursion.e:64
+        self.print_(_KS.s8(here, 'setup: after the recursive call\n'))  # once_recursion.e:65
 
-    def setup(self):
+    def setup(self):  # once_recursion.e:59
         return self._region_.once('ONCE_RECURSION.setup', ONCE_RECURSION.setup_once_, (self,))
 _S.register('ONCE_RECURSION', ONCE_RECURSION)
 import once_recursion.node as _M_node

@@ -9,14 +9,14 @@ class LINE(ANY):
     _conforms_ = frozenset(['ANY', 'LINE'])
 
     @_rt.leaf
-    def make(self, a_slope):
-        self.slope = a_slope
+    def make(self, a_slope):  # line.e:9
+        self.slope = a_slope  # line.e:12
     slope = 0
 
     @_rt.leaf
-    def value(self, x):
-        Result = self.slope * x
+    def value(self, x):  # line.e:20
+        Result = self.slope * x  # line.e:23
         if not -2147483648 <= Result <= 2147483647:
             Result = _B.wrap_i32(Result)
-        return Result
+        return Result  # line.e:20
 _S.register('LINE', LINE)

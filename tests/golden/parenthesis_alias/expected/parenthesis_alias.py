@@ -8,16 +8,16 @@ class PARENTHESIS_ALIAS(ANY):
     _key_ = 'PARENTHESIS_ALIAS'
     _conforms_ = frozenset(['ANY', 'PARENTHESIS_ALIAS'])
 
-    def make(self):
+    def make(self):  # parenthesis_alias.e:9
         here = self._region_
-        l = None
-        self.line = _S.create(here, _M_line.LINE, None, 'make', (2,))
-        l = here.new(_M_line.LINE)
+        l = None  # parenthesis_alias.e:12
+        self.line = _S.create(here, _M_line.LINE, None, 'make', (2,))  # parenthesis_alias.e:14
+        l = here.new(_M_line.LINE)  # parenthesis_alias.e:15
         l.make(3)
-        self.print_(_B.out_int(here, self.line.value(4)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, l.value(5)).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, self.line.value(6)).plus(_KS.s8(here, '\n')))
-        _B.call_as('INTEGER_32', l.value(1), 'do_nothing', (), here)
+        self.print_(_B.out_int(here, self.line.value(4)).plus(_KS.s8(here, '\n')))  # parenthesis_alias.e:16
+        self.print_(_B.out_int(here, l.value(5)).plus(_KS.s8(here, '\n')))  # parenthesis_alias.e:17
+        self.print_(_B.out_int(here, self.line.value(6)).plus(_KS.s8(here, '\n')))  # parenthesis_alias.e:18
+        _B.call_as('INTEGER_32', l.value(1), 'do_nothing', (), here)  # parenthesis_alias.e:19
     line = None
 _S.register('PARENTHESIS_ALIAS', PARENTHESIS_ALIAS)
 import parenthesis_alias.line as _M_line

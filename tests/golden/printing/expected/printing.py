@@ -8,98 +8,98 @@ class PRINTING(ANY):
     _key_ = 'PRINTING'
     _conforms_ = frozenset(['ANY', 'PRINTING'])
 
-    def make(self):
+    def make(self):  # printing.e:12
         here = self._region_
-        i8 = 0
-        i16 = 0
-        i64 = 0
-        n8 = 0
-        n16 = 0
-        n32 = 0
-        n64 = 0
-        r = 0.0
-        d = 0.0
-        c32 = '\x00'
-        nothing = None
-        i8 = -128
-        i16 = 32767
-        i64 = _L_integer_64.INTEGER_64.min_value
-        n8 = 255
-        n16 = 65535
-        n32 = 4294967295
-        n64 = _L_natural_64.NATURAL_64.max_value
-        r = 0.10000000149011612
-        d = 0.1
-        c32 = 'Z'
-        self.print_(42)
-        self.print_(_KS.s8(here, ' '))
-        self.print_(-7)
-        self.print_(_KS.s8(here, ' '))
-        self.print_(_S.box('INTEGER_8', i8))
-        self.print_(_KS.s8(here, ' '))
-        self.print_(_S.box('INTEGER_16', i16))
-        self.print_(_KS.s8(here, ' '))
-        self.print_(_S.box('INTEGER_64', i64))
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(_S.box('NATURAL_8', n8))
-        self.print_(_KS.s8(here, ' '))
-        self.print_(_S.box('NATURAL_16', n16))
-        self.print_(_KS.s8(here, ' '))
-        self.print_(_S.box('NATURAL_32', n32))
-        self.print_(_KS.s8(here, ' '))
-        self.print_(_S.box('NATURAL_64', n64))
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(_S.box('REAL_32', r))
-        self.print_(_KS.s8(here, ' '))
-        self.print_(d)
-        self.print_(_KS.s8(here, ' '))
-        self.print_(2.5)
-        self.print_(_KS.s8(here, ' '))
-        self.print_(100.0)
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(True)
-        self.print_(_KS.s8(here, ' '))
-        self.print_('c')
-        self.print_(_KS.s8(here, ' '))
-        self.print_(_S.box('CHARACTER_32', c32))
-        self.print_(_KS.s8(here, ' '))
-        self.print_(nothing)
-        self.print_(_KS.s8(here, '['))
-        self.print_(nothing)
-        self.print_(_KS.s8(here, ']\n'))
-        self.io.put_string(_KS.s8(here, 'put_string'))
-        self.io.put_new_line()
-        self.io.put_integer(-5)
-        self.io.put_character(' ')
-        self.io.put_integer_8(i8)
-        self.io.put_character(' ')
-        self.io.put_integer_16(i16)
-        self.io.put_character(' ')
-        self.io.put_integer_64(i64)
-        self.io.put_new_line()
-        self.io.put_natural_8(n8)
-        self.io.put_character(' ')
-        self.io.put_natural_16(n16)
-        self.io.put_character(' ')
-        self.io.put_natural(n32)
-        self.io.put_character(' ')
-        self.io.put_natural_64(n64)
-        self.io.put_new_line()
-        self.io.put_real(r)
-        self.io.put_character(' ')
-        self.io.put_double(d)
-        self.io.put_character(' ')
-        self.io.put_real(10000000000.0)
-        self.io.put_character(' ')
-        self.io.put_double(10000000000.0)
-        self.io.put_new_line()
-        self.io.put_boolean(False)
-        self.io.put_character(' ')
-        self.io.put_character('x')
-        self.io.put_new_line()
-        self.io.output.put_string(_KS.s8(here, 'via output\n'))
-        self.io.error.put_string(_KS.s8(here, 'to stderr\n'))
-        self.io.put_string(_KS.s8(here, 'last line without newline'))
+        i8 = 0  # printing.e:14
+        i16 = 0  # printing.e:15
+        i64 = 0  # printing.e:16
+        n8 = 0  # printing.e:17
+        n16 = 0  # printing.e:18
+        n32 = 0  # printing.e:19
+        n64 = 0  # printing.e:20
+        r = 0.0  # printing.e:21
+        d = 0.0  # printing.e:22
+        c32 = '\x00'  # printing.e:23
+        nothing = None  # printing.e:24
+        i8 = -128  # printing.e:26
+        i16 = 32767  # printing.e:27
+        i64 = _L_integer_64.INTEGER_64.min_value  # printing.e:28
+        n8 = 255  # printing.e:29
+        n16 = 65535  # printing.e:30
+        n32 = 4294967295  # printing.e:31
+        n64 = _L_natural_64.NATURAL_64.max_value  # printing.e:32
+        r = 0.10000000149011612  # printing.e:33
+        d = 0.1  # printing.e:34
+        c32 = 'Z'  # printing.e:35
+        self.print_(42)  # printing.e:36
+        self.print_(_KS.s8(here, ' '))  # printing.e:37
+        self.print_(-7)  # printing.e:38
+        self.print_(_KS.s8(here, ' '))  # printing.e:39
+        self.print_(_S.box('INTEGER_8', i8))  # printing.e:40
+        self.print_(_KS.s8(here, ' '))  # printing.e:41
+        self.print_(_S.box('INTEGER_16', i16))  # printing.e:42
+        self.print_(_KS.s8(here, ' '))  # printing.e:43
+        self.print_(_S.box('INTEGER_64', i64))  # printing.e:44
+        self.print_(_KS.s8(here, '\n'))  # printing.e:45
+        self.print_(_S.box('NATURAL_8', n8))  # printing.e:46
+        self.print_(_KS.s8(here, ' '))  # printing.e:47
+        self.print_(_S.box('NATURAL_16', n16))  # printing.e:48
+        self.print_(_KS.s8(here, ' '))  # printing.e:49
+        self.print_(_S.box('NATURAL_32', n32))  # printing.e:50
+        self.print_(_KS.s8(here, ' '))  # printing.e:51
+        self.print_(_S.box('NATURAL_64', n64))  # printing.e:52
+        self.print_(_KS.s8(here, '\n'))  # printing.e:53
+        self.print_(_S.box('REAL_32', r))  # printing.e:54
+        self.print_(_KS.s8(here, ' '))  # printing.e:55
+        self.print_(d)  # printing.e:56
+        self.print_(_KS.s8(here, ' '))  # printing.e:57
+        self.print_(2.5)  # printing.e:58
+        self.print_(_KS.s8(here, ' '))  # printing.e:59
+        self.print_(100.0)  # printing.e:60
+        self.print_(_KS.s8(here, '\n'))  # printing.e:61
+        self.print_(True)  # printing.e:62
+        self.print_(_KS.s8(here, ' '))  # printing.e:63
+        self.print_('c')  # printing.e:64
+        self.print_(_KS.s8(here, ' '))  # printing.e:65
+        self.print_(_S.box('CHARACTER_32', c32))  # printing.e:66
+        self.print_(_KS.s8(here, ' '))  # printing.e:67
+        self.print_(nothing)  # printing.e:68
+        self.print_(_KS.s8(here, '['))  # printing.e:69
+        self.print_(nothing)  # printing.e:70
+        self.print_(_KS.s8(here, ']\n'))  # printing.e:71
+        self.io.put_string(_KS.s8(here, 'put_string'))  # printing.e:72
+        self.io.put_new_line()  # printing.e:73
+        self.io.put_integer(-5)  # printing.e:74
+        self.io.put_character(' ')  # printing.e:75
+        self.io.put_integer_8(i8)  # printing.e:76
+        self.io.put_character(' ')  # printing.e:77
+        self.io.put_integer_16(i16)  # printing.e:78
+        self.io.put_character(' ')  # printing.e:79
+        self.io.put_integer_64(i64)  # printing.e:80
+        self.io.put_new_line()  # printing.e:81
+        self.io.put_natural_8(n8)  # printing.e:82
+        self.io.put_character(' ')  # printing.e:83
+        self.io.put_natural_16(n16)  # printing.e:84
+        self.io.put_character(' ')  # printing.e:85
+        self.io.put_natural(n32)  # printing.e:86
+        self.io.put_character(' ')  # printing.e:87
+        self.io.put_natural_64(n64)  # printing.e:88
+        self.io.put_new_line()  # printing.e:89
+        self.io.put_real(r)  # printing.e:90
+        self.io.put_character(' ')  # printing.e:91
+        self.io.put_double(d)  # printing.e:92
+        self.io.put_character(' ')  # printing.e:93
+        self.io.put_real(10000000000.0)  # printing.e:94
+        self.io.put_character(' ')  # printing.e:95
+        self.io.put_double(10000000000.0)  # printing.e:96
+        self.io.put_new_line()  # printing.e:97
+        self.io.put_boolean(False)  # printing.e:98
+        self.io.put_character(' ')  # printing.e:99
+        self.io.put_character('x')  # printing.e:100
+        self.io.put_new_line()  # printing.e:101
+        self.io.output.put_string(_KS.s8(here, 'via output\n'))  # printing.e:102
+        self.io.error.put_string(_KS.s8(here, 'to stderr\n'))  # printing.e:103
+        self.io.put_string(_KS.s8(here, 'last line without newline'))  # printing.e:104
 _S.register('PRINTING', PRINTING)
 import eiffel_base.integer_64 as _L_integer_64
 import eiffel_base.natural_64 as _L_natural_64

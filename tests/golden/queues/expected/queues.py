@@ -10,63 +10,63 @@ class QUEUES(ANY):
     _key_ = 'QUEUES'
     _conforms_ = frozenset(['ANY', 'QUEUES'])
 
-    def make(self):
+    def make(self):  # queues.e:12
         here = self._region_
-        l = None
-        a = None
-        i = 0
-        l = here.new(_L_linked_queue.LINKED_QUEUE)
+        l = None  # queues.e:14
+        a = None  # queues.e:15
+        i = 0  # queues.e:16
+        l = here.new(_L_linked_queue.LINKED_QUEUE)  # queues.e:18
         l._gen_ = (_T_1,)
         l.make()
-        self.show(_KS.s8(here, 'empty'), _B.out_bool(here, l.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.count)))
-        l.put(_KS.s8(here, 'first'))
-        l.extend(_KS.s8(here, 'second'))
-        l.force(_KS.s8(here, 'third'))
-        self.show(_KS.s8(here, 'item'), l.item.plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, l.count)))
-        l.remove()
-        self.show(_KS.s8(here, 'after remove'), l.item.plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, l.count)))
-        self.show(_KS.s8(here, 'has'), _B.out_bool(here, l.has(_KS.s8(here, 'third'))))
-        l.compare_objects()
-        self.show(_KS.s8(here, 'has by object'), _B.out_bool(here, l.has(_KS.s8(here, 'third'))))
-        self.show(_KS.s8(here, 'linear_representation'), self.image(l.linear_representation))
-        l.replace(_KS.s8(here, 'SECOND'))
-        self.show(_KS.s8(here, 'replace'), l.item)
-        l.wipe_out()
-        self.show(_KS.s8(here, 'wipe_out'), _B.out_bool(here, l.is_empty))
-        a = here.new(_L_arrayed_queue.ARRAYED_QUEUE)
+        self.show(_KS.s8(here, 'empty'), _B.out_bool(here, l.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, l.count)))  # queues.e:19
+        l.put(_KS.s8(here, 'first'))  # queues.e:20
+        l.extend(_KS.s8(here, 'second'))  # queues.e:21
+        l.force(_KS.s8(here, 'third'))  # queues.e:22
+        self.show(_KS.s8(here, 'item'), l.item.plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, l.count)))  # queues.e:23
+        l.remove()  # queues.e:24
+        self.show(_KS.s8(here, 'after remove'), l.item.plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, l.count)))  # queues.e:25
+        self.show(_KS.s8(here, 'has'), _B.out_bool(here, l.has(_KS.s8(here, 'third'))))  # queues.e:26
+        l.compare_objects()  # queues.e:27
+        self.show(_KS.s8(here, 'has by object'), _B.out_bool(here, l.has(_KS.s8(here, 'third'))))  # queues.e:28
+        self.show(_KS.s8(here, 'linear_representation'), self.image(l.linear_representation))  # queues.e:29
+        l.replace(_KS.s8(here, 'SECOND'))  # queues.e:30
+        self.show(_KS.s8(here, 'replace'), l.item)  # queues.e:31
+        l.wipe_out()  # queues.e:32
+        self.show(_KS.s8(here, 'wipe_out'), _B.out_bool(here, l.is_empty))  # queues.e:33
+        a = here.new(_L_arrayed_queue.ARRAYED_QUEUE)  # queues.e:34
         a._gen_ = (_T_2,)
         a.make(2)
-        a.put(1)
-        a.put(2)
-        a.remove()
-        a.put(3)
-        a.put(4)
-        self.show(_KS.s8(here, 'wrapped'), _B.out_int(here, a.item).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, a.count)))
-        i = 5
-        while not i > 12:
-            a.extend(i)
-            i = i + 1
+        a.put(1)  # queues.e:35
+        a.put(2)  # queues.e:36
+        a.remove()  # queues.e:37
+        a.put(3)  # queues.e:38
+        a.put(4)  # queues.e:39
+        self.show(_KS.s8(here, 'wrapped'), _B.out_int(here, a.item).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, a.count)))  # queues.e:40
+        i = 5  # queues.e:42
+        while not i > 12:  # queues.e:41
+            a.extend(i)  # queues.e:46
+            i = i + 1  # queues.e:47
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.show(_KS.s8(here, 'grown'), _B.out_int(here, a.count).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, a.item)))
-        while not a.count == 3:
-            self.print_(_B.out_int(here, a.item).plus(_KS.s8(here, ' ')))
-            a.remove()
-        self.print_(_KS.s8(here, '\n'))
-        self.show(_KS.s8(here, 'left'), _B.out_int(here, a.item).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)).plus(_KS.s8(here, ' occurrences of 11: ')).plus(_B.out_int(here, a.occurrences(11))))
+        self.show(_KS.s8(here, 'grown'), _B.out_int(here, a.count).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, a.item)))  # queues.e:49
+        while not a.count == 3:  # queues.e:50
+            self.print_(_B.out_int(here, a.item).plus(_KS.s8(here, ' ')))  # queues.e:54
+            a.remove()  # queues.e:55
+        self.print_(_KS.s8(here, '\n'))  # queues.e:57
+        self.show(_KS.s8(here, 'left'), _B.out_int(here, a.item).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.count)).plus(_KS.s8(here, ' occurrences of 11: ')).plus(_B.out_int(here, a.occurrences(11))))  # queues.e:58
 
-    def image(self, items):
+    def image(self, items):  # queues.e:63
         here = self._region_
-        Result = _KS.s8(here, '')
-        items.start()
-        while not items.after:
-            Result.append__string_8(items.item.plus(_KS.s8(here, ' ')))
-            items.forth()
-        return Result
+        Result = _KS.s8(here, '')  # queues.e:65
+        items.start()  # queues.e:67
+        while not items.after:  # queues.e:66
+            Result.append__string_8(items.item.plus(_KS.s8(here, ' ')))  # queues.e:71
+            items.forth()  # queues.e:72
+        return Result  # queues.e:63
 
-    def show(self, label, value):
+    def show(self, label, value):  # queues.e:76
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # queues.e:78
 _S.register('QUEUES', QUEUES)
 import eiffel_base.arrayed_queue as _L_arrayed_queue
 import eiffel_base.linked_queue as _L_linked_queue

@@ -8,40 +8,40 @@ class RANDOM_NUMBERS(ANY):
     _key_ = 'RANDOM_NUMBERS'
     _conforms_ = frozenset(['ANY', 'RANDOM_NUMBERS'])
 
-    def make(self):
+    def make(self):  # random_numbers.e:12
         here = self._region_
-        r = None
-        i = 0
-        dice = None
-        r = here.new(_L_random.RANDOM)
+        r = None  # random_numbers.e:14
+        i = 0  # random_numbers.e:15
+        dice = None  # random_numbers.e:16
+        r = here.new(_L_random.RANDOM)  # random_numbers.e:18
         r.make()
-        self.print_(_KS.s8(here, 'seed ').plus(_B.out_int(here, r.seed)).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, r.index)).plus(_KS.s8(here, '\n')))
-        i = 1
-        while not i > 5:
-            self.print_(_B.out_int(here, r.item).plus(_KS.s8(here, '\n')))
-            r.forth()
-            i = i + 1
+        self.print_(_KS.s8(here, 'seed ').plus(_B.out_int(here, r.seed)).plus(_KS.s8(here, ' index ')).plus(_B.out_int(here, r.index)).plus(_KS.s8(here, '\n')))  # random_numbers.e:19
+        i = 1  # random_numbers.e:21
+        while not i > 5:  # random_numbers.e:20
+            self.print_(_B.out_int(here, r.item).plus(_KS.s8(here, '\n')))  # random_numbers.e:25
+            r.forth()  # random_numbers.e:26
+            i = i + 1  # random_numbers.e:27
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.print_(_KS.s8(here, 'double_item ').plus(_B.out_r64(here, r.double_item)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'real_item ').plus(_B.out_r32(here, r.real_item)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'i_th (10) ').plus(_B.out_int(here, r.i_th(10))).plus(_KS.s8(here, ' i_th (1) ')).plus(_B.out_int(here, r.i_th(1))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'next_random (1) ').plus(_B.out_int(here, r.next_random(1))).plus(_KS.s8(here, '\n')))
-        r = here.new(_L_random.RANDOM)
+        self.print_(_KS.s8(here, 'double_item ').plus(_B.out_r64(here, r.double_item)).plus(_KS.s8(here, '\n')))  # random_numbers.e:29
+        self.print_(_KS.s8(here, 'real_item ').plus(_B.out_r32(here, r.real_item)).plus(_KS.s8(here, '\n')))  # random_numbers.e:30
+        self.print_(_KS.s8(here, 'i_th (10) ').plus(_B.out_int(here, r.i_th(10))).plus(_KS.s8(here, ' i_th (1) ')).plus(_B.out_int(here, r.i_th(1))).plus(_KS.s8(here, '\n')))  # random_numbers.e:31
+        self.print_(_KS.s8(here, 'next_random (1) ').plus(_B.out_int(here, r.next_random(1))).plus(_KS.s8(here, '\n')))  # random_numbers.e:32
+        r = here.new(_L_random.RANDOM)  # random_numbers.e:33
         r.set_seed(42)
-        self.print_(_KS.s8(here, 'set_seed 42: index ').plus(_B.out_int(here, r.index)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, r.item)).plus(_KS.s8(here, '\n')))
-        r.forth()
-        self.print_(_KS.s8(here, 'then ').plus(_B.out_int(here, r.item)).plus(_KS.s8(here, '\n')))
-        r.start()
-        dice = _KS.s8(here, '')
-        i = 1
-        while not i > 20:
-            dice.append_integer(_B.i32(_B.irem_i32(r.item, 6) + 1))
-            r.forth()
-            i = i + 1
+        self.print_(_KS.s8(here, 'set_seed 42: index ').plus(_B.out_int(here, r.index)).plus(_KS.s8(here, ' item ')).plus(_B.out_int(here, r.item)).plus(_KS.s8(here, '\n')))  # random_numbers.e:34
+        r.forth()  # random_numbers.e:35
+        self.print_(_KS.s8(here, 'then ').plus(_B.out_int(here, r.item)).plus(_KS.s8(here, '\n')))  # random_numbers.e:36
+        r.start()  # random_numbers.e:37
+        dice = _KS.s8(here, '')  # random_numbers.e:38
+        i = 1  # random_numbers.e:40
+        while not i > 20:  # random_numbers.e:39
+            dice.append_integer(_B.i32(_B.irem_i32(r.item, 6) + 1))  # random_numbers.e:44
+            r.forth()  # random_numbers.e:45
+            i = i + 1  # random_numbers.e:46
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.print_(_KS.s8(here, 'dice ').plus(dice).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'double_i_th (3) ').plus(_B.out_r64(here, r.double_i_th(3))).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'dice ').plus(dice).plus(_KS.s8(here, '\n')))  # random_numbers.e:48
+        self.print_(_KS.s8(here, 'double_i_th (3) ').plus(_B.out_r64(here, r.double_i_th(3))).plus(_KS.s8(here, '\n')))  # random_numbers.e:49
 _S.register('RANDOM_NUMBERS', RANDOM_NUMBERS)
 import eiffel_base.random as _L_random

@@ -8,66 +8,66 @@ class REAL_NUMBERS(ANY):
     _key_ = 'REAL_NUMBERS'
     _conforms_ = frozenset(['ANY', 'REAL_NUMBERS'])
 
-    def make(self):
+    def make(self):  # real_numbers.e:12
         here = self._region_
-        r = 0.0
+        r = 0.0  # real_numbers.e:14
         s_ = 0.0
-        f = 0.0
+        f = 0.0  # real_numbers.e:15
         g = 0.0
-        i = 0
-        m = None
-        zero = 0.0
-        none = 0
-        r = 0.1
-        s_ = 0.2
-        self.show(_KS.s8(here, '0.1 + 0.2'), _B.out_r64(here, r + s_))
-        self.show(_KS.s8(here, '0.1 + 0.2 = 0.3'), _B.out_bool(here, r + s_ == 0.3))
-        self.show(_KS.s8(here, '1 / 3'), _B.out_r64(here, 1 / 3))
-        self.show(_KS.s8(here, '3.0'), _B.out_r64(here, 3.0))
-        self.show(_KS.s8(here, '2.5 * 4'), _B.out_r64(here, 2.5 * 4.0))
-        self.show(_KS.s8(here, '1.0e20'), _B.out_r64(here, 1e+20))
-        self.show(_KS.s8(here, '1.5e-7'), _B.out_r64(here, 1.5e-07))
-        self.show(_KS.s8(here, '-2.75'), _B.out_r64(here, -2.75))
-        self.show(_KS.s8(here, 'r + 1'), _B.out_r64(here, r + 1.0))
-        self.show(_KS.s8(here, 'r * 3'), _B.out_r64(here, r * 3.0))
-        self.show(_KS.s8(here, '10 / 4'), _B.out_r64(here, 10 / 4))
-        f = 0.10000000149011612
-        self.show(_KS.s8(here, 'f 0.1'), _B.out_r32(here, f))
-        self.show(_KS.s8(here, 'f to_double'), _B.out_r64(here, f))
-        g = 3.0
-        self.show(_KS.s8(here, 'f / 3'), _B.out_r32(here, _B.r32(f / g if g else _B.fdiv(f, g))))
-        i = 1
-        g = 0.0
-        while not i > 10:
-            g = _B.r32(g + f)
-            i = i + 1
+        i = 0  # real_numbers.e:16
+        m = None  # real_numbers.e:17
+        zero = 0.0  # real_numbers.e:18
+        none = 0  # real_numbers.e:19
+        r = 0.1  # real_numbers.e:21
+        s_ = 0.2  # real_numbers.e:22
+        self.show(_KS.s8(here, '0.1 + 0.2'), _B.out_r64(here, r + s_))  # real_numbers.e:23
+        self.show(_KS.s8(here, '0.1 + 0.2 = 0.3'), _B.out_bool(here, r + s_ == 0.3))  # real_numbers.e:24
+        self.show(_KS.s8(here, '1 / 3'), _B.out_r64(here, 1 / 3))  # real_numbers.e:25
+        self.show(_KS.s8(here, '3.0'), _B.out_r64(here, 3.0))  # real_numbers.e:26
+        self.show(_KS.s8(here, '2.5 * 4'), _B.out_r64(here, 2.5 * 4.0))  # real_numbers.e:27
+        self.show(_KS.s8(here, '1.0e20'), _B.out_r64(here, 1e+20))  # real_numbers.e:28
+        self.show(_KS.s8(here, '1.5e-7'), _B.out_r64(here, 1.5e-07))  # real_numbers.e:29
+        self.show(_KS.s8(here, '-2.75'), _B.out_r64(here, -2.75))  # real_numbers.e:30
+        self.show(_KS.s8(here, 'r + 1'), _B.out_r64(here, r + 1.0))  # real_numbers.e:31
+        self.show(_KS.s8(here, 'r * 3'), _B.out_r64(here, r * 3.0))  # real_numbers.e:32
+        self.show(_KS.s8(here, '10 / 4'), _B.out_r64(here, 10 / 4))  # real_numbers.e:33
+        f = 0.10000000149011612  # real_numbers.e:34
+        self.show(_KS.s8(here, 'f 0.1'), _B.out_r32(here, f))  # real_numbers.e:35
+        self.show(_KS.s8(here, 'f to_double'), _B.out_r64(here, f))  # real_numbers.e:36
+        g = 3.0  # real_numbers.e:37
+        self.show(_KS.s8(here, 'f / 3'), _B.out_r32(here, _B.r32(f / g if g else _B.fdiv(f, g))))  # real_numbers.e:38
+        i = 1  # real_numbers.e:40
+        g = 0.0  # real_numbers.e:41
+        while not i > 10:  # real_numbers.e:39
+            g = _B.r32(g + f)  # real_numbers.e:45
+            i = i + 1  # real_numbers.e:46
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.show(_KS.s8(here, 'ten times f'), _B.out_r32(here, g).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, g)))
-        f = 16777216.0
-        self.show(_KS.s8(here, 'f + 1 = f'), _B.out_bool(here, _B.r32(f + 1.0) == f).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, _B.r32(f + 1.0))))
-        f = 1234567.0
-        self.show(_KS.s8(here, 'f 1234567'), _B.out_r32(here, f))
-        self.show(_KS.s8(here, 'truncated'), _B.out_int(here, _B.trunc32(2.7)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.trunc32(-2.7))))
-        self.show(_KS.s8(here, 'floor, ceiling'), _B.out_int(here, _B.trunc32(_B.ffloor(-2.5))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.trunc32(_B.fceil(-2.5)))))
-        self.show(_KS.s8(here, 'rounded'), _B.out_int(here, _B.rounded(2.5)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(-2.5))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(2.4))))
-        self.show(_KS.s8(here, '2.0 ^ 0.5'), _B.out_r64(here, _B.power(2.0, 0.5)))
-        self.show(_KS.s8(here, 'abs, max, min'), _B.out_r64(here, -1.5 if -1.5 > 0 else --1.5).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, _B.fmax(1.5, 2.5))).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, _B.fmin(1.5, 2.5))))
-        self.show(_KS.s8(here, 'comparisons'), _B.out_bool(here, not 1.5 >= 2.5).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 1.5 >= 2.5)))
-        self.show(_KS.s8(here, 'integer to real'), _B.out_r64(here, 7 + 0.0).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, _B.r32(7 + 0.0))))
-        m = here.new(_L_double_math.DOUBLE_MATH)
+        self.show(_KS.s8(here, 'ten times f'), _B.out_r32(here, g).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, g)))  # real_numbers.e:48
+        f = 16777216.0  # real_numbers.e:49
+        self.show(_KS.s8(here, 'f + 1 = f'), _B.out_bool(here, _B.r32(f + 1.0) == f).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, _B.r32(f + 1.0))))  # real_numbers.e:50
+        f = 1234567.0  # real_numbers.e:51
+        self.show(_KS.s8(here, 'f 1234567'), _B.out_r32(here, f))  # real_numbers.e:52
+        self.show(_KS.s8(here, 'truncated'), _B.out_int(here, _B.trunc32(2.7)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.trunc32(-2.7))))  # real_numbers.e:53
+        self.show(_KS.s8(here, 'floor, ceiling'), _B.out_int(here, _B.trunc32(_B.ffloor(-2.5))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.trunc32(_B.fceil(-2.5)))))  # real_numbers.e:54
+        self.show(_KS.s8(here, 'rounded'), _B.out_int(here, _B.rounded(2.5)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(-2.5))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(2.4))))  # real_numbers.e:55
+        self.show(_KS.s8(here, '2.0 ^ 0.5'), _B.out_r64(here, _B.power(2.0, 0.5)))  # real_numbers.e:56
+        self.show(_KS.s8(here, 'abs, max, min'), _B.out_r64(here, -1.5 if -1.5 > 0 else --1.5).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, _B.fmax(1.5, 2.5))).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, _B.fmin(1.5, 2.5))))  # real_numbers.e:57
+        self.show(_KS.s8(here, 'comparisons'), _B.out_bool(here, not 1.5 >= 2.5).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, 1.5 >= 2.5)))  # real_numbers.e:58
+        self.show(_KS.s8(here, 'integer to real'), _B.out_r64(here, 7 + 0.0).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, _B.r32(7 + 0.0))))  # real_numbers.e:59
+        m = here.new(_L_double_math.DOUBLE_MATH)  # real_numbers.e:60
         m.default_create()
-        self.show(_KS.s8(here, 'sqrt 2'), _B.out_r64(here, m.sqrt(2.0)))
-        self.show(_KS.s8(here, 'pi'), _B.out_r64(here, m.pi))
-        self.show(_KS.s8(here, 'floor_real_64'), _B.out_r64(here, _B.ffloor(2.5)))
-        self.show(_KS.s8(here, '100.0 / 7'), _B.out_r64(here, 100.0 / 7.0))
-        self.show(_KS.s8(here, '1e16 + 1'), _B.out_r64(here, 1e+16 + 1.0))
-        self.show(_KS.s8(here, '0.000123'), _B.out_r64(here, 0.000123))
-        self.show(_KS.s8(here, '123456789012.0'), _B.out_r64(here, 123456789012.0))
-        self.show(_KS.s8(here, 'division by zero'), _B.out_r64(here, 1.0 / zero if zero else _B.fdiv(1.0, zero)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, -1.0 / zero if zero else _B.fdiv(-1.0, zero))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.isnan(zero / zero if zero else _B.fdiv(zero, zero)))).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, 7 / none if none else _B.fdiv(7, none))))
+        self.show(_KS.s8(here, 'sqrt 2'), _B.out_r64(here, m.sqrt(2.0)))  # real_numbers.e:61
+        self.show(_KS.s8(here, 'pi'), _B.out_r64(here, m.pi))  # real_numbers.e:62
+        self.show(_KS.s8(here, 'floor_real_64'), _B.out_r64(here, _B.ffloor(2.5)))  # real_numbers.e:63
+        self.show(_KS.s8(here, '100.0 / 7'), _B.out_r64(here, 100.0 / 7.0))  # real_numbers.e:64
+        self.show(_KS.s8(here, '1e16 + 1'), _B.out_r64(here, 1e+16 + 1.0))  # real_numbers.e:65
+        self.show(_KS.s8(here, '0.000123'), _B.out_r64(here, 0.000123))  # real_numbers.e:66
+        self.show(_KS.s8(here, '123456789012.0'), _B.out_r64(here, 123456789012.0))  # real_numbers.e:67
+        self.show(_KS.s8(here, 'division by zero'), _B.out_r64(here, 1.0 / zero if zero else _B.fdiv(1.0, zero)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, -1.0 / zero if zero else _B.fdiv(-1.0, zero))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.isnan(zero / zero if zero else _B.fdiv(zero, zero)))).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, 7 / none if none else _B.fdiv(7, none))))  # real_numbers.e:68
 
-    def show(self, label, value):
+    def show(self, label, value):  # real_numbers.e:71
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # real_numbers.e:73
 _S.register('REAL_NUMBERS', REAL_NUMBERS)
 import eiffel_base.double_math as _L_double_math

@@ -11,92 +11,92 @@ class RESCUE_RETRY(EXCEPTION_MANAGER_FACTORY):
     _key_ = 'RESCUE_RETRY'
     _conforms_ = frozenset(['ANY', 'EXCEPTION_MANAGER_FACTORY', 'RESCUE_RETRY'])
 
-    def make(self):
+    def make(self):  # rescue_retry.e:15
         here = self._region_
-        self.fragile()
-        self.print_(_KS.s8(here, 'fragile done after ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ' attempts\n')))
-        self.safe_call(1)
-        self.safe_call(2)
-        self.safe_call(3)
-        self.safe_call(4)
-        self.safe_call(5)
-        self.print_(_KS.s8(here, 'recovered: ').plus(_B.out_int(here, self.recovered)).plus(_KS.s8(here, '\n')))
+        self.fragile()  # rescue_retry.e:17
+        self.print_(_KS.s8(here, 'fragile done after ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ' attempts\n')))  # rescue_retry.e:18
+        self.safe_call(1)  # rescue_retry.e:19
+        self.safe_call(2)  # rescue_retry.e:20
+        self.safe_call(3)  # rescue_retry.e:21
+        self.safe_call(4)  # rescue_retry.e:22
+        self.safe_call(5)  # rescue_retry.e:23
+        self.print_(_KS.s8(here, 'recovered: ').plus(_B.out_int(here, self.recovered)).plus(_KS.s8(here, '\n')))  # rescue_retry.e:24
     attempts = 0
     recovered = 0
 
-    def fragile(self):
+    def fragile(self):  # rescue_retry.e:33
         here = self._region_
         while True:
             try:
-                self.attempts = self.attempts + 1
+                self.attempts = self.attempts + 1  # rescue_retry.e:36
                 if self.attempts > 2147483647:
                     self.attempts = _B.wrap_i32(self.attempts)
-                self.print_(_KS.s8(here, 'attempt ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, '\n')))
-                if self.attempts < 3:
-                    self.raise_developer(_KS.s8(here, 'not yet'))
-                self.print_(_KS.s8(here, 'succeeded\n'))
-                break
+                self.print_(_KS.s8(here, 'attempt ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, '\n')))  # rescue_retry.e:37
+                if self.attempts < 3:  # rescue_retry.e:38
+                    self.raise_developer(_KS.s8(here, 'not yet'))  # rescue_retry.e:39
+                self.print_(_KS.s8(here, 'succeeded\n'))  # rescue_retry.e:41
+                break  # rescue_retry.e:33
             except Exception as _exception1:
                 _S.caught(here, _exception1)
-                self.print_(_KS.s8(here, 'rescue after attempt ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, '\n')))
-                continue
-                raise
+                self.print_(_KS.s8(here, 'rescue after attempt ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, '\n')))  # rescue_retry.e:43
+                continue  # rescue_retry.e:44
+                raise  # rescue_retry.e:33
 
-    def raise_developer(self, text):
+    def raise_developer(self, text):  # rescue_retry.e:47
         here = self._region_
-        e = None
-        e = here.new(_L_developer_exception.DEVELOPER_EXCEPTION)
+        e = None  # rescue_retry.e:49
+        e = here.new(_L_developer_exception.DEVELOPER_EXCEPTION)  # rescue_retry.e:51
         e.default_create()
-        e.set_description(text)
-        e.raise_()
+        e.set_description(text)  # rescue_retry.e:52
+        e.raise_()  # rescue_retry.e:53
 
-    def safe_call(self, kind):
+    def safe_call(self, kind):  # rescue_retry.e:56
         here = self._region_
-        failed = False
-        while True:
+        failed = False  # rescue_retry.e:59
+        while True:  # rescue_retry.e:56
             try:
-                if failed:
-                    self.recovered = self.recovered + 1
+                if failed:  # rescue_retry.e:61
+                    self.recovered = self.recovered + 1  # rescue_retry.e:62
                     if self.recovered > 2147483647:
                         self.recovered = _B.wrap_i32(self.recovered)
                 else:
-                    self.failing(kind)
-                    self.print_(_KS.s8(here, 'no failure\n'))
-                break
+                    self.failing(kind)  # rescue_retry.e:64
+                    self.print_(_KS.s8(here, 'no failure\n'))  # rescue_retry.e:65
+                break  # rescue_retry.e:56
             except Exception as _exception1:
                 _S.caught(here, _exception1)
-                if (e := self.exception_manager.last_exception) is not None:
-                    self.print_(_KS.s8(here, 'caught ').plus(e.original.generator).plus(_KS.s8(here, ' tag: ')).plus(e.original.tag).plus(_KS.s8(here, '\n')))
-                failed = True
-                continue
-                raise
+                if (e := self.exception_manager.last_exception) is not None:  # rescue_retry.e:68
+                    self.print_(_KS.s8(here, 'caught ').plus(e.original.generator).plus(_KS.s8(here, ' tag: ')).plus(e.original.tag).plus(_KS.s8(here, '\n')))  # rescue_retry.e:69
+                failed = True  # rescue_retry.e:71
+                continue  # rescue_retry.e:72
+                raise  # rescue_retry.e:56
 
-    def failing(self, kind):
+    def failing(self, kind):  # rescue_retry.e:75
         here = self._region_
-        _inspect1 = kind
-        if _inspect1 == 1:
-            self.raise_developer(_KS.s8(here, 'custom failure'))
-        elif _inspect1 == 2:
-            self.positive_only(-1)
-        elif _inspect1 == 3:
-            self.print_(self.broken_promise)
-        elif _inspect1 == 4:
-            if not kind == 0:
+        _inspect1 = kind  # rescue_retry.e:77
+        if _inspect1 == 1:  # rescue_retry.e:78
+            self.raise_developer(_KS.s8(here, 'custom failure'))  # rescue_retry.e:79
+        elif _inspect1 == 2:  # rescue_retry.e:80
+            self.positive_only(-1)  # rescue_retry.e:81
+        elif _inspect1 == 3:  # rescue_retry.e:82
+            self.print_(self.broken_promise)  # rescue_retry.e:83
+        elif _inspect1 == 4:  # rescue_retry.e:84
+            if not kind == 0:  # rescue_retry.e:86
                 _S.assertion_failed('check', 'never', _W_1)
         else:
-            self.print_(_KS.s8(here, 'kind ').plus(_B.out_int(here, kind)).plus(_KS.s8(here, '\n')))
+            self.print_(_KS.s8(here, 'kind ').plus(_B.out_int(here, kind)).plus(_KS.s8(here, '\n')))  # rescue_retry.e:89
 
     @property
     @_rt.leaf
-    def broken_promise(self):
-        Result = 1
-        if not Result == 0:
+    def broken_promise(self):  # rescue_retry.e:93
+        Result = 1  # rescue_retry.e:95
+        if not Result == 0:  # rescue_retry.e:97
             _S.assertion_failed('postcondition', 'zero', _W_2)
-        return Result
+        return Result  # rescue_retry.e:93
 
     @_rt.leaf
-    def positive_only(self, n):
-        if not n > 0:
+    def positive_only(self, n):  # rescue_retry.e:100
+        if not n > 0:  # rescue_retry.e:102
             _S.assertion_failed('precondition', 'positive', _W_3)
 _S.register('RESCUE_RETRY', RESCUE_RETRY)
 import eiffel_base.developer_exception as _L_developer_exception

@@ -11,32 +11,32 @@ class GREETER(ANY):
     _conforms_ = frozenset(['ANY', 'GREETER'])
     greetings = 0
 
-    def last_init_(self):
+    def last_init_(self):  # greeter.e:8
         here = self._region_
         Result = None
-        Result = _KS.s8(here, '')
-        return Result
+        Result = _KS.s8(here, '')  # greeter.e:10
+        return Result  # greeter.e:8
     last = _S.SelfInitialising(last_init_, 'last')
     partner = None
 
-    def greet(self, name):
+    def greet(self, name):  # greeter.e:17
         here = self._region_
         with here.reserve1(name, _W_1):
-            self.greetings = self.greetings + 1
+            self.greetings = self.greetings + 1  # greeter.e:19
             if self.greetings > 2147483647:
                 self.greetings = _B.wrap_i32(self.greetings)
-            self.last = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (name,))
-            self.print_(_KS.s8(here, 'hello ').plus(self.last).plus(_KS.s8(here, '\n')))
+            self.last = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (name,))  # greeter.e:20
+            self.print_(_KS.s8(here, 'hello ').plus(self.last).plus(_KS.s8(here, '\n')))  # greeter.e:21
 
     @_rt.leaf
-    def set_partner(self, p):
-        self.partner = p
+    def set_partner(self, p):  # greeter.e:24
+        self.partner = p  # greeter.e:26
 
     @property
-    def new_greeter(self):
+    def new_greeter(self):  # greeter.e:29
         here = self._region_
         Result = None
-        Result = here.new_separate(GREETER, GREETER.default_create, ())
-        return Result
+        Result = here.new_separate(GREETER, GREETER.default_create, ())  # greeter.e:32
+        return Result  # greeter.e:29
 _S.register('GREETER', GREETER)
 import eiffel_base.string_8 as _L_string_8

@@ -22,55 +22,55 @@ class SCOOP_AGENTS(ANY):
     _key_ = 'SCOOP_AGENTS'
     _conforms_ = frozenset(['ANY', 'SCOOP_AGENTS'])
 
-    def make(self):
+    def make(self):  # scoop_agents.e:12
         here = self._region_
-        g = None
-        other = None
-        action = None
-        g = here.new_separate(_M_greeter.GREETER, _M_greeter.GREETER.default_create, ())
-        action = self.greeting_agent(g)
-        self.run_agent(action, _KS.s8(here, 'agent'))
-        self.print_(_KS.s8(here, 'greetings: ').plus(_B.out_int(here, self.count(g))).plus(_KS.s8(here, '\n')))
-        other = self.spawn(g)
-        self.link(g, other)
-        self.greet_partner(g)
-        self.print_(_KS.s8(here, 'partner greetings: ').plus(_B.out_int(here, self.count(other))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.count(g))).plus(_KS.s8(here, '\n')))
+        g = None  # scoop_agents.e:14
+        other = None  # scoop_agents.e:15
+        action = None  # scoop_agents.e:16
+        g = here.new_separate(_M_greeter.GREETER, _M_greeter.GREETER.default_create, ())  # scoop_agents.e:18
+        action = self.greeting_agent(g)  # scoop_agents.e:19
+        self.run_agent(action, _KS.s8(here, 'agent'))  # scoop_agents.e:20
+        self.print_(_KS.s8(here, 'greetings: ').plus(_B.out_int(here, self.count(g))).plus(_KS.s8(here, '\n')))  # scoop_agents.e:21
+        other = self.spawn(g)  # scoop_agents.e:22
+        self.link(g, other)  # scoop_agents.e:23
+        self.greet_partner(g)  # scoop_agents.e:24
+        self.print_(_KS.s8(here, 'partner greetings: ').plus(_B.out_int(here, self.count(other))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.count(g))).plus(_KS.s8(here, '\n')))  # scoop_agents.e:25
 
-    def greeting_agent(self, g):
+    def greeting_agent(self, g):  # scoop_agents.e:30
         here = self._region_
         with here.reserve1(g, _W_3):
-            Result = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_2,), _S.dispatcher('greet', False), [g, None], (1,))
-        return Result
+            Result = _S.new_agent(here, _L_procedure.PROCEDURE, (_T_2,), _S.dispatcher('greet', False), [g, None], (1,))  # scoop_agents.e:32
+        return Result  # scoop_agents.e:30
 
-    def run_agent(self, a, s_):
+    def run_agent(self, a, s_):  # scoop_agents.e:35
         here = self._region_
         with here.reserve1(a, _W_4):
-            here.call(a, _L_procedure.PROCEDURE.call, (_S.new_tuple(here, [s_], (_T_1,)),))
+            here.call(a, _L_procedure.PROCEDURE.call, (_S.new_tuple(here, [s_], (_T_1,)),))  # scoop_agents.e:37
 
-    def count(self, g):
+    def count(self, g):  # scoop_agents.e:40
         here = self._region_
         with here.reserve1(g, _W_7):
-            Result = here.leaf_query(g, _G_5, (), _W_6)
-        return Result
+            Result = here.leaf_query(g, _G_5, (), _W_6)  # scoop_agents.e:42
+        return Result  # scoop_agents.e:40
 
-    def spawn(self, g):
+    def spawn(self, g):  # scoop_agents.e:45
         here = self._region_
         with here.reserve1(g, _W_9):
-            Result = here.query(g, _M_greeter.GREETER.new_greeter.fget, (), _W_8)
-        return Result
+            Result = here.query(g, _M_greeter.GREETER.new_greeter.fget, (), _W_8)  # scoop_agents.e:47
+        return Result  # scoop_agents.e:45
 
-    def link(self, g, p):
+    def link(self, g, p):  # scoop_agents.e:50
         here = self._region_
         with here.reserve((g, p), where=_W_10):
-            here.call(g, _M_greeter.GREETER.set_partner, (p,))
+            here.call(g, _M_greeter.GREETER.set_partner, (p,))  # scoop_agents.e:52
 
-    def greet_partner(self, g):
+    def greet_partner(self, g):  # scoop_agents.e:55
         here = self._region_
         with here.reserve1(g, _W_14):
-            if (p := here.leaf_query(g, _G_11, (), _W_12)) is not None:
-                q = p
+            if (p := here.leaf_query(g, _G_11, (), _W_12)) is not None:  # scoop_agents.e:57
+                q = p  # scoop_agents.e:58
                 with here.reserve1(q, _W_13):
-                    here.call(q, _M_greeter.GREETER.greet, (_KS.s8(here, 'from the root'),))
+                    here.call(q, _M_greeter.GREETER.greet, (_KS.s8(here, 'from the root'),))  # scoop_agents.e:59
 _S.register('SCOOP_AGENTS', SCOOP_AGENTS)
 import scoop_agents.greeter as _M_greeter
 import eiffel_base.procedure as _L_procedure

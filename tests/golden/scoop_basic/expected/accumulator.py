@@ -9,19 +9,19 @@ class ACCUMULATOR(ANY):
     _key_ = 'ACCUMULATOR'
     _conforms_ = frozenset(['ACCUMULATOR', 'ANY'])
 
-    def make(self, n):
+    def make(self, n):  # accumulator.e:9
         here = self._region_
         with here.reserve1(n, _W_1):
-            self.name = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (n,))
-            self.print_(_KS.s8(here, 'created ').plus(self.name).plus(_KS.s8(here, '\n')))
+            self.name = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (n,))  # accumulator.e:11
+            self.print_(_KS.s8(here, 'created ').plus(self.name).plus(_KS.s8(here, '\n')))  # accumulator.e:12
     name = None
     sum = 0
 
-    def add(self, v):
+    def add(self, v):  # accumulator.e:23
         here = self._region_
-        self.sum = self.sum + v
+        self.sum = self.sum + v  # accumulator.e:25
         if not -2147483648 <= self.sum <= 2147483647:
             self.sum = _B.wrap_i32(self.sum)
-        self.print_(self.name.plus(_KS.s8(here, ' + ')).plus(_B.out_int(here, v)).plus(_KS.s8(here, ' = ')).plus(_B.out_int(here, self.sum)).plus(_KS.s8(here, '\n')))
+        self.print_(self.name.plus(_KS.s8(here, ' + ')).plus(_B.out_int(here, v)).plus(_KS.s8(here, ' = ')).plus(_B.out_int(here, self.sum)).plus(_KS.s8(here, '\n')))  # accumulator.e:26
 _S.register('ACCUMULATOR', ACCUMULATOR)
 import eiffel_base.string_8 as _L_string_8

@@ -17,48 +17,48 @@ class SCOOP_BASIC(ANY):
     _key_ = 'SCOOP_BASIC'
     _conforms_ = frozenset(['ANY', 'SCOOP_BASIC'])
 
-    def make(self):
+    def make(self):  # scoop_basic.e:12
         here = self._region_
-        a = None
+        a = None  # scoop_basic.e:14
         b_ = None
-        a = here.new_separate(_M_accumulator.ACCUMULATOR, _M_accumulator.ACCUMULATOR.make, (_KS.s8(here, 'a'),))
-        b_ = here.new_separate(_M_accumulator.ACCUMULATOR, _M_accumulator.ACCUMULATOR.make, (_KS.s8(here, 'b'),))
-        self.feed(a, 1, 5)
-        self.feed(b_, 10, 12)
-        self.print_(_KS.s8(here, 'a total ').plus(_B.out_int(here, self.total(a))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'b total ').plus(_B.out_int(here, self.total(b_))).plus(_KS.s8(here, '\n')))
-        x = a
+        a = here.new_separate(_M_accumulator.ACCUMULATOR, _M_accumulator.ACCUMULATOR.make, (_KS.s8(here, 'a'),))  # scoop_basic.e:16
+        b_ = here.new_separate(_M_accumulator.ACCUMULATOR, _M_accumulator.ACCUMULATOR.make, (_KS.s8(here, 'b'),))  # scoop_basic.e:17
+        self.feed(a, 1, 5)  # scoop_basic.e:18
+        self.feed(b_, 10, 12)  # scoop_basic.e:19
+        self.print_(_KS.s8(here, 'a total ').plus(_B.out_int(here, self.total(a))).plus(_KS.s8(here, '\n')))  # scoop_basic.e:20
+        self.print_(_KS.s8(here, 'b total ').plus(_B.out_int(here, self.total(b_))).plus(_KS.s8(here, '\n')))  # scoop_basic.e:21
+        x = a  # scoop_basic.e:22
         y = b_
         with here.reserve((x, y), where=_W_3):
-            here.call(x, _M_accumulator.ACCUMULATOR.add, (100,))
-            here.call(y, _M_accumulator.ACCUMULATOR.add, (200,))
-            self.print_(_KS.s8(here, 'in separate block: ').plus(_B.out_int(here, _B.i32(here.leaf_query(x, _G_1, (), _W_2) + here.leaf_query(y, _G_1, (), _W_2)))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'name of a: ').plus(self.name_of(a)).plus(_KS.s8(here, '\n')))
+            here.call(x, _M_accumulator.ACCUMULATOR.add, (100,))  # scoop_basic.e:23
+            here.call(y, _M_accumulator.ACCUMULATOR.add, (200,))  # scoop_basic.e:24
+            self.print_(_KS.s8(here, 'in separate block: ').plus(_B.out_int(here, _B.i32(here.leaf_query(x, _G_1, (), _W_2) + here.leaf_query(y, _G_1, (), _W_2)))).plus(_KS.s8(here, '\n')))  # scoop_basic.e:25
+        self.print_(_KS.s8(here, 'name of a: ').plus(self.name_of(a)).plus(_KS.s8(here, '\n')))  # scoop_basic.e:27
 
-    def feed(self, acc, low, high):
+    def feed(self, acc, low, high):  # scoop_basic.e:32
         here = self._region_
-        i = 0
-        with here.reserve1(acc, _W_4):
-            i = low
-            while not i > high:
-                here.call(acc, _M_accumulator.ACCUMULATOR.add, (i,))
-                i = i + 1
+        i = 0  # scoop_basic.e:35
+        with here.reserve1(acc, _W_4):  # scoop_basic.e:32
+            i = low  # scoop_basic.e:38
+            while not i > high:  # scoop_basic.e:37
+                here.call(acc, _M_accumulator.ACCUMULATOR.add, (i,))  # scoop_basic.e:42
+                i = i + 1  # scoop_basic.e:43
                 if i > 2147483647:
                     i = _B.wrap_i32(i)
 
-    def total(self, acc):
+    def total(self, acc):  # scoop_basic.e:47
         here = self._region_
         with here.reserve1(acc, _W_6):
-            Result = here.leaf_query(acc, _G_1, (), _W_5)
-        return Result
+            Result = here.leaf_query(acc, _G_1, (), _W_5)  # scoop_basic.e:49
+        return Result  # scoop_basic.e:47
 
-    def name_of(self, acc):
+    def name_of(self, acc):  # scoop_basic.e:52
         here = self._region_
         Result = None
         with here.reserve1(acc, _W_9):
-            Result = here.new(_L_string_8.STRING_8)
+            Result = here.new(_L_string_8.STRING_8)  # scoop_basic.e:54
             Result.make_from_separate(here.leaf_query(acc, _G_7, (), _W_8))
-        return Result
+        return Result  # scoop_basic.e:52
 _S.register('SCOOP_BASIC', SCOOP_BASIC)
 import scoop_basic.accumulator as _M_accumulator
 import eiffel_base.string_8 as _L_string_8

@@ -10,11 +10,11 @@ class HELPER(ANY):
     _key_ = 'HELPER'
     _conforms_ = frozenset(['ANY', 'HELPER'])
 
-    def work(self, client):
+    def work(self, client):  # helper.e:6
         here = self._region_
         with here.reserve1(client, _W_2):
-            here.call(client, _M_scoop_callback.SCOOP_CALLBACK.record, (_KS.s8(here, 'first'),))
-            here.call(client, _M_scoop_callback.SCOOP_CALLBACK.record, (_KS.s8(here, 'second'),))
-            self.print_(_KS.s8(here, 'helper sees ').plus(_B.out_int(here, here.leaf_query(client, _M_scoop_callback.SCOOP_CALLBACK.count.fget, (), _W_1))).plus(_KS.s8(here, ' entries\n')))
+            here.call(client, _M_scoop_callback.SCOOP_CALLBACK.record, (_KS.s8(here, 'first'),))  # helper.e:9
+            here.call(client, _M_scoop_callback.SCOOP_CALLBACK.record, (_KS.s8(here, 'second'),))  # helper.e:10
+            self.print_(_KS.s8(here, 'helper sees ').plus(_B.out_int(here, here.leaf_query(client, _M_scoop_callback.SCOOP_CALLBACK.count.fget, (), _W_1))).plus(_KS.s8(here, ' entries\n')))  # helper.e:11
 _S.register('HELPER', HELPER)
 import scoop_callback.scoop_callback as _M_scoop_callback

@@ -11,34 +11,34 @@ class SCOOP_CALLBACK(ANY):
     _key_ = 'SCOOP_CALLBACK'
     _conforms_ = frozenset(['ANY', 'SCOOP_CALLBACK'])
 
-    def make(self):
+    def make(self):  # scoop_callback.e:12
         here = self._region_
-        h = None
-        self.log = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
-        h = here.new_separate(_M_helper.HELPER, _M_helper.HELPER.default_create, ())
-        self.delegate(h)
-        self.print_(_KS.s8(here, 'log has ').plus(_B.out_int(here, self.count)).plus(_KS.s8(here, ' entries\n')))
-        for entry in _S.cursors(self.log):
-            self.print_(entry.item.plus(_KS.s8(here, '\n')))
+        h = None  # scoop_callback.e:14
+        self.log = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))  # scoop_callback.e:16
+        h = here.new_separate(_M_helper.HELPER, _M_helper.HELPER.default_create, ())  # scoop_callback.e:17
+        self.delegate(h)  # scoop_callback.e:18
+        self.print_(_KS.s8(here, 'log has ').plus(_B.out_int(here, self.count)).plus(_KS.s8(here, ' entries\n')))  # scoop_callback.e:19
+        for entry in _S.cursors(self.log):  # scoop_callback.e:20
+            self.print_(entry.item.plus(_KS.s8(here, '\n')))  # scoop_callback.e:21
 
-    def record(self, s_):
+    def record(self, s_):  # scoop_callback.e:27
         here = self._region_
         with here.reserve1(s_, _W_2):
-            self.log.extend(_S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (s_,)))
-            self.print_(_KS.s8(here, 'recorded ').plus(self.log.last).plus(_KS.s8(here, '\n')))
+            self.log.extend(_S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (s_,)))  # scoop_callback.e:29
+            self.print_(_KS.s8(here, 'recorded ').plus(self.log.last).plus(_KS.s8(here, '\n')))  # scoop_callback.e:30
 
     @property
     @_rt.leaf
-    def count(self):
-        Result = self.log.count
-        return Result
+    def count(self):  # scoop_callback.e:33
+        Result = self.log.count  # scoop_callback.e:35
+        return Result  # scoop_callback.e:33
     log = None
 
-    def delegate(self, h):
+    def delegate(self, h):  # scoop_callback.e:42
         here = self._region_
         with here.reserve1(h, _W_3):
-            here.call(h, _M_helper.HELPER.work, (self,))
-            self.print_(_KS.s8(here, 'delegate returned\n'))
+            here.call(h, _M_helper.HELPER.work, (self,))  # scoop_callback.e:44
+            self.print_(_KS.s8(here, 'delegate returned\n'))  # scoop_callback.e:45
 _S.register('SCOOP_CALLBACK', SCOOP_CALLBACK)
 import eiffel_base.arrayed_list as _L_arrayed_list
 import scoop_callback.helper as _M_helper

@@ -10,17 +10,17 @@ class MAILBOX(ANY):
     _conforms_ = frozenset(['ANY', 'MAILBOX'])
     has_mail = False
 
-    def mail_init_(self):
+    def mail_init_(self):  # mailbox.e:8
         here = self._region_
         Result = None
-        Result = _KS.s8(here, '')
-        return Result
+        Result = _KS.s8(here, '')  # mailbox.e:10
+        return Result  # mailbox.e:8
     mail = _S.SelfInitialising(mail_init_, 'mail')
 
-    def post(self, m):
+    def post(self, m):  # mailbox.e:15
         here = self._region_
         with here.reserve1(m, _W_1):
-            self.mail = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (m,))
-            self.has_mail = True
+            self.mail = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (m,))  # mailbox.e:17
+            self.has_mail = True  # mailbox.e:18
 _S.register('MAILBOX', MAILBOX)
 import eiffel_base.string_8 as _L_string_8

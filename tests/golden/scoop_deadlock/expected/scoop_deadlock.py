@@ -14,20 +14,20 @@ class SCOOP_DEADLOCK(ANY):
     _key_ = 'SCOOP_DEADLOCK'
     _conforms_ = frozenset(['ANY', 'SCOOP_DEADLOCK'])
 
-    def make(self):
+    def make(self):  # scoop_deadlock.e:12
         here = self._region_
-        box = None
-        box = here.new_separate(_M_mailbox.MAILBOX, _M_mailbox.MAILBOX.default_create, ())
-        self.print_(_KS.s8(here, 'waiting for mail\n'))
-        self.print_(_KS.s8(here, 'got ').plus(self.read(box)).plus(_KS.s8(here, '\n')))
+        box = None  # scoop_deadlock.e:14
+        box = here.new_separate(_M_mailbox.MAILBOX, _M_mailbox.MAILBOX.default_create, ())  # scoop_deadlock.e:16
+        self.print_(_KS.s8(here, 'waiting for mail\n'))  # scoop_deadlock.e:17
+        self.print_(_KS.s8(here, 'got ').plus(self.read(box)).plus(_KS.s8(here, '\n')))  # scoop_deadlock.e:18
 
-    def read(self, box):
+    def read(self, box):  # scoop_deadlock.e:23
         here = self._region_
         Result = None
         with here.reserve1(box, _W_3, _PRE_6, (here, self, box)):
-            Result = here.new(_L_string_8.STRING_8)
+            Result = here.new(_L_string_8.STRING_8)  # scoop_deadlock.e:27
             Result.make_from_separate(here.leaf_query(box, _G_1, (), _W_2))
-        return Result
+        return Result  # scoop_deadlock.e:23
 _S.register('SCOOP_DEADLOCK', SCOOP_DEADLOCK)
 import scoop_deadlock.mailbox as _M_mailbox
 import eiffel_base.string_8 as _L_string_8

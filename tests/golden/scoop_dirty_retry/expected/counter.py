@@ -12,20 +12,20 @@ class COUNTER(ANY):
 
     @property
     @_rt.leaf
-    def next(self):
+    def next(self):  # counter.e:8
         Result = 0
-        self.count = self.count + 1
+        self.count = self.count + 1  # counter.e:11
         if self.count > 2147483647:
             self.count = _B.wrap_i32(self.count)
-        Result = self.count
-        return Result
+        Result = self.count  # counter.e:12
+        return Result  # counter.e:8
 
     @_rt.leaf
-    def set(self, v):
-        self.count = v
+    def set(self, v):  # counter.e:17
+        self.count = v  # counter.e:19
 
     @_rt.leaf
-    def explode(self):
-        if not self.count < 0:
+    def explode(self):  # counter.e:22
+        if not self.count < 0:  # counter.e:24
             _S.assertion_failed('precondition', 'never_true', _W_1)
 _S.register('COUNTER', COUNTER)

@@ -13,39 +13,39 @@ class SCOOP_DIRTY_RETRY(ANY):
     _key_ = 'SCOOP_DIRTY_RETRY'
     _conforms_ = frozenset(['ANY', 'SCOOP_DIRTY_RETRY'])
 
-    def make(self):
+    def make(self):  # scoop_dirty_retry.e:17
         here = self._region_
-        c = None
-        c = here.new_separate(_M_counter.COUNTER, _M_counter.COUNTER.default_create, ())
-        self.print_(_KS.s8(here, 'result ').plus(_B.out_int(here, self.attempt(c))).plus(_KS.s8(here, ' after ')).plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ' attempts\n')))
-        self.print_(_KS.s8(here, 'count after the reservation: ').plus(_B.out_int(here, self.count_of(c))).plus(_KS.s8(here, '\n')))
+        c = None  # scoop_dirty_retry.e:19
+        c = here.new_separate(_M_counter.COUNTER, _M_counter.COUNTER.default_create, ())  # scoop_dirty_retry.e:21
+        self.print_(_KS.s8(here, 'result ').plus(_B.out_int(here, self.attempt(c))).plus(_KS.s8(here, ' after ')).plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ' attempts\n')))  # scoop_dirty_retry.e:22
+        self.print_(_KS.s8(here, 'count after the reservation: ').plus(_B.out_int(here, self.count_of(c))).plus(_KS.s8(here, '\n')))  # scoop_dirty_retry.e:23
     attempts = 0
 
-    def attempt(self, c):
+    def attempt(self, c):  # scoop_dirty_retry.e:30
         here = self._region_
         Result = 0
         with here.reserve1(c, _W_2):
             while True:
                 try:
-                    self.attempts = self.attempts + 1
+                    self.attempts = self.attempts + 1  # scoop_dirty_retry.e:32
                     if self.attempts > 2147483647:
                         self.attempts = _B.wrap_i32(self.attempts)
-                    if self.attempts == 1:
-                        here.leaf_call(c, _M_counter.COUNTER.explode, ())
-                        here.leaf_call(c, _M_counter.COUNTER.set, (100,))
-                    Result = here.leaf_query(c, _M_counter.COUNTER.next.fget, (), _W_1)
-                    break
+                    if self.attempts == 1:  # scoop_dirty_retry.e:33
+                        here.leaf_call(c, _M_counter.COUNTER.explode, ())  # scoop_dirty_retry.e:34
+                        here.leaf_call(c, _M_counter.COUNTER.set, (100,))  # scoop_dirty_retry.e:35
+                    Result = here.leaf_query(c, _M_counter.COUNTER.next.fget, (), _W_1)  # scoop_dirty_retry.e:37
+                    break  # scoop_dirty_retry.e:30
                 except Exception as _exception1:
                     _S.caught(here, _exception1)
-                    self.print_(_KS.s8(here, 'attempt ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ' failed\n')))
-                    continue
-                    raise
+                    self.print_(_KS.s8(here, 'attempt ').plus(_B.out_int(here, self.attempts)).plus(_KS.s8(here, ' failed\n')))  # scoop_dirty_retry.e:39
+                    continue  # scoop_dirty_retry.e:40
+                    raise  # scoop_dirty_retry.e:30
         return Result
 
-    def count_of(self, c):
+    def count_of(self, c):  # scoop_dirty_retry.e:43
         here = self._region_
         with here.reserve1(c, _W_5):
-            Result = here.leaf_query(c, _G_3, (), _W_4)
-        return Result
+            Result = here.leaf_query(c, _G_3, (), _W_4)  # scoop_dirty_retry.e:45
+        return Result  # scoop_dirty_retry.e:43
 _S.register('SCOOP_DIRTY_RETRY', SCOOP_DIRTY_RETRY)
 import scoop_dirty_retry.counter as _M_counter

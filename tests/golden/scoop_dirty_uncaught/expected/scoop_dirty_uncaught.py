@@ -10,20 +10,20 @@ class SCOOP_DIRTY_UNCAUGHT(ANY):
     _key_ = 'SCOOP_DIRTY_UNCAUGHT'
     _conforms_ = frozenset(['ANY', 'SCOOP_DIRTY_UNCAUGHT'])
 
-    def make(self):
+    def make(self):  # scoop_dirty_uncaught.e:15
         here = self._region_
-        c = None
-        c = here.new_separate(_M_counter.COUNTER, _M_counter.COUNTER.default_create, ())
-        self.print_(_KS.s8(here, 'before\n'))
-        self.print_(_B.out_int(here, self.failing_then_query(c)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'never printed\n'))
+        c = None  # scoop_dirty_uncaught.e:17
+        c = here.new_separate(_M_counter.COUNTER, _M_counter.COUNTER.default_create, ())  # scoop_dirty_uncaught.e:19
+        self.print_(_KS.s8(here, 'before\n'))  # scoop_dirty_uncaught.e:20
+        self.print_(_B.out_int(here, self.failing_then_query(c)).plus(_KS.s8(here, '\n')))  # scoop_dirty_uncaught.e:21
+        self.print_(_KS.s8(here, 'never printed\n'))  # scoop_dirty_uncaught.e:22
 
-    def failing_then_query(self, c):
+    def failing_then_query(self, c):  # scoop_dirty_uncaught.e:27
         here = self._region_
         Result = 0
         with here.reserve1(c, _W_2):
-            here.leaf_call(c, _M_counter.COUNTER.explode, ())
-            Result = here.leaf_query(c, _M_counter.COUNTER.next.fget, (), _W_1)
-        return Result
+            here.leaf_call(c, _M_counter.COUNTER.explode, ())  # scoop_dirty_uncaught.e:29
+            Result = here.leaf_query(c, _M_counter.COUNTER.next.fget, (), _W_1)  # scoop_dirty_uncaught.e:30
+        return Result  # scoop_dirty_uncaught.e:27
 _S.register('SCOOP_DIRTY_UNCAUGHT', SCOOP_DIRTY_UNCAUGHT)
 import scoop_dirty_uncaught.counter as _M_counter

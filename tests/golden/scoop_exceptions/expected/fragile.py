@@ -13,19 +13,19 @@ class FRAGILE(ANY):
 
     @property
     @_rt.leaf
-    def checked_value(self):
-        if not self.value > 0:
+    def checked_value(self):  # fragile.e:8
+        if not self.value > 0:  # fragile.e:10
             _S.assertion_failed('precondition', 'positive', _W_1)
-        Result = self.value
-        return Result
+        Result = self.value  # fragile.e:12
+        return Result  # fragile.e:8
 
     @_rt.leaf
-    def explode(self):
-        if not self.value < 0:
+    def explode(self):  # fragile.e:17
+        if not self.value < 0:  # fragile.e:19
             _S.assertion_failed('precondition', 'never_true', _W_2)
-        self.value = -1
+        self.value = -1  # fragile.e:21
 
     @_rt.leaf
-    def set(self, v):
-        self.value = v
+    def set(self, v):  # fragile.e:24
+        self.value = v  # fragile.e:26
 _S.register('FRAGILE', FRAGILE)

@@ -17,70 +17,70 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
     _key_ = 'SCOOP_EXCEPTIONS'
     _conforms_ = frozenset(['ANY', 'EXCEPTION_MANAGER_FACTORY', 'SCOOP_EXCEPTIONS'])
 
-    def make(self):
+    def make(self):  # scoop_exceptions.e:15
         here = self._region_
-        f = None
-        f = here.new_separate(_M_fragile.FRAGILE, _M_fragile.FRAGILE.default_create, ())
-        self.fire_and_forget(f)
-        self.print_(_KS.s8(here, 'after the lost exception\n'))
-        self.set(f, 7)
-        self.print_(_KS.s8(here, 'supplier still usable: ').plus(_B.out_int(here, self.value(f))).plus(_KS.s8(here, '\n')))
-        self.print_(self.guarded_query(f, 0).plus(_KS.s8(here, '\n')))
-        self.print_(self.guarded_query(f, 5).plus(_KS.s8(here, '\n')))
-        self.print_(self.dirty(f).plus(_KS.s8(here, '\n')))
+        f = None  # scoop_exceptions.e:17
+        f = here.new_separate(_M_fragile.FRAGILE, _M_fragile.FRAGILE.default_create, ())  # scoop_exceptions.e:19
+        self.fire_and_forget(f)  # scoop_exceptions.e:20
+        self.print_(_KS.s8(here, 'after the lost exception\n'))  # scoop_exceptions.e:21
+        self.set(f, 7)  # scoop_exceptions.e:22
+        self.print_(_KS.s8(here, 'supplier still usable: ').plus(_B.out_int(here, self.value(f))).plus(_KS.s8(here, '\n')))  # scoop_exceptions.e:23
+        self.print_(self.guarded_query(f, 0).plus(_KS.s8(here, '\n')))  # scoop_exceptions.e:24
+        self.print_(self.guarded_query(f, 5).plus(_KS.s8(here, '\n')))  # scoop_exceptions.e:25
+        self.print_(self.dirty(f).plus(_KS.s8(here, '\n')))  # scoop_exceptions.e:26
 
-    def fire_and_forget(self, f):
+    def fire_and_forget(self, f):  # scoop_exceptions.e:31
         here = self._region_
-        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)
+        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)  # scoop_exceptions.e:33
 
-    def set(self, f, v):
+    def set(self, f, v):  # scoop_exceptions.e:36
         here = self._region_
-        here.command1(f, _M_fragile.FRAGILE.set, (v,), _W_2)
+        here.command1(f, _M_fragile.FRAGILE.set, (v,), _W_2)  # scoop_exceptions.e:38
 
-    def value(self, f):
+    def value(self, f):  # scoop_exceptions.e:41
         here = self._region_
         with here.reserve1(f, _W_5):
-            Result = here.leaf_query(f, _G_3, (), _W_4)
-        return Result
+            Result = here.leaf_query(f, _G_3, (), _W_4)  # scoop_exceptions.e:43
+        return Result  # scoop_exceptions.e:41
 
-    def guarded_query(self, f, v):
+    def guarded_query(self, f, v):  # scoop_exceptions.e:46
         here = self._region_
-        failed = False
-        Result = None
+        failed = False  # scoop_exceptions.e:48
+        Result = None  # scoop_exceptions.e:46
         with here.reserve1(f, _W_7):
             while True:
                 try:
-                    if failed:
-                        Result = _KS.s8(here, 'query failed in the client')
+                    if failed:  # scoop_exceptions.e:50
+                        Result = _KS.s8(here, 'query failed in the client')  # scoop_exceptions.e:51
                     else:
-                        here.leaf_call(f, _M_fragile.FRAGILE.set, (v,))
-                        Result = _KS.s8(here, 'checked value ').plus(_B.out_int(here, here.leaf_query(f, _M_fragile.FRAGILE.checked_value.fget, (), _W_6)))
-                    break
+                        here.leaf_call(f, _M_fragile.FRAGILE.set, (v,))  # scoop_exceptions.e:53
+                        Result = _KS.s8(here, 'checked value ').plus(_B.out_int(here, here.leaf_query(f, _M_fragile.FRAGILE.checked_value.fget, (), _W_6)))  # scoop_exceptions.e:54
+                    break  # scoop_exceptions.e:46
                 except Exception as _exception1:
                     _S.caught(here, _exception1)
-                    failed = True
-                    continue
-                    raise
+                    failed = True  # scoop_exceptions.e:57
+                    continue  # scoop_exceptions.e:58
+                    raise  # scoop_exceptions.e:46
         return Result
 
-    def dirty(self, f):
+    def dirty(self, f):  # scoop_exceptions.e:61
         here = self._region_
-        failed = False
-        Result = None
+        failed = False  # scoop_exceptions.e:64
+        Result = None  # scoop_exceptions.e:61
         with here.reserve1(f, _W_9):
             while True:
                 try:
-                    if failed:
-                        Result = _KS.s8(here, 'dirty region: the query raised')
+                    if failed:  # scoop_exceptions.e:66
+                        Result = _KS.s8(here, 'dirty region: the query raised')  # scoop_exceptions.e:67
                     else:
-                        here.leaf_call(f, _M_fragile.FRAGILE.explode, ())
-                        Result = _KS.s8(here, 'query after failed command returned ').plus(_B.out_int(here, here.leaf_query(f, _G_3, (), _W_8)))
-                    break
+                        here.leaf_call(f, _M_fragile.FRAGILE.explode, ())  # scoop_exceptions.e:69
+                        Result = _KS.s8(here, 'query after failed command returned ').plus(_B.out_int(here, here.leaf_query(f, _G_3, (), _W_8)))  # scoop_exceptions.e:70
+                    break  # scoop_exceptions.e:61
                 except Exception as _exception1:
                     _S.caught(here, _exception1)
-                    failed = True
-                    continue
-                    raise
+                    failed = True  # scoop_exceptions.e:73
+                    continue  # scoop_exceptions.e:74
+                    raise  # scoop_exceptions.e:61
         return Result
 _S.register('SCOOP_EXCEPTIONS', SCOOP_EXCEPTIONS)
 import scoop_exceptions.fragile as _M_fragile

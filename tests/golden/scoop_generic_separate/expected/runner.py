@@ -11,18 +11,18 @@ class RUNNER(ANY):
     _key_ = 'RUNNER'
     _conforms_ = frozenset(['ANY', 'RUNNER'])
 
-    def run(self, w, n):
+    def run(self, w, n):  # runner.e:6
         here = self._region_
         with here.reserve1(w, _W_1):
-            _S.scall(here, w, 'work', (n,), False)
+            _S.scall(here, w, 'work', (n,), False)  # runner.e:9
 
-    def total(self, w):
+    def total(self, w):  # runner.e:12
         here = self._region_
         with here.reserve1(w, _W_3):
-            Result = _S.squery(here, w, 'done', (), False, _W_2)
-        return Result
+            Result = _S.squery(here, w, 'done', (), False, _W_2)  # runner.e:14
+        return Result  # runner.e:12
 
-    def run_all(self, ws, n):
-        for w in _S.cursors(ws):
-            self.run(w.item, n)
+    def run_all(self, ws, n):  # runner.e:17
+        for w in _S.cursors(ws):  # runner.e:19
+            self.run(w.item, n)  # runner.e:20
 _S.register('RUNNER', RUNNER)

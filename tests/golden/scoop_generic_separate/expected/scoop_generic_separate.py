@@ -9,27 +9,27 @@ class SCOOP_GENERIC_SEPARATE(ANY):
     _key_ = 'SCOOP_GENERIC_SEPARATE'
     _conforms_ = frozenset(['ANY', 'SCOOP_GENERIC_SEPARATE'])
 
-    def make(self):
+    def make(self):  # scoop_generic_separate.e:16
         here = self._region_
-        r = None
-        w = None
+        r = None  # scoop_generic_separate.e:18
+        w = None  # scoop_generic_separate.e:19
         v = None
-        all_workers = None
-        w = here.new_separate(_M_workable.WORKABLE, _M_workable.WORKABLE.default_create, ())
-        v = here.new_separate(_M_workable.WORKABLE, _M_workable.WORKABLE.default_create, ())
-        r = here.new(_M_runner.RUNNER)
+        all_workers = None  # scoop_generic_separate.e:20
+        w = here.new_separate(_M_workable.WORKABLE, _M_workable.WORKABLE.default_create, ())  # scoop_generic_separate.e:22
+        v = here.new_separate(_M_workable.WORKABLE, _M_workable.WORKABLE.default_create, ())  # scoop_generic_separate.e:23
+        r = here.new(_M_runner.RUNNER)  # scoop_generic_separate.e:24
         r._gen_ = (_T_1,)
         r.default_create()
-        r.run(w, 3)
-        r.run(w, 4)
-        self.print_(_KS.s8(here, 'total of w: ').plus(_B.out_int(here, r.total(w))).plus(_KS.s8(here, '\n')))
-        all_workers = here.new(_L_arrayed_list.ARRAYED_LIST)
+        r.run(w, 3)  # scoop_generic_separate.e:25
+        r.run(w, 4)  # scoop_generic_separate.e:26
+        self.print_(_KS.s8(here, 'total of w: ').plus(_B.out_int(here, r.total(w))).plus(_KS.s8(here, '\n')))  # scoop_generic_separate.e:27
+        all_workers = here.new(_L_arrayed_list.ARRAYED_LIST)  # scoop_generic_separate.e:28
         all_workers._gen_ = (_T_1,)
         all_workers.make(2)
-        all_workers.extend(w)
-        all_workers.extend(v)
-        r.run_all(all_workers, 10)
-        self.print_(_KS.s8(here, 'totals: ').plus(_B.out_int(here, r.total(w))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, r.total(v))).plus(_KS.s8(here, '\n')))
+        all_workers.extend(w)  # scoop_generic_separate.e:29
+        all_workers.extend(v)  # scoop_generic_separate.e:30
+        r.run_all(all_workers, 10)  # scoop_generic_separate.e:31
+        self.print_(_KS.s8(here, 'totals: ').plus(_B.out_int(here, r.total(w))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, r.total(v))).plus(_KS.s8(here, '\n')))  # scoop_generic_separate.e:32
 _S.register('SCOOP_GENERIC_SEPARATE', SCOOP_GENERIC_SEPARATE)
 import eiffel_base.arrayed_list as _L_arrayed_list
 import scoop_generic_separate.runner as _M_runner

@@ -10,7 +10,7 @@ class WORKABLE(ANY):
     done = 0
 
     @_rt.leaf
-    def work(self, n):
+    def work(self, n):  # workable.e:4
         self.done = self.done + n
         if not -2147483648 <= self.done <= 2147483647:
             self.done = _B.wrap_i32(self.done)

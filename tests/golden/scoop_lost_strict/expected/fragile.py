@@ -10,7 +10,7 @@ class FRAGILE(ANY):
     _conforms_ = frozenset(['ANY', 'FRAGILE'])
 
     @_rt.leaf
-    def explode(self):
-        if not False:
+    def explode(self):  # fragile.e:6
+        if not False:  # fragile.e:9
             _S.assertion_failed('check', 'never', _W_1)
 _S.register('FRAGILE', FRAGILE)

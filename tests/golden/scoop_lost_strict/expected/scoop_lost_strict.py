@@ -9,15 +9,15 @@ class SCOOP_LOST_STRICT(ANY):
     _key_ = 'SCOOP_LOST_STRICT'
     _conforms_ = frozenset(['ANY', 'SCOOP_LOST_STRICT'])
 
-    def make(self):
+    def make(self):  # scoop_lost_strict.e:12
         here = self._region_
-        f = None
-        f = here.new_separate(_M_fragile.FRAGILE, _M_fragile.FRAGILE.default_create, ())
-        self.print_(_KS.s8(here, 'before the lost exception\n'))
-        self.fire_and_forget(f)
+        f = None  # scoop_lost_strict.e:14
+        f = here.new_separate(_M_fragile.FRAGILE, _M_fragile.FRAGILE.default_create, ())  # scoop_lost_strict.e:16
+        self.print_(_KS.s8(here, 'before the lost exception\n'))  # scoop_lost_strict.e:17
+        self.fire_and_forget(f)  # scoop_lost_strict.e:18
 
-    def fire_and_forget(self, f):
+    def fire_and_forget(self, f):  # scoop_lost_strict.e:23
         here = self._region_
-        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)
+        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)  # scoop_lost_strict.e:25
 _S.register('SCOOP_LOST_STRICT', SCOOP_LOST_STRICT)
 import scoop_lost_strict.fragile as _M_fragile

@@ -15,48 +15,48 @@ class SCOOP_ONCE(ANY):
     _key_ = 'SCOOP_ONCE'
     _conforms_ = frozenset(['ANY', 'SCOOP_ONCE'])
 
-    def make(self):
+    def make(self):  # scoop_once.e:12
         here = self._region_
-        s1 = None
+        s1 = None  # scoop_once.e:14
         s2 = None
-        s3 = None
+        s3 = None  # scoop_once.e:15
         s4 = None
-        s1 = here.new_separate(_M_stamper.STAMPER, _M_stamper.STAMPER.default_create, ())
-        s2 = here.new_separate(_M_stamper.STAMPER, _M_stamper.STAMPER.default_create, ())
-        s3 = here.new(_M_stamper.STAMPER)
+        s1 = here.new_separate(_M_stamper.STAMPER, _M_stamper.STAMPER.default_create, ())  # scoop_once.e:17
+        s2 = here.new_separate(_M_stamper.STAMPER, _M_stamper.STAMPER.default_create, ())  # scoop_once.e:18
+        s3 = here.new(_M_stamper.STAMPER)  # scoop_once.e:19
         s3.default_create()
-        s4 = here.new(_M_stamper.STAMPER)
+        s4 = here.new(_M_stamper.STAMPER)  # scoop_once.e:20
         s4.default_create()
-        self.stamp(s1, 1)
-        self.stamp(s1, 2)
-        self.stamp(s2, 3)
-        s3.stamp(4)
-        s4.stamp(5)
-        self.print_(_KS.s8(here, 'stamps: ').plus(_B.out_int(here, self.count(s1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.count(s2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s3.stamps.count)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s4.stamps.count)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'region tags: ').plus(_B.out_int(here, self.region_tag(s1, 10))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.region_tag(s2, 20))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.region_tag(s1, 30))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s3.region_tag(40))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s4.region_tag(50))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'process tags: ').plus(_B.out_int(here, self.process_tag(s1, 10))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.process_tag(s2, 20))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s3.process_tag(40))).plus(_KS.s8(here, '\n')))
+        self.stamp(s1, 1)  # scoop_once.e:21
+        self.stamp(s1, 2)  # scoop_once.e:22
+        self.stamp(s2, 3)  # scoop_once.e:23
+        s3.stamp(4)  # scoop_once.e:24
+        s4.stamp(5)  # scoop_once.e:25
+        self.print_(_KS.s8(here, 'stamps: ').plus(_B.out_int(here, self.count(s1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.count(s2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s3.stamps.count)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s4.stamps.count)).plus(_KS.s8(here, '\n')))  # scoop_once.e:26
+        self.print_(_KS.s8(here, 'region tags: ').plus(_B.out_int(here, self.region_tag(s1, 10))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.region_tag(s2, 20))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.region_tag(s1, 30))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s3.region_tag(40))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s4.region_tag(50))).plus(_KS.s8(here, '\n')))  # scoop_once.e:27
+        self.print_(_KS.s8(here, 'process tags: ').plus(_B.out_int(here, self.process_tag(s1, 10))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.process_tag(s2, 20))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s3.process_tag(40))).plus(_KS.s8(here, '\n')))  # scoop_once.e:28
 
-    def stamp(self, s_, v):
+    def stamp(self, s_, v):  # scoop_once.e:33
         here = self._region_
-        here.command1(s_, _M_stamper.STAMPER.stamp, (v,), _W_1)
+        here.command1(s_, _M_stamper.STAMPER.stamp, (v,), _W_1)  # scoop_once.e:35
 
-    def count(self, s_):
+    def count(self, s_):  # scoop_once.e:38
         here = self._region_
         with here.reserve1(s_, _W_3):
-            Result = here.leaf_query(here.query(s_, _M_stamper.STAMPER.stamps.fget, (), _W_2), _L_arrayed_list.ARRAYED_LIST.count.fget, (), _W_2)
-        return Result
+            Result = here.leaf_query(here.query(s_, _M_stamper.STAMPER.stamps.fget, (), _W_2), _L_arrayed_list.ARRAYED_LIST.count.fget, (), _W_2)  # scoop_once.e:40
+        return Result  # scoop_once.e:38
 
-    def region_tag(self, s_, t_):
+    def region_tag(self, s_, t_):  # scoop_once.e:43
         here = self._region_
         with here.reserve1(s_, _W_5):
-            Result = here.query(s_, _M_stamper.STAMPER.region_tag, (t_,), _W_4)
-        return Result
+            Result = here.query(s_, _M_stamper.STAMPER.region_tag, (t_,), _W_4)  # scoop_once.e:45
+        return Result  # scoop_once.e:43
 
-    def process_tag(self, s_, t_):
+    def process_tag(self, s_, t_):  # scoop_once.e:48
         here = self._region_
         with here.reserve1(s_, _W_7):
-            Result = here.query(s_, _M_stamper.STAMPER.process_tag, (t_,), _W_6)
-        return Result
+            Result = here.query(s_, _M_stamper.STAMPER.process_tag, (t_,), _W_6)  # scoop_once.e:50
+        return Result  # scoop_once.e:48
 _S.register('SCOOP_ONCE', SCOOP_ONCE)
 import eiffel_base.arrayed_list as _L_arrayed_list
 import scoop_once.stamper as _M_stamper

@@ -9,33 +9,33 @@ class STAMPER(ANY):
     _key_ = 'STAMPER'
     _conforms_ = frozenset(['ANY', 'STAMPER'])
 
-    def stamps_once_(self, _once_):
+    def stamps_once_(self, _once_):  # stamper.e:6
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))
-        return _once_.result
+        _once_.result = _S.create(here, _L_arrayed_list.ARRAYED_LIST, (_T_1,), 'make', (4,))  # stamper.e:9
+        return _once_.result  # stamper.e:6
 
     @property
-    def stamps(self):
+    def stamps(self):  # stamper.e:6
         return self._region_.once('STAMPER.stamps', STAMPER.stamps_once_, (self,))
 
-    def region_tag_once_(self, t_, _once_):
+    def region_tag_once_(self, t_, _once_):  # stamper.e:12
         _once_.result = 0
-        _once_.result = t_
-        return _once_.result
+        _once_.result = t_  # stamper.e:15
+        return _once_.result  # stamper.e:12
 
-    def region_tag(self, t_):
+    def region_tag(self, t_):  # stamper.e:12
         return self._region_.once('STAMPER.region_tag', STAMPER.region_tag_once_, (self, t_))
 
-    def process_tag_once_(self, t_, _once_):
+    def process_tag_once_(self, t_, _once_):  # stamper.e:18
         _once_.result = 0
-        _once_.result = t_
-        return _once_.result
+        _once_.result = t_  # stamper.e:21
+        return _once_.result  # stamper.e:18
 
-    def process_tag(self, t_):
+    def process_tag(self, t_):  # stamper.e:18
         return _rt.once_process('STAMPER.process_tag', STAMPER.process_tag_once_, (self, t_))
 
-    def stamp(self, v):
-        self.stamps.extend(v)
+    def stamp(self, v):  # stamper.e:26
+        self.stamps.extend(v)  # stamper.e:28
 _S.register('STAMPER', STAMPER)
 import eiffel_base.arrayed_list as _L_arrayed_list

@@ -16,61 +16,61 @@ class SCOOP_ONCE_KEYS(SHARED_BOARD):
     _key_ = 'SCOOP_ONCE_KEYS'
     _conforms_ = frozenset(['ANY', 'SCOOP_ONCE_KEYS', 'SHARED_BOARD'])
 
-    def make(self):
+    def make(self):  # scoop_once_keys.e:12
         here = self._region_
-        w1 = None
+        w1 = None  # scoop_once_keys.e:14
         w2 = None
-        w1 = here.new_separate(_M_worker.WORKER, _M_worker.WORKER.default_create, ())
-        w2 = here.new_separate(_M_worker.WORKER, _M_worker.WORKER.default_create, ())
-        self.run(w1, 1)
-        self.run(w2, 10)
-        self.print_(_KS.s8(here, 'total ').plus(_B.out_int(here, self.total)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'object tags ').plus(_B.out_int(here, self.object_tag(w1, 1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.object_tag(w2, 2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.object_tag(w1, 3))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'process tags ').plus(_B.out_int(here, self.process_tag(w1, 1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.process_tag(w2, 2))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'stamps ').plus(self.stamp_of(w1, 7)).plus(_KS.s8(here, ' ')).plus(self.stamp_of(w2, 8)).plus(_KS.s8(here, ' ')).plus(self.stamp_of(w1, 9)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'shared ').plus(_B.out_bool(here, self.same_board(w1, w2))).plus(_KS.s8(here, '\n')))
+        w1 = here.new_separate(_M_worker.WORKER, _M_worker.WORKER.default_create, ())  # scoop_once_keys.e:16
+        w2 = here.new_separate(_M_worker.WORKER, _M_worker.WORKER.default_create, ())  # scoop_once_keys.e:17
+        self.run(w1, 1)  # scoop_once_keys.e:18
+        self.run(w2, 10)  # scoop_once_keys.e:19
+        self.print_(_KS.s8(here, 'total ').plus(_B.out_int(here, self.total)).plus(_KS.s8(here, '\n')))  # scoop_once_keys.e:20
+        self.print_(_KS.s8(here, 'object tags ').plus(_B.out_int(here, self.object_tag(w1, 1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.object_tag(w2, 2))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.object_tag(w1, 3))).plus(_KS.s8(here, '\n')))  # scoop_once_keys.e:21
+        self.print_(_KS.s8(here, 'process tags ').plus(_B.out_int(here, self.process_tag(w1, 1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, self.process_tag(w2, 2))).plus(_KS.s8(here, '\n')))  # scoop_once_keys.e:22
+        self.print_(_KS.s8(here, 'stamps ').plus(self.stamp_of(w1, 7)).plus(_KS.s8(here, ' ')).plus(self.stamp_of(w2, 8)).plus(_KS.s8(here, ' ')).plus(self.stamp_of(w1, 9)).plus(_KS.s8(here, '\n')))  # scoop_once_keys.e:23
+        self.print_(_KS.s8(here, 'shared ').plus(_B.out_bool(here, self.same_board(w1, w2))).plus(_KS.s8(here, '\n')))  # scoop_once_keys.e:24
 
-    def run(self, w, n):
+    def run(self, w, n):  # scoop_once_keys.e:26
         here = self._region_
         with here.reserve1(w, _W_1):
             here.call(w, _M_worker.WORKER.work, (n,))
             self.print_(_KS.s8(here, 'worker done: ').plus(_B.out_int(here, here.query(w, _M_worker.WORKER.own_count.fget, (), _W_1))).plus(_KS.s8(here, '\n')))
 
-    def object_tag(self, w, t_):
+    def object_tag(self, w, t_):  # scoop_once_keys.e:27
         here = self._region_
         with here.reserve1(w, _W_2):
             Result = here.query(w, _M_worker.WORKER.first_tag, (t_,), _W_2)
         return Result
 
-    def process_tag(self, w, t_):
+    def process_tag(self, w, t_):  # scoop_once_keys.e:28
         here = self._region_
         with here.reserve1(w, _W_3):
             Result = here.query(w, _M_worker.WORKER.process_tag, (t_,), _W_3)
         return Result
 
-    def stamp_of(self, w, t_):
+    def stamp_of(self, w, t_):  # scoop_once_keys.e:29
         here = self._region_
         Result = None
         with here.reserve1(w, _W_5):
-            here.leaf_call(w, _M_worker.WORKER.set_tag, (t_,))
-            Result = here.new(_L_string_8.STRING_8)
+            here.leaf_call(w, _M_worker.WORKER.set_tag, (t_,))  # scoop_once_keys.e:31
+            Result = here.new(_L_string_8.STRING_8)  # scoop_once_keys.e:32
             Result.make_from_separate(here.query(w, _M_worker.WORKER.stamp.fget, (), _W_4))
-        return Result
+        return Result  # scoop_once_keys.e:29
 
-    def same_board(self, w1, w2):
+    def same_board(self, w1, w2):  # scoop_once_keys.e:34
         here = self._region_
         with here.reserve((w1, w2), where=_W_6):
             Result = here.query(w1, SHARED_BOARD.board.fget, (), _W_6) is here.query(w2, SHARED_BOARD.board.fget, (), _W_6) and here.query(w1, SHARED_BOARD.board.fget, (), _W_6) is self.board
         return Result
 
     @property
-    def total(self):
+    def total(self):  # scoop_once_keys.e:35
         here = self._region_
         Result = 0
-        b_ = self.board
+        b_ = self.board  # scoop_once_keys.e:37
         with here.reserve1(b_, _W_8):
             Result = here.leaf_query(b_, _G_7, (), _W_8)
-        return Result
+        return Result  # scoop_once_keys.e:35
 _S.register('SCOOP_ONCE_KEYS', SCOOP_ONCE_KEYS)
 import eiffel_base.string_8 as _L_string_8
 import scoop_once_keys.worker as _M_worker

@@ -8,14 +8,14 @@ class SHARED_BOARD(ANY):
     _key_ = 'SHARED_BOARD'
     _conforms_ = frozenset(['ANY', 'SHARED_BOARD'])
 
-    def board_once_(self, _once_):
+    def board_once_(self, _once_):  # shared_board.e:3
         here = self._region_
         _once_.result = None
-        _once_.result = here.new_separate(_M_tally_board.TALLY_BOARD, _M_tally_board.TALLY_BOARD.default_create, ())
-        return _once_.result
+        _once_.result = here.new_separate(_M_tally_board.TALLY_BOARD, _M_tally_board.TALLY_BOARD.default_create, ())  # shared_board.e:5
+        return _once_.result  # shared_board.e:3
 
     @property
-    def board(self):
+    def board(self):  # shared_board.e:3
         return _rt.once_process('SHARED_BOARD.board', SHARED_BOARD.board_once_, (self,))
 _S.register('SHARED_BOARD', SHARED_BOARD)
 import scoop_once_keys.tally_board as _M_tally_board

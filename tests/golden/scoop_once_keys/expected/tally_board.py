@@ -10,7 +10,7 @@ class TALLY_BOARD(ANY):
     count = 0
 
     @_rt.leaf
-    def add(self, n):
+    def add(self, n):  # tally_board.e:4
         self.count = self.count + n
         if not -2147483648 <= self.count <= 2147483647:
             self.count = _B.wrap_i32(self.count)

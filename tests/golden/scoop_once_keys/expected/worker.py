@@ -9,58 +9,58 @@ class WORKER(SHARED_BOARD):
     _key_ = 'WORKER'
     _conforms_ = frozenset(['ANY', 'SHARED_BOARD', 'WORKER'])
 
-    def work(self, n):
+    def work(self, n):  # worker.e:4
         here = self._region_
-        b_ = self.board
+        b_ = self.board  # worker.e:6
         here.command1(b_, _M_tally_board.TALLY_BOARD.add, (n,), _W_1)
 
-    def own_board_once_(self, _once_):
+    def own_board_once_(self, _once_):  # worker.e:8
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, _M_tally_board.TALLY_BOARD, None, 'default_create', ())
-        return _once_.result
+        _once_.result = _S.create(here, _M_tally_board.TALLY_BOARD, None, 'default_create', ())  # worker.e:10
+        return _once_.result  # worker.e:8
 
     @property
-    def own_board(self):
+    def own_board(self):  # worker.e:8
         return _rt.once_object(self, 'WORKER.own_board', WORKER.own_board_once_, (self,))
 
-    def first_tag_once_(self, t_, _once_):
+    def first_tag_once_(self, t_, _once_):  # worker.e:12
         _once_.result = 0
-        _once_.result = t_
-        return _once_.result
+        _once_.result = t_  # worker.e:14
+        return _once_.result  # worker.e:12
 
-    def first_tag(self, t_):
+    def first_tag(self, t_):  # worker.e:12
         return _rt.once_object(self, 'WORKER.first_tag', WORKER.first_tag_once_, (self, t_))
 
-    def process_tag_once_(self, t_, _once_):
+    def process_tag_once_(self, t_, _once_):  # worker.e:16
         _once_.result = 0
-        _once_.result = t_
-        return _once_.result
+        _once_.result = t_  # worker.e:18
+        return _once_.result  # worker.e:16
 
-    def process_tag(self, t_):
+    def process_tag(self, t_):  # worker.e:16
         return _rt.once_process('WORKER.process_tag', WORKER.process_tag_once_, (self, t_))
 
-    def stamp_once_(self, _once_):
+    def stamp_once_(self, _once_):  # worker.e:20
         here = self._region_
         _once_.result = None
-        _once_.result = _KS.s8(here, 'stamp of ').plus(_B.out_int(here, self.tag))
-        return _once_.result
+        _once_.result = _KS.s8(here, 'stamp of ').plus(_B.out_int(here, self.tag))  # worker.e:22
+        return _once_.result  # worker.e:20
 
     @property
-    def stamp(self):
+    def stamp(self):  # worker.e:20
         return _rt.once_object(self, 'WORKER.stamp', WORKER.stamp_once_, (self,))
     tag = 0
 
     @_rt.leaf
-    def set_tag(self, t_):
+    def set_tag(self, t_):  # worker.e:25
         self.tag = t_
 
-    def bump(self):
-        self.own_board.add(1)
+    def bump(self):  # worker.e:26
+        self.own_board.add(1)  # worker.e:28
 
     @property
-    def own_count(self):
-        Result = self.own_board.count
-        return Result
+    def own_count(self):  # worker.e:30
+        Result = self.own_board.count  # worker.e:32
+        return Result  # worker.e:30
 _S.register('WORKER', WORKER)
 import scoop_once_keys.tally_board as _M_tally_board

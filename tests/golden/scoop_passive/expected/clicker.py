@@ -10,28 +10,28 @@ class CLICKER(ANY):
     _key_ = 'CLICKER'
     _conforms_ = frozenset(['ANY', 'CLICKER'])
 
-    def make(self, t_, n):
+    def make(self, t_, n):  # clicker.e:9
         here = self._region_
         with here.reserve((t_, n), where=_W_1):
-            self.tally = t_
-            self.name = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (n,))
+            self.tally = t_  # clicker.e:11
+            self.name = _S.create(here, _L_string_8.STRING_8, None, 'make_from_separate', (n,))  # clicker.e:12
 
-    def run(self):
+    def run(self):  # clicker.e:17
         here = self._region_
-        i = 0
-        i = 1
-        while not i > 50:
-            self.click(self.tally)
-            i = i + 1
+        i = 0  # clicker.e:19
+        i = 1  # clicker.e:22
+        while not i > 50:  # clicker.e:21
+            self.click(self.tally)  # clicker.e:26
+            i = i + 1  # clicker.e:27
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.print_(self.name.plus(_KS.s8(here, ' done\n')))
+        self.print_(self.name.plus(_KS.s8(here, ' done\n')))  # clicker.e:29
     tally = None
     name = None
 
-    def click(self, t_):
+    def click(self, t_):  # clicker.e:38
         here = self._region_
-        here.command1(t_, _M_tally.TALLY.increment, (), _W_2)
+        here.command1(t_, _M_tally.TALLY.increment, (), _W_2)  # clicker.e:40
 _S.register('CLICKER', CLICKER)
 import eiffel_base.string_8 as _L_string_8
 import scoop_passive.tally as _M_tally

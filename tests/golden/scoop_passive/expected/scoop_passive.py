@@ -14,27 +14,27 @@ class SCOOP_PASSIVE(ANY):
     _key_ = 'SCOOP_PASSIVE'
     _conforms_ = frozenset(['ANY', 'SCOOP_PASSIVE'])
 
-    def make(self):
+    def make(self):  # scoop_passive.e:12
         here = self._region_
-        t_ = None
-        c1 = None
+        t_ = None  # scoop_passive.e:14
+        c1 = None  # scoop_passive.e:15
         c2 = None
-        t_ = here.new_passive(_M_tally.TALLY, _M_tally.TALLY.default_create, ())
-        c1 = here.new_separate(_M_clicker.CLICKER, _M_clicker.CLICKER.make, (t_, _KS.s8(here, 'c1')))
-        c2 = here.new_separate(_M_clicker.CLICKER, _M_clicker.CLICKER.make, (t_, _KS.s8(here, 'c2')))
-        self.launch(c1)
-        self.launch(c2)
-        self.print_(_KS.s8(here, 'tally ').plus(_B.out_int(here, self.final_value(t_))).plus(_KS.s8(here, '\n')))
+        t_ = here.new_passive(_M_tally.TALLY, _M_tally.TALLY.default_create, ())  # scoop_passive.e:17
+        c1 = here.new_separate(_M_clicker.CLICKER, _M_clicker.CLICKER.make, (t_, _KS.s8(here, 'c1')))  # scoop_passive.e:18
+        c2 = here.new_separate(_M_clicker.CLICKER, _M_clicker.CLICKER.make, (t_, _KS.s8(here, 'c2')))  # scoop_passive.e:19
+        self.launch(c1)  # scoop_passive.e:20
+        self.launch(c2)  # scoop_passive.e:21
+        self.print_(_KS.s8(here, 'tally ').plus(_B.out_int(here, self.final_value(t_))).plus(_KS.s8(here, '\n')))  # scoop_passive.e:22
 
-    def launch(self, c):
+    def launch(self, c):  # scoop_passive.e:27
         here = self._region_
-        here.command1(c, _M_clicker.CLICKER.run, (), _W_1)
+        here.command1(c, _M_clicker.CLICKER.run, (), _W_1)  # scoop_passive.e:29
 
-    def final_value(self, t_):
+    def final_value(self, t_):  # scoop_passive.e:32
         here = self._region_
         with here.reserve1(t_, _W_4, _PRE_6, (here, self, t_)):
-            Result = here.leaf_query(t_, _G_2, (), _W_3)
-        return Result
+            Result = here.leaf_query(t_, _G_2, (), _W_3)  # scoop_passive.e:36
+        return Result  # scoop_passive.e:32
 _S.register('SCOOP_PASSIVE', SCOOP_PASSIVE)
 import scoop_passive.clicker as _M_clicker
 import scoop_passive.tally as _M_tally

@@ -10,10 +10,10 @@ class TALLY(ANY):
     value = 0
 
     @_rt.leaf
-    def increment(self):
-        v = 0
-        v = self.value
-        self.value = v + 1
+    def increment(self):  # tally.e:10
+        v = 0  # tally.e:12
+        v = self.value  # tally.e:14
+        self.value = v + 1  # tally.e:15
         if self.value > 2147483647:
             self.value = _B.wrap_i32(self.value)
 _S.register('TALLY', TALLY)

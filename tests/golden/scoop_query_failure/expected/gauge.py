@@ -11,13 +11,13 @@ class GAUGE(ANY):
     level = 0
 
     @_rt.leaf
-    def checked_level(self, limit):
-        if not self.level <= limit:
+    def checked_level(self, limit):  # gauge.e:8
+        if not self.level <= limit:  # gauge.e:11
             _S.assertion_failed('precondition', 'within_limit', _W_1)
-        Result = self.level
-        return Result
+        Result = self.level  # gauge.e:13
+        return Result  # gauge.e:8
 
     @_rt.leaf
-    def set(self, v):
-        self.level = v
+    def set(self, v):  # gauge.e:18
+        self.level = v  # gauge.e:20
 _S.register('GAUGE', GAUGE)

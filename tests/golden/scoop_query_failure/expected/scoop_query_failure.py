@@ -13,41 +13,41 @@ class SCOOP_QUERY_FAILURE(ANY):
     _key_ = 'SCOOP_QUERY_FAILURE'
     _conforms_ = frozenset(['ANY', 'SCOOP_QUERY_FAILURE'])
 
-    def make(self):
+    def make(self):  # scoop_query_failure.e:18
         here = self._region_
-        g = None
-        g = here.new_separate(_M_gauge.GAUGE, _M_gauge.GAUGE.default_create, ())
-        self.print_(_KS.s8(here, 'retried: ').plus(_B.out_int(here, self.read_with_retry(g))).plus(_KS.s8(here, '\n')))
-        self.print_(_B.out_int(here, self.read(g, 5)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'never printed\n'))
+        g = None  # scoop_query_failure.e:20
+        g = here.new_separate(_M_gauge.GAUGE, _M_gauge.GAUGE.default_create, ())  # scoop_query_failure.e:22
+        self.print_(_KS.s8(here, 'retried: ').plus(_B.out_int(here, self.read_with_retry(g))).plus(_KS.s8(here, '\n')))  # scoop_query_failure.e:23
+        self.print_(_B.out_int(here, self.read(g, 5)).plus(_KS.s8(here, '\n')))  # scoop_query_failure.e:24
+        self.print_(_KS.s8(here, 'never printed\n'))  # scoop_query_failure.e:25
     attempts = 0
 
-    def read_with_retry(self, g):
+    def read_with_retry(self, g):  # scoop_query_failure.e:32
         here = self._region_
         Result = 0
         with here.reserve1(g, _W_3):
             while True:
                 try:
-                    self.attempts = self.attempts + 1
+                    self.attempts = self.attempts + 1  # scoop_query_failure.e:35
                     if self.attempts > 2147483647:
                         self.attempts = _B.wrap_i32(self.attempts)
-                    here.leaf_call(g, _M_gauge.GAUGE.set, (7,))
-                    if self.attempts == 1:
-                        Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (0,), _W_2)
+                    here.leaf_call(g, _M_gauge.GAUGE.set, (7,))  # scoop_query_failure.e:36
+                    if self.attempts == 1:  # scoop_query_failure.e:37
+                        Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (0,), _W_2)  # scoop_query_failure.e:38
                     else:
-                        Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (10,), _W_1)
-                    break
+                        Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (10,), _W_1)  # scoop_query_failure.e:40
+                    break  # scoop_query_failure.e:32
                 except Exception as _exception1:
                     _S.caught(here, _exception1)
-                    self.print_(_KS.s8(here, 'rescued\n'))
-                    continue
-                    raise
+                    self.print_(_KS.s8(here, 'rescued\n'))  # scoop_query_failure.e:43
+                    continue  # scoop_query_failure.e:44
+                    raise  # scoop_query_failure.e:32
         return Result
 
-    def read(self, g, limit):
+    def read(self, g, limit):  # scoop_query_failure.e:47
         here = self._region_
         with here.reserve1(g, _W_5):
-            Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (limit,), _W_4)
-        return Result
+            Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (limit,), _W_4)  # scoop_query_failure.e:49
+        return Result  # scoop_query_failure.e:47
 _S.register('SCOOP_QUERY_FAILURE', SCOOP_QUERY_FAILURE)
 import scoop_query_failure.gauge as _M_gauge

@@ -12,40 +12,40 @@ class LOGGER(ANY):
     _conforms_ = frozenset(['ANY', 'LOGGER'])
 
     @_rt.leaf
-    def make(self, a_id):
-        self.id = a_id
+    def make(self, a_id):  # logger.e:12
+        self.id = a_id  # logger.e:14
     id = 0
     count = 0
     peer = None
 
-    def put(self, code):
+    def put(self, code):  # logger.e:27
         here = self._region_
-        self.count = self.count + 1
+        self.count = self.count + 1  # logger.e:29
         if self.count > 2147483647:
             self.count = _B.wrap_i32(self.count)
-        self.print_(_KS.s8(here, 'L').plus(_B.out_int(here, self.id)).plus(_KS.s8(here, ' #')).plus(_B.out_int(here, self.count)).plus(_KS.s8(here, ': ')).plus(_B.out_int(here, code)).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'L').plus(_B.out_int(here, self.id)).plus(_KS.s8(here, ' #')).plus(_B.out_int(here, self.count)).plus(_KS.s8(here, ': ')).plus(_B.out_int(here, code)).plus(_KS.s8(here, '\n')))  # logger.e:30
 
     @_rt.leaf
-    def set_peer(self, a_peer):
-        self.peer = a_peer
+    def set_peer(self, a_peer):  # logger.e:33
+        self.peer = a_peer  # logger.e:35
 
-    def relay(self, other, code):
+    def relay(self, other, code):  # logger.e:38
         here = self._region_
         with here.reserve1(other, _W_2):
-            self.put(code)
-            here.call(other, LOGGER.put, (code,))
+            self.put(code)  # logger.e:41
+            here.call(other, LOGGER.put, (code,))  # logger.e:42
 
-    def fill(self, n):
-        i = 0
-        if (l_peer := self.peer) is not None:
-            i = 1
-            while not i > n:
-                self.put_one(l_peer, _B.i32(100 + i))
-                i = i + 1
+    def fill(self, n):  # logger.e:45
+        i = 0  # logger.e:48
+        if (l_peer := self.peer) is not None:  # logger.e:50
+            i = 1  # logger.e:52
+            while not i > n:  # logger.e:51
+                self.put_one(l_peer, _B.i32(100 + i))  # logger.e:56
+                i = i + 1  # logger.e:57
                 if i > 2147483647:
                     i = _B.wrap_i32(i)
 
-    def put_one(self, other, code):
+    def put_one(self, other, code):  # logger.e:64
         here = self._region_
-        here.command1(other, LOGGER.put, (code,), _W_3)
+        here.command1(other, LOGGER.put, (code,), _W_3)  # logger.e:66
 _S.register('LOGGER', LOGGER)

@@ -22,73 +22,73 @@ class SCOOP_TWO_ARGUMENTS(ANY):
     _key_ = 'SCOOP_TWO_ARGUMENTS'
     _conforms_ = frozenset(['ANY', 'SCOOP_TWO_ARGUMENTS'])
 
-    def make(self):
+    def make(self):  # scoop_two_arguments.e:21
         here = self._region_
-        self.a = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (1,))
-        self.b = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (2,))
-        self.p = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (3,))
-        self.print_(_KS.s8(here, 'two processors\n'))
-        self.both(self.a, self.b)
-        self.print_(_KS.s8(here, 'the same processor twice\n'))
-        self.both(self.a, self.a)
-        self.print_(_KS.s8(here, 'lock passing\n'))
-        self.chain(self.a, self.b)
-        self.print_(_KS.s8(here, 'no lock passing\n'))
-        self.relay_unreserved(self.a)
-        self.show(self.a)
-        self.print_(_KS.s8(here, 'a wait condition\n'))
-        self.link(self.p)
-        self.start_fill(self.p)
-        self.consume(self.a, self.b)
-        self.print_(_KS.s8(here, 'done\n'))
+        self.a = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (1,))  # scoop_two_arguments.e:23
+        self.b = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (2,))  # scoop_two_arguments.e:24
+        self.p = here.new_separate(_M_logger.LOGGER, _M_logger.LOGGER.make, (3,))  # scoop_two_arguments.e:25
+        self.print_(_KS.s8(here, 'two processors\n'))  # scoop_two_arguments.e:26
+        self.both(self.a, self.b)  # scoop_two_arguments.e:27
+        self.print_(_KS.s8(here, 'the same processor twice\n'))  # scoop_two_arguments.e:28
+        self.both(self.a, self.a)  # scoop_two_arguments.e:29
+        self.print_(_KS.s8(here, 'lock passing\n'))  # scoop_two_arguments.e:30
+        self.chain(self.a, self.b)  # scoop_two_arguments.e:31
+        self.print_(_KS.s8(here, 'no lock passing\n'))  # scoop_two_arguments.e:32
+        self.relay_unreserved(self.a)  # scoop_two_arguments.e:33
+        self.show(self.a)  # scoop_two_arguments.e:34
+        self.print_(_KS.s8(here, 'a wait condition\n'))  # scoop_two_arguments.e:35
+        self.link(self.p)  # scoop_two_arguments.e:36
+        self.start_fill(self.p)  # scoop_two_arguments.e:37
+        self.consume(self.a, self.b)  # scoop_two_arguments.e:38
+        self.print_(_KS.s8(here, 'done\n'))  # scoop_two_arguments.e:39
     a = None
     b = None
     p = None
 
-    def both(self, x, y):
+    def both(self, x, y):  # scoop_two_arguments.e:46
         here = self._region_
         with here.reserve((x, y), where=_W_4):
-            here.call(x, _M_logger.LOGGER.put, (11,))
-            here.call(y, _M_logger.LOGGER.put, (12,))
-            here.call(x, _M_logger.LOGGER.put, (13,))
-            self.print_(_KS.s8(here, 'both: logged three calls\n'))
-            self.print_(_KS.s8(here, 'both: x has ').plus(_B.out_int(here, here.leaf_query(x, _G_1, (), _W_2))).plus(_KS.s8(here, ' entries\n')))
-            here.call(y, _M_logger.LOGGER.put, (14,))
-            self.print_(_KS.s8(here, 'both: y has ').plus(_B.out_int(here, here.leaf_query(y, _G_1, (), _W_3))).plus(_KS.s8(here, ' entries\n')))
+            here.call(x, _M_logger.LOGGER.put, (11,))  # scoop_two_arguments.e:48
+            here.call(y, _M_logger.LOGGER.put, (12,))  # scoop_two_arguments.e:49
+            here.call(x, _M_logger.LOGGER.put, (13,))  # scoop_two_arguments.e:50
+            self.print_(_KS.s8(here, 'both: logged three calls\n'))  # scoop_two_arguments.e:51
+            self.print_(_KS.s8(here, 'both: x has ').plus(_B.out_int(here, here.leaf_query(x, _G_1, (), _W_2))).plus(_KS.s8(here, ' entries\n')))  # scoop_two_arguments.e:52
+            here.call(y, _M_logger.LOGGER.put, (14,))  # scoop_two_arguments.e:53
+            self.print_(_KS.s8(here, 'both: y has ').plus(_B.out_int(here, here.leaf_query(y, _G_1, (), _W_3))).plus(_KS.s8(here, ' entries\n')))  # scoop_two_arguments.e:54
 
-    def chain(self, x, y):
+    def chain(self, x, y):  # scoop_two_arguments.e:57
         here = self._region_
         with here.reserve((x, y), where=_W_5):
-            here.call(y, _M_logger.LOGGER.put, (20,))
-            here.call(x, _M_logger.LOGGER.relay, (y, 21))
-            self.print_(_KS.s8(here, 'chain: relay returned\n'))
-            here.call(y, _M_logger.LOGGER.put, (22,))
+            here.call(y, _M_logger.LOGGER.put, (20,))  # scoop_two_arguments.e:60
+            here.call(x, _M_logger.LOGGER.relay, (y, 21))  # scoop_two_arguments.e:61
+            self.print_(_KS.s8(here, 'chain: relay returned\n'))  # scoop_two_arguments.e:62
+            here.call(y, _M_logger.LOGGER.put, (22,))  # scoop_two_arguments.e:63
 
-    def relay_unreserved(self, x):
+    def relay_unreserved(self, x):  # scoop_two_arguments.e:66
         here = self._region_
         with here.reserve1(x, _W_6):
-            here.call(x, _M_logger.LOGGER.relay, (self.b, 23))
-            self.print_(_KS.s8(here, 'relay_unreserved: logged\n'))
+            here.call(x, _M_logger.LOGGER.relay, (self.b, 23))  # scoop_two_arguments.e:69
+            self.print_(_KS.s8(here, 'relay_unreserved: logged\n'))  # scoop_two_arguments.e:70
 
-    def show(self, x):
+    def show(self, x):  # scoop_two_arguments.e:73
         here = self._region_
         with here.reserve1(x, _W_8):
-            self.print_(_KS.s8(here, 'show: x has ').plus(_B.out_int(here, here.leaf_query(x, _G_1, (), _W_7))).plus(_KS.s8(here, ' entries\n')))
+            self.print_(_KS.s8(here, 'show: x has ').plus(_B.out_int(here, here.leaf_query(x, _G_1, (), _W_7))).plus(_KS.s8(here, ' entries\n')))  # scoop_two_arguments.e:75
 
-    def link(self, q):
+    def link(self, q):  # scoop_two_arguments.e:78
         here = self._region_
         with here.reserve1(q, _W_9):
-            here.call(q, _M_logger.LOGGER.set_peer, (self.b,))
+            here.call(q, _M_logger.LOGGER.set_peer, (self.b,))  # scoop_two_arguments.e:80
 
-    def start_fill(self, q):
+    def start_fill(self, q):  # scoop_two_arguments.e:83
         here = self._region_
-        here.command1(q, _M_logger.LOGGER.fill, (3,), _W_10)
+        here.command1(q, _M_logger.LOGGER.fill, (3,), _W_10)  # scoop_two_arguments.e:85
 
-    def consume(self, x, y):
+    def consume(self, x, y):  # scoop_two_arguments.e:88
         here = self._region_
         with here.reserve((x, y), where=_W_12, pre=_PRE_14, pre_args=(here, self, x, y)):
-            here.call(x, _M_logger.LOGGER.put, (31,))
-            here.call(y, _M_logger.LOGGER.put, (32,))
-            self.print_(_KS.s8(here, 'consume: y has ').plus(_B.out_int(here, here.leaf_query(y, _G_1, (), _W_11))).plus(_KS.s8(here, ' entries\n')))
+            here.call(x, _M_logger.LOGGER.put, (31,))  # scoop_two_arguments.e:92
+            here.call(y, _M_logger.LOGGER.put, (32,))  # scoop_two_arguments.e:93
+            self.print_(_KS.s8(here, 'consume: y has ').plus(_B.out_int(here, here.leaf_query(y, _G_1, (), _W_11))).plus(_KS.s8(here, ' entries\n')))  # scoop_two_arguments.e:94
 _S.register('SCOOP_TWO_ARGUMENTS', SCOOP_TWO_ARGUMENTS)
 import scoop_two_arguments.logger as _M_logger

@@ -13,56 +13,56 @@ class BUFFER(ANY):
     _key_ = 'BUFFER'
     _conforms_ = frozenset(['ANY', 'BUFFER'])
 
-    def make(self, n):
+    def make(self, n):  # buffer.e:9
         here = self._region_
-        self.capacity = n
-        self.items = _S.create(here, _L_arrayed_queue.ARRAYED_QUEUE, (_T_1,), 'make', (n,))
+        self.capacity = n  # buffer.e:11
+        self.items = _S.create(here, _L_arrayed_queue.ARRAYED_QUEUE, (_T_1,), 'make', (n,))  # buffer.e:12
     capacity = 0
 
     @property
     @_rt.leaf
-    def count(self):
-        Result = self.items.count
-        return Result
+    def count(self):  # buffer.e:19
+        Result = self.items.count  # buffer.e:21
+        return Result  # buffer.e:19
     largest_count = 0
 
     @property
     @_rt.leaf
-    def item(self):
-        if self.is_empty:
+    def item(self):  # buffer.e:27
+        if self.is_empty:  # buffer.e:29
             _S.assertion_failed('precondition', 'not_empty', _W_2)
-        Result = self.items.item
-        return Result
+        Result = self.items.item  # buffer.e:31
+        return Result  # buffer.e:27
 
     @property
     @_rt.leaf
-    def is_empty(self):
-        Result = self.items.is_empty
-        return Result
+    def is_empty(self):  # buffer.e:34
+        Result = self.items.is_empty  # buffer.e:36
+        return Result  # buffer.e:34
 
     @property
     @_rt.leaf
-    def is_full(self):
-        Result = self.count == self.capacity
-        return Result
+    def is_full(self):  # buffer.e:39
+        Result = self.count == self.capacity  # buffer.e:41
+        return Result  # buffer.e:39
 
     @_rt.leaf
-    def put(self, v):
-        if self.is_full:
+    def put(self, v):  # buffer.e:46
+        if self.is_full:  # buffer.e:48
             _S.assertion_failed('precondition', 'not_full', _W_3)
-        self.items.extend(v)
-        self.largest_count = _B.imax(self.largest_count, self.count)
+        self.items.extend(v)  # buffer.e:50
+        self.largest_count = _B.imax(self.largest_count, self.count)  # buffer.e:51
 
     @_rt.leaf
-    def remove(self):
-        if self.is_empty:
+    def remove(self):  # buffer.e:54
+        if self.is_empty:  # buffer.e:56
             _S.assertion_failed('precondition', 'not_empty', _W_4)
-        self.items.remove()
+        self.items.remove()  # buffer.e:58
     items = None
 
-    def _invariant_(self):
+    def _invariant_(self):  # buffer.e:1
         _S.parent_invariant(ANY, self)
-        if not self.count <= self.capacity:
+        if not self.count <= self.capacity:  # buffer.e:66
             _S.assertion_failed('invariant', 'within_capacity', _W_5)
 _S.register('BUFFER', BUFFER)
 import eiffel_base.arrayed_queue as _L_arrayed_queue

@@ -15,33 +15,33 @@ class CONSUMER(ANY):
     _conforms_ = frozenset(['ANY', 'CONSUMER'])
 
     @_rt.leaf
-    def make(self, b_, n):
-        self.buffer = b_
-        self.count = n
+    def make(self, b_, n):  # consumer.e:9
+        self.buffer = b_  # consumer.e:11
+        self.count = n  # consumer.e:12
     total = 0
     taken = 0
 
     @property
     @_rt.leaf
-    def is_done(self):
-        Result = self.taken == self.count
-        return Result
+    def is_done(self):  # consumer.e:21
+        Result = self.taken == self.count  # consumer.e:23
+        return Result  # consumer.e:21
 
-    def run(self):
-        while not self.taken == self.count:
-            self.take(self.buffer)
+    def run(self):  # consumer.e:28
+        while not self.taken == self.count:  # consumer.e:30
+            self.take(self.buffer)  # consumer.e:34
     buffer = None
     count = 0
 
-    def take(self, b_):
+    def take(self, b_):  # consumer.e:44
         here = self._region_
         with here.reserve1(b_, _W_4, _PRE_6, (here, self, b_)):
-            self.total = self.total + here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_2)
+            self.total = self.total + here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_2)  # consumer.e:49
             if not -2147483648 <= self.total <= 2147483647:
                 self.total = _B.wrap_i32(self.total)
-            self.print_(_KS.s8(here, 'got ').plus(_B.out_int(here, here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_3))).plus(_KS.s8(here, '\n')))
-            here.leaf_call(b_, _M_buffer.BUFFER.remove, ())
-            self.taken = self.taken + 1
+            self.print_(_KS.s8(here, 'got ').plus(_B.out_int(here, here.leaf_query(b_, _M_buffer.BUFFER.item.fget, (), _W_3))).plus(_KS.s8(here, '\n')))  # consumer.e:50
+            here.leaf_call(b_, _M_buffer.BUFFER.remove, ())  # consumer.e:51
+            self.taken = self.taken + 1  # consumer.e:52
             if self.taken > 2147483647:
                 self.taken = _B.wrap_i32(self.taken)
 _S.register('CONSUMER', CONSUMER)

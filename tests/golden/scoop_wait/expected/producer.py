@@ -13,25 +13,25 @@ class PRODUCER(ANY):
     _conforms_ = frozenset(['ANY', 'PRODUCER'])
 
     @_rt.leaf
-    def make(self, b_, n):
-        self.buffer = b_
-        self.count = n
+    def make(self, b_, n):  # producer.e:9
+        self.buffer = b_  # producer.e:11
+        self.count = n  # producer.e:12
 
-    def run(self):
-        i = 0
-        i = 1
-        while not i > self.count:
-            self.store(self.buffer, _B.i32(i * i))
-            i = i + 1
+    def run(self):  # producer.e:17
+        i = 0  # producer.e:19
+        i = 1  # producer.e:22
+        while not i > self.count:  # producer.e:21
+            self.store(self.buffer, _B.i32(i * i))  # producer.e:26
+            i = i + 1  # producer.e:27
             if i > 2147483647:
                 i = _B.wrap_i32(i)
     buffer = None
     count = 0
 
-    def store(self, b_, v):
+    def store(self, b_, v):  # producer.e:37
         here = self._region_
         with here.reserve1(b_, _W_2, _PRE_4, (here, self, b_, v)):
-            here.leaf_call(b_, _M_buffer.BUFFER.put, (v,))
-            self.print_(_KS.s8(here, 'put ').plus(_B.out_int(here, v)).plus(_KS.s8(here, '\n')))
+            here.leaf_call(b_, _M_buffer.BUFFER.put, (v,))  # producer.e:42
+            self.print_(_KS.s8(here, 'put ').plus(_B.out_int(here, v)).plus(_KS.s8(here, '\n')))  # producer.e:43
 _S.register('PRODUCER', PRODUCER)
 import scoop_wait.buffer as _M_buffer

@@ -19,38 +19,38 @@ class SCOOP_WAIT(ANY):
     _key_ = 'SCOOP_WAIT'
     _conforms_ = frozenset(['ANY', 'SCOOP_WAIT'])
 
-    def make(self):
+    def make(self):  # scoop_wait.e:12
         here = self._region_
-        buffer = None
-        p = None
-        c = None
-        buffer = here.new_separate(_M_buffer.BUFFER, _M_buffer.BUFFER.make, (2,))
-        p = here.new_separate(_M_producer.PRODUCER, _M_producer.PRODUCER.make, (buffer, 6))
-        c = here.new_separate(_M_consumer.CONSUMER, _M_consumer.CONSUMER.make, (buffer, 6))
-        self.start_consumer(c)
-        self.start_producer(p)
-        self.print_(_KS.s8(here, 'total ').plus(_B.out_int(here, self.total_of(c))).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'capacity respected: ').plus(_B.out_bool(here, self.respected(buffer))).plus(_KS.s8(here, '\n')))
+        buffer = None  # scoop_wait.e:14
+        p = None  # scoop_wait.e:15
+        c = None  # scoop_wait.e:16
+        buffer = here.new_separate(_M_buffer.BUFFER, _M_buffer.BUFFER.make, (2,))  # scoop_wait.e:18
+        p = here.new_separate(_M_producer.PRODUCER, _M_producer.PRODUCER.make, (buffer, 6))  # scoop_wait.e:19
+        c = here.new_separate(_M_consumer.CONSUMER, _M_consumer.CONSUMER.make, (buffer, 6))  # scoop_wait.e:20
+        self.start_consumer(c)  # scoop_wait.e:21
+        self.start_producer(p)  # scoop_wait.e:22
+        self.print_(_KS.s8(here, 'total ').plus(_B.out_int(here, self.total_of(c))).plus(_KS.s8(here, '\n')))  # scoop_wait.e:23
+        self.print_(_KS.s8(here, 'capacity respected: ').plus(_B.out_bool(here, self.respected(buffer))).plus(_KS.s8(here, '\n')))  # scoop_wait.e:24
 
-    def start_producer(self, p):
+    def start_producer(self, p):  # scoop_wait.e:29
         here = self._region_
-        here.command1(p, _M_producer.PRODUCER.run, (), _W_1)
+        here.command1(p, _M_producer.PRODUCER.run, (), _W_1)  # scoop_wait.e:31
 
-    def start_consumer(self, c):
+    def start_consumer(self, c):  # scoop_wait.e:34
         here = self._region_
-        here.command1(c, _M_consumer.CONSUMER.run, (), _W_2)
+        here.command1(c, _M_consumer.CONSUMER.run, (), _W_2)  # scoop_wait.e:36
 
-    def total_of(self, c):
+    def total_of(self, c):  # scoop_wait.e:39
         here = self._region_
         with here.reserve1(c, _W_5, _PRE_7, (here, self, c)):
-            Result = here.leaf_query(c, _G_3, (), _W_4)
-        return Result
+            Result = here.leaf_query(c, _G_3, (), _W_4)  # scoop_wait.e:44
+        return Result  # scoop_wait.e:39
 
-    def respected(self, b_):
+    def respected(self, b_):  # scoop_wait.e:47
         here = self._region_
         with here.reserve1(b_, _W_11):
-            Result = here.leaf_query(b_, _G_8, (), _W_9) <= here.leaf_query(b_, _G_10, (), _W_9) and here.leaf_query(b_, _G_8, (), _W_9) >= 1
-        return Result
+            Result = here.leaf_query(b_, _G_8, (), _W_9) <= here.leaf_query(b_, _G_10, (), _W_9) and here.leaf_query(b_, _G_8, (), _W_9) >= 1  # scoop_wait.e:49
+        return Result  # scoop_wait.e:47
 _S.register('SCOOP_WAIT', SCOOP_WAIT)
 import scoop_wait.buffer as _M_buffer
 import scoop_wait.consumer as _M_consumer

@@ -8,10 +8,10 @@ class HOLDER(ANY):
     _key_ = 'HOLDER'
     _conforms_ = frozenset(['ANY', 'HOLDER'])
 
-    def content_init_(self):
+    def content_init_(self):  # holder.e:6
         here = self._region_
         Result = _T.formal(self, 'HOLDER', 0).default(here)
-        self.print_(_KS.s8(here, '(body of content runs) '))
-        return Result
+        self.print_(_KS.s8(here, '(body of content runs) '))  # holder.e:9
+        return Result  # holder.e:6
     content = _S.SelfInitialisingFormal(content_init_, 'content', 'HOLDER', 0)
 _S.register('HOLDER', HOLDER)

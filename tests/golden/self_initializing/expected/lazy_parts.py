@@ -10,28 +10,28 @@ class LAZY_PARTS(ANY):
     _conforms_ = frozenset(['ANY', 'LAZY_PARTS'])
 
     @_rt.leaf
-    def make(self):
+    def make(self):  # lazy_parts.e:9
         pass
 
-    def make_named(self, n):
-        self.name = n
+    def make_named(self, n):  # lazy_parts.e:13
+        self.name = n  # lazy_parts.e:15
 
-    def name_init_(self):
+    def name_init_(self):  # lazy_parts.e:20
         here = self._region_
         Result = None
-        self.print_(_KS.s8(here, '(body of name runs) '))
-        Result = _KS.s8(here, 'computed')
-        return Result
+        self.print_(_KS.s8(here, '(body of name runs) '))  # lazy_parts.e:23
+        Result = _KS.s8(here, 'computed')  # lazy_parts.e:24
+        return Result  # lazy_parts.e:20
     name = _S.SelfInitialising(name_init_, 'name')
 
-    def parts_init_(self):
+    def parts_init_(self):  # lazy_parts.e:27
         here = self._region_
         Result = None
-        self.print_(_KS.s8(here, '(body of parts runs) '))
-        Result = here.new(_L_arrayed_list.ARRAYED_LIST)
+        self.print_(_KS.s8(here, '(body of parts runs) '))  # lazy_parts.e:29
+        Result = here.new(_L_arrayed_list.ARRAYED_LIST)  # lazy_parts.e:30
         Result._gen_ = (_T_1,)
         Result.make(2)
-        return Result
+        return Result  # lazy_parts.e:27
     parts = _S.SelfInitialising(parts_init_, 'parts')
     count = 0
     label = None

@@ -9,30 +9,30 @@ class SELF_INITIALIZING(ANY):
     _key_ = 'SELF_INITIALIZING'
     _conforms_ = frozenset(['ANY', 'SELF_INITIALIZING'])
 
-    def make(self):
+    def make(self):  # self_initializing.e:16
         here = self._region_
-        a = None
+        a = None  # self_initializing.e:18
         b_ = None
-        h = None
-        a = here.new(_M_lazy_parts.LAZY_PARTS)
+        h = None  # self_initializing.e:19
+        a = here.new(_M_lazy_parts.LAZY_PARTS)  # self_initializing.e:21
         a.make()
-        self.print_(_KS.s8(here, 'first read: ').plus(a.name).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'second read: ').plus(a.name).plus(_KS.s8(here, '\n')))
-        b_ = here.new(_M_lazy_parts.LAZY_PARTS)
+        self.print_(_KS.s8(here, 'first read: ').plus(a.name).plus(_KS.s8(here, '\n')))  # self_initializing.e:22
+        self.print_(_KS.s8(here, 'second read: ').plus(a.name).plus(_KS.s8(here, '\n')))  # self_initializing.e:23
+        b_ = here.new(_M_lazy_parts.LAZY_PARTS)  # self_initializing.e:24
         b_.make_named(_KS.s8(here, 'given'))
-        self.print_(_KS.s8(here, 'set by creation: ').plus(b_.name).plus(_KS.s8(here, '\n')))
-        a.parts.extend(1)
-        a.parts.extend(2)
-        self.print_(_KS.s8(here, 'parts: ').plus(_B.out_int(here, a.parts.count)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'count: ').plus(_B.out_int(here, a.count)).plus(_KS.s8(here, '\n')))
-        if (l := a.label) is not None:
-            self.print_(_KS.s8(here, 'label: ').plus(l).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'set by creation: ').plus(b_.name).plus(_KS.s8(here, '\n')))  # self_initializing.e:25
+        a.parts.extend(1)  # self_initializing.e:26
+        a.parts.extend(2)  # self_initializing.e:27
+        self.print_(_KS.s8(here, 'parts: ').plus(_B.out_int(here, a.parts.count)).plus(_KS.s8(here, '\n')))  # self_initializing.e:28
+        self.print_(_KS.s8(here, 'count: ').plus(_B.out_int(here, a.count)).plus(_KS.s8(here, '\n')))  # self_initializing.e:29
+        if (l := a.label) is not None:  # self_initializing.e:30
+            self.print_(_KS.s8(here, 'label: ').plus(l).plus(_KS.s8(here, '\n')))  # self_initializing.e:31
         else:
-            self.print_(_KS.s8(here, 'label: Void\n'))
-        h = here.new(_M_holder.HOLDER)
+            self.print_(_KS.s8(here, 'label: Void\n'))  # self_initializing.e:33
+        h = here.new(_M_holder.HOLDER)  # self_initializing.e:35
         h._gen_ = (_T_1,)
         h.default_create()
-        self.print_(_KS.s8(here, 'expanded actual generic: ').plus(_B.out_int(here, h.content)).plus(_KS.s8(here, '\n')))
+        self.print_(_KS.s8(here, 'expanded actual generic: ').plus(_B.out_int(here, h.content)).plus(_KS.s8(here, '\n')))  # self_initializing.e:36
 _S.register('SELF_INITIALIZING', SELF_INITIALIZING)
 import self_initializing.holder as _M_holder
 import self_initializing.lazy_parts as _M_lazy_parts

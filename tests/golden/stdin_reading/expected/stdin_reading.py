@@ -8,35 +8,35 @@ class STDIN_READING(ANY):
     _key_ = 'STDIN_READING'
     _conforms_ = frozenset(['ANY', 'STDIN_READING'])
 
-    def make(self):
+    def make(self):  # stdin_reading.e:12
         here = self._region_
-        name = None
-        total = 0
+        name = None  # stdin_reading.e:14
+        total = 0  # stdin_reading.e:15
         n = 0
         count = 0
-        self.io.read_line()
-        name = self.io.last_string.twin
-        self.print_(_KS.s8(here, 'hello ').plus(name).plus(_KS.s8(here, '\n')))
-        self.io.read_integer()
-        n = self.io.last_integer
-        self.print_(_KS.s8(here, 'first number ').plus(_B.out_int(here, n)).plus(_KS.s8(here, '\n')))
-        self.io.read_double()
-        self.print_(_KS.s8(here, 'a double ').plus(_B.out_r64(here, self.io.last_double)).plus(_KS.s8(here, '\n')))
-        self.io.read_word()
-        self.print_(_KS.s8(here, 'a word [').plus(self.io.last_string).plus(_KS.s8(here, ']\n')))
-        self.io.read_line()
-        self.print_(_KS.s8(here, 'rest of line [').plus(self.io.last_string).plus(_KS.s8(here, ']\n')))
-        self.io.read_line()
-        while not self.io.input.end_of_file:
-            if self.io.last_string.is_integer:
-                total = total + self.io.last_string.to_integer
+        self.io.read_line()  # stdin_reading.e:17
+        name = self.io.last_string.twin  # stdin_reading.e:18
+        self.print_(_KS.s8(here, 'hello ').plus(name).plus(_KS.s8(here, '\n')))  # stdin_reading.e:19
+        self.io.read_integer()  # stdin_reading.e:20
+        n = self.io.last_integer  # stdin_reading.e:21
+        self.print_(_KS.s8(here, 'first number ').plus(_B.out_int(here, n)).plus(_KS.s8(here, '\n')))  # stdin_reading.e:22
+        self.io.read_double()  # stdin_reading.e:23
+        self.print_(_KS.s8(here, 'a double ').plus(_B.out_r64(here, self.io.last_double)).plus(_KS.s8(here, '\n')))  # stdin_reading.e:24
+        self.io.read_word()  # stdin_reading.e:25
+        self.print_(_KS.s8(here, 'a word [').plus(self.io.last_string).plus(_KS.s8(here, ']\n')))  # stdin_reading.e:26
+        self.io.read_line()  # stdin_reading.e:27
+        self.print_(_KS.s8(here, 'rest of line [').plus(self.io.last_string).plus(_KS.s8(here, ']\n')))  # stdin_reading.e:28
+        self.io.read_line()  # stdin_reading.e:30
+        while not self.io.input.end_of_file:  # stdin_reading.e:29
+            if self.io.last_string.is_integer:  # stdin_reading.e:34
+                total = total + self.io.last_string.to_integer  # stdin_reading.e:35
                 if not -2147483648 <= total <= 2147483647:
                     total = _B.wrap_i32(total)
-                count = count + 1
+                count = count + 1  # stdin_reading.e:36
                 if count > 2147483647:
                     count = _B.wrap_i32(count)
             else:
-                self.print_(_KS.s8(here, 'skipped [').plus(self.io.last_string).plus(_KS.s8(here, ']\n')))
-            self.io.read_line()
-        self.print_(_KS.s8(here, 'sum of ').plus(_B.out_int(here, count)).plus(_KS.s8(here, ' lines: ')).plus(_B.out_int(here, total)).plus(_KS.s8(here, '\n')))
+                self.print_(_KS.s8(here, 'skipped [').plus(self.io.last_string).plus(_KS.s8(here, ']\n')))  # stdin_reading.e:38
+            self.io.read_line()  # stdin_reading.e:40
+        self.print_(_KS.s8(here, 'sum of ').plus(_B.out_int(here, count)).plus(_KS.s8(here, ' lines: ')).plus(_B.out_int(here, total)).plus(_KS.s8(here, '\n')))  # stdin_reading.e:42
 _S.register('STDIN_READING', STDIN_READING)

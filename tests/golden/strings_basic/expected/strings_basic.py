@@ -9,111 +9,111 @@ class STRINGS_BASIC(ANY):
     _key_ = 'STRINGS_BASIC'
     _conforms_ = frozenset(['ANY', 'STRINGS_BASIC'])
 
-    def make(self):
+    def make(self):  # strings_basic.e:12
         here = self._region_
-        s_ = None
+        s_ = None  # strings_basic.e:14
         t_ = None
         u = None
-        w = None
-        parts = None
-        v = None
-        s_ = _KS.s8(here, 'hello')
-        self.show(_KS.s8(here, 'item'), _B.out_c8(here, s_.item__readable_string_8(1)).plus(_B.out_c8(here, s_.item__readable_string_8(5))).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, s_.count)))
-        s_.put('j', 1)
-        self.show(_KS.s8(here, 'put'), s_)
-        s_.put('h', 1)
-        self.show(_KS.s8(here, 'assigner'), s_)
-        s_.append__string_8(_KS.s8(here, ' world'))
-        s_.append_character('!')
-        s_.append_integer(42)
-        self.show(_KS.s8(here, 'append'), s_)
-        self.show(_KS.s8(here, 'substring'), s_.substring(2, 4).plus(_KS.s8(here, '|')).plus(s_.substring(7, 11)).plus(_KS.s8(here, '|')).plus(s_.substring(3, 2)).plus(_KS.s8(here, '|')))
-        self.show(_KS.s8(here, 'index_of'), _B.out_int(here, s_.index_of__readable_string_8('o', 1)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.index_of__readable_string_8('o', 6))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.index_of__readable_string_8('z', 1))))
-        self.show(_KS.s8(here, 'last_index_of'), _B.out_int(here, s_.last_index_of__readable_string_8('l', s_.count)))
-        self.show(_KS.s8(here, 'substring_index'), _B.out_int(here, s_.substring_index(_KS.s8(here, 'wor'), 1)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.substring_index(_KS.s8(here, 'xyz'), 1))))
-        self.show(_KS.s8(here, 'has'), _B.out_bool(here, s_.has__readable_string_8('w')).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, s_.has_substring(_KS.s8(here, 'lo w')))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.occurrences__readable_string_8('l'))))
-        self.show(_KS.s8(here, 'starts, ends'), _B.out_bool(here, s_.starts_with__readable_string_8(_KS.s8(here, 'hell'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, s_.ends_with__readable_string_8(_KS.s8(here, '42')))))
-        self.show(_KS.s8(here, 'head, tail'), s_.head(4).plus(_KS.s8(here, ' ')).plus(s_.tail(3)))
-        t_ = _KS.s8(here, 'hello')
-        u = _KS.s8(here, 'hello')
-        self.show(_KS.s8(here, '= ~ is_equal'), _B.out_bool(here, t_ is u).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(t_, u))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.is_equal(u))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ is t_)))
-        self.show(_KS.s8(here, '/~'), _B.out_bool(here, not _B.equal(t_, u)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not _B.equal(t_, s_))))
-        u = t_
-        u.append__string_8(_KS.s8(here, '!'))
-        self.show(_KS.s8(here, 'aliasing'), t_)
-        u = t_.twin
-        u.append__string_8(_KS.s8(here, '?'))
-        self.show(_KS.s8(here, 'twin'), t_.plus(_KS.s8(here, ' ')).plus(u))
-        self.show(_KS.s8(here, 'comparison'), _B.out_bool(here, _KS.s8(here, 'abc').is_less(_KS.s8(here, 'abd'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'b').is_greater(_KS.s8(here, 'abc')))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'ab').is_less(_KS.s8(here, 'abc')))))
-        self.show(_KS.s8(here, 'case'), s_.as_upper.plus(_KS.s8(here, ' ')).plus(_KS.s8(here, 'MiXeD').as_lower))
-        t_ = _KS.s8(here, 'MiXeD')
-        t_.to_upper()
-        self.show(_KS.s8(here, 'to_upper'), t_)
-        self.show(_KS.s8(here, 'mirrored'), _KS.s8(here, 'stressed').mirrored)
-        parts = _KS.s8(here, 'a,b,,c').split(',')
-        self.show(_KS.s8(here, 'split count'), _B.out_int(here, parts.count))
-        for p in _S.cursors(parts):
-            self.print_(_KS.s8(here, '[').plus(p.item).plus(_KS.s8(here, ']')))
-        self.print_(_KS.s8(here, '\n'))
-        self.show(_KS.s8(here, 'to_integer'), _B.out_int(here, _KS.s8(here, '42').to_integer).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _KS.s8(here, '-17').to_integer)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.i32(_KS.s8(here, '42').to_integer + 1))))
-        self.show(_KS.s8(here, 'is_integer'), _B.out_bool(here, _KS.s8(here, '123').is_integer).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '12a').is_integer)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '').is_integer)))
-        self.show(_KS.s8(here, 'to_double'), _B.out_r64(here, _KS.s8(here, '3.5').to_double).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '2').is_double)))
-        self.show(_KS.s8(here, 'to_boolean'), _B.out_bool(here, _KS.s8(here, 'True').to_boolean).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'false').to_boolean)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'yes').is_boolean)))
-        t_ = _KS.s8(here, 'abcdef')
-        t_.remove(2)
-        self.show(_KS.s8(here, 'remove'), t_)
-        t_.remove_head(1)
-        t_.remove_tail(1)
-        self.show(_KS.s8(here, 'remove head, tail'), t_)
-        t_.prepend__string_8(_KS.s8(here, '<'))
-        t_.prepend_integer(7)
-        self.show(_KS.s8(here, 'prepend'), t_)
-        t_ = _KS.s8(here, '  padded  ')
-        t_.left_adjust()
-        self.show(_KS.s8(here, 'left_adjust'), _KS.s8(here, '[').plus(t_).plus(_KS.s8(here, ']')))
-        t_.right_adjust()
-        self.show(_KS.s8(here, 'right_adjust'), _KS.s8(here, '[').plus(t_).plus(_KS.s8(here, ']')))
-        t_ = _KS.s8(here, 'a-b-c')
-        t_.replace_substring_all(_KS.s8(here, '-'), _KS.s8(here, '+='))
-        self.show(_KS.s8(here, 'replace_substring_all'), t_)
-        t_.keep_head(4)
-        self.show(_KS.s8(here, 'keep_head'), t_)
-        t_ = _KS.s8(here, 'ab')
-        t_.multiply(3)
-        self.show(_KS.s8(here, 'multiply'), t_)
-        t_.wipe_out()
-        self.show(_KS.s8(here, 'wipe_out'), _B.out_bool(here, t_.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.count)))
-        self.show(_KS.s8(here, 'escapes'), _KS.s8(here, 'quote "q" tab\tpercent % done'))
-        v = _KS.s8(here, 'line one\n  line two')
-        self.print_(v)
-        self.print_(_KS.s8(here, '\n'))
-        self.show(_KS.s8(here, 'once'), _B.out_bool(here, self.tag is self.tag).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.fresh is self.fresh)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(self.fresh, self.fresh))))
-        self.tag.append__string_8(_KS.s8(here, '!'))
-        self.show(_KS.s8(here, 'once mutated'), self.tag.plus(_KS.s8(here, ' ')).plus(self.tag))
-        w = _KS.s32(here, 'wide')
-        w.append_character('r')
-        self.show(_KS.s8(here, 'STRING_32'), _B.out_int(here, w.count).plus(_KS.s8(here, ' ')).plus(w.as_string_8).plus(_KS.s8(here, ' ')).plus(w.out))
-        self.show(_KS.s8(here, 'same_string'), _B.out_bool(here, s_.same_string__readable_string_8(_KS.s8(here, 'hello world!42'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'Abc').is_case_insensitive_equal__readable_string_8(_KS.s8(here, 'aBC')))))
-        self.show(_KS.s8(here, 'plus'), _KS.s8(here, 'a').plus(_KS.s8(here, 'b')).plus(_B.out_int(here, 3)))
-        self.show(_KS.s8(here, 'out'), s_.out)
-        self.print_(s_)
-        self.print_(_KS.s8(here, '\n'))
+        w = None  # strings_basic.e:15
+        parts = None  # strings_basic.e:16
+        v = None  # strings_basic.e:17
+        s_ = _KS.s8(here, 'hello')  # strings_basic.e:19
+        self.show(_KS.s8(here, 'item'), _B.out_c8(here, s_.item__readable_string_8(1)).plus(_B.out_c8(here, s_.item__readable_string_8(5))).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, s_.count)))  # strings_basic.e:20
+        s_.put('j', 1)  # strings_basic.e:21
+        self.show(_KS.s8(here, 'put'), s_)  # strings_basic.e:22
+        s_.put('h', 1)  # strings_basic.e:23
+        self.show(_KS.s8(here, 'assigner'), s_)  # strings_basic.e:24
+        s_.append__string_8(_KS.s8(here, ' world'))  # strings_basic.e:25
+        s_.append_character('!')  # strings_basic.e:26
+        s_.append_integer(42)  # strings_basic.e:27
+        self.show(_KS.s8(here, 'append'), s_)  # strings_basic.e:28
+        self.show(_KS.s8(here, 'substring'), s_.substring(2, 4).plus(_KS.s8(here, '|')).plus(s_.substring(7, 11)).plus(_KS.s8(here, '|')).plus(s_.substring(3, 2)).plus(_KS.s8(here, '|')))  # strings_basic.e:29
+        self.show(_KS.s8(here, 'index_of'), _B.out_int(here, s_.index_of__readable_string_8('o', 1)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.index_of__readable_string_8('o', 6))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.index_of__readable_string_8('z', 1))))  # strings_basic.e:30
+        self.show(_KS.s8(here, 'last_index_of'), _B.out_int(here, s_.last_index_of__readable_string_8('l', s_.count)))  # strings_basic.e:31
+        self.show(_KS.s8(here, 'substring_index'), _B.out_int(here, s_.substring_index(_KS.s8(here, 'wor'), 1)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.substring_index(_KS.s8(here, 'xyz'), 1))))  # strings_basic.e:32
+        self.show(_KS.s8(here, 'has'), _B.out_bool(here, s_.has__readable_string_8('w')).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, s_.has_substring(_KS.s8(here, 'lo w')))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, s_.occurrences__readable_string_8('l'))))  # strings_basic.e:33
+        self.show(_KS.s8(here, 'starts, ends'), _B.out_bool(here, s_.starts_with__readable_string_8(_KS.s8(here, 'hell'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, s_.ends_with__readable_string_8(_KS.s8(here, '42')))))  # strings_basic.e:34
+        self.show(_KS.s8(here, 'head, tail'), s_.head(4).plus(_KS.s8(here, ' ')).plus(s_.tail(3)))  # strings_basic.e:35
+        t_ = _KS.s8(here, 'hello')  # strings_basic.e:36
+        u = _KS.s8(here, 'hello')  # strings_basic.e:37
+        self.show(_KS.s8(here, '= ~ is_equal'), _B.out_bool(here, t_ is u).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(t_, u))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_.is_equal(u))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, t_ is t_)))  # strings_basic.e:38
+        self.show(_KS.s8(here, '/~'), _B.out_bool(here, not _B.equal(t_, u)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, not _B.equal(t_, s_))))  # strings_basic.e:39
+        u = t_  # strings_basic.e:40
+        u.append__string_8(_KS.s8(here, '!'))  # strings_basic.e:41
+        self.show(_KS.s8(here, 'aliasing'), t_)  # strings_basic.e:42
+        u = t_.twin  # strings_basic.e:43
+        u.append__string_8(_KS.s8(here, '?'))  # strings_basic.e:44
+        self.show(_KS.s8(here, 'twin'), t_.plus(_KS.s8(here, ' ')).plus(u))  # strings_basic.e:45
+        self.show(_KS.s8(here, 'comparison'), _B.out_bool(here, _KS.s8(here, 'abc').is_less(_KS.s8(here, 'abd'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'b').is_greater(_KS.s8(here, 'abc')))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'ab').is_less(_KS.s8(here, 'abc')))))  # strings_basic.e:46
+        self.show(_KS.s8(here, 'case'), s_.as_upper.plus(_KS.s8(here, ' ')).plus(_KS.s8(here, 'MiXeD').as_lower))  # strings_basic.e:47
+        t_ = _KS.s8(here, 'MiXeD')  # strings_basic.e:48
+        t_.to_upper()  # strings_basic.e:49
+        self.show(_KS.s8(here, 'to_upper'), t_)  # strings_basic.e:50
+        self.show(_KS.s8(here, 'mirrored'), _KS.s8(here, 'stressed').mirrored)  # strings_basic.e:51
+        parts = _KS.s8(here, 'a,b,,c').split(',')  # strings_basic.e:52
+        self.show(_KS.s8(here, 'split count'), _B.out_int(here, parts.count))  # strings_basic.e:53
+        for p in _S.cursors(parts):  # strings_basic.e:54
+            self.print_(_KS.s8(here, '[').plus(p.item).plus(_KS.s8(here, ']')))  # strings_basic.e:55
+        self.print_(_KS.s8(here, '\n'))  # strings_basic.e:57
+        self.show(_KS.s8(here, 'to_integer'), _B.out_int(here, _KS.s8(here, '42').to_integer).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _KS.s8(here, '-17').to_integer)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.i32(_KS.s8(here, '42').to_integer + 1))))  # strings_basic.e:58
+        self.show(_KS.s8(here, 'is_integer'), _B.out_bool(here, _KS.s8(here, '123').is_integer).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '12a').is_integer)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '').is_integer)))  # strings_basic.e:59
+        self.show(_KS.s8(here, 'to_double'), _B.out_r64(here, _KS.s8(here, '3.5').to_double).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, '2').is_double)))  # strings_basic.e:60
+        self.show(_KS.s8(here, 'to_boolean'), _B.out_bool(here, _KS.s8(here, 'True').to_boolean).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'false').to_boolean)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'yes').is_boolean)))  # strings_basic.e:61
+        t_ = _KS.s8(here, 'abcdef')  # strings_basic.e:62
+        t_.remove(2)  # strings_basic.e:63
+        self.show(_KS.s8(here, 'remove'), t_)  # strings_basic.e:64
+        t_.remove_head(1)  # strings_basic.e:65
+        t_.remove_tail(1)  # strings_basic.e:66
+        self.show(_KS.s8(here, 'remove head, tail'), t_)  # strings_basic.e:67
+        t_.prepend__string_8(_KS.s8(here, '<'))  # strings_basic.e:68
+        t_.prepend_integer(7)  # strings_basic.e:69
+        self.show(_KS.s8(here, 'prepend'), t_)  # strings_basic.e:70
+        t_ = _KS.s8(here, '  padded  ')  # strings_basic.e:71
+        t_.left_adjust()  # strings_basic.e:72
+        self.show(_KS.s8(here, 'left_adjust'), _KS.s8(here, '[').plus(t_).plus(_KS.s8(here, ']')))  # strings_basic.e:73
+        t_.right_adjust()  # strings_basic.e:74
+        self.show(_KS.s8(here, 'right_adjust'), _KS.s8(here, '[').plus(t_).plus(_KS.s8(here, ']')))  # strings_basic.e:75
+        t_ = _KS.s8(here, 'a-b-c')  # strings_basic.e:76
+        t_.replace_substring_all(_KS.s8(here, '-'), _KS.s8(here, '+='))  # strings_basic.e:77
+        self.show(_KS.s8(here, 'replace_substring_all'), t_)  # strings_basic.e:78
+        t_.keep_head(4)  # strings_basic.e:79
+        self.show(_KS.s8(here, 'keep_head'), t_)  # strings_basic.e:80
+        t_ = _KS.s8(here, 'ab')  # strings_basic.e:81
+        t_.multiply(3)  # strings_basic.e:82
+        self.show(_KS.s8(here, 'multiply'), t_)  # strings_basic.e:83
+        t_.wipe_out()  # strings_basic.e:84
+        self.show(_KS.s8(here, 'wipe_out'), _B.out_bool(here, t_.is_empty).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, t_.count)))  # strings_basic.e:85
+        self.show(_KS.s8(here, 'escapes'), _KS.s8(here, 'quote "q" tab\tpercent % done'))  # strings_basic.e:86
+        v = _KS.s8(here, 'line one\n  line two')  # strings_basic.e:87
+        self.print_(v)  # strings_basic.e:91
+        self.print_(_KS.s8(here, '\n'))  # strings_basic.e:92
+        self.show(_KS.s8(here, 'once'), _B.out_bool(here, self.tag is self.tag).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, self.fresh is self.fresh)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(self.fresh, self.fresh))))  # strings_basic.e:93
+        self.tag.append__string_8(_KS.s8(here, '!'))  # strings_basic.e:94
+        self.show(_KS.s8(here, 'once mutated'), self.tag.plus(_KS.s8(here, ' ')).plus(self.tag))  # strings_basic.e:95
+        w = _KS.s32(here, 'wide')  # strings_basic.e:96
+        w.append_character('r')  # strings_basic.e:97
+        self.show(_KS.s8(here, 'STRING_32'), _B.out_int(here, w.count).plus(_KS.s8(here, ' ')).plus(w.as_string_8).plus(_KS.s8(here, ' ')).plus(w.out))  # strings_basic.e:98
+        self.show(_KS.s8(here, 'same_string'), _B.out_bool(here, s_.same_string__readable_string_8(_KS.s8(here, 'hello world!42'))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _KS.s8(here, 'Abc').is_case_insensitive_equal__readable_string_8(_KS.s8(here, 'aBC')))))  # strings_basic.e:99
+        self.show(_KS.s8(here, 'plus'), _KS.s8(here, 'a').plus(_KS.s8(here, 'b')).plus(_B.out_int(here, 3)))  # strings_basic.e:100
+        self.show(_KS.s8(here, 'out'), s_.out)  # strings_basic.e:101
+        self.print_(s_)  # strings_basic.e:102
+        self.print_(_KS.s8(here, '\n'))  # strings_basic.e:103
 
     @property
     @_rt.leaf
-    def tag(self):
+    def tag(self):  # strings_basic.e:108
         here = self._region_
-        Result = _S.once_string(here, _ONCE_STRING_1, 'tag', _KS.s8)
-        return Result
+        Result = _S.once_string(here, _ONCE_STRING_1, 'tag', _KS.s8)  # strings_basic.e:110
+        return Result  # strings_basic.e:108
 
     @property
     @_rt.leaf
-    def fresh(self):
+    def fresh(self):  # strings_basic.e:113
         here = self._region_
-        Result = _KS.s8(here, 'fresh')
-        return Result
+        Result = _KS.s8(here, 'fresh')  # strings_basic.e:115
+        return Result  # strings_basic.e:113
 
-    def show(self, label, value):
+    def show(self, label, value):  # strings_basic.e:118
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # strings_basic.e:120
 _S.register('STRINGS_BASIC', STRINGS_BASIC)

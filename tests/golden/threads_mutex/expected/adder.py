@@ -9,37 +9,37 @@ class ADDER(THREAD):
     _key_ = 'ADDER'
     _conforms_ = frozenset(['ADDER', 'ANY', 'THREAD', 'THREAD_CONTROL'])
 
-    def make__adder(self, a_counter, a_mutex, a_times):
-        self.make()
-        self.counter = a_counter
-        self.mutex = a_mutex
-        self.times = a_times
+    def make__adder(self, a_counter, a_mutex, a_times):  # adder.e:18
+        self.make()  # adder.e:20
+        self.counter = a_counter  # adder.e:21
+        self.mutex = a_mutex  # adder.e:22
+        self.times = a_times  # adder.e:23
     counter = None
     mutex = None
     times = 0
     turns_seen = 0
 
-    def turns_once_(self, _once_):
+    def turns_once_(self, _once_):  # adder.e:35
         here = self._region_
         _once_.result = None
-        _once_.result = _S.create(here, _L_cell.CELL, (_T_1,), 'put', (0,))
-        return _once_.result
+        _once_.result = _S.create(here, _L_cell.CELL, (_T_1,), 'put', (0,))  # adder.e:38
+        return _once_.result  # adder.e:35
 
     @property
-    def turns(self):
+    def turns(self):  # adder.e:35
         return self._region_.once('ADDER.turns', ADDER.turns_once_, (self,))
 
-    def execute(self):
-        i = 0
-        i = 1
-        while not i > self.times:
-            self.mutex.lock()
-            self.counter.increment()
-            self.mutex.unlock()
-            self.turns.put(_B.i32(self.turns.item + 1))
-            i = i + 1
+    def execute(self):  # adder.e:43
+        i = 0  # adder.e:45
+        i = 1  # adder.e:48
+        while not i > self.times:  # adder.e:47
+            self.mutex.lock()  # adder.e:52
+            self.counter.increment()  # adder.e:53
+            self.mutex.unlock()  # adder.e:54
+            self.turns.put(_B.i32(self.turns.item + 1))  # adder.e:55
+            i = i + 1  # adder.e:56
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        self.turns_seen = self.turns.item
+        self.turns_seen = self.turns.item  # adder.e:58
 _S.register('ADDER', ADDER)
 import eiffel_base.cell as _L_cell

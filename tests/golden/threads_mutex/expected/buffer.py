@@ -8,35 +8,35 @@ class BUFFER(ANY):
     _key_ = 'BUFFER'
     _conforms_ = frozenset(['ANY', 'BUFFER'])
 
-    def make(self):
+    def make(self):  # buffer.e:12
         here = self._region_
-        self.mutex = _S.create(here, _L_mutex.MUTEX, None, 'make', ())
-        self.changed = _S.create(here, _L_condition_variable.CONDITION_VARIABLE, None, 'make', ())
+        self.mutex = _S.create(here, _L_mutex.MUTEX, None, 'make', ())  # buffer.e:14
+        self.changed = _S.create(here, _L_condition_variable.CONDITION_VARIABLE, None, 'make', ())  # buffer.e:15
     mutex = None
     changed = None
     item = 0
     full = False
 
-    def put(self, v):
-        self.mutex.lock()
-        while self.full:
-            self.changed.wait(self.mutex)
-        self.item = v
-        self.full = True
-        self.changed.broadcast()
-        self.mutex.unlock()
+    def put(self, v):  # buffer.e:27
+        self.mutex.lock()  # buffer.e:30
+        while self.full:  # buffer.e:31
+            self.changed.wait(self.mutex)  # buffer.e:32
+        self.item = v  # buffer.e:34
+        self.full = True  # buffer.e:35
+        self.changed.broadcast()  # buffer.e:36
+        self.mutex.unlock()  # buffer.e:37
 
     @property
-    def take(self):
+    def take(self):  # buffer.e:40
         Result = 0
-        self.mutex.lock()
-        while not self.full:
-            self.changed.wait(self.mutex)
-        Result = self.item
-        self.full = False
-        self.changed.broadcast()
-        self.mutex.unlock()
-        return Result
+        self.mutex.lock()  # buffer.e:43
+        while not self.full:  # buffer.e:44
+            self.changed.wait(self.mutex)  # buffer.e:45
+        Result = self.item  # buffer.e:47
+        self.full = False  # buffer.e:48
+        self.changed.broadcast()  # buffer.e:49
+        self.mutex.unlock()  # buffer.e:50
+        return Result  # buffer.e:40
 _S.register('BUFFER', BUFFER)
 import eiffel_base.condition_variable as _L_condition_variable
 import eiffel_base.mutex as _L_mutex

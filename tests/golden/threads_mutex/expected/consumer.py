@@ -8,22 +8,22 @@ class CONSUMER(THREAD):
     _key_ = 'CONSUMER'
     _conforms_ = frozenset(['ANY', 'CONSUMER', 'THREAD', 'THREAD_CONTROL'])
 
-    def make__consumer(self, a_buffer, a_count):
-        self.make()
-        self.buffer = a_buffer
-        self.count = a_count
+    def make__consumer(self, a_buffer, a_count):  # consumer.e:15
+        self.make()  # consumer.e:17
+        self.buffer = a_buffer  # consumer.e:18
+        self.count = a_count  # consumer.e:19
     buffer = None
     count = 0
     sum = 0
 
-    def execute(self):
-        i = 0
-        i = 1
+    def execute(self):  # consumer.e:30
+        i = 0  # consumer.e:32
+        i = 1  # consumer.e:34
         while not i > self.count:
-            self.sum = self.sum + self.buffer.take
+            self.sum = self.sum + self.buffer.take  # consumer.e:35
             if not -2147483648 <= self.sum <= 2147483647:
                 self.sum = _B.wrap_i32(self.sum)
-            i = i + 1
+            i = i + 1  # consumer.e:36
             if i > 2147483647:
                 i = _B.wrap_i32(i)
 _S.register('CONSUMER', CONSUMER)

@@ -8,26 +8,26 @@ class PROBER(THREAD):
     _key_ = 'PROBER'
     _conforms_ = frozenset(['ANY', 'PROBER', 'THREAD', 'THREAD_CONTROL'])
 
-    def make__prober(self, a_mutex, a_gate):
+    def make__prober(self, a_mutex, a_gate):  # prober.e:18
         here = self._region_
-        self.make()
-        self.steps = _KS.s8(here, 'steps:')
-        self.mutex = a_mutex
-        self.gate = a_gate
+        self.make()  # prober.e:20
+        self.steps = _KS.s8(here, 'steps:')  # prober.e:21
+        self.mutex = a_mutex  # prober.e:22
+        self.gate = a_gate  # prober.e:23
     mutex = None
     gate = None
     got_lock = False
     passed_gate = False
     steps = None
 
-    def execute(self):
+    def execute(self):  # prober.e:37
         here = self._region_
-        self.got_lock = self.mutex.try_lock
-        if self.got_lock:
-            self.mutex.unlock()
-        self.gate.wait()
-        self.passed_gate = True
-        self.steps.append__string_8(_KS.s8(here, ' gate'))
-        self.exit()
-        self.steps.append__string_8(_KS.s8(here, ' after exit'))
+        self.got_lock = self.mutex.try_lock  # prober.e:39
+        if self.got_lock:  # prober.e:40
+            self.mutex.unlock()  # prober.e:41
+        self.gate.wait()  # prober.e:43
+        self.passed_gate = True  # prober.e:44
+        self.steps.append__string_8(_KS.s8(here, ' gate'))  # prober.e:45
+        self.exit()  # prober.e:46
+        self.steps.append__string_8(_KS.s8(here, ' after exit'))  # prober.e:47
 _S.register('PROBER', PROBER)

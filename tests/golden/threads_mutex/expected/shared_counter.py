@@ -10,8 +10,8 @@ class SHARED_COUNTER(ANY):
     value = 0
 
     @_rt.leaf
-    def increment(self):
-        self.value = self.value + 1
+    def increment(self):  # shared_counter.e:11
+        self.value = self.value + 1  # shared_counter.e:14
         if self.value > 2147483647:
             self.value = _B.wrap_i32(self.value)
 _S.register('SHARED_COUNTER', SHARED_COUNTER)

@@ -10,98 +10,98 @@ class THREADS_MUTEX(ANY):
     _key_ = 'THREADS_MUTEX'
     _conforms_ = frozenset(['ANY', 'THREADS_MUTEX'])
 
-    def make(self):
+    def make(self):  # threads_mutex.e:16
         here = self._region_
-        self.log = _KS.s8(here, 'log:')
-        self.counting()
-        self.probing()
-        self.buffering()
-        self.working()
+        self.log = _KS.s8(here, 'log:')  # threads_mutex.e:18
+        self.counting()  # threads_mutex.e:19
+        self.probing()  # threads_mutex.e:20
+        self.buffering()  # threads_mutex.e:21
+        self.working()  # threads_mutex.e:22
 
-    def counting(self):
+    def counting(self):  # threads_mutex.e:27
         here = self._region_
-        counter = None
-        mutex = None
-        adders = None
-        control = None
-        counter = here.new(_M_shared_counter.SHARED_COUNTER)
+        counter = None  # threads_mutex.e:29
+        mutex = None  # threads_mutex.e:30
+        adders = None  # threads_mutex.e:31
+        control = None  # threads_mutex.e:32
+        counter = here.new(_M_shared_counter.SHARED_COUNTER)  # threads_mutex.e:34
         counter.default_create()
-        mutex = here.new(_L_mutex.MUTEX)
+        mutex = here.new(_L_mutex.MUTEX)  # threads_mutex.e:35
         mutex.make()
-        adders = here.new(_L_arrayed_list.ARRAYED_LIST)
+        adders = here.new(_L_arrayed_list.ARRAYED_LIST)  # threads_mutex.e:36
         adders._gen_ = (_T_1,)
         adders.make(4)
-        for i in range(1, 4 + 1):
-            adders.extend(_S.create(here, _M_adder.ADDER, None, 'make__adder', (counter, mutex, _B.i32(250 * i))))
-        self.print_(_KS.s8(here, 'launchable before: ').plus(_B.out_bool(here, adders.first.is_launchable)).plus(_KS.s8(here, '\n')))
-        for a in _S.cursors(adders):
-            a.item.launch()
-        self.print_(_KS.s8(here, 'launchable after: ').plus(_B.out_bool(here, adders.first.is_launchable)).plus(_KS.s8(here, '\n')))
-        control = here.new(_L_thread_control.THREAD_CONTROL)
+        for i in range(1, 4 + 1):  # threads_mutex.e:37
+            adders.extend(_S.create(here, _M_adder.ADDER, None, 'make__adder', (counter, mutex, _B.i32(250 * i))))  # threads_mutex.e:38
+        self.print_(_KS.s8(here, 'launchable before: ').plus(_B.out_bool(here, adders.first.is_launchable)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:40
+        for a in _S.cursors(adders):  # threads_mutex.e:41
+            a.item.launch()  # threads_mutex.e:42
+        self.print_(_KS.s8(here, 'launchable after: ').plus(_B.out_bool(here, adders.first.is_launchable)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:44
+        control = here.new(_L_thread_control.THREAD_CONTROL)  # threads_mutex.e:45
         control.default_create()
-        control.join_all()
-        self.print_(_KS.s8(here, 'counter: ').plus(_B.out_int(here, counter.value)).plus(_KS.s8(here, '\n')))
-        for a in _S.cursors(adders):
-            self.print_(_KS.s8(here, 'turns seen: ').plus(_B.out_int(here, a.item.turns_seen)).plus(_KS.s8(here, ', terminated: ')).plus(_B.out_bool(here, a.item.terminated)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, "main's own turns: ").plus(_B.out_int(here, adders.first.turns.item)).plus(_KS.s8(here, '\n')))
+        control.join_all()  # threads_mutex.e:46
+        self.print_(_KS.s8(here, 'counter: ').plus(_B.out_int(here, counter.value)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:47
+        for a in _S.cursors(adders):  # threads_mutex.e:48
+            self.print_(_KS.s8(here, 'turns seen: ').plus(_B.out_int(here, a.item.turns_seen)).plus(_KS.s8(here, ', terminated: ')).plus(_B.out_bool(here, a.item.terminated)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:49
+        self.print_(_KS.s8(here, "main's own turns: ").plus(_B.out_int(here, adders.first.turns.item)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:51
 
-    def probing(self):
+    def probing(self):  # threads_mutex.e:54
         here = self._region_
-        mutex = None
-        gate = None
-        prober = None
-        mutex = here.new(_L_mutex.MUTEX)
+        mutex = None  # threads_mutex.e:56
+        gate = None  # threads_mutex.e:57
+        prober = None  # threads_mutex.e:58
+        mutex = here.new(_L_mutex.MUTEX)  # threads_mutex.e:60
         mutex.make()
-        gate = here.new(_L_semaphore.SEMAPHORE)
+        gate = here.new(_L_semaphore.SEMAPHORE)  # threads_mutex.e:61
         gate.make(0)
-        prober = here.new(_M_prober.PROBER)
+        prober = here.new(_M_prober.PROBER)  # threads_mutex.e:62
         prober.make__prober(mutex, gate)
-        mutex.lock()
-        prober.launch()
-        self.print_(_KS.s8(here, 'joined within 50 ms: ').plus(_B.out_bool(here, prober.join_with_timeout(50))).plus(_KS.s8(here, '\n')))
-        gate.post()
-        self.print_(_KS.s8(here, 'joined within 10 s: ').plus(_B.out_bool(here, prober.join_with_timeout(10000))).plus(_KS.s8(here, '\n')))
-        mutex.unlock()
-        self.print_(_KS.s8(here, 'prober got the lock: ').plus(_B.out_bool(here, prober.got_lock)).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'prober passed the gate: ').plus(_B.out_bool(here, prober.passed_gate)).plus(_KS.s8(here, '\n')))
-        self.print_(prober.steps.plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'try_lock now: ').plus(_B.out_bool(here, mutex.try_lock)).plus(_KS.s8(here, '\n')))
-        mutex.unlock()
-        self.print_(_KS.s8(here, 'semaphore try_wait: ').plus(_B.out_bool(here, gate.try_wait)).plus(_KS.s8(here, '\n')))
+        mutex.lock()  # threads_mutex.e:63
+        prober.launch()  # threads_mutex.e:64
+        self.print_(_KS.s8(here, 'joined within 50 ms: ').plus(_B.out_bool(here, prober.join_with_timeout(50))).plus(_KS.s8(here, '\n')))  # threads_mutex.e:65
+        gate.post()  # threads_mutex.e:66
+        self.print_(_KS.s8(here, 'joined within 10 s: ').plus(_B.out_bool(here, prober.join_with_timeout(10000))).plus(_KS.s8(here, '\n')))  # threads_mutex.e:67
+        mutex.unlock()  # threads_mutex.e:68
+        self.print_(_KS.s8(here, 'prober got the lock: ').plus(_B.out_bool(here, prober.got_lock)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:69
+        self.print_(_KS.s8(here, 'prober passed the gate: ').plus(_B.out_bool(here, prober.passed_gate)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:70
+        self.print_(prober.steps.plus(_KS.s8(here, '\n')))  # threads_mutex.e:71
+        self.print_(_KS.s8(here, 'try_lock now: ').plus(_B.out_bool(here, mutex.try_lock)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:72
+        mutex.unlock()  # threads_mutex.e:73
+        self.print_(_KS.s8(here, 'semaphore try_wait: ').plus(_B.out_bool(here, gate.try_wait)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:74
 
-    def buffering(self):
+    def buffering(self):  # threads_mutex.e:77
         here = self._region_
-        buffer = None
-        consumer = None
-        i = 0
-        buffer = here.new(_M_buffer.BUFFER)
+        buffer = None  # threads_mutex.e:79
+        consumer = None  # threads_mutex.e:80
+        i = 0  # threads_mutex.e:81
+        buffer = here.new(_M_buffer.BUFFER)  # threads_mutex.e:83
         buffer.make()
-        consumer = here.new(_M_consumer.CONSUMER)
+        consumer = here.new(_M_consumer.CONSUMER)  # threads_mutex.e:84
         consumer.make__consumer(buffer, 100)
-        consumer.launch()
-        i = 1
+        consumer.launch()  # threads_mutex.e:85
+        i = 1  # threads_mutex.e:86
         while not i > 100:
-            buffer.put(i)
-            i = i + 1
+            buffer.put(i)  # threads_mutex.e:87
+            i = i + 1  # threads_mutex.e:88
             if i > 2147483647:
                 i = _B.wrap_i32(i)
-        consumer.join()
-        self.print_(_KS.s8(here, 'sum of 1 .. 100 through the buffer: ').plus(_B.out_int(here, consumer.sum)).plus(_KS.s8(here, '\n')))
+        consumer.join()  # threads_mutex.e:90
+        self.print_(_KS.s8(here, 'sum of 1 .. 100 through the buffer: ').plus(_B.out_int(here, consumer.sum)).plus(_KS.s8(here, '\n')))  # threads_mutex.e:91
 
-    def working(self):
+    def working(self):  # threads_mutex.e:94
         here = self._region_
-        worker = None
-        worker = here.new(_L_worker_thread.WORKER_THREAD)
+        worker = None  # threads_mutex.e:96
+        worker = here.new(_L_worker_thread.WORKER_THREAD)  # threads_mutex.e:98
         worker.make__worker_thread(_S.new_agent(here, _L_procedure.PROCEDURE, (_T_2,), _S.dispatcher('record', False), [self, _KS.s8(here, 'worker ran')], ()))
-        worker.launch()
-        worker.join()
-        self.print_(self.log.plus(_KS.s8(here, '\n')))
+        worker.launch()  # threads_mutex.e:99
+        worker.join()  # threads_mutex.e:100
+        self.print_(self.log.plus(_KS.s8(here, '\n')))  # threads_mutex.e:101
     log = None
 
     @_rt.leaf
-    def record(self, s_):
+    def record(self, s_):  # threads_mutex.e:108
         here = self._region_
-        self.log.append__string_8(_KS.s8(here, ' ').plus(s_))
+        self.log.append__string_8(_KS.s8(here, ' ').plus(s_))  # threads_mutex.e:110
 _S.register('THREADS_MUTEX', THREADS_MUTEX)
 import threads_mutex.adder as _M_adder
 import eiffel_base.arrayed_list as _L_arrayed_list

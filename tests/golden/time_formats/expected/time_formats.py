@@ -9,55 +9,55 @@ class TIME_FORMATS(ANY):
     _key_ = 'TIME_FORMATS'
     _conforms_ = frozenset(['ANY', 'TIME_FORMATS'])
 
-    def make(self):
+    def make(self):  # time_formats.e:16
         here = self._region_
-        d = None
-        t_ = None
-        dt = None
+        d = None  # time_formats.e:18
+        t_ = None  # time_formats.e:19
+        dt = None  # time_formats.e:20
         later = None
-        gap = None
-        durations = None
-        d = here.new(_L_date.DATE)
+        gap = None  # time_formats.e:21
+        durations = None  # time_formats.e:22
+        d = here.new(_L_date.DATE)  # time_formats.e:24
         d.make(2024, 1, 5)
-        self.print_(_KS.s8(here, 'date: ').plus(d.out).plus(_KS.s8(here, '\n')))
-        t_ = here.new(_L_time.TIME)
+        self.print_(_KS.s8(here, 'date: ').plus(d.out).plus(_KS.s8(here, '\n')))  # time_formats.e:25
+        t_ = here.new(_L_time.TIME)  # time_formats.e:26
         t_.make(15, 7, 9)
-        self.print_(_KS.s8(here, 'afternoon: ').plus(t_.out).plus(_KS.s8(here, '\n')))
-        t_ = here.new(_L_time.TIME)
+        self.print_(_KS.s8(here, 'afternoon: ').plus(t_.out).plus(_KS.s8(here, '\n')))  # time_formats.e:27
+        t_ = here.new(_L_time.TIME)  # time_formats.e:28
         t_.make(0, 0, 0)
-        self.print_(_KS.s8(here, 'midnight: ').plus(t_.out).plus(_KS.s8(here, '\n')))
-        t_ = here.new(_L_time.TIME)
+        self.print_(_KS.s8(here, 'midnight: ').plus(t_.out).plus(_KS.s8(here, '\n')))  # time_formats.e:29
+        t_ = here.new(_L_time.TIME)  # time_formats.e:30
         t_.make(12, 30, 0)
-        self.print_(_KS.s8(here, 'noon: ').plus(t_.out).plus(_KS.s8(here, '\n')))
-        t_ = here.new(_L_time.TIME)
+        self.print_(_KS.s8(here, 'noon: ').plus(t_.out).plus(_KS.s8(here, '\n')))  # time_formats.e:31
+        t_ = here.new(_L_time.TIME)  # time_formats.e:32
         t_.make_fine(9, 5, 3.25)
-        self.print_(_KS.s8(here, 'fine: ').plus(t_.out).plus(_KS.s8(here, '\n')))
-        dt = here.new(_L_date_time.DATE_TIME)
+        self.print_(_KS.s8(here, 'fine: ').plus(t_.out).plus(_KS.s8(here, '\n')))  # time_formats.e:33
+        dt = here.new(_L_date_time.DATE_TIME)  # time_formats.e:34
         dt.make(1999, 12, 31, 23, 59, 59)
-        self.print_(_KS.s8(here, 'moment: ').plus(dt.out).plus(_KS.s8(here, '\n')))
-        dt.second_add(1)
-        self.print_(_KS.s8(here, 'one second later: ').plus(dt.out).plus(_KS.s8(here, '\n')))
-        d = here.new(_L_date.DATE)
+        self.print_(_KS.s8(here, 'moment: ').plus(dt.out).plus(_KS.s8(here, '\n')))  # time_formats.e:35
+        dt.second_add(1)  # time_formats.e:36
+        self.print_(_KS.s8(here, 'one second later: ').plus(dt.out).plus(_KS.s8(here, '\n')))  # time_formats.e:37
+        d = here.new(_L_date.DATE)  # time_formats.e:38
         d.make(2024, 2, 28)
-        d.day_add(1)
-        self.print_(_KS.s8(here, 'leap day: ').plus(d.out).plus(_KS.s8(here, ', day of the week: ')).plus(_B.out_int(here, d.day_of_the_week)).plus(_KS.s8(here, '\n')))
-        d.day_add(1)
-        self.print_(_KS.s8(here, 'after it: ').plus(d.out).plus(_KS.s8(here, '\n')))
-        dt = here.new(_L_date_time.DATE_TIME)
+        d.day_add(1)  # time_formats.e:39
+        self.print_(_KS.s8(here, 'leap day: ').plus(d.out).plus(_KS.s8(here, ', day of the week: ')).plus(_B.out_int(here, d.day_of_the_week)).plus(_KS.s8(here, '\n')))  # time_formats.e:40
+        d.day_add(1)  # time_formats.e:41
+        self.print_(_KS.s8(here, 'after it: ').plus(d.out).plus(_KS.s8(here, '\n')))  # time_formats.e:42
+        dt = here.new(_L_date_time.DATE_TIME)  # time_formats.e:43
         dt.make(2024, 3, 10, 8, 0, 0)
-        later = here.new(_L_date_time.DATE_TIME)
+        later = here.new(_L_date_time.DATE_TIME)  # time_formats.e:44
         later.make(2024, 3, 12, 20, 30, 15)
-        gap = later.relative_duration(dt)
-        self.print_(_KS.s8(here, 'gap: ').plus(_B.out_int(here, gap.day)).plus(_KS.s8(here, ' days ')).plus(_B.out_int(here, gap.hour)).plus(_KS.s8(here, ' h ')).plus(_B.out_int(here, gap.minute)).plus(_KS.s8(here, ' min ')).plus(_B.out_int(here, gap.second)).plus(_KS.s8(here, ' s\n')))
-        self.print_(_KS.s8(here, 'back: ').plus(dt.plus(gap).out).plus(_KS.s8(here, '\n')))
-        self.print_(_KS.s8(here, 'ordered: ').plus(_B.out_bool(here, dt.is_less(later))).plus(_KS.s8(here, '\n')))
-        durations = here.new(_L_arrayed_list.ARRAYED_LIST)
+        gap = later.relative_duration(dt)  # time_formats.e:45
+        self.print_(_KS.s8(here, 'gap: ').plus(_B.out_int(here, gap.day)).plus(_KS.s8(here, ' days ')).plus(_B.out_int(here, gap.hour)).plus(_KS.s8(here, ' h ')).plus(_B.out_int(here, gap.minute)).plus(_KS.s8(here, ' min ')).plus(_B.out_int(here, gap.second)).plus(_KS.s8(here, ' s\n')))  # time_formats.e:46
+        self.print_(_KS.s8(here, 'back: ').plus(dt.plus(gap).out).plus(_KS.s8(here, '\n')))  # time_formats.e:48
+        self.print_(_KS.s8(here, 'ordered: ').plus(_B.out_bool(here, dt.is_less(later))).plus(_KS.s8(here, '\n')))  # time_formats.e:49
+        durations = here.new(_L_arrayed_list.ARRAYED_LIST)  # time_formats.e:50
         durations._gen_ = (_T_1,)
         durations.make(3)
-        durations.extend(_S.create(here, _L_date_duration.DATE_DURATION, None, 'make', (0, 0, 3)))
-        durations.extend(_S.create(here, _L_time_duration.TIME_DURATION, None, 'make', (1, 30, 0)))
-        durations.extend(gap)
-        self.print_(_KS.s8(here, 'durations: ').plus(_B.out_int(here, durations.count)).plus(_KS.s8(here, '\n')))
+        durations.extend(_S.create(here, _L_date_duration.DATE_DURATION, None, 'make', (0, 0, 3)))  # time_formats.e:51
+        durations.extend(_S.create(here, _L_time_duration.TIME_DURATION, None, 'make', (1, 30, 0)))  # time_formats.e:52
+        durations.extend(gap)  # time_formats.e:53
+        self.print_(_KS.s8(here, 'durations: ').plus(_B.out_int(here, durations.count)).plus(_KS.s8(here, '\n')))  # time_formats.e:54
 _S.register('TIME_FORMATS', TIME_FORMATS)
 import eiffel_base.arrayed_list as _L_arrayed_list
 import eiffel_base.date as _L_date

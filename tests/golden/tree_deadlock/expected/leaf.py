@@ -12,17 +12,17 @@ class LEAF(ANY):
     _conforms_ = frozenset(['ANY', 'LEAF'])
 
     @_rt.leaf
-    def make(self, a_data):
-        self.data = a_data
+    def make(self, a_data):  # leaf.e:9
+        self.data = a_data  # leaf.e:12
     data = None
     total = 0
 
-    def compute(self):
-        self.sum(self.data)
+    def compute(self):  # leaf.e:25
+        self.sum(self.data)  # leaf.e:28
 
-    def sum(self, a_data):
+    def sum(self, a_data):  # leaf.e:31
         here = self._region_
         with here.reserve1(a_data, _W_3):
-            self.total = here.leaf_query(a_data, _L_special.SPECIAL.count.fget, (), _W_2)
+            self.total = here.leaf_query(a_data, _L_special.SPECIAL.count.fget, (), _W_2)  # leaf.e:34
 _S.register('LEAF', LEAF)
 import eiffel_base.special as _L_special

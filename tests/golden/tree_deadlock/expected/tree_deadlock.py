@@ -12,21 +12,21 @@ class TREE_DEADLOCK(ANY):
     _key_ = 'TREE_DEADLOCK'
     _conforms_ = frozenset(['ANY', 'TREE_DEADLOCK'])
 
-    def make(self):
+    def make(self):  # tree_deadlock.e:18
         here = self._region_
-        data = None
-        leaf = None
-        data = here.new(_L_special.SPECIAL)
+        data = None  # tree_deadlock.e:21
+        leaf = None  # tree_deadlock.e:22
+        data = here.new(_L_special.SPECIAL)  # tree_deadlock.e:24
         data._gen_ = (_T_1,)
         data.make_filled(1, 3)
-        leaf = here.new_separate(_M_leaf.LEAF, _M_leaf.LEAF.make, (data,))
-        self.run(leaf)
+        leaf = here.new_separate(_M_leaf.LEAF, _M_leaf.LEAF.make, (data,))  # tree_deadlock.e:25
+        self.run(leaf)  # tree_deadlock.e:26
 
-    def run(self, a_leaf):
+    def run(self, a_leaf):  # tree_deadlock.e:29
         here = self._region_
         with here.reserve1(a_leaf, _W_4):
-            here.call(a_leaf, _M_leaf.LEAF.compute, ())
-            self.print_(here.leaf_query(a_leaf, _G_2, (), _W_3))
+            here.call(a_leaf, _M_leaf.LEAF.compute, ())  # tree_deadlock.e:32
+            self.print_(here.leaf_query(a_leaf, _G_2, (), _W_3))  # tree_deadlock.e:33
 _S.register('TREE_DEADLOCK', TREE_DEADLOCK)
 import tree_deadlock.leaf as _M_leaf
 import eiffel_base.special as _L_special

@@ -13,50 +13,50 @@ class TUPLES(ANY):
     _key_ = 'TUPLES'
     _conforms_ = frozenset(['ANY', 'TUPLES'])
 
-    def make(self):
+    def make(self):  # tuples.e:12
         here = self._region_
-        person = None
-        pair = None
+        person = None  # tuples.e:14
+        pair = None  # tuples.e:15
         other = None
-        short = None
-        d = None
-        person = _S.new_tuple(here, [_KS.s8(here, 'Ann'), 30], (_T_1, _T_2))
-        self.show(_KS.s8(here, 'labels'), person._items[0].plus(_KS.s8(here, ' ')).plus(_B.out_int(here, person._items[1])).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, person.count)))
-        _S.tuple_put(person, 1, _B.i32(person._items[1] + 1))
-        _S.tuple_put(person, 0, _KS.s8(here, 'Anna'))
-        self.show(_KS.s8(here, 'label assigners'), person._items[0].plus(_KS.s8(here, ' ')).plus(_B.out_int(here, person._items[1])))
-        person.put(_KS.s8(here, 'Bob'), 1)
-        person.put(40, 2)
-        if (s_ := person.item(1)) is not None and _T_1.accepts(s_) and ((n := person.item(2)) is not None) and _T_2.accepts(n):
-            self.show(_KS.s8(here, 'item, put'), s_.plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n)))
-        self.show(_KS.s8(here, 'integer_item'), _B.out_int(here, person.integer_item(2)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, person.is_integer_item(2))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, person.is_integer_item(1))))
-        pair = _S.new_tuple(here, [1, 2], (_T_2, _T_2))
-        other = _S.new_tuple(here, [1, 2], (_T_2, _T_2))
-        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, pair is other).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(pair, other))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, pair.is_equal(other))))
-        other.put(3, 2)
-        self.show(_KS.s8(here, 'after put'), _B.out_bool(here, _B.equal(pair, other)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, other.integer_item(2))))
-        short = _S.new_tuple(here, [7, _KS.s8(here, 'extra'), True], (_T_2, _T_1, _T_3))
-        self.show(_KS.s8(here, 'conformance'), _B.out_int(here, short.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, short.integer_item(1))))
-        d = self.divmod(17, 5)
-        self.show(_KS.s8(here, 'result tuple'), _B.out_int(here, d._items[0]).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, d._items[1])))
-        self.show(_KS.s8(here, 'nested'), _B.out_int(here, self.nested.integer_item(1)))
-        if (p := pair) is not None and _T_4.accepts(p):
-            self.show(_KS.s8(here, 'object test'), _B.out_int(here, _B.i32(p._items[0] + p._items[1])))
+        short = None  # tuples.e:16
+        d = None  # tuples.e:17
+        person = _S.new_tuple(here, [_KS.s8(here, 'Ann'), 30], (_T_1, _T_2))  # tuples.e:19
+        self.show(_KS.s8(here, 'labels'), person._items[0].plus(_KS.s8(here, ' ')).plus(_B.out_int(here, person._items[1])).plus(_KS.s8(here, ' count ')).plus(_B.out_int(here, person.count)))  # tuples.e:20
+        _S.tuple_put(person, 1, _B.i32(person._items[1] + 1))  # tuples.e:21
+        _S.tuple_put(person, 0, _KS.s8(here, 'Anna'))  # tuples.e:22
+        self.show(_KS.s8(here, 'label assigners'), person._items[0].plus(_KS.s8(here, ' ')).plus(_B.out_int(here, person._items[1])))  # tuples.e:23
+        person.put(_KS.s8(here, 'Bob'), 1)  # tuples.e:24
+        person.put(40, 2)  # tuples.e:25
+        if (s_ := person.item(1)) is not None and _T_1.accepts(s_) and ((n := person.item(2)) is not None) and _T_2.accepts(n):  # tuples.e:26
+            self.show(_KS.s8(here, 'item, put'), s_.plus(_KS.s8(here, ' ')).plus(_B.out_int(here, n)))  # tuples.e:27
+        self.show(_KS.s8(here, 'integer_item'), _B.out_int(here, person.integer_item(2)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, person.is_integer_item(2))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, person.is_integer_item(1))))  # tuples.e:29
+        pair = _S.new_tuple(here, [1, 2], (_T_2, _T_2))  # tuples.e:30
+        other = _S.new_tuple(here, [1, 2], (_T_2, _T_2))  # tuples.e:31
+        self.show(_KS.s8(here, 'equality'), _B.out_bool(here, pair is other).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(pair, other))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, pair.is_equal(other))))  # tuples.e:32
+        other.put(3, 2)  # tuples.e:33
+        self.show(_KS.s8(here, 'after put'), _B.out_bool(here, _B.equal(pair, other)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, other.integer_item(2))))  # tuples.e:34
+        short = _S.new_tuple(here, [7, _KS.s8(here, 'extra'), True], (_T_2, _T_1, _T_3))  # tuples.e:35
+        self.show(_KS.s8(here, 'conformance'), _B.out_int(here, short.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, short.integer_item(1))))  # tuples.e:36
+        d = self.divmod(17, 5)  # tuples.e:37
+        self.show(_KS.s8(here, 'result tuple'), _B.out_int(here, d._items[0]).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, d._items[1])))  # tuples.e:38
+        self.show(_KS.s8(here, 'nested'), _B.out_int(here, self.nested.integer_item(1)))  # tuples.e:39
+        if (p := pair) is not None and _T_4.accepts(p):  # tuples.e:40
+            self.show(_KS.s8(here, 'object test'), _B.out_int(here, _B.i32(p._items[0] + p._items[1])))  # tuples.e:41
 
     @_rt.leaf
-    def divmod(self, a, b_):
+    def divmod(self, a, b_):  # tuples.e:47
         here = self._region_
-        Result = _S.new_tuple(here, [_B.idiv_i32(a, b_), _B.irem_i32(a, b_)], (_T_2, _T_2))
-        return Result
+        Result = _S.new_tuple(here, [_B.idiv_i32(a, b_), _B.irem_i32(a, b_)], (_T_2, _T_2))  # tuples.e:49
+        return Result  # tuples.e:47
 
     @property
     @_rt.leaf
-    def nested(self):
+    def nested(self):  # tuples.e:52
         here = self._region_
-        Result = _S.new_tuple(here, [1, _S.new_tuple(here, [_KS.s8(here, 'inner')], (_T_1,))], (_T_2, _T_5))
-        return Result
+        Result = _S.new_tuple(here, [1, _S.new_tuple(here, [_KS.s8(here, 'inner')], (_T_1,))], (_T_2, _T_5))  # tuples.e:54
+        return Result  # tuples.e:52
 
-    def show(self, label, value):
+    def show(self, label, value):  # tuples.e:57
         here = self._region_
-        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))
+        self.print_(label.plus(_KS.s8(here, ': ')).plus(value).plus(_KS.s8(here, '\n')))  # tuples.e:59
 _S.register('TUPLES', TUPLES)

@@ -8,21 +8,21 @@ class UNCAUGHT_EXCEPTION(ANY):
     _key_ = 'UNCAUGHT_EXCEPTION'
     _conforms_ = frozenset(['ANY', 'UNCAUGHT_EXCEPTION'])
 
-    def make(self):
+    def make(self):  # uncaught_exception.e:12
         here = self._region_
-        self.print_(_KS.s8(here, 'before\n'))
-        self.level_one()
-        self.print_(_KS.s8(here, 'not reached\n'))
+        self.print_(_KS.s8(here, 'before\n'))  # uncaught_exception.e:14
+        self.level_one()  # uncaught_exception.e:15
+        self.print_(_KS.s8(here, 'not reached\n'))  # uncaught_exception.e:16
 
-    def level_one(self):
-        self.level_two(3)
+    def level_one(self):  # uncaught_exception.e:21
+        self.level_two(3)  # uncaught_exception.e:23
 
-    def level_two(self, n):
+    def level_two(self, n):  # uncaught_exception.e:26
         here = self._region_
-        e = None
-        e = here.new(_L_developer_exception.DEVELOPER_EXCEPTION)
+        e = None  # uncaught_exception.e:28
+        e = here.new(_L_developer_exception.DEVELOPER_EXCEPTION)  # uncaught_exception.e:30
         e.default_create()
-        e.set_description(_KS.s8(here, 'gave up at level ').plus(_B.out_int(here, n)))
-        e.raise_()
+        e.set_description(_KS.s8(here, 'gave up at level ').plus(_B.out_int(here, n)))  # uncaught_exception.e:31
+        e.raise_()  # uncaught_exception.e:32
 _S.register('UNCAUGHT_EXCEPTION', UNCAUGHT_EXCEPTION)
 import eiffel_base.developer_exception as _L_developer_exception

@@ -8,19 +8,19 @@ class UNICODE_STRINGS(ANY):
     _key_ = 'UNICODE_STRINGS'
     _conforms_ = frozenset(['ANY', 'UNICODE_STRINGS'])
 
-    def make(self):
+    def make(self):  # unicode_strings.e:9
         here = self._region_
-        s_ = None
-        u = None
-        s_ = _KS.s8(here, 'héllo ∀x 😀')
-        u = _KS.s32(here, 'héllo ∀x 😀')
-        self.print_(s_)
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(u.count)
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(u)
-        self.print_(_KS.s8(here, '\n'))
-        self.print_(_KS.s32(here, '∀'))
-        self.print_(_KS.s8(here, '\n'))
-        self.io.put_string(_KS.s8(here, '∀\n'))
+        s_ = None  # unicode_strings.e:12
+        u = None  # unicode_strings.e:13
+        s_ = _KS.s8(here, 'héllo ∀x 😀')  # unicode_strings.e:15
+        u = _KS.s32(here, 'héllo ∀x 😀')  # unicode_strings.e:16
+        self.print_(s_)  # unicode_strings.e:17
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:18
+        self.print_(u.count)  # unicode_strings.e:19
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:20
+        self.print_(u)  # unicode_strings.e:21
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:22
+        self.print_(_KS.s32(here, '∀'))  # unicode_strings.e:23
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:24
+        self.io.put_string(_KS.s8(here, '∀\n'))  # unicode_strings.e:25
 _S.register('UNICODE_STRINGS', UNICODE_STRINGS)

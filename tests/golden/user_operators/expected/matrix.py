@@ -9,7 +9,7 @@ class MATRIX(ANY):
     _key_ = 'MATRIX'
     _conforms_ = frozenset(['ANY', 'MATRIX'])
 
-    def make(self, n):
+    def make(self, n):  # matrix.e:4
         here = self._region_
         self.cells = _S.create(here, _L_array.ARRAY, (_T_1,), 'make_filled', (0, 1, _B.i32(n * n)))
         self.size = n
@@ -17,12 +17,12 @@ class MATRIX(ANY):
     cells = None
 
     @_rt.leaf
-    def item(self, i, j):
+    def item(self, i, j):  # matrix.e:7
         Result = self.cells.item(_B.i32((i - 1) * self.size + j))
         return Result
 
     @_rt.leaf
-    def put(self, v, i, j):
+    def put(self, v, i, j):  # matrix.e:8
         self.cells.put(v, _B.i32((i - 1) * self.size + j))
 _S.register('MATRIX', MATRIX)
 import eiffel_base.array as _L_array

@@ -10,13 +10,13 @@ class RATIONAL(ANY):
     num = 0
     den = 0
 
-    def make(self, n, d):
+    def make(self, n, d):  # rational.e:6
         g = 0
         g = self.gcd(n if n >= 0 else _B.i32(-n), d if d >= 0 else _B.i32(-d))
         self.num = _B.idiv_i32(n, g)
         self.den = _B.idiv_i32(d, g)
 
-    def gcd(self, a, b_):
+    def gcd(self, a, b_):  # rational.e:7
         Result = 0
         if b_ == 0:
             Result = a
@@ -24,7 +24,7 @@ class RATIONAL(ANY):
             Result = self.gcd(b_, _B.irem_i32(a, b_))
         return Result
 
-    def plus(self, o):
+    def plus(self, o):  # rational.e:8
         here = self._region_
         Result = None
         Result = here.new(RATIONAL)
@@ -32,13 +32,13 @@ class RATIONAL(ANY):
         return Result
 
     @_rt.leaf
-    def is_equal(self, o):
+    def is_equal(self, o):  # rational.e:9
         Result = self.num == o.num and self.den == o.den
         return Result
 
     @property
     @_rt.leaf
-    def out(self):
+    def out(self):  # rational.e:10
         here = self._region_
         Result = _B.out_int(here, self.num).plus(_KS.s8(here, '/')).plus(_B.out_int(here, self.den))
         return Result

@@ -8,28 +8,28 @@ class USER_OPERATORS(ANY):
     _key_ = 'USER_OPERATORS'
     _conforms_ = frozenset(['ANY', 'USER_OPERATORS'])
 
-    def make(self):
+    def make(self):  # user_operators.e:7
         here = self._region_
-        a = None
+        a = None  # user_operators.e:9
         b_ = None
         c = None
-        m = None
-        r = None
-        a = here.new(_M_vec.VEC)
+        m = None  # user_operators.e:10
+        r = None  # user_operators.e:11
+        a = here.new(_M_vec.VEC)  # user_operators.e:13
         a.make(1, 2)
-        b_ = here.new(_M_vec.VEC)
+        b_ = here.new(_M_vec.VEC)  # user_operators.e:14
         b_.make(3, 4)
-        c = a.plus(b_)
-        self.print_(c.out.plus(_KS.s8(here, ' ')).plus(a.opposite.out).plus(_KS.s8(here, ' ')).plus(a.scaled(3).out).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.dot(b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_less(b_))).plus(_KS.s8(here, ' ')).plus(b_.max(a).out).plus(_KS.s8(here, '\n')))
-        m = here.new(_M_matrix.MATRIX)
+        c = a.plus(b_)  # user_operators.e:15
+        self.print_(c.out.plus(_KS.s8(here, ' ')).plus(a.opposite.out).plus(_KS.s8(here, ' ')).plus(a.scaled(3).out).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, a.dot(b_))).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, a.is_less(b_))).plus(_KS.s8(here, ' ')).plus(b_.max(a).out).plus(_KS.s8(here, '\n')))  # user_operators.e:16
+        m = here.new(_M_matrix.MATRIX)  # user_operators.e:17
         m.make(2)
-        m.put(5, 1, 2)
-        m.put(7, 2, 1)
-        self.print_(_B.out_int(here, m.item(1, 2)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, m.item(2, 1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, m.item(2, 2))).plus(_KS.s8(here, '\n')))
-        r = here.new(_M_rational.RATIONAL)
+        m.put(5, 1, 2)  # user_operators.e:18
+        m.put(7, 2, 1)  # user_operators.e:19
+        self.print_(_B.out_int(here, m.item(1, 2)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, m.item(2, 1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, m.item(2, 2))).plus(_KS.s8(here, '\n')))  # user_operators.e:20
+        r = here.new(_M_rational.RATIONAL)  # user_operators.e:21
         r.make(1, 3)
-        r = r.plus(_S.create(here, _M_rational.RATIONAL, None, 'make', (1, 6)))
-        self.print_(r.out.plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(r, _S.create(here, _M_rational.RATIONAL, None, 'make', (1, 2))))).plus(_KS.s8(here, '\n')))
+        r = r.plus(_S.create(here, _M_rational.RATIONAL, None, 'make', (1, 6)))  # user_operators.e:22
+        self.print_(r.out.plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, _B.equal(r, _S.create(here, _M_rational.RATIONAL, None, 'make', (1, 2))))).plus(_KS.s8(here, '\n')))  # user_operators.e:23
 _S.register('USER_OPERATORS', USER_OPERATORS)
 import user_operators.matrix as _M_matrix
 import user_operators.rational as _M_rational

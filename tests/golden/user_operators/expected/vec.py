@@ -11,12 +11,12 @@ class VEC(COMPARABLE):
     y = 0
 
     @_rt.leaf
-    def make(self, ax, ay):
+    def make(self, ax, ay):  # vec.e:8
         self.x = ax
         self.y = ay
 
     @_rt.leaf
-    def plus(self, o):
+    def plus(self, o):  # vec.e:9
         here = self._region_
         Result = None
         Result = here.new(VEC)
@@ -25,7 +25,7 @@ class VEC(COMPARABLE):
 
     @property
     @_rt.leaf
-    def opposite(self):
+    def opposite(self):  # vec.e:10
         here = self._region_
         Result = None
         Result = here.new(VEC)
@@ -33,7 +33,7 @@ class VEC(COMPARABLE):
         return Result
 
     @_rt.leaf
-    def scaled(self, k_):
+    def scaled(self, k_):  # vec.e:11
         here = self._region_
         Result = None
         Result = here.new(VEC)
@@ -41,20 +41,20 @@ class VEC(COMPARABLE):
         return Result
 
     @_rt.leaf
-    def dot(self, o):
+    def dot(self, o):  # vec.e:12
         Result = self.x * o.x + self.y * o.y
         if not -2147483648 <= Result <= 2147483647:
             Result = _B.wrap_i32(Result)
         return Result
 
     @_rt.leaf
-    def is_less(self, o):
+    def is_less(self, o):  # vec.e:13
         Result = _B.i32(self.x * self.x + self.y * self.y) < _B.i32(o.x * o.x + o.y * o.y)
         return Result
 
     @property
     @_rt.leaf
-    def out(self):
+    def out(self):  # vec.e:14
         here = self._region_
         Result = _KS.s8(here, '(').plus(_B.out_int(here, self.x)).plus(_KS.s8(here, ',')).plus(_B.out_int(here, self.y)).plus(_KS.s8(here, ')'))
         return Result
