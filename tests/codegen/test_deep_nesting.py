@@ -53,12 +53,11 @@ def run(tmp_path, kind, n):
     path = tmp_path / "deep.e"
     path.write_text(source)
     out, err = io.StringIO(), io.StringIO()
-    result = scoopc.run([path], stdout=out, stderr=err, cache=False)
+    result = scoopc.run([path], stdout=out, stderr=err)
     assert result.status == 0, (result.diagnostics, err.getvalue()[-2000:])
     assert out.getvalue() == expected
 
 
-@pytest.mark.slow  # a compilation each (about 3 s on a loaded machine)
 @pytest.mark.parametrize("kind", KINDS)
 def test_seventy_deep_runs(tmp_path, kind):
     run(tmp_path, kind, 70)
@@ -86,11 +85,6 @@ def test_one_level_deeper_is_a_coded_diagnostic(tmp_path, kind):
     assert [d.code for d in result.diagnostics] == ["SYNTAX-DEPTH"]
     span = result.diagnostics[0].span
     assert span.file == str(path) and span.line >= 11
-
-
-@pytest.mark.slow
-def test_seventy_deep_sum_runs(tmp_path):
-    run(tmp_path, "sum", 70)  # the quick selection's case: Python's nested parentheses limit before
 
 
 def test_nesting_limit_explained():
