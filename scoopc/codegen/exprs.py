@@ -242,7 +242,17 @@ class Expressions:
         bits = INTEGER_BITS[kind]
         if kind.startswith("NATURAL"):
             return ast.BinOp(raw, ast.BitAnd(), P.const((1 << bits) - 1))
-        return P.call(f"_B.i{bits}", [raw])
+        wrapped = P.call(f"_B.i{bits}", [raw])
+        step = _name_step(raw)
+        if step is None:
+            return wrapped
+        # `n - 1` as an argument: `n - 1 if n > -2147483648 else _B.i32(n - 1)`, no call in the common case
+        name, delta = step
+        low, high = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
+        test = P.compare(P.name(name), ast.LtE(), P.const(high - delta)) if delta >= 0 else None
+        if delta < 0:
+            test = P.compare(P.name(name), ast.GtE(), P.const(low - delta))
+        return ast.IfExp(test, _copy_step(raw), wrapped)
 
     def ring_assignment(self, target: ast.expr, source) -> list | None:
         """`x := a + b` into a local or an attribute of Current: the exact value assigned, then
@@ -381,3 +391,17 @@ def _adds_constant(raw: ast.expr, op: type, negative: bool = False) -> bool:
     if not isinstance(value, int) or isinstance(value, bool):
         return False
     return value < 0 if negative else value >= 0
+
+
+def _name_step(raw: ast.expr) -> tuple[str, int] | None:
+    """(n, c) when `raw` is `n + c` or `n - c` (n a name, c a constant): the change of n."""
+    if not (isinstance(raw, ast.BinOp) and isinstance(raw.op, (ast.Add, ast.Sub)) and isinstance(raw.left, ast.Name)):
+        return None
+    value = raw.right.value if isinstance(raw.right, ast.Constant) else None
+    if not isinstance(value, int) or isinstance(value, bool):
+        return None
+    return raw.left.id, value if isinstance(raw.op, ast.Add) else -value
+
+
+def _copy_step(raw: ast.BinOp) -> ast.expr:
+    return ast.BinOp(P.name(raw.left.id), type(raw.op)(), P.const(raw.right.value))

@@ -31,7 +31,7 @@ class CREDIT_ACCOUNT(BASE_ACCOUNT):
             self.withdrawals = _B.wrap_i32(self.withdrawals)
         if not self.balance == _B.i32(_old1 - amount):  # credit_account.e:27
             _S.assertion_failed('postcondition', 'decreased', _W_1)
-        if not self.withdrawals == _B.i32(_old2 + 1):  # credit_account.e:25
+        if not self.withdrawals == (_old2 + 1 if _old2 <= 2147483646 else _B.i32(_old2 + 1)):  # credit_account.e:25
             _S.assertion_failed('postcondition', 'counted', _W_2)
 
     @_rt.leaf

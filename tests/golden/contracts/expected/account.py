@@ -50,7 +50,7 @@ class ACCOUNT(ANY):
         self.history.extend(amount)  # account.e:34
         if not self.balance == _B.i32(_old1 + amount):  # account.e:36
             _S.assertion_failed('postcondition', 'increased', _W_4)
-        if not self.history.count == _B.i32(_old2 + 1):  # account.e:37
+        if not self.history.count == (_old2 + 1 if _old2 <= 2147483646 else _B.i32(_old2 + 1)):  # account.e:37
             _S.assertion_failed('postcondition', 'recorded', _W_5)
 
     def withdraw(self, amount):  # account.e:40

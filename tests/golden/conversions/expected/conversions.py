@@ -30,9 +30,9 @@ class CONVERSIONS(ANY):
         f = _B.r32(i + 0.0)  # conversions.e:32
         self.print_(_KS.s8(here, 'promotions: ').plus(_B.out_r64(here, d)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, big)).plus(_KS.s8(here, ' ')).plus(_B.out_r32(here, f)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i / 2)).plus(_KS.s8(here, ' ')).plus(_B.out_r64(here, i + 0.0 + 0.0 + 0.5)).plus(_KS.s8(here, '\n')))  # conversions.e:33
         small = 100  # conversions.e:34
-        self.print_(_KS.s8(here, 'INTEGER_8 + INTEGER: ').plus(_B.out_int(here, _B.i32(small + 1000))).plus(_KS.s8(here, '\n')))  # conversions.e:35
+        self.print_(_KS.s8(here, 'INTEGER_8 + INTEGER: ').plus(_B.out_int(here, small + 1000 if small <= 2147482647 else _B.i32(small + 1000))).plus(_KS.s8(here, '\n')))  # conversions.e:35
         n = 4000000000  # conversions.e:36
-        self.print_(_KS.s8(here, 'NATURAL_32 to INTEGER_64: ').plus(_B.out_int(here, _B.i64(n + 1))).plus(_KS.s8(here, '\n')))  # conversions.e:37
+        self.print_(_KS.s8(here, 'NATURAL_32 to INTEGER_64: ').plus(_B.out_int(here, n + 1 if n <= 9223372036854775806 else _B.i64(n + 1))).plus(_KS.s8(here, '\n')))  # conversions.e:37
         self.print_(_KS.s8(here, 'explicit: ').plus(_B.out_int(here, _B.trunc32(3.99))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.rounded(-3.5))).plus(_KS.s8(here, ' ')).plus(_B.out_c8(here, _B.chr(65 & 255))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord('A'))).plus(_KS.s8(here, '\n')))  # conversions.e:38
 
     def show(self, c):  # conversions.e:43

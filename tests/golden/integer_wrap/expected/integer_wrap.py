@@ -53,7 +53,7 @@ class INTEGER_WRAP(ANY):
             i32 = _B.wrap_i32(i32)
         self.show(_KS.s8(here, 'i32 65536 * 65536'), _B.out_int(here, i32))  # integer_wrap.e:44
         i32 = _L_integer_32.INTEGER_32.min_value  # integer_wrap.e:45
-        self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, _B.i32(i32 - 1)))  # integer_wrap.e:46
+        self.show(_KS.s8(here, 'i32 min - 1'), _B.out_int(here, i32 - 1 if i32 >= -2147483647 else _B.i32(i32 - 1)))  # integer_wrap.e:46
         i32 = 65536  # integer_wrap.e:47
         self.show(_KS.s8(here, 'i32 65536 * 65536 + 7 - 3'), _B.out_int(here, _B.i32(i32 * 65536 + 7 - 3)))  # integer_wrap.e:48
         i32 = _L_integer_32.INTEGER_32.max_value  # integer_wrap.e:49

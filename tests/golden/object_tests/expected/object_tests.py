@@ -38,7 +38,7 @@ class OBJECT_TESTS(ANY):
             self.print_(_KS.s8(here, 'still not a cat\n'))  # object_tests.e:31
         x = 42  # object_tests.e:33
         if (i := x) is not None and _T_3.accepts(i):  # object_tests.e:34
-            self.print_(_KS.s8(here, 'an integer: ').plus(_B.out_int(here, _B.i32(i + 1))).plus(_KS.s8(here, '\n')))  # object_tests.e:35
+            self.print_(_KS.s8(here, 'an integer: ').plus(_B.out_int(here, i + 1 if i <= 2147483646 else _B.i32(i + 1))).plus(_KS.s8(here, '\n')))  # object_tests.e:35
         if _S.conforms(x, _T_4):  # object_tests.e:37
             self.print_(_KS.s8(here, 'a string\n'))  # object_tests.e:38
         else:
