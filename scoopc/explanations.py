@@ -172,6 +172,20 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Move each class into its own file.",
     ),
+    "SYNTAX-DEPTH": _x(
+        """scoopc checks, compiles and runs constructs nested up to 2,000 deep inside one
+        instruction: pairs of parentheses, `not`s, chains of operators (`a + b + ...` counts one
+        level per operator), calls whose argument is a call, `if`s inside `if`s. Anything deeper
+        is reported at the first construct past the limit, before the checker looks at it.""",
+        """
+        x := ((((((... 2,001 pairs ... (a + 1) ...))))))
+        """,
+        """
+        inner := (... a first part ...)
+        x := (... the rest, using inner ...)
+        """,
+        "Split the expression with a local variable, or the nested instructions with a routine.",
+    ),
     "SYNTAX-OBSOLETE": _x(
         """Pre-ECMA syntax that modern EiffelStudio only accepts in its obsolete-syntax mode:
         `indexing` (now `note`), `is` before a routine body or a constant's value, `creation` (now

@@ -11,6 +11,8 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
 - SYNTAX-OBSOLETE: pre-ECMA syntax: `indexing`, `is` before a routine body or a constant, `?T`,
   `!T` and `{x: T} e` (an error at the .ecf's `standard` syntax level, the default; a warning at
   `transitional` and `obsolete`), and `creation`, `infix`/`prefix` names (errors at every level).
+- SYNTAX-DEPTH: constructs nested deeper than the compiler handles: more than 2,000 pairs of
+  parentheses, `not`s, operators, calls or `if`s inside one another (docs/GUARANTEES.md, Limits).
 - SYNTAX-FEATURE: an `attribute` body on a feature without a type, or an attribute or
   constant declared with arguments.
 - SOURCE: a file that cannot be read (missing, not UTF-8).
@@ -73,6 +75,10 @@ MESSAGES: dict[str, Message] = {
     ),
     "SYNTAX-LEXICAL": Message("{reason}"),
     "SYNTAX-OBSOLETE": Message("{what}", "{instead}"),
+    "SYNTAX-DEPTH": Message(
+        "too deeply nested: more than {limit} expressions and instructions inside one another",
+        "compute the inner part into a local variable, or move it into a routine of its own",
+    ),
     "SYNTAX-CLASS": Message("{reason}", "Eiffel puts one class in each .e file"),
     "SYNTAX-FEATURE": Message(
         "the feature `{name}` mixes an attribute and a routine: an attribute has a type and no arguments",

@@ -4,6 +4,7 @@ and, per module, what it must import and the constants it defines at module leve
 from __future__ import annotations
 
 import ast
+import os
 from dataclasses import dataclass, field
 
 from . import pyast as P
@@ -21,6 +22,9 @@ class Options:
     base_package: str = "eiffel_base"
     package: str = "program"
     c_modules: tuple = ()  # (language, module name): the cffi modules of the program's C/C++ externals
+    # the folder source paths are written relative to in the generated code (None: as given), so
+    # that compiled output names no absolute path and can be moved
+    source_root: str | None = None
 
 
 @dataclass
@@ -40,6 +44,16 @@ class Program:
     def package_of(self, key: str) -> str:
         info = self.universe.get(key)
         return self.options.base_package if info is not None and info.from_library else self.options.package
+
+    def shown_path(self, path: str) -> str:
+        """`path` as generated code names it: relative to the options' source root."""
+        root = self.options.source_root
+        if root is None:
+            return path
+        try:
+            return os.path.relpath(os.path.abspath(path), root).replace(os.sep, "/")
+        except ValueError:  # another drive (Windows): the name alone
+            return os.path.basename(path)
 
     def assertions_for(self, info) -> str:
         return self.options.library_assertions if info.from_library else self.options.assertions

@@ -9,6 +9,7 @@ from .. import syntax
 from ..kernel.strings import utf8_bytes
 from ..semantics.types import BASIC, Ty
 from . import pyast as P
+from .calls import declared_name
 from .context import fail
 
 EQUALITY = {"=": ast.Is, "/=": ast.IsNot}
@@ -23,6 +24,10 @@ INTEGER_KINDS = (
     "NATURAL_64",
 )
 INTEGER_BITS = {name: int(name.rsplit("_", 1)[1]) for name in INTEGER_KINDS}
+# Integer operations that commute with reduction modulo 2^n: a tree of them is computed exactly
+# and brought into its type once (scoopc/kernel/basic.py).
+RING_BINARY = {"plus": ast.Add, "minus": ast.Sub, "product": ast.Mult}
+RING_UNARY = {"opposite": ast.USub, "identity": ast.UAdd}
 # Classes a value of a basic type conforms to: calls on them may meet a Python int/float/str/bool.
 BASIC_ANCESTORS = frozenset({"ANY", "COMPARABLE", "PART_COMPARABLE", "HASHABLE", "NUMERIC", "DEBUG_OUTPUT"})
 WIDE_STRINGS = frozenset({"STRING_32", "READABLE_STRING_32", "IMMUTABLE_STRING_32"})
@@ -134,6 +139,9 @@ class Expressions:
 
     # --- operators -----------------------------------------------------------------------------
     def x_BinaryExpression(self, node):
+        kind = self.ring_kind(node)
+        if kind is not None:
+            return self.ring_value(self.ring_raw(node, kind), kind)
         op = node.operator
         if op == "and then" or (op == "and" and node not in self.tables.features):
             return P.boolop(ast.And(), [self.x(node.left), self.x(node.right)])
@@ -174,6 +182,9 @@ class Expressions:
         folded = self.negative_constant(node)
         if folded is not None:
             return folded
+        kind = self.ring_kind(node)
+        if kind is not None:
+            return self.ring_value(self.ring_raw(node, kind), kind)
         feature = self.tables.features.get(node)
         if feature is None:
             fail(f"operator {node.operator} without a feature", node.span)
@@ -200,6 +211,84 @@ class Expressions:
         if bits is None or not ty.name.startswith("INTEGER") or -value < -(1 << (bits - 1)):
             return None
         return P.const(-value)
+
+    # --- integer arithmetic: one range check per tree of `+ - *` -------------------------------------
+    def ring_kind(self, node) -> str | None:
+        """The integer class of `node` when it is a built-in `+`, `-` or `*` of that class."""
+        if not isinstance(node, (syntax.BinaryExpression, syntax.UnaryExpression)):
+            return None
+        feature = self.tables.features.get(node)
+        if feature is None or feature.written_in not in INTEGER_BITS or not self.is_builtin_basic(feature):
+            return None
+        table = RING_BINARY if isinstance(node, syntax.BinaryExpression) else RING_UNARY
+        return feature.written_in if declared_name(feature) in table else None
+
+    def ring_raw(self, node, kind: str) -> ast.expr:
+        """The exact value of ring operation `node` (Python's integers), its operands that are
+        ring operations of the same class included as they are: they are brought into the type
+        once, for the whole tree. The operands' order of evaluation is the source's."""
+        if isinstance(node, syntax.UnaryExpression):
+            folded = self.negative_constant(node)
+            if folded is not None:
+                return folded
+            operand = self.ring_operand(node.operand, kind)
+            if declared_name(self.tables.features[node]) == "identity":
+                return operand
+            return ast.UnaryOp(ast.USub(), operand)
+        op = RING_BINARY[declared_name(self.tables.features[node])]
+        return ast.BinOp(self.ring_operand(node.left, kind), op(), self.ring_operand(node.right, kind))
+
+    def ring_operand(self, node, kind: str) -> ast.expr:
+        inner = node
+        while isinstance(inner, syntax.Parenthesized) and inner not in self.tables.conversions:
+            inner = inner.expression
+        if inner not in self.tables.conversions and self.ring_kind(inner) == kind:
+            return P.at(self.ring_raw(inner, kind), inner.span)
+        return self.x(node)
+
+    def ring_value(self, raw: ast.expr, kind: str) -> ast.expr:
+        """`_B.i32(raw)` (in range: raw itself; else wrapped); `raw & 255` for NATURAL_8."""
+        bits = INTEGER_BITS[kind]
+        if kind.startswith("NATURAL"):
+            return ast.BinOp(raw, ast.BitAnd(), P.const((1 << bits) - 1))
+        wrapped = P.call(f"_B.i{bits}", [raw])
+        step = _name_step(raw)
+        if step is None:
+            return wrapped
+        # `n - 1` as an argument: `n - 1 if n > -2147483648 else _B.i32(n - 1)`, no call in the common case
+        name, delta = step
+        low, high = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
+        test = P.compare(P.name(name), ast.LtE(), P.const(high - delta)) if delta >= 0 else None
+        if delta < 0:
+            test = P.compare(P.name(name), ast.GtE(), P.const(low - delta))
+        return ast.IfExp(test, _copy_step(raw), wrapped)
+
+    def ring_assignment(self, target: ast.expr, source) -> list | None:
+        """`x := a + b` into a local or an attribute of Current: the exact value assigned, then
+        one range test (`if x > 2147483647: x = _B.wrap_i32(x)`), as fast as Python's own `+`
+        when nothing overflows."""
+        inner = source
+        while isinstance(inner, syntax.Parenthesized) and inner not in self.tables.conversions:
+            inner = inner.expression
+        kind = self.ring_kind(inner)
+        if kind is None or not kind.startswith("INTEGER") or source in self.tables.conversions:
+            return None
+        if not (isinstance(target, ast.Name) or (isinstance(target, ast.Attribute) and _is_self(target.value))):
+            return None
+        raw = self.ring_raw(inner, kind)
+        if isinstance(raw, ast.Constant):
+            return None
+        bits = INTEGER_BITS[kind]
+        low, high = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
+        read = _load(target)
+        if _adds_constant(raw, ast.Add) or _adds_constant(raw, ast.Sub, negative=True):
+            test = P.compare(read, ast.Gt(), P.const(high))
+        elif _adds_constant(raw, ast.Sub) or _adds_constant(raw, ast.Add, negative=True):
+            test = P.compare(read, ast.Lt(), P.const(low))
+        else:
+            test = P.not_(ast.Compare(P.const(low), [ast.LtE(), ast.LtE()], [read, P.const(high)]))
+        wrapped = P.assign(_load(target), P.call(f"_B.wrap_i{bits}", [_load(target)]))
+        return [P.assign(target, raw), P.if_(test, [wrapped])]
 
     def is_user_expanded(self, ty) -> bool:
         if ty is None or ty.is_formal or ty.name in BASIC:
@@ -288,3 +377,40 @@ class Expressions:
         ty = self.type_of(node.type)
         feature = self.tables.features.get(node)
         return self.creation_value(node, ty, feature, node.arguments, node.processor is not None)
+
+
+def _is_self(node) -> bool:
+    return isinstance(node, ast.Name) and node.id == "self"
+
+
+def _load(target: ast.expr) -> ast.expr:
+    if isinstance(target, ast.Name):
+        return P.name(target.id)
+    return P.attr(P.name("self"), target.attr)
+
+
+def _adds_constant(raw: ast.expr, op: type, negative: bool = False) -> bool:
+    """Is `raw` `e + c` (`e - c`) with `e` a value of the type and a constant `c` >= 0 (< 0 when
+    `negative`)? Then the result can only overflow on one side."""
+    if not (isinstance(raw, ast.BinOp) and isinstance(raw.op, op)):
+        return False
+    if isinstance(raw.left, (ast.BinOp, ast.UnaryOp)):
+        return False  # an exact value of the tree below, which may be out of range either way
+    value = raw.right.value if isinstance(raw.right, ast.Constant) else None
+    if not isinstance(value, int) or isinstance(value, bool):
+        return False
+    return value < 0 if negative else value >= 0
+
+
+def _name_step(raw: ast.expr) -> tuple[str, int] | None:
+    """(n, c) when `raw` is `n + c` or `n - c` (n a name, c a constant): the change of n."""
+    if not (isinstance(raw, ast.BinOp) and isinstance(raw.op, (ast.Add, ast.Sub)) and isinstance(raw.left, ast.Name)):
+        return None
+    value = raw.right.value if isinstance(raw.right, ast.Constant) else None
+    if not isinstance(value, int) or isinstance(value, bool):
+        return None
+    return raw.left.id, value if isinstance(raw.op, ast.Add) else -value
+
+
+def _copy_step(raw: ast.BinOp) -> ast.expr:
+    return ast.BinOp(P.name(raw.left.id), type(raw.op)(), P.const(raw.right.value))

@@ -9,7 +9,7 @@ from .. import syntax
 from ..semantics.types import BASIC
 from . import pyast as P
 from .context import fail
-from .exprs import WIDE_STRINGS, manifest_text
+from .exprs import INTEGER_BITS, WIDE_STRINGS, manifest_text
 from .scoop_calls import interval_across
 
 _VALUE_COPIES = frozenset({"copy", "standard_copy", "deep_copy"})
@@ -28,6 +28,11 @@ class Instructions:
 
     # --- assignment --------------------------------------------------------------------------------
     def s_Assignment(self, node):
+        target_ty = self.tables.types.get(node.target) or self.entity_type(node.target)
+        if target_ty is not None and target_ty.name in INTEGER_BITS and not target_ty.is_formal:
+            checked = self.ring_assignment(self.target(node.target), node.source)
+            if checked is not None:
+                return checked
         value = self.copied(node.source, self.x(node.source))
         value = self.reattached(node.source, value, self.tables.types.get(node.target) or self.entity_type(node.target))
         return [P.assign(self.target(node.target), value)]

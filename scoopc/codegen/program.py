@@ -87,7 +87,10 @@ def generate(
     modules = {}
     for info in parents_first(universe):
         if which(info):
-            modules[module_name(info.name) + ".py"] = (generate_class(program, info), info.decl.span.file)
+            modules[module_name(info.name) + ".py"] = (
+                generate_class(program, info),
+                program.shown_path(info.decl.span.file),
+            )
             if on_class is not None:
                 on_class()
     if library_leaves is not None:

@@ -78,10 +78,17 @@ def is_not_none(value) -> ast.Compare:
 
 
 def boolop(op, values) -> ast.expr:
-    values = list(values)
-    if len(values) == 1:
-        return values[0]
-    return ast.BoolOp(op, values)
+    """`a and b and c` as one n-ary node: a chain of 2,000 `and`s stays flat (`(a and b) and c`
+    and `a and (b and c)` mean the same in Python)."""
+    flat: list[ast.expr] = []
+    for value in values:
+        if isinstance(value, ast.BoolOp) and type(value.op) is type(op):
+            flat.extend(value.values)
+        else:
+            flat.append(value)
+    if len(flat) == 1:
+        return flat[0]
+    return ast.BoolOp(op, flat)
 
 
 def if_(test, body, orelse=None) -> ast.If:

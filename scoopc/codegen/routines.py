@@ -85,7 +85,7 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
             [
                 P.const(eiffel_class_name(self.info.name)),
                 P.const(self.routine_name),
-                P.const(span.file),
+                P.const(self.program.shown_path(span.file)),
                 P.const(span.line),
             ]
         )

@@ -24,6 +24,7 @@ from .. import outdir, pipeline
 from ..codegen.context import Options
 from ..codegen.names import class_name, module_name
 from ..codegen.program import generate
+from ..depth import deeply
 from ..exits import SourceErrors, UsageError
 from ..kernel.link import LIBRARY_LEAVES_FILE
 from ..project import Project, collect
@@ -120,11 +121,12 @@ class Compilation:
 
     @cached_property
     def parsed(self) -> pipeline.Parsed:
-        return pipeline.parse_project(self.project, self.overlay)
+        return deeply(pipeline.parse_project, self.project, self.overlay)
 
     @cached_property
     def checked(self) -> pipeline.Checked:
-        return pipeline.check_project(self.project, parsed=self.parsed, progress=self.progress, stdlib=self.stdlib)
+        parsed = self.parsed
+        return deeply(pipeline.check_project, self.project, parsed=parsed, progress=self.progress, stdlib=self.stdlib)
 
     @property
     def was_checked(self) -> bool:
@@ -160,6 +162,16 @@ class Compilation:
         return choose_root(self.project, self.semantics.universe, self.root_option, self.paths)
 
     @property
+    def program_folder(self) -> str:
+        """The folder of the program's paths (a file's, a cluster's, an .ecf's): generated code
+        names the program's source files relative to it."""
+        folders = [p if os.path.isdir(p) else os.path.dirname(p) or "." for p in self.paths]
+        try:
+            return os.path.commonpath([os.path.abspath(f) for f in folders])
+        except ValueError:  # folders on several drives (Windows)
+            return os.path.abspath(folders[0])
+
+    @property
     def assertions(self) -> str:
         return self.assertions_option or self.project.settings.assertions or "all"
 
@@ -178,8 +190,11 @@ class Compilation:
             c_modules = tuple(
                 (plan.language, plan.name) for plan in externals.plans(self.checked.externals, self.project)
             )
-            options = Options(assertions=self.assertions, package=package, c_modules=c_modules)
-            modules = generate(
+            options = Options(
+                assertions=self.assertions, package=package, c_modules=c_modules, source_root=self.program_folder
+            )
+            modules = deeply(
+                generate,
                 sem.universe,
                 sem.tables,
                 options,
@@ -197,7 +212,7 @@ class Compilation:
         modules, leaves = self.modules(package)
         folder = out / package
         doc = f"A program compiled by scoopc (root class {self.root.key})."
-        write_modules(folder, modules, doc, (BASE_PACKAGE,), _no_scoopc(package))
+        deeply(write_modules, folder, modules, doc, (BASE_PACKAGE,), _no_scoopc(package))
         (folder / LIBRARY_LEAVES_FILE).write_text(json.dumps(leaves, separators=(",", ":")))
         compiled = CompiledProgram(
             out, package, self.root, self.library.path, dict(sem.universe.shadowed), uses_roboscoop(self.project.files)

@@ -24,6 +24,7 @@ from ..pipeline import check_project, ship_stdlib
 from ..progress import Steps
 from ..project import Project
 from ..semantics.library import cache_dir
+from ..semantics.universe import stdlib_root
 from .packages import (
     BASE_PACKAGE,
     BYTECODE_DONE,
@@ -92,7 +93,7 @@ def _build(target: Path, progress: Progress, bytecode: bool) -> None:
             raise LibraryError("the standard library does not check: " + str(checked.diagnostics[0]))
         sem = checked.semantics
         assert sem is not None  # no errors: the checker ran
-        options = Options(package=BASE_PACKAGE)
+        options = Options(package=BASE_PACKAGE, source_root=str(stdlib_root().parent))
         steps.stage(sum(1 for info in sem.universe.classes.values() if info.from_library))
         modules = generate(sem.universe, sem.tables, options, lambda info: info.from_library, on_class=steps.advance)
         steps.stage()

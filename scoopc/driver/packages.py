@@ -137,8 +137,9 @@ def write_modules(
     lines: dict[str, list[object]] = {}
     for filename, (module, source) in modules.items():
         text = ast.unparse(module) + "\n"
-        (folder / filename).write_text(text)
-        lines[filename[:-3]] = [source, line_map(module, text)]
+        found = line_map(module, text)
+        (folder / filename).write_text(with_positions(text, found, source))
+        lines[filename[:-3]] = [source, found]
     (folder / "_lines.json").write_text(json.dumps(lines, separators=(",", ":")))
 
 
@@ -150,6 +151,30 @@ def line_map(module: ast.Module, text: str) -> dict[str, int]:
         if line is not None:
             found.setdefault(str(written.lineno), line)
     return found
+
+
+def with_positions(text: str, found: dict[str, int], source: str) -> str:
+    """`text` with `# file.e:line` after the first line of each routine and of each statement
+    that starts another Eiffel line (the lines stay where they are: `found` still holds)."""
+    written = ast.parse(text)
+    starts, inside = set(), set()
+    for node in _statements(written):
+        if isinstance(node, ast.FunctionDef):
+            starts.add(node.lineno)
+            inside |= {s.lineno for s in _statements(node) if not _is_docstring(s)}
+    out = text.split("\n")
+    name, previous = Path(source).name, None
+    for key, line in sorted(found.items(), key=lambda item: int(item[0])):
+        number = int(key)
+        if number not in starts and (number not in inside or line == previous):
+            continue
+        out[number - 1] += f"  # {name}:{line}"
+        previous = line
+    return "\n".join(out)
+
+
+def _is_docstring(node: ast.stmt) -> bool:
+    return isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant) and isinstance(node.value.value, str)
 
 
 def _statements(node: ast.AST) -> Iterator[ast.stmt]:

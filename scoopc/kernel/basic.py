@@ -33,10 +33,11 @@ Semantics are EiffelStudio's (finalized C code on x86-64), with these sources:
   for integer `/`). REAL `/` is IEEE (x / 0.0 is an infinity or NaN, as in EiffelStudio).
 - Shifts by the whole width (allowed by the preconditions, undefined in C) shift every bit out.
 
-Signed integer arithmetic in inline expressions tests the range of a temporary `_t` set by an
-assignment expression (`(_t if -2147483648 <= (_t := a + b) <= 2147483647 else
-B.wrap_i32(_t))`): the enclosing function gets a local `_t`, and such an expression cannot be
-the iterable of a comprehension.
+Integer `+`, `-` and `*` (binary and unary) are ring operations: reducing modulo 2^n commutes
+with them, so the code generator computes a whole tree of them with Python's exact integers and
+brings the result into the type once (scoopc/codegen/exprs.py: `_B.i32(a * b + c)`, or a range
+test after an assignment); every other signed result that can overflow is one helper call
+(`_B.i32(x << n)`), unsigned ones a mask.
 """
 
 # The dependencies go one way: basic_ops (the helpers) <- basic_dispatch <- this module, which

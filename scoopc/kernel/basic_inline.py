@@ -37,7 +37,7 @@ class Spec:
             result = _instantiate(tree, nodes)
             dropped = [nodes[k] for k in _PLACES if k in nodes and not counts.get(k) and not _trivial(nodes[k])]
             if dropped:
-                result = ast.Call(_b("seq"), [_clone(d) for d in dropped] + [result], [])
+                result = ast.Call(_b("seq"), dropped + [result], [])
             return result
         raise AssertionError("no template applies")
 
@@ -52,10 +52,12 @@ def _parse(text):
 
 
 def _instantiate(node, nodes):
-    """A fresh copy of template `node` with the place names X, Y, Z, R replaced by copies of
-    the given expressions (copying by hand: copy.deepcopy costs ten times more)."""
+    """A fresh copy of template `node` with the place names X, Y, Z, R replaced by the given
+    expressions (copies of the trivial ones, which a template may use twice; copying by hand:
+    copy.deepcopy costs ten times more)."""
     if isinstance(node, ast.Name) and node.id in nodes and nodes[node.id] is not None:
-        return _clone(nodes[node.id])
+        value = nodes[node.id]  # an operand used twice is trivial: copying the others costs time for nothing
+        return _clone(value) if _trivial(value) else value
     if isinstance(node, ast.AST):
         new = node.__class__.__new__(node.__class__)
         for field in node._fields:
@@ -168,32 +170,16 @@ def _wrap_text(expr, bits, signed):
     return f"({expr}) & {mask}"
 
 
-def _y_nonnegative(nodes):
-    value = _constant(nodes["Y"])
-    return value is not None and value >= 0
-
-
-def _y_negative(nodes):
-    value = _constant(nodes["Y"])
-    return value is not None and value < 0
-
-
 def _integer(name, bits, signed):
     p = f"{'i' if signed else 'n'}{bits}"
     low, high = _range(bits, signed)
 
-    def wrap(e, check=None):
-        """Signed results: a range test on a temporary (`_t`, bound by an assignment expression
-        in the enclosing function; nesting is safe: each `_t` is read right after it is set),
-        twice as fast as masking when nothing overflows. Unsigned results: a mask."""
+    def wrap(e):
+        """Signed results: one helper call (`_B.i32(X + Y)`: the value itself when in range);
+        unsigned results: a mask."""
         if not signed:
             return _wrap_text(e, bits, signed)
-        test = {
-            None: f"{low} <= (_t := {e}) <= {high}",
-            "high": f"(_t := {e}) <= {high}",
-            "low": f"{low} <= (_t := {e})",
-        }[check]
-        return f"(_t if {test} else _B.wrap_{p}(_t))"
+        return f"_B.{p}({e})"
 
     t = {
         "item": "X",
@@ -214,8 +200,8 @@ def _integer(name, bits, signed):
         "is_hashable": "X != 0",
         "is_valid_character_8_code": "0 <= X <= 255" if signed else "X <= 255",
         "is_valid_character_32_code": "0 <= X <= 1114111" if signed else "X <= 1114111",
-        "plus": [(_y_nonnegative, wrap("X + Y", "high")), (_y_negative, wrap("X + Y", "low")), (None, wrap("X + Y"))],
-        "minus": [(_y_nonnegative, wrap("X - Y", "low")), (_y_negative, wrap("X - Y", "high")), (None, wrap("X - Y"))],
+        "plus": wrap("X + Y"),
+        "minus": wrap("X - Y"),
         "product": wrap("X * Y"),
         "quotient": [(_y_nonzero, "X / Y"), (_y_name, "(X / Y if Y else _B.fdiv(X, Y))"), (None, "_B.fdiv(X, Y)")]
         if bits < 64
@@ -244,8 +230,8 @@ def _integer(name, bits, signed):
     }
     t["to_real_32"], t["to_real_64"] = t["to_real"], t["to_double"]
     if signed:
-        t["abs"] = [(None, f"(X if X >= 0 else {wrap('-X', 'high')})"), (None, f"_B.abs_{p}(X)")]
-        t["opposite"] = wrap("-X", "high")
+        t["abs"] = [(None, f"(X if X >= 0 else {wrap('-X')})"), (None, f"_B.abs_{p}(X)")]
+        t["opposite"] = wrap("-X")
         t["integer_quotient"] = [(_y_positive, "(X // Y if X >= 0 else -(-X // Y))"), (None, f"_B.idiv_{p}(X, Y)")]
         t["integer_remainder"] = [(_y_positive, "(X % Y if X >= 0 else -(-X % Y))"), (None, f"_B.irem_{p}(X, Y)")]
     else:

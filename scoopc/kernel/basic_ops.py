@@ -74,6 +74,20 @@ def _sized(bits, signed):
     return wrap, idiv, irem, iabs, shift, set_bit, set_bit_mask
 
 
+def _ranged(bits):
+    low, high = -(1 << (bits - 1)), (1 << (bits - 1)) - 1
+    mask = (1 << bits) - 1
+
+    def ranged(x):
+        """The exact result `x` of integer arithmetic (a whole `+ - *` tree, computed with
+        Python's unbounded integers) as a value of the type: itself when in range, else wrapped."""
+        return x if low <= x <= high else ((x - low) & mask) + low
+
+    return ranged
+
+
+i8, i16, i32, i64 = _ranged(8), _ranged(16), _ranged(32), _ranged(64)
+
 wrap_i8, idiv_i8, irem_i8, abs_i8, shift_i8, set_bit_i8, set_bit_mask_i8 = _sized(8, True)
 wrap_i16, idiv_i16, irem_i16, abs_i16, shift_i16, set_bit_i16, set_bit_mask_i16 = _sized(16, True)
 wrap_i32, idiv_i32, irem_i32, abs_i32, shift_i32, set_bit_i32, set_bit_mask_i32 = _sized(32, True)

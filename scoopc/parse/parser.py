@@ -24,6 +24,7 @@ from ..diagnostics import Diagnostic, InternalError
 from ..source import SourceFile, Span
 from . import syntax_errors
 from .builders import AstBuilder
+from .nesting import too_deep
 
 GRAMMAR_PATH = Path(__file__).parents[1] / "grammar.lark"  # where users and docs look for it
 
@@ -196,6 +197,9 @@ def _one_class(classes: list, source: SourceFile, problems: list[Diagnostic]) ->
                 reason=f"class `{extra.name.text}` is a second class in this file (after `{classes[0].name.text}`)",
             )
         )
+    deep = too_deep(classes[0])
+    if deep is not None:
+        return ParseResult(None, _sorted(problems + [deep]))
     return ParseResult(classes[0], _sorted(problems))
 
 

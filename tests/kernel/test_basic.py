@@ -320,8 +320,8 @@ def test_interval_creates_an_integer_interval(monkeypatch):
 
 
 @given(st.lists(st.integers(-(2**31), 2**31 - 1), min_size=4, max_size=4))
-def test_nested_signed_arithmetic_shares_its_temporary_safely(v):
-    """(a + b) * (c - d) + -a: every `_t` is read right after it is set."""
+def test_nested_signed_arithmetic_wraps_each_step(v):
+    """(a + b) * (c - d) + -a built from the templates: each operation brought into the type."""
 
     def node(i):
         return ast.Name(f"v{i}", ast.Load())

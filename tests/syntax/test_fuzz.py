@@ -106,10 +106,17 @@ def test_the_fuzz_corpus_is_not_empty():
 
 
 def test_deep_nesting_parses_and_dumps_without_exhausting_the_stack():
-    depth = 5_000
+    depth = 2_000  # the limit (scoopc/parse/nesting.py)
     text = f"class DEEP feature f: INTEGER do Result := {'(' * depth}1{')' * depth} end end\n"
     result = parser.parse(SourceFile("deep.e", text))
     assert not result.diagnostics
     from scoopc import syntax
 
     assert syntax.dump(result.tree).count("Parenthesized") == depth
+    deeper = (
+        text.replace("(1)", "((1))")
+        .replace("Result := ", "Result := " + "(" * 3000)
+        .replace(" end end", ")" * 3000 + " end end")
+    )
+    found = parser.parse(SourceFile("deep.e", deeper)).diagnostics
+    assert [(d.code, d.span.column) for d in found] == [("SYNTAX-DEPTH", 44 + depth + 1)]  # the 2,002nd `(`

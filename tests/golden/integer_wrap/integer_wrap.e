@@ -44,6 +44,16 @@ feature {NONE} -- Initialization
 			show ("i32 65536 * 65536", i32.out)
 			i32 := {INTEGER_32}.min_value
 			show ("i32 min - 1", (i32 - 1).out)
+			i32 := 65536
+			show ("i32 65536 * 65536 + 7 - 3", (i32 * 65536 + 7 - 3).out)
+			i32 := {INTEGER_32}.max_value
+			i32 := i32 + 1 - 1
+			show ("i32 max + 1 - 1", i32.out)
+			i32 := i32 + 5 - 1
+			show ("i32 max + 5 - 1", i32.out)
+			i8 := 100
+			i8 := i8 * 3 - -(i8 * 2)
+			show ("i8 100 * 3 - -(100 * 2)", i8.out)
 			i64 := {INTEGER_64}.max_value
 			i64 := i64 + 1
 			show ("i64 max + 1", i64.out)
