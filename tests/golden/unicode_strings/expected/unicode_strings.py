@@ -2,6 +2,9 @@
 import scoopc.runtime as _rt
 from scoopc.kernel import basic as _B, strings as _KS, support as _S, types as _T
 from eiffel_base.any import ANY
+_W_1 = ('UNICODE_STRINGS', 'print_inspections', 'unicode_strings.e', 83)
+_W_2 = ('UNICODE_STRINGS', 'print_inspections', 'unicode_strings.e', 89)
+_T_3 = _T.t('UTF_CONVERTER', (), True)
 
 class UNICODE_STRINGS(ANY):
     """Eiffel class UNICODE_STRINGS (unicode_strings.e)."""
@@ -10,17 +13,93 @@ class UNICODE_STRINGS(ANY):
 
     def make(self):  # unicode_strings.e:9
         here = self._region_
-        s_ = None  # unicode_strings.e:12
-        u = None  # unicode_strings.e:13
-        s_ = _KS.s8(here, 'héllo ∀x 😀')  # unicode_strings.e:15
-        u = _KS.s32(here, 'héllo ∀x 😀')  # unicode_strings.e:16
-        self.print_(s_)  # unicode_strings.e:17
-        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:18
-        self.print_(u.count)  # unicode_strings.e:19
-        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:20
-        self.print_(u)  # unicode_strings.e:21
-        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:22
-        self.print_(_KS.s32(here, '∀'))  # unicode_strings.e:23
-        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:24
-        self.io.put_string(_KS.s8(here, '∀\n'))  # unicode_strings.e:25
+        s_ = None  # unicode_strings.e:13
+        u = None  # unicode_strings.e:14
+        s_ = _KS.s8(here, 'hÃ©llo â\x88\x80x ð\x9f\x98\x80')  # unicode_strings.e:16
+        u = _KS.s32(here, 'héllo ∀x 😀')  # unicode_strings.e:17
+        self.print_(s_)  # unicode_strings.e:18
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:19
+        self.print_(s_.count)  # unicode_strings.e:20
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:21
+        self.print_(u.count)  # unicode_strings.e:22
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:23
+        self.print_(u)  # unicode_strings.e:24
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:25
+        self.print_(u.out.count)  # unicode_strings.e:26
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:27
+        self.print_(_KS.s32(here, '∀'))  # unicode_strings.e:28
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:29
+        self.io.put_string(_KS.s8(here, 'â\x88\x80\n'))  # unicode_strings.e:30
+        self.print_counts()  # unicode_strings.e:31
+        self.print_comparisons()  # unicode_strings.e:32
+        self.print_inspections()  # unicode_strings.e:33
+        self.print_utf_conversions()  # unicode_strings.e:34
+
+    def print_counts(self):  # unicode_strings.e:37
+        here = self._region_
+        s_ = None  # unicode_strings.e:40
+        u = None  # unicode_strings.e:41
+        s_ = _KS.s8(here, 'Ã©')  # unicode_strings.e:43
+        u = _KS.s32(here, 'é')  # unicode_strings.e:44
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, u.count)).plus(_KS.s8(here, '\n')))  # unicode_strings.e:45
+        self.print_(_B.out_int(here, _B.ord(s_.item__readable_string_8(1))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(s_.item__readable_string_8(2)))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(u.item(1)))).plus(_KS.s8(here, '\n')))  # unicode_strings.e:46
+        s_ = _KS.s8(here, 'Ã©')  # unicode_strings.e:47
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(s_.item__readable_string_8(1)))).plus(_KS.s8(here, '\n')))  # unicode_strings.e:48
+        s_ = _KS.s8(here, 'â\x88\x80')  # unicode_strings.e:49
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, '\n')))  # unicode_strings.e:50
+        self.print_(_B.out_int(here, s_.to_string_32.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, u.as_string_8.count)).plus(_KS.s8(here, '\n')))  # unicode_strings.e:51
+        s_ = _KS.s8(here, 'aÃ©b')  # unicode_strings.e:52
+        self.print_(s_.substring(2, 3))  # unicode_strings.e:53
+        self.print_(_KS.s8(here, ' ').plus(_B.out_int(here, s_.substring(2, 3).count)).plus(_KS.s8(here, '\n')))  # unicode_strings.e:54
+
+    def print_comparisons(self):  # unicode_strings.e:57
+        here = self._region_
+        s_ = None  # unicode_strings.e:60
+        u = None  # unicode_strings.e:61
+        s_ = _KS.s8(here, 'Ã©')  # unicode_strings.e:63
+        u = _KS.s32(here, 'é')  # unicode_strings.e:64
+        self.print_(s_.same_string(u))  # unicode_strings.e:65
+        self.print_(_KS.s8(here, ' '))  # unicode_strings.e:66
+        self.print_(s_.same_string(u.out))  # unicode_strings.e:67
+        self.print_(_KS.s8(here, ' '))  # unicode_strings.e:68
+        self.print_(_B.equal(s_, u.out))  # unicode_strings.e:69
+        self.print_(_KS.s8(here, ' '))  # unicode_strings.e:70
+        self.print_(u.same_string__readable_string_32(_KS.s32(here, 'é')))  # unicode_strings.e:71
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:72
+
+    def print_inspections(self):  # unicode_strings.e:75
+        here = self._region_
+        s_ = None  # unicode_strings.e:78
+        u = None  # unicode_strings.e:79
+        s_ = _KS.s8(here, 'Ã©')  # unicode_strings.e:81
+        u = _KS.s32(here, 'é')  # unicode_strings.e:82
+        _inspect1 = _S.inspect_text(s_, _W_1)  # unicode_strings.e:83
+        if _inspect1 == 'Ã©':  # unicode_strings.e:84
+            self.print_(_KS.s8(here, 'STRING_8 Ã©\n'))  # unicode_strings.e:85
+        else:
+            self.print_(_KS.s8(here, 'STRING_8 other\n'))  # unicode_strings.e:87
+        _inspect2 = _S.inspect_text(u, _W_2)  # unicode_strings.e:89
+        if _inspect2 == 'é':  # unicode_strings.e:90
+            self.print_(_KS.s8(here, 'STRING_32 Ã©\n'))  # unicode_strings.e:91
+        else:
+            self.print_(_KS.s8(here, 'STRING_32 other\n'))  # unicode_strings.e:93
+
+    def print_utf_conversions(self):  # unicode_strings.e:97
+        here = self._region_
+        u = _T_3.default(here)  # unicode_strings.e:100
+        s_ = None  # unicode_strings.e:101
+        bad = None
+        w = None  # unicode_strings.e:102
+        s_ = _KS.s8(here, 'hÃ©llo â\x88\x80 ð\x9f\x98\x80')  # unicode_strings.e:104
+        w = u.utf_8_string_8_to_string_32(s_)  # unicode_strings.e:105
+        self.print_(_B.out_int(here, s_.count).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, w.count)).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w.item(2)))).plus(_KS.s8(here, ' ')).plus(_B.out_int(here, _B.ord(w.item(9)))).plus(_KS.s8(here, '\n')))  # unicode_strings.e:106
+        self.print_(_S.static_target(here, _L_utf_converter.UTF_CONVERTER).string_32_to_utf_8_string_8(w).same_string__readable_string_8(s_))  # unicode_strings.e:107
+        self.print_(_KS.s8(here, ' ').plus(_B.out_int(here, u.utf_8_bytes_count(w, 1, w.count))).plus(_KS.s8(here, ' ')))  # unicode_strings.e:108
+        bad = here.new(_L_string_8.STRING_8)  # unicode_strings.e:109
+        bad.make_filled('é', 1)
+        self.print_(_B.out_bool(here, u.is_valid_utf_8_string_8(s_)).plus(_KS.s8(here, ' ')).plus(_B.out_bool(here, u.is_valid_utf_8_string_8(bad))).plus(_KS.s8(here, '\n')))  # unicode_strings.e:110
+        self.print_(w)  # unicode_strings.e:111
+        self.print_(_KS.s8(here, '\n'))  # unicode_strings.e:112
 _S.register('UNICODE_STRINGS', UNICODE_STRINGS)
+import eiffel_base.string_8 as _L_string_8
+import eiffel_base.utf_converter as _L_utf_converter
