@@ -223,7 +223,10 @@ def test_a_jazzy_turtlebot3_gets_twist_stamped_stamped_with_the_system_clock(env
         assert driver.wait_for(lambda s: len(s.messages) >= 15, TIMEOUT)
         for msg, at in zip(driver.messages, driver.received_at):
             stamp = msg.header.stamp.sec + msg.header.stamp.nanosec * 1e-9
-            assert abs(stamp - at) < 0.1, (stamp, at)  # ROS time: the system clock
+            # ROS time is the system clock: stamped before it was received, and not long before
+            # (a monotonic stamp, time since boot, would be hours off; the delivery's own delay
+            # on a loaded machine is a fraction of a second, so the bound is loose on purpose)
+            assert at - 5.0 < stamp <= at + 0.01, (stamp, at)
         assert {m.twist.linear.x for m in driver.messages} >= {0.1}
     finally:
         twin.close()
