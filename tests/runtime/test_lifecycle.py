@@ -103,7 +103,7 @@ def test_cycle_of_synchronous_calls_is_reported_quickly(harness):
         root.call(b, Node.ping, (a, barrier))
     t0 = time.monotonic()
     assert h.finish() == 3
-    assert time.monotonic() - t0 < 1.0
+    assert time.monotonic() - t0 < 5.0  # found, not waited out (the detector looks every 0.4 s or so)
     err = h.err.getvalue()
     assert "deadlock: a cycle of synchronous calls" in err
     for x, y in ((a, b), (b, a)):
@@ -134,7 +134,7 @@ def test_wait_condition_deadlock_is_reported_but_not_while_an_outside_client_is_
     src.close()
     t0 = time.monotonic()
     assert h.finish() == 3
-    assert time.monotonic() - t0 < 1.0
+    assert time.monotonic() - t0 < 5.0  # found, not waited out (the detector looks every 0.4 s or so)
     assert "waits on wait condition has_message" in h.err.getvalue()
 
 
