@@ -669,3 +669,13 @@ def _read_capability(project: Project, element: ElementTree.Element) -> None:
             project.settings.concurrency = support
         elif kind == "void_safety" and support:
             project.settings.void_safety = support
+
+
+def beside_program(program_paths, name: str) -> Path | None:
+    """The file `name` in the folder of the first program path that has one (a path is a folder,
+    or a file whose folder counts), or None: where a run finds world.yaml and robot.yaml."""
+    for p in program_paths or ():
+        folder = Path(p) if Path(p).is_dir() else Path(p).parent
+        if (folder / name).is_file():
+            return folder / name
+    return None

@@ -3,6 +3,7 @@ stdlib .e file, so a regular (non-editable) install works as the checkout does; 
 library compiled when the wheel was built (tools/build_stdlib.py), which a run from the wheel uses
 instead of compiling it: nothing of the library is written to the cache, no progress is shown."""
 
+import ast
 import os
 import subprocess
 import sys
@@ -109,3 +110,45 @@ def test_a_run_from_the_wheel_compiles_nothing_of_the_library(wheel, tmp_path):
     assert sorted(p.name for p in cache.iterdir()) == ["programs"]
     (meta,) = cache.glob("programs/*/program.json")
     assert str(site / "scoopc" / "prebuilt" / "base-") in meta.read_text()
+
+
+# The wheel's build step runs in pip's isolated build environment, which has only what
+# [build-system] requires (setuptools, wheel, lark): scoopc's other dependencies (yaml, numpy,
+# cyclonedds, rosbags, ...) are absent there. These run the step's imports, and the step itself,
+# with every module outside the standard library, lark and scoopc refused.
+ONLY_BUILD_REQUIREMENTS = """
+import sys
+class Refuse:
+    def find_spec(self, name, path=None, target=None):
+        top = name.partition(".")[0]
+        if top in sys.stdlib_module_names or top in ("lark", "scoopc", "_distutils_hack"):
+            return None
+        raise ModuleNotFoundError(f"No module named {name!r} (not a build requirement)")
+sys.meta_path.insert(0, Refuse())
+"""
+
+
+def _with_build_requirements_only(code: str, *args: str, env=None) -> subprocess.CompletedProcess:
+    return subprocess.run(
+        [sys.executable, "-c", ONLY_BUILD_REQUIREMENTS + code, *args],
+        capture_output=True,
+        text=True,
+        cwd=ROOT,
+        env=env,
+        timeout=600,
+    )
+
+
+def test_the_build_step_imports_with_the_build_requirements_only():
+    done = _with_build_requirements_only("from scoopc.driver.library import build_prebuilt")
+    assert done.returncode == 0, done.stderr
+
+
+@pytest.mark.slow
+def test_the_build_step_builds_with_the_build_requirements_only(tmp_path):
+    tree = ast.parse((ROOT / "tools" / "build_stdlib.py").read_text(encoding="utf-8"))
+    (step,) = [ast.literal_eval(n.value) for n in tree.body if isinstance(n, ast.Assign) and n.targets[0].id == "STEP"]
+    env = dict(os.environ, SCOOPC_CACHE_DIR=str(tmp_path / "cache"), PYTHONDONTWRITEBYTECODE="1")
+    done = _with_build_requirements_only(step.replace("; ", "\n"), str(tmp_path / "prebuilt"), env=env)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert list((tmp_path / "prebuilt").glob("base-*/eiffel_base/any.py"))

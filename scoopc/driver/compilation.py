@@ -27,8 +27,7 @@ from ..codegen.program import generate
 from ..depth import deeply
 from ..exits import SourceErrors, UsageError
 from ..kernel.link import LIBRARY_LEAVES_FILE
-from ..project import Project, collect
-from ..robots.profile import beside_program
+from ..project import Project, beside_program, collect
 from ..semantics import Checked as SemanticsChecked
 from ..semantics.library import cache_dir
 from ..semantics.universe import stdlib_root

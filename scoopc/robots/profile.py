@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
-from pathlib import Path
 
+from ..project import beside_program
 from . import yamlschema
 from .yamlschema import Map, Number, SchemaError, Text
 
@@ -113,13 +113,3 @@ def find(program_paths, given=None) -> str | None:
         return str(given)
     found = beside_program(program_paths, "robot.yaml")
     return None if found is None else str(found)
-
-
-def beside_program(program_paths, name: str) -> Path | None:
-    """The file `name` in the folder of the first program path that has one (a path is a folder,
-    or a file whose folder counts), or None: where a run finds world.yaml and robot.yaml."""
-    for p in program_paths or ():
-        folder = Path(p) if Path(p).is_dir() else Path(p).parent
-        if (folder / name).is_file():
-            return folder / name
-    return None

@@ -28,6 +28,7 @@ import scoopc.runtime as srt
 from scoopc.runtime.clock import Timer
 
 from ..exits import UsageError
+from ..project import beside_program
 from ..results import RunResult
 from ..runtime.stop_signals import STOP_SIGNALS, shielded, status_of
 from . import transport, velocity
@@ -227,7 +228,6 @@ def _tick(holder):
 def find_world(program_paths, world=None):
     """The world to simulate: `world` (path, dict or World), else world.yaml beside the program,
     else the built-in arena. Returns (World, where it came from)."""
-    from .profile import beside_program  # deferred: start-up (loads only when a world is looked for)
     from .sim.world import (  # deferred: start-up (scoopc.robots.sim.world loads only when this is used)
         World,
         WorldError,
