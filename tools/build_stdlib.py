@@ -28,6 +28,10 @@ STEP = (
 
 class BuildPy(build_py):
     def run(self) -> None:
+        # a build folder left by an earlier build may hold files since removed from the sources
+        # (a stdlib class moved elsewhere would then be compiled twice): start from nothing
+        if not getattr(self, "editable_mode", False):
+            shutil.rmtree(Path(self.build_lib) / "scoopc", ignore_errors=True)
         super().run()
         if not getattr(self, "editable_mode", False):
             build_prebuilt(Path(self.build_lib).resolve())
@@ -39,7 +43,10 @@ def build_prebuilt(build_lib: Path) -> None:
     target = build_lib / "scoopc" / "prebuilt"
     shutil.rmtree(target, ignore_errors=True)
     with tempfile.TemporaryDirectory(prefix="scoopc-build-") as cache:
-        env = dict(os.environ, SCOOPC_CACHE_DIR=cache, PYTHONPATH=str(build_lib), PYTHONDONTWRITEBYTECODE="1")
+        # build_lib first; what PYTHONPATH held stays after it: pip's isolated build environment
+        # reaches its build requirements (lark) through it
+        path = os.pathsep.join(p for p in (str(build_lib), os.environ.get("PYTHONPATH", "")) if p)
+        env = dict(os.environ, SCOOPC_CACHE_DIR=cache, PYTHONPATH=path, PYTHONDONTWRITEBYTECODE="1")
         done = subprocess.run([sys.executable, "-c", STEP, str(target)], cwd=build_lib, env=env)
     if done.returncode != 0:
         shutil.rmtree(target, ignore_errors=True)
