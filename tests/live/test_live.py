@@ -58,7 +58,7 @@ def test_a_deadlocks_cycle_arrives_on_the_events_channel(capsys):
     (event,) = client.on("/scoop/events")
     assert event["kind"] == "deadlock" and event["level"] == 5
     assert event["message"].startswith("deadlock: every processor is idle or blocked")
-    consume = {"routine": "CONSUMER.consume", "file": str(WAITS / "consumer.e"), "line": 22}
+    consume = {"routine": "CONSUMER.consume", "file": "consumer.e", "line": 22}
     assert event["sources"] == [consume] and (event["file"], event["line"]) == (consume["file"], 22)
     waits = [w for m in client.on("/scoop/waits") for w in m["waits"]]
     assert waits and waits[0]["clause"] == "has_value: c.value > 0" and waits[0]["over"] == ["P2"]

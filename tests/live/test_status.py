@@ -16,7 +16,7 @@ from scoopc.exits import Exit
 from scoopc.runtime import main as runtime_main, snapshot
 
 WAITS = Path(__file__).parent / "waits"
-WAIT_LINE = "CONSUMER.consume (" + str(WAITS / "consumer.e")
+WAIT_LINE = "CONSUMER.consume (consumer.e"  # relative to the program's folder
 
 
 def _wait_line(err: str) -> list[str]:
