@@ -2,6 +2,8 @@
 reordered within a private queue, no false deadlock report (the detector runs at a short
 tick throughout)."""
 
+import pytest
+
 from rt_helpers import Cell, spawn
 
 W = ("STRESS", "consume", "stress.e", 1)
@@ -30,6 +32,7 @@ def _hammer(here, me, accs, rounds):
                     seq += 1
 
 
+@pytest.mark.slow  # 5 to 12 s: outside the quick selection
 def test_thousand_processors_million_calls(harness):
     h = harness(deadlock_tick=0.02)
     root = h.root

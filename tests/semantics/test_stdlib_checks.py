@@ -2,6 +2,8 @@
 
 from pathlib import Path
 
+import pytest
+
 from scoopc import diagnostics, pipeline
 from scoopc.project import Project
 from scoopc.semantics.universe import stdlib_files
@@ -46,6 +48,7 @@ def test_stdlib_holds_the_kernel_classes_programs_name():
     assert wanted <= names, sorted(wanted - names)
 
 
+@pytest.mark.slow  # 5 to 12 s: outside the quick selection
 def test_cached_check_reports_what_a_cold_check_reports(tmp_path, monkeypatch):
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path))
     monkeypatch.setenv("SCOOPC_NO_PREBUILT", "1")  # the cache file, not the one a wheel ships
@@ -59,6 +62,7 @@ def test_cached_check_reports_what_a_cold_check_reports(tmp_path, monkeypatch):
     assert any(tmp_path.iterdir()), "the cache was not written"
 
 
+@pytest.mark.slow  # 5 to 12 s: outside the quick selection
 def test_a_damaged_cache_is_ignored_and_rewritten(tmp_path, monkeypatch):
     monkeypatch.setenv("SCOOPC_CACHE_DIR", str(tmp_path))
     monkeypatch.setenv("SCOOPC_NO_PREBUILT", "1")  # the cache file, not the one a wheel ships
