@@ -8,19 +8,11 @@ ROS_SERVER_GOAL (made by `on_goal' in the server's region) is tied to its Server
 the same call, before the program can see it."""
 
 import sys
-import threading
 
 import scoopc.runtime as rt
 from scoopc.kernel import strings
 from scoopc.kernel.ext.exception import failure
-from scoopc.robots import transport
-
-ANSWER_WAIT = 60.0  # seconds a DDS thread waits for the processor's answer
-
-
-class _Answer:
-    def __init__(self):
-        self.value, self.done = False, threading.Event()
+from scoopc.kernel.ext.serving import Answer, Serving
 
 
 def _goal(current, pending, server_goal):
@@ -52,27 +44,19 @@ def _cancel(current, pending, server_goal):
 def start_serving(current):
     from scoopc.robots import actions  # deferred: start-up (cyclonedds loads only when actions are used)
 
-    bus = transport.current()
     name = strings.text(current.action)
-    if not hasattr(bus, "owned"):
-        raise failure(
-            current._region_,
-            "DEVELOPER_EXCEPTION",
-            f"ROS_ACTION_SERVER {name}: ROS 2 actions need a ROS 2 robot over DDS (scoopc run --robot ros2)",
-        )
-    source = rt.outside_client(f"action server {name}")
+    serving = Serving(current, "ROS_ACTION_SERVER", name, "actions", f"action server {name}")
 
     def ask(routine, server_goal):
-        pending = _Answer()
+        pending = Answer()
         try:
-            source.call(current, routine, (pending, server_goal))
+            return serving.ask(routine, pending, server_goal) and bool(pending.value)
         except Exception:  # noqa: BLE001 - the runtime is shutting down: refuse
             return False
-        return pending.done.wait(ANSWER_WAIT) and pending.value
 
     try:
         server = actions.ActionServer(
-            bus,
+            serving.bus,
             name,
             strings.text(current.action_type),
             on_goal=lambda server_goal: ask(_goal, server_goal),
@@ -80,12 +64,11 @@ def start_serving(current):
             on_cancel=lambda server_goal: hasattr(server_goal, "eiffel") and ask(_cancel, server_goal),
         )
     except (TypeError, ValueError) as e:
-        source.close()
+        serving.close(None)
         raise failure(current._region_, "DEVELOPER_EXCEPTION", f"ROS_ACTION_SERVER: {e}") from None
 
     def stop():
-        server.close()
-        source.close()
+        serving.close(server)
 
     current._action_stop = stop
     rt.add_shutdown_hook(stop)
