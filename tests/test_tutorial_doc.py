@@ -17,7 +17,10 @@ from pathlib import Path
 
 import pytest
 
-from scoopc import cli
+sys.path.insert(0, str(Path(__file__).parent / "robots"))
+import domains  # noqa: E402 - tests/robots/domains.py: a DDS domain per test, disjoint per worker
+
+from scoopc import cli  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[1]
 TUTORIAL = ROOT / "docs" / "tutorial.md"
@@ -244,7 +247,7 @@ def test_try_a_duration(capsys, monkeypatch, tmp_path):
 @pytest.mark.slow
 def test_the_ros2_step_against_scoopc_sim_in_a_second_process(tmp_path):
     """Terminal 1: `scoopc sim`; terminal 2: the program over DDS (loopback only)."""
-    env = dict(os.environ, ROS_DOMAIN_ID=str(100 + os.getpid() % 100), SCOOPC_ROS2_BACKEND="dds")
+    env = dict(os.environ, ROS_DOMAIN_ID=str(domains.next_domain()), SCOOPC_ROS2_BACKEND="dds")
     env["CYCLONEDDS_URI"] = (
         "<CycloneDDS><Domain><General><Interfaces><NetworkInterface address='127.0.0.1'/></Interfaces>"
         "<AllowMulticast>false</AllowMulticast></General><Discovery><Peers><Peer address='127.0.0.1'/>"
