@@ -243,14 +243,27 @@ class RoutineGen(InheritedAssertions, Expressions, Calls, Instructions):
 
 def _sets_result_first(body) -> bool:
     """Does the body start with `Result := e`, e not using Result (so no default is needed)?
+    Also inside a leading `check ... then`, whose failure raises before Result can be seen.
     Not with a rescue clause (a retry may read Result)."""
     inner = body.body
-    if body.rescue is not None or not isinstance(inner, syntax.InternalBody) or not inner.instructions:
+    if body.rescue is not None or not isinstance(inner, syntax.InternalBody):
         return False
-    first = inner.instructions[0]
+    return _starts_with_result(inner.instructions)
+
+
+def _starts_with_result(instructions) -> bool:
+    if not instructions:
+        return False
+    first = instructions[0]
+    if isinstance(first, syntax.Check) and first.then_part is not None:
+        return not _uses_result(first.assertions) and _starts_with_result(first.then_part)
     if not isinstance(first, syntax.Assignment) or not isinstance(first.target, syntax.Result):
         return False
-    return not any(isinstance(node, syntax.Result) for node in _walk(first.source))
+    return not _uses_result((first.source,))
+
+
+def _uses_result(nodes) -> bool:
+    return any(isinstance(node, syntax.Result) for top in nodes for node in _walk(top))
 
 
 def _walk(node):

@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 from .errors import PASS_THROUGH, PreconditionViolation, sync_failure
 from .protocols import Args, Clause, Routine, Separate, Where
 from .sched import Block, dirty_text
-from .session import IDLE, RUNNING, SCHEDULED, Session, close_locked, enqueue
+from .session import IDLE, SCHEDULED, Session, close_locked, enqueue
 
 if TYPE_CHECKING:
     from .processor import Processor
@@ -162,6 +162,38 @@ class FastPaths:
         self.busy -= 1
         if self.busy < 0:
             self.busy_quantum()
+        if p.passive or self.rt.attention or not getattr(routine, "_scoop_leaf_", False):
+            self._command1_general(p, x, routine, args, where)
+            return
+        lock = p.lock
+        lock.acquire()
+        # An idle supplier nobody has reserved (a supplier we hold has our private queue in
+        # its queue of queues, so `held` needs no look here): the leaf runs now, under the
+        # supplier's lock, as a reservation released at once. A leaf is short and takes no
+        # processor's lock, so others wait for the lock no longer than for a claim.
+        if p.head is not None or p.state != IDLE:
+            lock.release()
+            self._command1_general(p, x, routine, args, where)
+            return
+        try:
+            routine(x, *args)
+        except BaseException as e:
+            self._leaf_failed(p, e, where)  # releases p.lock; re-raises what passes through
+            return
+        if p.waiters:
+            p.wake_others_locked(self)
+        lock.release()
+
+    def _command1_general(  # type: ignore[misc]
+        self: Processor,
+        p: Processor,
+        x: Separate,
+        routine: Routine,
+        args: Args,
+        where: Where | None,
+    ) -> None:
+        """`command1` where its fast case does not apply: a supplier we hold, a passive one,
+        the runtime asking for attention, a non-leaf routine, a supplier that is busy."""
         if p in self.held or p.passive or self.rt.attention:
             self.busy += 1  # counted once, by reserve1
             with self.reserve1(x, where):
@@ -170,50 +202,33 @@ class FastPaths:
         if not getattr(routine, "_scoop_leaf_", False):
             self._log1(p, x, routine, args, where)
             return
-        s = self.spare  # `_session1`, inlined (hot path)
-        if s is None:
-            s = Session(self, p, where)
-        else:
-            self.spare = None
-            s.proc = p
-            s.where = where
-            s.closed = s.heavy = False
+        s = self._session1(p, where)
         lock = p.lock
         lock.acquire()
         if p.head is not None or p.state != IDLE:
             self._busy1(p, s, x, routine, args)  # releases p.lock
             return
-        p.head = s  # claim, as `Session.__enter__`
-        p.state = RUNNING
-        p.exec = self.exec
-        s.claimed = True
-        lock.release()
-        s.changed = True
-        try:
-            routine(x, *args)
-        except PASS_THROUGH:
-            lock.acquire()
-            close_locked(p, s)
-            raise
-        except BaseException as e:  # dirty, then lost: reported at close
-            lock.acquire()
-            s.dirty = e
-            close_locked(p, s)
-            p.rt.note("dirty region", dirty_text(p, s, e))
-            return
-        lock.acquire()
-        if not p.qoq:  # the common case of `close_locked`
+        lock.release()  # idle again meanwhile: take the fast path once more
+        self.spare = s
+        self.busy += 1
+        self.command1(x, routine, args, where)
+
+    def _leaf_failed(self: Processor, p: Processor, e: BaseException, where: Where | None) -> None:  # type: ignore[misc]
+        """[p.lock held; released] A leaf `command1` ran on the idle supplier `p` failed with
+        `e`: what the release of a one-command reservation does with it. A stop passes
+        through; any other failure makes the reservation dirty, and since no client can see
+        it any more, it is reported as lost."""
+        if isinstance(e, PASS_THROUGH):
             if p.waiters:
-                p.wake_waiters_locked(s)
-            s.claimed = False
-            s.closed = True
-            p.exec = None
-            p.state = IDLE
-            p.head = None
-            lock.release()
-            self.spare = s  # unreferenced now: reusable
-            return
-        close_locked(p, s)
+                p.wake_others_locked(self)
+            p.lock.release()
+            raise e
+        s = Session(self, p, where)
+        s.changed = True
+        s.dirty = e
+        p.head = s  # nobody queued behind us: we held p.lock with p idle and no head
+        close_locked(p, s)  # reports the loss, wakes the waiters; releases p.lock
+        p.rt.note("dirty region", dirty_text(p, s, e))
 
     def _busy1(  # type: ignore[misc]
         self: Processor,

@@ -550,9 +550,14 @@ class Processor(FastPaths):
     def wake_waiters_locked(self, s: Session) -> None:
         """[lock] Session `s`, in which a command ran, ends: wake the other clients
         waiting on a wait condition over us (targeted wake-up)."""
+        self.wake_others_locked(s.client)
+
+    def wake_others_locked(self, client: Processor | OutsideClient) -> None:
+        """[lock] A command of `client` changed us: wake the other clients waiting on a wait
+        condition over us."""
         keep = []
         for blk in self.waiters:
-            if blk.proc is s.client:
+            if blk.proc is client:
                 keep.append(blk)
             else:
                 blk.value = self  # tells the waiter it is off our list already

@@ -233,7 +233,7 @@ def test_command1_runs_an_idle_leaf_here_and_queues_behind_a_holder(h):
     c = root.new_separate(LCell, LCell.make)
     root.command1(c, leaf_add, (1,), W)
     assert c.log == [1] and c._region_ not in root.held  # run here, released
-    assert root.spare is not None and root.spare.proc is c._region_
+    assert c._region_.head is None and c._region_.state == rt.session.IDLE  # no private queue left
     gate, entered = threading.Event(), threading.Event()
     spawn(root, lambda here: _hold(here, c, gate, entered))
     assert entered.wait(10)
