@@ -162,8 +162,14 @@ class FastPaths:
         self.busy -= 1
         if self.busy < 0:
             self.busy_quantum()
-        if p.passive or self.rt.attention or not getattr(routine, "_scoop_leaf_", False):
-            self._command1_general(p, x, routine, args, where)
+        if p.passive or self.rt.attention:
+            self._command1_reserved(x, routine, args, where)
+            return
+        if not getattr(routine, "_scoop_leaf_", False):
+            if p in self.held:
+                self._command1_reserved(x, routine, args, where)
+            else:
+                self._log1(p, x, routine, args, where)
             return
         lock = p.lock
         lock.acquire()
@@ -173,7 +179,7 @@ class FastPaths:
         # processor's lock, so others wait for the lock no longer than for a claim.
         if p.head is not None or p.state != IDLE:
             lock.release()
-            self._command1_general(p, x, routine, args, where)
+            self._command1_busy(p, x, routine, args, where)
             return
         try:
             routine(x, *args)
@@ -184,7 +190,14 @@ class FastPaths:
             p.wake_others_locked(self)
         lock.release()
 
-    def _command1_general(  # type: ignore[misc]
+    def _command1_reserved(self: Processor, x: Separate, routine: Routine, args: Args, where: Where | None) -> None:  # type: ignore[misc]
+        """`command1` as the composition it stands for: on a supplier we hold, a passive one, or
+        when the runtime asks for attention."""
+        self.busy += 1  # counted once, by reserve1
+        with self.reserve1(x, where):
+            self.call(x, routine, args)
+
+    def _command1_busy(  # type: ignore[misc]
         self: Processor,
         p: Processor,
         x: Separate,
@@ -192,15 +205,9 @@ class FastPaths:
         args: Args,
         where: Where | None,
     ) -> None:
-        """`command1` where its fast case does not apply: a supplier we hold, a passive one,
-        the runtime asking for attention, a non-leaf routine, a supplier that is busy."""
-        if p in self.held or p.passive or self.rt.attention:
-            self.busy += 1  # counted once, by reserve1
-            with self.reserve1(x, where):
-                self.call(x, routine, args)
-            return
-        if not getattr(routine, "_scoop_leaf_", False):
-            self._log1(p, x, routine, args, where)
+        """A leaf `command1` on a supplier that is not idle: one we hold, or one with a queue."""
+        if p in self.held:
+            self._command1_reserved(x, routine, args, where)
             return
         s = self._session1(p, where)
         lock = p.lock
