@@ -779,6 +779,116 @@ EXPLANATIONS: dict[str, Explanation] = {
         """,
         "Declare an assigner (`assign set_size`) in the supplier, or call the setter procedure directly.",
     ),
+    "VFAC(1)": _x(
+        """`f: T assign set_f` names the command that `x.f := v` calls: it must be a procedure of the
+        same class (not a query, not a misspelt name).""",
+        """
+        value: INTEGER assign set_valu
+        """,
+        """
+        value: INTEGER assign set_value
+        set_value (v: INTEGER) do value := v end
+        """,
+        "Name an existing procedure of the class after `assign`, or declare it.",
+    ),
+    "VFAC(2)": _x(
+        """`x.f (a, b) := v` calls the assigner as `set_f (v, a, b)`: the assigner takes the new value
+        followed by every argument of the query, so one argument more than the query.""",
+        """
+        item (i: INTEGER): G assign put
+        put (v: G) do ... end
+        """,
+        """
+        item (i: INTEGER): G assign put
+        put (v: G; i: INTEGER) do ... end
+        """,
+        "Give the assigner the new value first, then the query's arguments.",
+    ),
+    "VFAC(3)": _x(
+        """The assigner's first argument receives the value assigned to the query, so it has the
+        query's type (attachment marks may differ).""",
+        """
+        name: STRING assign set_name
+        set_name (n: INTEGER) do ... end
+        """,
+        """
+        name: STRING assign set_name
+        set_name (n: STRING) do ... end
+        """,
+        "Declare the first argument `v: like name`, or with the query's type.",
+    ),
+    "VFAC(4)": _x(
+        """The assigner's arguments after the first receive the query's arguments in order, so each
+        has the type of the query's argument in that place.""",
+        """
+        item (i: INTEGER): G assign put
+        put (v: G; i: STRING) do ... end
+        """,
+        """
+        item (i: INTEGER): G assign put
+        put (v: G; i: INTEGER) do ... end
+        """,
+        "Give the assigner's later arguments the types of the query's arguments, in the same order.",
+    ),
+    "VNCP": _x(
+        """A `convert` clause lists conversion procedures, creation procedures of the class with one
+        argument (`from_integer ({INTEGER})`), and conversion queries without arguments
+        (`to_real: {REAL_64}`). Each routine is listed once, each type once per direction, and the
+        types fit the routine's signature.""",
+        """
+        convert
+            scale ({INTEGER})   -- scale is not a creation procedure
+        """,
+        """
+        create
+            from_integer
+        convert
+            from_integer ({INTEGER})
+        """,
+        "List creation procedures with one argument, or queries without arguments, whose types fit.",
+    ),
+    "VYCP(2)": _x(
+        """A conversion procedure converts from a type that does not conform to the class: where the
+        type conforms, assignment works already, without conversion.""",
+        """
+        class BOX convert from_small ({SMALL_BOX}) ...   -- SMALL_BOX inherits BOX
+        """,
+        """
+        class BOX convert from_integer ({INTEGER}) ...
+        """,
+        "Remove the conforming type from the convert clause.",
+    ),
+    "VYCP(3)": _x(
+        """VYCP(2) in a generic class: the type converted from conforms to the class already.""",
+        """
+        class BOX [G] convert from_small ({SMALL_BOX [G]}) ...   -- SMALL_BOX [G] inherits BOX [G]
+        """,
+        """
+        class BOX [G] convert from_array ({ARRAY [G]}) ...
+        """,
+        "Remove the conforming type from the convert clause.",
+    ),
+    "VYCQ(2)": _x(
+        """A conversion query converts to a type the class does not conform to: where the class
+        conforms, assignment works already, without conversion.""",
+        """
+        class BOX inherit ANCESTOR convert to_ancestor: {ANCESTOR} ...
+        """,
+        """
+        class BOX inherit ANCESTOR convert to_integer: {INTEGER} ...
+        """,
+        "Remove the type the class conforms to from the convert clause.",
+    ),
+    "VYCQ(3)": _x(
+        """VYCQ(2) in a generic class: the class conforms to the type converted to already.""",
+        """
+        class BOX [G] inherit ANCESTOR convert to_ancestor: {ANCESTOR} ...
+        """,
+        """
+        class BOX [G] inherit ANCESTOR convert to_array: {ARRAY [G]} ...
+        """,
+        "Remove the type the class conforms to from the convert clause.",
+    ),
     "VUOT(1)": _x(
         """The local introduced by `attached e as x` has a fresh name: not a feature of the class, an
         argument, a local, nor another object-test local whose scope includes this test.""",

@@ -244,6 +244,46 @@ MESSAGES: dict[str, Message] = {
         "source of type {source} does not fit the assigner's argument type {target}: {reason}",
         "`a.f := v` calls f's assigner command with v: give it a value of type {target}",
     ),
+    "VNCP": Message(
+        "invalid `convert` clause: {reason}",
+        "a conversion procedure is a creation procedure with one argument (`make ({T})`); "
+        "a conversion query has no argument (`to_t: {T}`)",
+    ),
+    "VYCP(2)": Message(
+        "`{name}` converts from {type}, which conforms to this class already: conformance needs no conversion",
+        "remove {type} from the convert clause",
+    ),
+    "VYCP(3)": Message(
+        "`{name}` converts from {type}, which conforms to this generic class already: conformance needs no conversion",
+        "remove {type} from the convert clause",
+    ),
+    "VYCQ(2)": Message(
+        "`{name}` converts to {type}, to which this class conforms already: conformance needs no conversion",
+        "remove {type} from the convert clause",
+    ),
+    "VYCQ(3)": Message(
+        "`{name}` converts to {type}, to which this generic class conforms already: conformance needs no conversion",
+        "remove {type} from the convert clause",
+    ),
+    "VFAC(1)": Message(
+        "the assigner `{assigner}` of `{name}` is {what}: an assigner must be a procedure of the class",
+        "declare `{assigner}` as a procedure (like `set_{name} (v: T) do ... end`), or correct the name after `assign`",
+    ),
+    "VFAC(2)": Message(
+        "the assigner `{assigner}` of `{name}` takes {count} arguments: it needs {needed}, the new value "
+        "followed by `{name}`'s own arguments",
+        "give `{assigner}` the new value as first argument, then `{name}`'s arguments in their order",
+    ),
+    "VFAC(3)": Message(
+        "the assigner `{assigner}` of `{name}` takes a first argument of type {type}: it must be "
+        "`{name}`'s type, {result}",
+        "declare `{assigner}`'s first argument as `v: like {name}`",
+    ),
+    "VFAC(4)": Message(
+        "argument {index} of the assigner `{assigner}` of `{name}` has type {type}: it must be {expected}, "
+        "the type of `{name}`'s argument in that place",
+        "declare `{assigner}`'s arguments after the first with the types of `{name}`'s arguments",
+    ),
     "VBAC(2)": Message(
         "`{name}` has no assigner command, so it cannot be the target of `:=`",
         "declare it `{name}: T assign set_{name}`, or call the setter",

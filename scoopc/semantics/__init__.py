@@ -42,6 +42,8 @@ def prepare(trees, found: list, base=None, scoop: bool = True, visible=None):
     for info in order:
         if not info.failed:
             signatures.check_redeclarations(universe, info, _reporter(universe, found, info))
+            signatures.check_assigners(universe, info, _reporter(universe, found, info))
+            signatures.check_converters(universe, info, _reporter(universe, found, info))
             signatures.check_joins(universe, info, _reporter(universe, found, info))
             signatures.check_constraint_creators(universe, info, _reporter(universe, found, info))
     return universe, order

@@ -89,6 +89,112 @@ def check_redeclarations(universe, info, report) -> None:
                 break
 
 
+def check_assigners(universe, info, report) -> None:
+    """VFAC (ECMA-367 8.5.21, numbered as its conditions): the assigner mark of a query names a
+    command of the class (1) with one argument more than the query (2), whose first argument has
+    the query's type (3) and whose other arguments have the query's argument types (4). Types are
+    compared without their attachment marks, as in EiffelBase's `item (k: K): detachable G assign
+    force` with `force (v: G; k: K)`."""
+    own = info.own_type()
+    for feature in info.features.values():
+        mark = getattr(feature.decl, "assigner", None)
+        if mark is None or feature.written_in != info.name:
+            continue
+        command = info.features.get(mark.key)
+        names = {"name": feature.text, "assigner": mark.text}
+        if command is None or command.is_query:
+            what = "no feature of the class" if command is None else f"a {command.kind}"
+            report("VFAC(1)", mark.span, what=what, **names)
+            continue
+        if len(command.arguments) != len(feature.arguments) + 1:
+            report("VFAC(2)", mark.span, count=len(command.arguments), needed=len(feature.arguments) + 1, **names)
+            continue
+        query, setter = member_signature(universe, own, feature), member_signature(universe, own, command)
+        if not _same_type(setter.arguments[0], query.result):
+            report("VFAC(3)", mark.span, type=str(setter.arguments[0]), result=str(query.result), **names)
+            continue
+        for index, (a, b) in enumerate(zip(setter.arguments[1:], query.arguments), start=2):
+            if not _same_type(a, b):
+                report("VFAC(4)", mark.span, index=index, type=str(a), expected=str(b), **names)
+                break
+
+
+def check_converters(universe, info, report) -> None:
+    """VNCP, VYCP(2..3), VYCQ(2..3): the class's `convert` clause, checked as EiffelStudio's
+    CONVERTIBILITY_CHECKER does (its VNCP carries a reason, in EiffelStudio's words). A
+    conversion procedure `make ({T})` is a creation procedure of the class with one argument to
+    which T conforms; a conversion query `to_t: {T}` is a query without arguments whose type
+    conforms to T; a routine is named once and a type once per direction; a conversion type is
+    no anchored type, and the class does not already conform to it (VYCQ) nor it to the class
+    (VYCP), the subcode 3 when the class is generic. As in EiffelStudio, the first error ends the
+    check of the class's clause."""
+    seen: set[str] = set()
+    known: dict[bool, list[Ty]] = {True: [], False: []}
+    resolver = TypeResolver(universe, info, report)
+    for converter in info.decl.converters:
+        if not _converter_valid(universe, info, converter, seen, known, resolver, report):
+            return
+
+
+def _converter_valid(universe, info, converter, seen: set, known: dict, resolver, report) -> bool:
+    """One entry of a convert clause (see `check_converters`); False after reporting its error."""
+    name = converter.name
+    if name.key in seen:
+        report("VNCP", name.span, reason="Routine specified twice in Convert_clause.")
+        return False
+    seen.add(name.key)
+    feature = info.features.get(name.key)
+    if feature is None:
+        report("VNCP", name.span, reason=f"Routine not found: {name.text}")
+        return False
+    if converter.creation_mode:
+        if name.key not in (info.creators or {}):
+            report("VNCP", name.span, reason="Not a creation procedure.")
+            return False
+        if feature.is_query or len(feature.arguments) != 1:
+            report("VNCP", name.span, reason="Not just 1 argument.")
+            return False
+    elif not feature.is_query or feature.arguments:
+        report("VNCP", name.span, reason="Not a query without argument.")
+        return False
+    own = info.own_type()
+    signature = member_signature(universe, own, feature)
+    for written in converter.types:
+        if isinstance(written, syntax.AnchoredType):
+            report("VNCP", written.span, reason="Invalid type: use of anchors.")
+            return False
+        ty = resolver.resolve(written)
+        if ty is None:
+            return False  # reported (VTCT, VTUG)
+        bare = ty.with_marks(attached=True)
+        if bare in known[converter.creation_mode]:
+            report("VNCP", written.span, reason="Conversion type already specified.")
+            return False
+        known[converter.creation_mode].append(bare)
+        if converter.creation_mode:
+            target = signature.arguments[0]
+            if target is not None and not conforms(universe, bare, target.with_marks(attached=True), info):
+                report("VNCP", name.span, reason="SOURCE does not conform to argument type.")
+                return False
+            if not bare.is_formal and conforms(universe, bare, own, info):
+                report("VYCP(3)" if info.formals else "VYCP(2)", written.span, name=name.text, type=str(ty))
+                return False
+        else:
+            result = signature.result
+            if result is not None and not conforms(universe, result.with_marks(attached=True), bare, info):
+                report("VNCP", name.span, reason="Return type does not conform to SOURCE.")
+                return False
+            if not bare.is_formal and conforms(universe, own, bare, info):
+                report("VYCQ(3)" if info.formals else "VYCQ(2)", written.span, name=name.text, type=str(ty))
+                return False
+    return True
+
+
+def _same_type(a: Ty | None, b: Ty | None) -> bool:
+    """The same type up to attachment marks (an unresolved one is reported elsewhere)."""
+    return a is None or b is None or a.with_marks(attached=True) == b.with_marks(attached=True)
+
+
 def _mismatch(universe, info, feature, precursor, mine: Signature, theirs: Signature) -> str:
     if feature.is_query != precursor.is_query:
         return "a query and a procedure cannot redeclare each other"

@@ -1,0 +1,10 @@
+class
+	SMALL_BOX
+
+inherit
+	BOX
+
+create
+	make
+
+end

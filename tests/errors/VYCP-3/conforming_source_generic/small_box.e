@@ -1,0 +1,10 @@
+class
+	SMALL_BOX [G]
+
+inherit
+	BOX [G]
+
+create
+	make
+
+end
