@@ -19,9 +19,9 @@ The counts therefore depend on the seed alone (except a run near --timeout on a 
 Work: --jobs worker processes (default: the number of CPUs; 1 works in this process). Each loads the
 standard library's declarations and the compiled library's facts once; a mutant is checked once and
 that check is the compilation's (scoopc.driver.Compilation, as `scoopc compile` does); the compiled
-package is written beside a link to the compiled standard library (`eiffel_base`, with its bytecode)
-instead of a copy of it; a run is `python -m <package>` in a process of its own, judged by its exit
-status.
+package is written beside a link to the run's one copy of the compiled standard library
+(`eiffel_base`, with its bytecode) instead of a copy of its own; a run is `python -m <package>` in a
+process of its own, judged by its exit status.
 
 --minutes is the budget: no mutant or run starts after it (those under way finish: one per worker,
 each bounded by --timeout); the end line says how many mutants were examined when not all were.
@@ -73,6 +73,11 @@ class Worker:
         ]
         self.stdlib = pipeline.load_stdlib()
         self.library = compiled_library()
+        # The runs' eiffel_base: this run's own copy, with its bytecode (another scoopc may replace or prune
+        # the cache's meanwhile); made once, by the first worker.
+        self.base = work / "library" / BASE_PACKAGE
+        if not self.base.exists():
+            shutil.copytree(self.library.path / BASE_PACKAGE, self.base)
         compiling.Compilation([str(SOURCES[0])], stdlib=self.stdlib).checked  # noqa: B018 - the parser loaded, warm
 
     def make_mutant(self, seed: int, index: int) -> Path:
@@ -123,7 +128,7 @@ class Worker:
             return self._end(index, kinds, "compile refused", "\n".join(map(str, refused.diagnostics)))
         except Exception:
             return self._end(index, kinds, "compile crash", traceback.format_exc())
-        (out / BASE_PACKAGE).symlink_to(self.library.path / BASE_PACKAGE, target_is_directory=True)
+        (out / BASE_PACKAGE).symlink_to(self.base, target_is_directory=True)
         return index, [*kinds, "compiled"], str(out / package)
 
     def run(self, index: int, package: str) -> tuple[int, list[str], None]:
