@@ -1,4 +1,4 @@
-"""The seeded long fuzzing run of issue 25: mutants of the golden and valid programs are checked; those
+"""The seeded long fuzzing run (docs/GUARANTEES.md): mutants of the golden and valid programs are checked; those
 that check clean are compiled; the first --runs of the compiled ones are run. A crash of the checker or
 the code generator, a clean mutant the compiler refuses, or a run that ends with an exit status other
 than 0 or 3 (4 is an internal error) is a bug: each is kept under --keep as `<kind>-<index>/` (the
