@@ -2,7 +2,7 @@
 `across`, `inspect`, separate blocks, `check ... then`, inline agents, manifest tuples and arrays,
 calls as arguments of calls, long `elseif` chains) check, compile and run (issue 25 item 6); one
 level deeper is SYNTAX-DEPTH at its place, never an internal error. The generated Python stays
-within CPython's limits (scoopc/codegen/shallow.py)."""
+within CPython's limits (scoopc/codegen/shallow.py). A rescue clause retries from 2,000 deep."""
 
 import io
 
@@ -142,17 +142,39 @@ def compound(kind: str, n: int) -> tuple[str, str, str]:
 
 
 COMPOUNDS = ["loop", "across", "across_is", "inspect", "separate", "check", "elseif", "feature_calls"]
-COMPOUNDS += ["qualified_calls", "agents", "tuple", "array"]
+COMPOUNDS += ["qualified_calls", "agents", "tuple", "array", "rescue"]
+
+
+RESCUE = """
+	retried: INTEGER
+			-- 7, the second time: the first raises, and the rescue clause retries {n} levels deep.
+		local
+			tried: BOOLEAN
+		do
+			if tried then
+				Result := 7
+			else
+				(create {{DEVELOPER_EXCEPTION}}).raise
+			end
+		rescue
+			{rescue}
+		end
+"""
 
 
 def compound_program(kinds, n: int) -> tuple[str, str]:
-    """A class doing each of `kinds` `n` deep, and the output it prints."""
-    body, expected = "", ""
+    """A class doing each of `kinds` `n` deep, and the output it prints. `rescue`: a routine whose
+    rescue clause retries inside `n` `if`s."""
+    body, expected, features = "", "", ""
     for kind in kinds:
-        instructions, shown, value = compound(kind, n)
+        if kind == "rescue":
+            instructions, shown, value = "x := retried", "x", "7"
+            features += RESCUE.format(n=n, rescue="if True then\n" * n + "tried := True\nretry\n" + "end\n" * n)
+        else:
+            instructions, shown, value = compound(kind, n)
         body += instructions + f'\n\t\t\tprint (({shown}).out + "%N")\n'
         expected += value + "\n"
-    return COMPOUND + body + "\t\tend\n" + COMPOUND_END, expected
+    return COMPOUND + body + "\t\tend\n" + features + COMPOUND_END, expected
 
 
 def run_compounds(tmp_path, kinds, n):
@@ -184,7 +206,14 @@ def test_agents_two_thousand_deep_compile_and_two_hundred_calls_deep_run(tmp_pat
     run_compounds(tmp_path, ["agents"], 800)
 
 
-@pytest.mark.parametrize("kind", COMPOUNDS)
+# Parsing 2,000 levels takes half a second: the quick selection checks the kinds whose levels are
+# counted apart from their parts (inspect, across, the elseif chain) and the agents.
+QUICK_DEEPER = ("inspect", "across", "elseif", "agents")
+
+
+@pytest.mark.parametrize(
+    "kind", [k if k in QUICK_DEEPER else pytest.param(k, marks=pytest.mark.slow) for k in COMPOUNDS]
+)
 def test_a_compound_one_level_deeper_is_a_coded_diagnostic(tmp_path, kind):
     """(An `elseif` chain does not nest: 2,001 branches check.)"""
     source, _ = compound_program([kind], MAX_NESTING + (4 if kind == "agents" else 1))
