@@ -175,8 +175,11 @@ EXPLANATIONS: dict[str, Explanation] = {
     "SYNTAX-DEPTH": _x(
         """scoopc checks, compiles and runs constructs nested up to 2,000 deep inside one
         instruction: pairs of parentheses, `not`s, chains of operators (`a + b + ...` counts one
-        level per operator), calls whose argument is a call, `if`s inside `if`s. Anything deeper
-        is reported at the first construct past the limit, before the checker looks at it.""",
+        level per operator), calls whose argument is a call, `if`s inside `if`s, loops, `across`,
+        `inspect` and separate blocks inside one another, manifest tuples and arrays, inline agents.
+        Each expression and instruction is a level; their parts (an `elseif` or `when` branch) are
+        not, and an `elseif` chain does not nest. Anything deeper is reported at the first
+        construct past the limit, before the checker looks at it.""",
         """
         x := ((((((... 2,001 pairs ... (a + 1) ...))))))
         """,

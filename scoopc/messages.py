@@ -12,7 +12,8 @@ Codes of our own, for conditions ECMA-367 gives no code, are listed here with th
   `!T` and `{x: T} e` (an error at the .ecf's `standard` syntax level, the default; a warning at
   `transitional` and `obsolete`), and `creation`, `infix`/`prefix` names (errors at every level).
 - SYNTAX-DEPTH: constructs nested deeper than the compiler handles: more than 2,000 pairs of
-  parentheses, `not`s, operators, calls or `if`s inside one another (docs/GUARANTEES.md, Limits).
+  parentheses, `not`s, operators, calls, `if`s, loops, `inspect`s, agents ... inside one another
+  (docs/GUARANTEES.md, Limits).
 - SYNTAX-FEATURE: an `attribute` body on a feature without a type, or an attribute or
   constant declared with arguments.
 - SOURCE: a file that cannot be read (missing, not UTF-8).

@@ -389,12 +389,16 @@ class Calls:
             return P.call("_T.formal", [P.name("self"), P.const(self.info.name), P.const(ty.formal)])
         if ty.name == "<Current>":
             return P.call("_T.of", [P.name("self")])
+        constant = ("type", str(ty), ty.attached)
+        known = self.module.known_constant(constant) if formals is None else None
+        if known is not None:  # made before: not looked through again (a TUPLE in a TUPLE, 2,000 deep)
+            return known
         key = self.universe.canonical(ty.name) if self.universe.get(ty.name) is None else ty.name
         generics = [self.type_desc(g, formals) for g in ty.generics]
         call = P.call("_T.t", [P.const(key), P.tup(generics), P.const(bool(ty.attached))])
         if formals is not None or any(not _constant_desc(g) for g in generics):
             return call
-        return self.module.constant("T", call, key=("type", str(ty), ty.attached))
+        return self.module.constant("T", call, key=constant)
 
     def generics_desc(self, ty: Ty) -> ast.expr:
         return P.tup([self.type_desc(g) for g in ty.generics])

@@ -101,6 +101,11 @@ class ModuleContext:
             found.setdefault(self.module_alias(key), f"{self.program.package_of(key)}.{module_name(key)}")
         return [ast.Import([ast.alias(path, alias)]) for alias, path in found.items()]
 
+    def known_constant(self, key) -> ast.Name | None:
+        """The constant interned by `key`, if made already."""
+        ident = self._const_names.get(key)
+        return None if ident is None else P.name(ident)
+
     def constant(self, prefix: str, value: ast.expr, key=None) -> ast.Name:
         """A module-level constant (interned by `key` when given)."""
         if key is not None and key in self._const_names:

@@ -10,7 +10,7 @@ from ..semantics.types import BASIC
 from . import pyast as P
 from .context import fail
 from .exprs import INTEGER_BITS, WIDE_STRINGS, manifest_text
-from .scoop_calls import interval_across
+from .scoop_calls import NAMES, USES, interval_across, mark_names
 
 _VALUE_COPIES = frozenset({"copy", "standard_copy", "deep_copy"})
 
@@ -251,7 +251,7 @@ class Instructions:
             source = P.call("_S.cursors", [self.x(iteration.expression)])
             body = [_ItemReads(var).visit(stmt) for stmt in body]
         loop = ast.For(P.name(var, store=True), source, body or [ast.Pass()], [], None)
-        return out + [loop]
+        return out + [mark_names(loop)]
 
     def s_Check(self, node):
         out = []
@@ -290,6 +290,14 @@ class _ItemReads(ast.NodeTransformer):
 
     def __init__(self, var: str):
         self.var = var
+
+    def visit_For(self, node):
+        names = getattr(node, NAMES, None)
+        if names is not None and self.var not in names:
+            return node  # an `across` loop without `var` (2,000 of them in one another are not each looked through)
+        if hasattr(node, USES):  # what it says of `var` changes here
+            delattr(node, USES)
+        return self.generic_visit(node)
 
     def visit_Name(self, node):
         if node.id == self.var and isinstance(node.ctx, ast.Load):

@@ -276,32 +276,77 @@ def interval_across(gen, node):
     else:
         upper = ast.BinOp(gen.x(expr.right), ast.Add(), P.const(1))
         source = P.call("range", [gen.x(expr.left), upper])
-    return out + [ast.For(P.name(var, store=True), source, body or [ast.Pass()], [], None)]
+    loop = ast.For(P.name(var, store=True), source, body or [ast.Pass()], [], None)
+    setattr(loop, USES, _uses([loop.target, loop.iter, *loop.body]))
+    return out + [mark_names(loop)]
 
 
 def _items_only(body, var: str) -> bool:
-    """Whether `var` occurs in `body` only as `var.item` (read); if so, each becomes `var`."""
-    items, names = 0, 0
-    for stmt in body:
-        for sub in ast.walk(stmt):
-            if isinstance(sub, ast.Name) and sub.id == var:
-                names += 1
-            elif _is_item(sub, var):
-                items += 1
-    if names != items:
+    """Whether `var` occurs in `body` only as `var.item` (read); if so, each becomes `var`. The
+    loops made here carry what names they use (USES): acrosses nested 2,000 deep are not each
+    looked through to the bottom."""
+    bare, items = _uses(body)
+    if var in bare:
         return False
-    replace = _ItemToValue(var)
-    body[:] = [replace.visit(stmt) for stmt in body]
+    if var in items:
+        replace = _ItemToValue(var)
+        body[:] = [replace.visit(stmt) for stmt in body]
     return True
 
 
-def _is_item(node, var: str) -> bool:
+NAMES = "_scoopc_names"  # on a loop of an `across`: the names (ast.Name ids) inside it
+
+
+def mark_names(loop: ast.For) -> ast.For:
+    """`loop` with the names inside it noted (NAMES): a rewrite of one name's uses in a loop around
+    it (instrs._ItemReads) skips it when it does not hold that name. The rewrites of this module
+    and of instrs change how a name is used, never which names occur."""
+    found: set = set()
+    pending: list = [loop]
+    while pending:
+        node = pending.pop()
+        known = getattr(node, NAMES, None)
+        if known is not None and node is not loop:
+            found |= known
+        elif isinstance(node, ast.Name):
+            found.add(node.id)
+        else:
+            pending.extend(ast.iter_child_nodes(node))
+    setattr(loop, NAMES, frozenset(found))
+    return loop
+
+
+USES = "_scoopc_uses"  # on a loop of interval_across: (names used other than as `name.item`, names used as `name.item`)
+
+
+def _uses(nodes) -> tuple[frozenset, frozenset]:
+    """(the names used other than as `name.item`, the names used as `name.item`) in `nodes`."""
+    bare: set = set()
+    items: set = set()
+    pending = list(nodes)
+    while pending:
+        node = pending.pop()
+        known = getattr(node, USES, None)
+        if known is not None:
+            bare |= known[0]
+            items |= known[1]
+        elif _is_item(node, None):
+            items.add(node.value.id)
+        elif isinstance(node, ast.Name):
+            bare.add(node.id)
+        else:
+            pending.extend(ast.iter_child_nodes(node))
+    return frozenset(bare), frozenset(items)
+
+
+def _is_item(node, var: str | None) -> bool:
+    """Is `node` `var.item` read (any name's when `var` is None)?"""
     return (
         isinstance(node, ast.Attribute)
         and node.attr == "item"
         and isinstance(node.ctx, ast.Load)
         and isinstance(node.value, ast.Name)
-        and node.value.id == var
+        and (var is None or node.value.id == var)
     )
 
 
@@ -313,3 +358,12 @@ class _ItemToValue(ast.NodeTransformer):
         if _is_item(node, self.var):
             return ast.copy_location(P.name(self.var), node)
         return self.generic_visit(node)
+
+    def visit_For(self, node):
+        known = getattr(node, USES, None)
+        if known is None:
+            return self.generic_visit(node)
+        if self.var in known[1]:  # a loop of interval_across using `var.item`: what it uses changes
+            self.generic_visit(node)
+            setattr(node, USES, (known[0] | {self.var}, known[1] - {self.var}))
+        return node

@@ -137,11 +137,18 @@ class Shallow:
             func.body[:0] = initial + helpers
 
     def blocks(self, body: list, depth: int, helpers: list) -> None:
-        for index, stmt in enumerate(body):
+        index = 0
+        while index < len(body):
+            stmt = body[index]
+            index += 1
             if not isinstance(stmt, _COMPOUND):
                 continue
             if depth >= BLOCK_DEPTH:
-                body[index : index + 1] = self.extract(stmt, helpers)
+                # The call and the tests of its code (`if _flow3 == 2: continue`) are not moved again:
+                # one level past BLOCK_DEPTH, and moving them would make another, without end.
+                replacement = self.extract(stmt, helpers)
+                body[index - 1 : index] = replacement
+                index += len(replacement) - 1
                 continue
             for field in ("body", "orelse", "finalbody"):
                 self.blocks(getattr(stmt, field, []), depth + 1, helpers)

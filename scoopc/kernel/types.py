@@ -95,11 +95,8 @@ class TypeDesc:
     def name(self) -> str:
         """As EiffelStudio prints a type: `ARRAY [INTEGER_32]`, `detachable STRING_8` inside generics."""
         if self._name is None:
-            base = self.key.split("@")[0]
-            if self.generics:
-                base += " [" + ", ".join(g.inner_name for g in self.generics) + "]"
-            self._name = base
-        return self._name
+            _name_all(self)
+        return self._name  # type: ignore[return-value]
 
     @property
     def inner_name(self) -> str:
@@ -193,3 +190,19 @@ def formal(obj, written_in: str, index: int) -> TypeDesc:
     if cls._key_ == written_in:
         return obj._gen_[index]
     return cls._ancestor_gen_[written_in](getattr(obj, "_gen_", ()))[index]
+
+
+def _name_all(top: TypeDesc) -> None:
+    """Name `top` and the types inside it not named yet, innermost first: no recursion, for a type
+    nested 2,000 deep (an ARRAY of ARRAYs ...)."""
+    order, pending = [], [top]
+    while pending:
+        ty = pending.pop()
+        if ty._name is None:
+            order.append(ty)
+            pending.extend(ty.generics)
+    for ty in reversed(order):  # each after the types inside it
+        base = ty.key.split("@")[0]
+        if ty.generics:
+            base += " [" + ", ".join(g.inner_name for g in ty.generics) + "]"
+        ty._name = base

@@ -4,12 +4,16 @@ deeper is reported here (SYNTAX-DEPTH) and goes no further. The walk itself is i
 
 from __future__ import annotations
 
+import typing
+
 from .. import diagnostics, syntax
 from ..diagnostics import Diagnostic
 from ..source import Span
 
 MAX_NESTING = 2000  # pairs of parentheses, `not`s, operators, `if`s ... inside one instruction
-_KINDS = ("scoopc.syntax.expressions", "scoopc.syntax.instructions")
+# What counts: expressions and instructions, not their parts (an `elseif` or `when` branch, an `across`
+# iteration, a separate argument): an `inspect` in an `inspect` is one level deeper, as an `if` in an `if`.
+_COUNTED = frozenset(typing.get_args(syntax.expressions.Expression) + typing.get_args(syntax.instructions.Instruction))
 
 
 def too_deep(tree: object) -> Diagnostic | None:
@@ -21,7 +25,7 @@ def too_deep(tree: object) -> Diagnostic | None:
         if around > MAX_NESTING + 1:
             span = getattr(node, "span", None) or Span("?", 1, 1, 1, 1)
             return diagnostics.make("SYNTAX-DEPTH", span, limit=f"{MAX_NESTING:,}")
-        inside = around + (1 if type(node).__module__ in _KINDS else 0)
+        inside = around + (1 if type(node) in _COUNTED else 0)
         stack.extend((child, inside) for child in _children(node))
     return None
 

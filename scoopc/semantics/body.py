@@ -41,6 +41,7 @@ class RoutineChecker(ExpressionChecks, CallChecks, AgentChecks, CreationChecks, 
         self.in_rescue = False
         self.object_tests: dict = {}
         self.reported_unset: set = set()
+        self.assigned_in: dict = {}  # instructions.loop_parts: what each compound instruction assigns
 
     def report(self, code: str, span, **arguments) -> None:
         self.found.append(diagnostics.make(code, span, **arguments))

@@ -90,6 +90,8 @@ def _class_conforms(
 ) -> bool:
     """Whether the class of `source` conforms to that of `target` with conforming actual generic
     parameters; `generic_separateness` False: the parameters' separateness left aside."""
+    if source is target:  # a type conforms to itself (not looked through: ARRAY [ARRAY [...]] 2,000 deep)
+        return True
     if source.is_none:  # NONE conforms to every reference type
         return not _is_expanded(universe, target)
     if source.is_formal or target.is_formal:

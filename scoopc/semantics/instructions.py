@@ -229,7 +229,7 @@ class InstructionChecks:
         if self.facts is UNREACHABLE:
             return
         entry = self.facts
-        assigned = _assigned(body)
+        assigned = _assigned(body, self.assigned_in)
         start = entry.__class__(entry.attached - assigned, entry.unset)
         self.facts = start
         when_true, when_false = ((), frozenset()), ((), frozenset())
@@ -358,18 +358,27 @@ def _constant(node):
     return None
 
 
-def _assigned(body) -> frozenset:
-    """Names assigned (or created) anywhere in a list of instructions."""
-    names = set()
-
-    def visit(node):
-        if isinstance(node, (syntax.Assignment, syntax.CreationInstruction)):
-            target = node.target
-            names.add("result" if isinstance(target, syntax.Result) else target.name.key)
-        for child in walk.children(node):
-            if not isinstance(child, (syntax.InlineAgent,)):
-                visit(child)
-
+def _assigned(body, known: dict) -> frozenset:
+    """Names assigned (or created) anywhere in a list of instructions. `known` ({id(node): (node,
+    names)}, one per routine checker) keeps what each compound instruction assigns: loops in
+    loops, 2,000 deep, ask again about the instructions inside them."""
+    names: set = set()
     for instruction in body:
-        visit(instruction)
+        names |= _assigned_in(instruction, known)
     return frozenset(names)
+
+
+def _assigned_in(node, known: dict) -> frozenset:
+    found = known.get(id(node))
+    if found is not None:
+        return found[1]
+    names = set()
+    if isinstance(node, (syntax.Assignment, syntax.CreationInstruction)):
+        target = node.target
+        names.add("result" if isinstance(target, syntax.Result) else target.name.key)
+    for child in walk.children(node):
+        if not isinstance(child, (syntax.InlineAgent,)):
+            names |= _assigned_in(child, known)
+    result = frozenset(names)
+    known[id(node)] = (node, result)  # the node kept alive with its id
+    return result

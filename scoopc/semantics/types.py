@@ -73,6 +73,15 @@ class Ty:
         return self if (a, s) == (self.attached, self.separate) else replace(self, attached=a, separate=s)
 
     def __str__(self) -> str:
+        """The type as Eiffel writes it; made once per type (a TUPLE in a TUPLE, 2,000 deep, is named
+        at each level)."""
+        text = self.__dict__.get("_text")
+        if text is None:
+            text = self._text()
+            object.__setattr__(self, "_text", text)  # not a field: equality, hashing and replace ignore it
+        return text
+
+    def _text(self) -> str:
         marks = ("separate " if self.separate else "") + ("" if self.attached or self.is_none else "detachable ")
         if not self.generics:
             return marks + self.name
