@@ -168,7 +168,9 @@ def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp
     twin = rmw_twin.Node("humble")
     graph = rmw_twin.GraphReader(twin)
     try:
-        driver = twin.create_subscription("geometry_msgs/msg/Twist", "/robot1/cmd_vel", depth=1)
+        # History depth plays no part in QoS matching; a keep-last depth of 1 (the driver's own) let a
+        # loaded test process, taking samples late, lose commands it counts below (a CI rehearsal saw it)
+        driver = twin.create_subscription("geometry_msgs/msg/Twist", "/robot1/cmd_vel", depth=32)
         run = scoopc(
             env,
             "run",
