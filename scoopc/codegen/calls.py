@@ -328,17 +328,14 @@ class Calls:
         else:
             target, open_target = self.x(node.target), False
         slots, opened = [target], [0] if open_target else []
-        if feature is None:  # a TUPLE label
-            fail("agents on tuple labels are not supported", node.span)
-        count = len(feature.arguments)
-        operands = node.arguments if node.arguments is not None else [None] * count
-        for index, operand in enumerate(operands, start=1):
-            if operand is None or isinstance(operand, syntax.OpenOperand):
-                slots.append(P.const(None))
-                opened.append(index)
-            else:
-                slots.append(self.argument(operand))
-        fn = P.call("_S.dispatcher", [P.const(self.py_name(feature)), P.const(self.is_property(feature))])
+        if feature is None:  # a TUPLE label: the agent reads that item, its index a closed operand
+            index = self.tables.agent_labels.get(node)
+            if index is None:
+                fail("agent on an unresolved feature", node.span)
+            fn, slots = P.dotted("_S.tuple_item"), [target, P.const(index)]
+        else:
+            fn = P.call("_S.dispatcher", [P.const(self.py_name(feature)), P.const(self.is_property(feature))])
+            slots.extend(self.agent_operands(node, feature, opened))
         return P.call(
             "_S.new_agent",
             [
@@ -350,6 +347,19 @@ class Calls:
                 P.tup([P.const(i) for i in opened]),
             ],
         )
+
+    def agent_operands(self, node, feature, opened: list) -> list:
+        """The slots of an agent's operands after its target; the open ones' places go into `opened`."""
+        slots = []
+        count = len(feature.arguments)
+        operands = node.arguments if node.arguments is not None else [None] * count
+        for index, operand in enumerate(operands, start=1):
+            if operand is None or isinstance(operand, syntax.OpenOperand):
+                slots.append(P.const(None))
+                opened.append(index)
+            else:
+                slots.append(self.argument(operand))
+        return slots
 
     def x_InlineAgent(self, node):
         ty = self.type_of(node)

@@ -32,8 +32,9 @@ class AgentChecks:
 
         base_class = base_type(self.universe, base, self.info)
         if base_class.name == "TUPLE" and node.name.key in base_class.labels and not node.arguments:
-            item = base_class.generics[base_class.labels.index(node.name.key)]
-            return Value(routine_type(True, item, tuple(open_types)))
+            index = base_class.labels.index(node.name.key)
+            self.tables.agent_labels[node] = index
+            return Value(routine_type(True, base_class.generics[index], tuple(open_types)))
         info = self.universe.get(base_class.name)
         if info is not None and info.failed:
             return None  # the class's own errors are reported there

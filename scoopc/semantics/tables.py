@@ -32,4 +32,5 @@ class Tables:
     conversions: dict = field(default_factory=dict)  # expression -> (feature name, target Ty) of a conversion
     controlled: set = field(default_factory=set)  # separate expressions that are controlled
     agent_calls: set = field(default_factory=set)  # `f (a, b)` on an agent: call of its "()" feature with [a, b]
+    agent_labels: dict = field(default_factory=dict)  # `agent t.x` on a TUPLE label -> x's item index
     rewrites: dict = field(default_factory=dict)  # `x (a)` -> `x.f (a)`, f x's "()" alias, checked in its place
