@@ -14,6 +14,7 @@ from pathlib import Path
 
 from . import diagnostics
 from .exits import Exit, SourceErrors, UsageError
+from .runtime import COMPILED
 from .runtime.stop_signals import status_of
 from .version import __version__
 
@@ -31,13 +32,17 @@ class _Parser(argparse.ArgumentParser):
 # ---- arguments -----------------------------------------------------------------------------------
 
 
+def _runtime_kind() -> str:
+    return "compiled to C" if COMPILED else "pure Python"
+
+
 def build_parser() -> argparse.ArgumentParser:
     top = _Parser(
         prog="scoopc",
         description="Compile Eiffel programs with SCOOP concurrency to Python.",
         epilog="Run `scoopc COMMAND --help` for the options of a command.",
     )
-    top.add_argument("--version", action="version", version=f"scoopc {__version__}")
+    top.add_argument("--version", action="version", version=f"scoopc {__version__} (runtime: {_runtime_kind()})")
     commands = top.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     commands.required = True
 

@@ -7,7 +7,7 @@ from typing import TYPE_CHECKING, TypeVar
 
 from . import (
     externals,  # noqa: F401  (the program's externals run through it: externals.call)
-    reservation as _reservation,  # noqa: F401  (installs Processor.reserve)
+    processor as _processor,
 )
 from .errors import DeadlockError, DirtyRegionError, PreconditionViolation, ScoopError, Shutdown, UncontrolledTarget
 from .externals import InsideExternal, inside_externals
@@ -19,11 +19,16 @@ from .processor import Processor
 from .protocols import Args, OnceKey, Routine, Separate
 from .session import Session
 
+# Whether the runtime's hot modules were compiled to C when the package was built (mypyc,
+# tools/build_runtime.py; docs/RUNTIME.md section 10), or run as the Python source here.
+COMPILED = not (_processor.__file__ or "").endswith(".py")
+
 if TYPE_CHECKING:
     from .clock import Timer
     from .sched import Runtime
 
 __all__ = [
+    "COMPILED",
     "Agent",
     "DeadlockError",
     "DirtyRegionError",

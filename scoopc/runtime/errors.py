@@ -65,6 +65,7 @@ class DeadlockError(ScoopError):
 
 
 # The `where` of the private queue a separate creation opens: its report names the creation.
+# Compared by value (`==`): a compiled runtime (docs/RUNTIME.md section 10) copies tuples.
 CREATION: tuple[str, str, str, int] = ("", "creation", "", 0)
 
 

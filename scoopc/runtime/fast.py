@@ -47,8 +47,11 @@ class _Nothing:
     ) -> None:
         return None
 
-    enter = __enter__
-    exit = __exit__
+    def enter(self) -> _Nothing:
+        return self
+
+    def exit(self) -> None:
+        return None
 
 
 NOTHING = _Nothing()
@@ -287,7 +290,7 @@ class FastPaths:
         all expanded, or none). On a claimed supplier: a plain call; a failure dirties."""
         p = target._region_
         s = self.held.get(p)
-        if s.__class__ is Session and s.claimed and s.dirty is None and not p.passive:
+        if type(s) is Session and s.claimed and s.dirty is None and not p.passive:
             self._leaf_claimed(p, s, routine, target, args)
             return
         self.call(target, routine, args)
@@ -302,7 +305,7 @@ class FastPaths:
         """`query` of a `@leaf` routine whose arguments cannot pass locks (as `leaf_call`)."""
         p = target._region_
         s = self.held.get(p)
-        if s.__class__ is Session and s.claimed and s.dirty is None and not self.rt.stopping:
+        if type(s) is Session and s.claimed and s.dirty is None and not self.rt.stopping:
             try:
                 return routine(target, *args)
             except Exception as e:

@@ -121,8 +121,7 @@ def dump(rt: Runtime) -> str:
     """A text dump of every live processor and every blocked thread."""
     from .processor import STATE_NAMES  # deferred: a cycle (scoopc.runtime.processor imports this module)
 
-    with rt.idlock:
-        procs = sorted(rt.procs.values(), key=lambda p: p.id)
+    procs = rt.processors()
     lines = [f"scoop runtime dump: {len(procs)} processors"]
     for p in procs:
         with p.lock:

@@ -119,20 +119,27 @@ class Permits:
             if spawn is not None:
                 spawn.thread.start()
             with rt.glock:
-                if ex not in self.waiting:  # handed over just now: take it
-                    continue
-                if not rt.stopping and (seen != self.moves or not self.want_yield):
-                    seen = self.moves  # ask the holders to yield, wait a slice more
-                    self._want_yield(True)
-                    continue
-                self.waiting.remove(ex)  # stuck holders (or stopping): one more permit
-                self.total += 1
-                self.held += 1
+                extra, seen = self._after_slice(ex, seen)
+            if extra:
                 break
         lk.release()
         ex.permit = True
         if rt.stopping:
             raise Shutdown()
+
+    def _after_slice(self, ex: Exec, seen: int | None) -> tuple[bool, int | None]:
+        """[g] `ex` waited a whole slice for a permit. (True, _): it takes an extra one now (the
+        holders are stuck, or stopping); else (False, the moves seen) and it waits once more.
+        (A function rather than `continue` inside `with`, which a compiled runtime lacks.)"""
+        if ex not in self.waiting:  # handed over just now: the next acquire takes it
+            return False, seen
+        if not self.rt.stopping and (seen != self.moves or not self.want_yield):
+            self._want_yield(True)  # ask the holders to yield, wait a slice more
+            return False, self.moves
+        self.waiting.remove(ex)  # stuck holders (or stopping): one more permit
+        self.total += 1
+        self.held += 1
+        return True, seen
 
     def stop_locked(self) -> None:
         """[g] Shutdown: let every waiter run (to meet Shutdown at its next runtime call)."""

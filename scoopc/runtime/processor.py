@@ -18,6 +18,7 @@ from collections import deque
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, TypeVar
 
+from .anchor import Anchor
 from .errors import CREATION, PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error, sync_failure
 from .fast import FastPaths
 from .once import once_in
@@ -32,8 +33,6 @@ if TYPE_CHECKING:
     from .outside import OutsideClient
     from .reservation import Reservation
     from .sched import Exec, Runtime
-else:
-    Reservation = None  # set by reservation.py (which imports this module)
 
 S = TypeVar("S", bound=Separate)
 # The sessions a server or a client running calls on a supplier's behalf takes at once.
@@ -66,7 +65,7 @@ class Processor(FastPaths):
         "name",
         "spare",
         "busy",
-        "__weakref__",
+        "anchor",
     )
     id: int
     rt: Runtime
@@ -83,9 +82,11 @@ class Processor(FastPaths):
     name: str | None
     spare: Session | None
     busy: int
+    anchor: Anchor
 
     def __init__(self, rt: Runtime, passive: bool = False, name: str | None = None) -> None:
         self.rt = rt
+        self.anchor = Anchor(self)  # its entry in the runtime's registry (anchor.py)
         self.id = rt.register(self)
         self.lock = threading.Lock()
         self.head = None  # [lock] Session being served
@@ -141,7 +142,7 @@ class Processor(FastPaths):
         """A separate command: asynchronous unless it passes locks or the region is passive."""
         p = target._region_
         s = self.held.get(p)
-        if s.__class__ is Session:
+        if type(s) is Session:
             if s.claimed and s.dirty is None and (not args or not self._passes(args)):
                 if p.passive:  # synchronous, failures reach the client
                     if self.rt.stopping:
@@ -190,7 +191,7 @@ class Processor(FastPaths):
         """A separate query: synchronous (wait by necessity)."""
         p = target._region_
         s = self.held.get(p)
-        if s.__class__ is Session:
+        if type(s) is Session:
             if s.claimed and s.dirty is None and not self.rt.stopping and (not args or not self._passes(args)):
                 try:
                     return routine(target, *args)  # `p` is ours until we release it
@@ -209,7 +210,7 @@ class Processor(FastPaths):
         """Lock passing: an argument is a reference into a region we hold (or a TUPLE)."""
         held = self.held
         for a in args:
-            c = a.__class__
+            c = type(a)
             if c in VALUES:
                 continue
             if c is tuple or getattr(a, "_region_", None) in held:
@@ -621,6 +622,8 @@ class Processor(FastPaths):
         self.busy -= 1
         if self.busy < 0:
             self.busy_quantum()
+        from .reservation import Reservation  # deferred: a cycle (it imports this module)
+
         return Reservation(self, objs, pre, where, pre_args)
 
 

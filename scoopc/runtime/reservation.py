@@ -12,7 +12,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 from types import TracebackType
 
-from . import processor
 from .errors import PreconditionViolation
 from .processor import Processor, locked_lock
 from .protocols import Args, Clause, Separate, Where
@@ -85,7 +84,8 @@ class Reservation:
                 raise
             self._wait(clause, regs)
 
-    __enter__ = enter
+    def __enter__(self) -> Reservation:
+        return self.enter()
 
     def __exit__(self, et: type[BaseException] | None, ev: BaseException | None, tb: TracebackType | None) -> None:
         self.exit()
@@ -173,7 +173,3 @@ def reserve_regions(here: Processor, regs: Sequence[Processor], where: Where | N
     for r, s in taken:
         held[r] = s
     return taken
-
-
-# Processor.reserve builds these (processor.py imports the class for the type checker only).
-processor.Reservation = Reservation  # type: ignore[attr-defined]

@@ -31,6 +31,7 @@ from .protocols import OnceTable, Where
 from .session import IDLE
 
 if TYPE_CHECKING:
+    from .anchor import Anchor
     from .externals import InsideExternal
     from .monitor import Monitor
     from .outside import OutsideClient
@@ -62,7 +63,7 @@ class RunEvent:
 
 def dirty_text(proc: Processor, s: Session, e: BaseException) -> str:
     """The event of a region made dirty for client `s.client` by the failure `e`."""
-    reserved = f", reservation at {fmt_where(s.where)}" if s.where is not None and s.where is not CREATION else ""
+    reserved = f", reservation at {fmt_where(s.where)}" if s.where is not None and s.where != CREATION else ""
     return f"{proc!r} is dirty for {s.client!r}{reserved}: an asynchronous call failed: {type(e).__name__}: {e}"
 
 
@@ -121,6 +122,17 @@ class Block:
         self.what = what  # sync: the routine called; wait: the clause tag
 
 
+def _proc_id(p: Processor) -> int:
+    return p.id
+
+
+def _blocked_of(ex: Exec) -> Block | None:
+    """`ex.blocked` read afresh. Where a function set `ex.blocked` itself and blocked since, the
+    type checker still takes it for what was set; a compiled runtime (docs/RUNTIME.md section
+    10) checks that type on the read, and another thread may have cleared it meanwhile."""
+    return ex.blocked
+
+
 def wake(lock: threading.Lock) -> None:
     """Release a one-shot wake-up lock; a second release (shutdown racing a waker) is harmless."""
     try:
@@ -172,7 +184,7 @@ class Runtime:
     workers: list[Worker]
     failures: list[tuple[str, BaseException | None]]
     lost: set[Processor]
-    procs: weakref.WeakValueDictionary[int, Processor]
+    procs: weakref.WeakValueDictionary[int, Anchor]
     stderr: TextIO
     shutdown_hooks: list[Callable[[], object]]
     services: dict[str, object]
@@ -216,7 +228,7 @@ class Runtime:
         self.wait_set = 0  # [g] number of blocked threads of kind 'wait'
         self.idlock = threading.Lock()
         self.ids = itertools.count(1)  # [idlock]
-        self.procs = weakref.WeakValueDictionary()  # [idlock] id -> Processor, for the dump
+        self.procs = weakref.WeakValueDictionary()  # [idlock] id -> the Anchor of a live Processor
         self.strict = strict
         self.trace_processors = trace_processors
         self.deadlock_tick = deadlock_tick
@@ -238,8 +250,15 @@ class Runtime:
     def register(self, proc: Processor) -> int:
         with self.idlock:
             pid = next(self.ids)
-            self.procs[pid] = proc
+            self.procs[pid] = proc.anchor
         return pid
+
+    def processors(self) -> list[Processor]:
+        """The live processors, sorted by id (for dumps and live views)."""
+        with self.idlock:
+            procs = [a.proc for a in self.procs.values()]
+        procs.sort(key=_proc_id)
+        return procs
 
     # -- the pool --------------------------------------------------------------------
     def schedule(self, p: Processor) -> None:
@@ -427,7 +446,7 @@ class Runtime:
             woke = True
         finally:
             with self.glock:
-                if ex.blocked is blk:
+                if _blocked_of(ex) is blk:
                     self.blocked.discard(ex)
                     ex.blocked = None
                 if blk.kind == "wait":
@@ -490,14 +509,14 @@ class Runtime:
         detail = self.describe(e, proc) if self.describe is not None else f"{type(e).__name__}: {e}"
         with self.glock:
             again = proc in self.lost
-            if s.where is CREATION:
+            if s.where == CREATION:
                 self.lost.add(proc)
         self.note("lost exception", f"exception lost on {proc!r} (client {s.client!r}): {detail}")
         if again:
             first, _, rest = detail.partition("\n")
             where = rest.split("\n", 1)[0].strip()
             self.stderr.write(f"scoopc:   then on {proc!r}, as a consequence: {first}{', ' + where if where else ''}\n")
-        elif s.where is CREATION:
+        elif s.where == CREATION:
             self.stderr.write(f"scoopc: exception lost in the creation of {proc!r} by {s.client!r}: {detail}\n")
         else:
             reserved = f", reservation at {fmt_where(s.where)}" if s.where is not None else ""

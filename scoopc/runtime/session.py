@@ -118,8 +118,13 @@ class Session:
                 return
             close_locked(p, self)
 
-    enter = __enter__
-    exit = __exit__
+    # `enter`/`exit`: the same, for code that cannot use `with` (methods, not aliases: a
+    # compiled runtime, docs/RUNTIME.md section 10, has no class-level aliases of methods).
+    def enter(self) -> Session:
+        return self.__enter__()
+
+    def exit(self) -> None:
+        self.__exit__()
 
     @property
     def taken(self) -> tuple[tuple[Processor, Session]] | None:

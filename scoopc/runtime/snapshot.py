@@ -99,8 +99,7 @@ class Snapshot:
 
 def take(rt: Runtime, clause_text: ClauseText | None = None) -> Snapshot:
     """The processors (sorted by id) and the wait conditions being waited on, now."""
-    with rt.idlock:
-        procs = sorted(rt.procs.values(), key=lambda p: p.id)
+    procs = rt.processors()
     with rt.glock:
         blocks = {ex: ex.blocked for ex in rt.blocked if ex.blocked is not None}
         inside = dict(rt.inside)

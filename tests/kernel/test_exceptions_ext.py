@@ -6,12 +6,14 @@ from scoopc import kernel
 from scoopc.kernel import support, types as TY
 from scoopc.kernel.errors import EiffelFailure
 from scoopc.kernel.ext import exception, exception_manager as EM, exceptions
+from scoopc.runtime.anchor import Anchor
 
 
 class Region:
     def __init__(self, pid=1):
         self.id = pid
         self.flushed = 0
+        self.anchor = Anchor(self)  # what per-region state is kept by, as a Processor's
 
     def new(self, cls):
         obj = cls.__new__(cls)

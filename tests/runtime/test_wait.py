@@ -80,12 +80,12 @@ def test_waiting_releases_every_region_it_took(h):
     def waiter(here):
         pre = [(lambda: here.query(c, Cell.get) > 0, (0,), "c_positive", W)]
         with here.reserve((c, d), pre=pre):
-            here.call(d, Cell.add, "w")
+            here.call(d, Cell.add, ("w",))
 
     spawn(root, waiter)
     assert waiting.wait(10)
     with root.reserve((d,)):  # d is free while the waiter waits
-        root.call(d, Cell.add, "r")
+        root.call(d, Cell.add, ("r",))
         assert root.query(d, Cell.items) == ["r"]
     with root.reserve((c,)):
         root.call(c, Cell.set, (1,))

@@ -11,7 +11,7 @@ import math
 import time
 import weakref
 
-_BASES = weakref.WeakKeyDictionary()  # virtual-clock runtime -> wall time at its clock's 0
+_BASES = weakref.WeakKeyDictionary()  # a runtime's virtual clock -> wall time at its 0
 
 
 def wall_now(region):
@@ -21,9 +21,9 @@ def wall_now(region):
     if clock is None or not getattr(clock, "virtual", False):
         return time.time()
     now = clock.now_ns() / 1e9
-    base = _BASES.get(rt)
+    base = _BASES.get(clock)
     if base is None:
-        base = _BASES.setdefault(rt, time.time() - now)
+        base = _BASES.setdefault(clock, time.time() - now)
     return base + now
 
 

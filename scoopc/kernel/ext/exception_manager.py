@@ -19,7 +19,8 @@ from scoopc.kernel import support
 from scoopc.kernel.errors import EiffelFailure
 from scoopc.kernel.types import TypeDesc, of
 
-_STATES = weakref.WeakKeyDictionary()  # region (Processor) -> _State
+# the Anchor of a region (its Processor may be compiled: no weak reference to it) -> _State
+_STATES = weakref.WeakKeyDictionary()
 _LOCK = threading.Lock()
 
 
@@ -32,12 +33,13 @@ class _State:
 
 
 def _state(region):
-    st = _STATES.get(region)
+    key = region.anchor
+    st = _STATES.get(key)
     if st is None:
         with _LOCK:
-            st = _STATES.get(region)
+            st = _STATES.get(key)
             if st is None:
-                st = _STATES[region] = _State()
+                st = _STATES[key] = _State()
     return st
 
 
@@ -67,7 +69,7 @@ def last_exception(current):
     clause recorded through `scoopc.kernel.support.caught` (an EiffelFailure gives its
     EXCEPTION object; a Python exception that is not one gives Void)."""
     region = current._region_
-    st = _STATES.get(region)
+    st = _STATES.get(region.anchor)
     if st is not None and st.last is not None:
         return st.last
     last_caught = getattr(support, "last_caught", None)
@@ -101,7 +103,7 @@ def set_last_exception(region, exc):
 
 def exception_is_ignored(region, exc):
     """Is the dynamic type of the exception object `exc` ignored in `region`?"""
-    st = _STATES.get(region)
+    st = _STATES.get(region.anchor)
     if st is None or not st.ignored:
         return False
     return _desc_key(of(exc)) in st.ignored
