@@ -19,6 +19,16 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
+def use_scoopc():
+    """Import scoopc as installed (a regular install's runtime may be compiled, docs/RUNTIME.md
+    section 10), or as PYTHONPATH gives it (compare.py's trees); from this checkout only when
+    it is not installed."""
+    import importlib.util
+
+    if importlib.util.find_spec("scoopc") is None and ROOT not in sys.path:
+        sys.path.insert(0, ROOT)
+
+
 class CheckFailed(AssertionError):
     """A benchmark computed a wrong result: its time must not be reported."""
 
@@ -66,8 +76,7 @@ class CompileFailed(Exception):
 def compiled_library():
     """Seconds to get scoopc's compiled standard library (compiled once per compiler version,
     then taken from scoopc's cache)."""
-    if ROOT not in sys.path:
-        sys.path.insert(0, ROOT)
+    use_scoopc()
     from scoopc import driver
 
     start = time.perf_counter()
@@ -78,8 +87,7 @@ def compiled_library():
 def compile_benchmark(name, out_dir, assertions="none"):
     """Compile benchmarks/<name>/ with scoopc's API (parse, check, codegen; the standard library
     comes from scoopc's cache) into `out_dir`; write and return what a child needs to run it."""
-    if ROOT not in sys.path:
-        sys.path.insert(0, ROOT)
+    use_scoopc()
     from pathlib import Path
 
     from scoopc.driver import Compilation

@@ -11,12 +11,18 @@ The ratios are those run.py prints: compiled_ratio (the compiled dialect version
 hand-written threading), or with --api, ratio (the runtime API version against threading).
 A ratio is taken within one run of run.py, so load that changes between rounds cancels
 out; load that changes within a run does not, which is why rounds alternate.
+
+The trees run the pure-Python runtime. With --compiled-runtime, each tree's runtime is first
+compiled to C as a regular install compiles it (docs/RUNTIME.md section 10; about a minute per
+tree; the working tree is copied first, so no compiled module lands in the checkout); a revision
+from before the compiled runtime existed stays pure Python, and the report says so.
 """
 
 import argparse
 import math
 import os
 import re
+import shutil
 import statistics
 import subprocess
 import sys
@@ -51,16 +57,37 @@ def parse_args(argv):
     parser.add_argument(
         "--api", action="store_true", help="compare the runtime API versions (ratio=) instead of the compiled ones"
     )
+    parser.add_argument(
+        "--compiled-runtime",
+        action="store_true",
+        help="compile each tree's runtime to C first, as a regular install does (about a minute per tree)",
+    )
     args = parser.parse_args(argv)
     if args.rounds < 1 or args.repeat < 1:
         parser.error("--rounds and --repeat must be at least 1")
     return args
 
 
-def export(revision, into):
-    """The tree of `revision` (None: the working tree) as a folder under `into`."""
+def export(revision, into, copy_working_tree=False):
+    """The tree of `revision` (None: the working tree, itself or, with `copy_working_tree`, a copy
+    of its files that git knows or would add) as a folder under `into`."""
     if revision is None:
-        return ROOT
+        if not copy_working_tree:
+            return ROOT
+        listed = subprocess.run(
+            ["git", "-C", ROOT, "ls-files", "-z", "--cached", "--others", "--exclude-standard"],
+            capture_output=True,
+            text=True,
+        )
+        if listed.returncode != 0:
+            raise CompareFailed(f"cannot list the working tree: {listed.stderr.strip() or 'git ls-files failed'}")
+        folder = os.path.join(into, "working-tree")
+        for name in filter(None, listed.stdout.split("\0")):
+            source = os.path.join(ROOT, name)
+            if os.path.isfile(source):
+                os.makedirs(os.path.dirname(os.path.join(folder, name)), exist_ok=True)
+                shutil.copy2(source, os.path.join(folder, name))
+        return folder
     folder = os.path.join(into, re.sub(r"[^A-Za-z0-9_.-]", "_", revision))
     archive = os.path.join(into, "tree.tar")
     done = subprocess.run(
@@ -75,6 +102,22 @@ def export(revision, into):
     if not os.path.exists(os.path.join(folder, "benchmarks", "run.py")):
         raise CompareFailed(f"{revision} has no benchmarks/run.py")
     return folder
+
+
+def compile_runtime(tree):
+    """Compile `tree`'s runtime to C in place, as its own setup.py does for a regular install.
+    Returns how the tree's runtime runs: "compiled" or, for a tree without that build step
+    (older revisions), "pure Python"."""
+    if not os.path.exists(os.path.join(tree, "tools", "build_runtime.py")):
+        return "pure Python"
+    done = subprocess.run(
+        [sys.executable, "setup.py", "--quiet", "build_ext", "--inplace"], capture_output=True, text=True, cwd=tree
+    )
+    compiled = [n for n in os.listdir(os.path.join(tree, "scoopc", "runtime")) if n.startswith("processor.")]
+    if done.returncode != 0 or not any(not n.endswith(".py") for n in compiled):
+        last = (done.stderr.strip() or done.stdout.strip() or "no output").splitlines()[-1]
+        raise CompareFailed(f"{tree}: compiling the runtime failed: {last}")
+    return "compiled"
 
 
 def command(tree, args):
@@ -128,11 +171,22 @@ def main(argv=None):
     args = parse_args(argv)
     with tempfile.TemporaryDirectory(prefix="scoopc-compare-") as tmp:
         try:
-            trees = {"before": export(args.before, tmp), "after": export(args.after, tmp)}
+            trees = {
+                "before": export(args.before, tmp),
+                "after": export(args.after, tmp, copy_working_tree=args.compiled_runtime),
+            }
         except CompareFailed as e:
             print(f"compare: {e}", file=sys.stderr)
             return 2
         labels = {"before": args.before, "after": args.after or WORKING_TREE}
+        if args.compiled_runtime:
+            for side in ("before", "after"):
+                print(f"# compiling the runtime of {labels[side]} ...", flush=True)
+                try:
+                    labels[side] += f" ({compile_runtime(trees[side])} runtime)"
+                except CompareFailed as e:
+                    print(f"compare: {e}", file=sys.stderr)
+                    return 1
         rounds = {"before": [], "after": []}
         load = os.getloadavg()[0] if hasattr(os, "getloadavg") else float("nan")
         print(f"# {len(args.only or BENCHMARKS)} benchmarks, {args.rounds} rounds, load {load:.1f}", flush=True)

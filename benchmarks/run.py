@@ -87,10 +87,24 @@ def size_of(args):
 
 
 def load(name):
-    for path in (HERE, ROOT):
-        if path not in sys.path:
-            sys.path.insert(0, path)
+    if HERE not in sys.path:
+        sys.path.insert(0, HERE)
+    from common import use_scoopc
+
+    use_scoopc()
     return importlib.import_module("micro" if name == "micro" else "bench_" + name)
+
+
+def runtime_kind():
+    """Which runtime the runs use: the compiled one (docs/RUNTIME.md section 10) or pure Python."""
+    if HERE not in sys.path:
+        sys.path.insert(0, HERE)
+    from common import use_scoopc
+
+    use_scoopc()
+    import scoopc.runtime as rt
+
+    return f"runtime {'compiled to C' if rt.COMPILED else 'pure Python'} ({os.path.dirname(rt.__file__)})"
 
 
 def child_main(name, variant, size, build=None):
@@ -311,7 +325,7 @@ def print_header(size, repeats, stat, pinning):
         f"# scoopc benchmarks: python {platform.python_version()} "
         f"({'GIL' if gil else 'free-threaded'}), {os.cpu_count()} cpus, {pinning}, "
         f"load {load_average()}, size={size}, {stat} of {repeats} runs, "
-        f"each run a fresh subprocess",
+        f"each run a fresh subprocess, {runtime_kind()}",
         flush=True,
     )
 

@@ -45,18 +45,37 @@ def test_a_pure_build_is_asked_for_with_scoopc_pure_runtime(monkeypatch, capsys)
     assert "SCOOPC_PURE_RUNTIME is set" in capsys.readouterr().err
 
 
-@pytest.mark.parametrize("command", ["editable_wheel", "develop"])
-def test_editable_installs_keep_the_sources(monkeypatch, command):
+def test_setup_declares_a_placeholder_and_compiles_nothing_yet(monkeypatch):
+    """Evaluating setup.py (every step of an install does) stays cheap: mypyc runs in build_ext."""
     monkeypatch.delenv("SCOOPC_PURE_RUNTIME", raising=False)
-    monkeypatch.setattr(sys, "argv", ["setup.py", command])
-    assert build_runtime.ext_modules() == []
+    monkeypatch.setitem(sys.modules, "mypyc.build", None)  # any use of mypyc would fail
+    (ext,) = build_runtime.ext_modules()
+    assert ext.name == build_runtime.PLACEHOLDER and ext.sources == []
 
 
-def test_without_mypyc_the_runtime_stays_pure_python(monkeypatch, capsys):
-    monkeypatch.delenv("SCOOPC_PURE_RUNTIME", raising=False)
-    monkeypatch.setattr(sys, "argv", ["setup.py", "bdist_wheel"])
+def _build_ext(tmp_path, extensions, editable=False):
+    dist = Distribution({"name": "probe", "ext_modules": extensions})
+    cmd = build_runtime.BuildExt(dist)
+    cmd.build_lib = str(tmp_path / "lib")
+    cmd.build_temp = str(tmp_path / "tmp")
+    cmd.editable_mode = editable
+    cmd.ensure_finalized()
+    return cmd
+
+
+def test_editable_installs_keep_the_sources(tmp_path, monkeypatch, capsys):
+    monkeypatch.setitem(sys.modules, "mypyc.build", None)  # any use of mypyc would fail
+    cmd = _build_ext(tmp_path, [Extension(build_runtime.PLACEHOLDER, sources=[])], editable=True)
+    cmd.run()
+    assert cmd.extensions == []
+    assert "an editable install" in capsys.readouterr().err
+
+
+def test_without_mypyc_the_runtime_stays_pure_python(tmp_path, monkeypatch, capsys):
     monkeypatch.setitem(sys.modules, "mypyc.build", None)  # an import of it fails
-    assert build_runtime.ext_modules() == []
+    cmd = _build_ext(tmp_path, [Extension(build_runtime.PLACEHOLDER, sources=[])])
+    cmd.run()
+    assert cmd.extensions == []
     assert "mypyc (from mypy) is not installed" in capsys.readouterr().err
 
 
@@ -70,11 +89,7 @@ def test_a_failing_c_compiler_leaves_no_compiled_module(tmp_path, monkeypatch, c
         "PyMODINIT_FUNC PyInit_good(void) { return PyModule_Create(&m); }\n"
     )
     (tmp_path / "bad.c").write_text("this is not C\n")
-    dist = Distribution({"name": "probe", "ext_modules": [Extension("good", ["good.c"]), Extension("bad", ["bad.c"])]})
-    cmd = build_runtime.BuildExt(dist)
-    cmd.build_lib = str(tmp_path / "lib")
-    cmd.build_temp = str(tmp_path / "tmp")
-    cmd.ensure_finalized()
+    cmd = _build_ext(tmp_path, [Extension("good", ["good.c"]), Extension("bad", ["bad.c"])])
     cmd.run()
     assert "compiling the runtime to C failed" in capsys.readouterr().err
     assert not [p for p in (tmp_path / "lib").rglob("*") if p.is_file()]

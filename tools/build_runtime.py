@@ -4,9 +4,12 @@ Which: the modules every separate call, reservation and wait goes through (RUNTI
 They stay plain Python source as well: the package imports the compiled module where one was
 built and the source elsewhere, with the same behaviour (docs/RUNTIME.md section 10).
 
-When not: editable installs (their sources change; a compiled module would hide an edit), a
-build with SCOOPC_PURE_RUNTIME=1, and wherever mypyc or a C compiler is missing or fails: then
-the build says so in one line and installs the pure-Python runtime, which is complete.
+When: only when build_ext runs for a wheel. Until then the distribution lists one placeholder
+extension (which makes the wheel platform-specific), so the metadata steps of an install do not
+pay mypyc's minute. Not for editable installs (their sources change; a compiled module would
+hide an edit), not with SCOOPC_PURE_RUNTIME=1, and not where mypyc or a C compiler is missing
+or fails: then the build says so in one line and installs the pure-Python runtime, which is
+complete.
 """
 
 from __future__ import annotations
@@ -19,30 +22,29 @@ from setuptools.command.build_ext import build_ext
 
 RUNTIME_MODULES = ("session", "fast", "processor", "reservation", "sched", "permits")
 GROUP = "scoopc_runtime"  # the name of the compiled modules' shared library (mypyc's group)
+PLACEHOLDER = "scoopc.runtime._compiled"  # stands for the compiled modules until build_ext runs
 
 
 def _say(text: str) -> None:
     print(f"scoopc build: {text}", file=sys.stderr, flush=True)
 
 
-def wanted() -> bool:
-    """Is a compiled runtime to be built by this setup run?"""
+def ext_modules() -> list[Extension]:
+    """What setup.py declares: the placeholder, or nothing when a pure build is asked for."""
     if os.environ.get("SCOOPC_PURE_RUNTIME", "") not in ("", "0"):
         _say("SCOOPC_PURE_RUNTIME is set: the runtime stays pure Python")
-        return False
-    return "editable_wheel" not in sys.argv and "develop" not in sys.argv
-
-
-def ext_modules() -> list[Extension]:
-    """The compiled runtime's extension modules, or none (then the pure-Python runtime)."""
-    if not wanted():
         return []
+    return [Extension(PLACEHOLDER, sources=[])]
+
+
+def compiled_extensions(root: str = ".") -> list[Extension]:
+    """The runtime's modules as mypyc extensions, or none (then the pure-Python runtime)."""
     try:
         from mypyc.build import mypycify
     except ImportError:
         _say("mypyc (from mypy) is not installed: the runtime stays pure Python")
         return []
-    paths = [f"scoopc/runtime/{name}.py" for name in RUNTIME_MODULES]
+    paths = [os.path.join(root, "scoopc", "runtime", f"{name}.py") for name in RUNTIME_MODULES]
     try:
         return list(mypycify(paths, opt_level="3", group_name=GROUP, verbose=False))
     except (Exception, SystemExit) as e:  # mypyc stops the process on a type error
@@ -51,9 +53,17 @@ def ext_modules() -> list[Extension]:
 
 
 class BuildExt(build_ext):
-    """build_ext that falls back to the pure-Python runtime when the C compiler fails."""
+    """build_ext that puts the compiled runtime in place of the placeholder, and falls back to the
+    pure-Python runtime when the C compiler fails."""
 
     def run(self) -> None:
+        if any(ext.name == PLACEHOLDER for ext in self.extensions):
+            others = [ext for ext in self.extensions if ext.name != PLACEHOLDER]
+            if self.editable_mode:
+                _say("an editable install: the runtime stays pure Python (its sources change)")
+                self.extensions = others
+            else:
+                self.extensions = others + compiled_extensions()
         try:
             super().run()
         except Exception as e:  # no compiler, missing headers, ...

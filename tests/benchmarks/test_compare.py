@@ -40,3 +40,31 @@ def test_head_against_the_working_tree():
         before, after, change = table[name]
         assert re.fullmatch(NUMBER, before) and re.fullmatch(NUMBER, after) and change.endswith("%")
     assert lines[-1] == "before = HEAD; after = working tree"
+
+
+def _compare_module():
+    import importlib.util
+
+    spec = importlib.util.spec_from_file_location("compare", COMPARE)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_with_compiled_runtime_the_working_tree_is_copied_not_built_in(tmp_path):
+    """--compiled-runtime builds in the tree it measures: for the working tree, a copy, so that
+    no compiled module lands in the checkout (it would hide later edits of the source)."""
+    module = _compare_module()
+    assert module.export(None, str(tmp_path)) == module.ROOT
+    copy = module.export(None, str(tmp_path), copy_working_tree=True)
+    assert copy != module.ROOT
+    for name in ("setup.py", "tools/build_runtime.py", "scoopc/runtime/processor.py", "benchmarks/run.py"):
+        assert os.path.isfile(os.path.join(copy, name)), name
+    assert not os.path.exists(os.path.join(copy, ".git"))
+
+
+def test_a_tree_from_before_the_compiled_runtime_runs_pure_python(tmp_path):
+    module = _compare_module()
+    (tmp_path / "scoopc" / "runtime").mkdir(parents=True)
+    (tmp_path / "scoopc" / "runtime" / "processor.py").write_text("")
+    assert module.compile_runtime(str(tmp_path)) == "pure Python"
