@@ -8,6 +8,7 @@ from setuptools import setup
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
-from tools.build_runtime import BuildExt, ext_modules  # noqa: E402  (after the path is set)
+from tools.build_runtime import ext_modules  # noqa: E402  (after the path is set)
 
-setup(ext_modules=ext_modules(), cmdclass={"build_ext": BuildExt})
+# pyproject.toml names the build_ext that turns the placeholder into the compiled modules
+setup(ext_modules=ext_modules())

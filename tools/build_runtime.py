@@ -56,6 +56,17 @@ class BuildExt(build_ext):
     """build_ext that puts the compiled runtime in place of the placeholder, and falls back to the
     pure-Python runtime when the C compiler fails."""
 
+    def _prepared(self, ext: Extension) -> Extension:
+        """`ext` as setuptools' finalize_options prepares a declared extension (mypyc's are made
+        after it ran: making them costs a minute, and the metadata steps of an install finalize
+        build_ext too). Should a setuptools need more, the build falls back to pure Python, and
+        CI, which requires the compiled runtime, fails."""
+        name = ext._full_name = self.get_ext_fullname(ext.name)  # type: ignore[attr-defined]
+        self.ext_map[name] = self.ext_map[name.split(".")[-1]] = ext
+        ext._links_to_dynamic = ext._needs_stub = False  # type: ignore[attr-defined]
+        ext._file_name = self.get_ext_filename(name)  # type: ignore[attr-defined]
+        return ext
+
     def run(self) -> None:
         if any(ext.name == PLACEHOLDER for ext in self.extensions):
             others = [ext for ext in self.extensions if ext.name != PLACEHOLDER]
@@ -63,7 +74,7 @@ class BuildExt(build_ext):
                 _say("an editable install: the runtime stays pure Python (its sources change)")
                 self.extensions = others
             else:
-                self.extensions = others + compiled_extensions()
+                self.extensions = others + [self._prepared(ext) for ext in compiled_extensions()]
         try:
             super().run()
         except Exception as e:  # no compiler, missing headers, ...
