@@ -114,3 +114,16 @@ def test_the_pure_python_runtime_passes_the_runtime_tests():
         timeout=600,
     )
     assert done.returncode == 0, done.stdout[-3000:] + done.stderr[-2000:]
+
+
+def test_a_pure_build_ships_no_compiled_module_of_an_earlier_build(tmp_path, monkeypatch, capsys):
+    """A build folder reused from a compiled build: when this build keeps pure Python (here: no
+    mypyc), the compiled runtime left there is removed, or the wheel would ship it."""
+    monkeypatch.setitem(sys.modules, "mypyc.build", None)
+    cmd = _build_ext(tmp_path, [Extension(build_runtime.PLACEHOLDER, sources=[])])
+    stale = [cmd.get_ext_fullpath(f"{build_runtime.GROUP}__mypyc"), cmd.get_ext_fullpath("scoopc.runtime.processor")]
+    for path in stale:
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        open(path, "wb").close()
+    cmd.run()
+    assert not [path for path in stale if os.path.exists(path)]
