@@ -31,7 +31,6 @@ if TYPE_CHECKING:
 
     from .fast import _Nothing
     from .outside import OutsideClient
-    from .reservation import Reservation
     from .sched import Exec, Runtime
 
 S = TypeVar("S", bound=Separate)
@@ -622,8 +621,6 @@ class Processor(FastPaths):
         self.busy -= 1
         if self.busy < 0:
             self.busy_quantum()
-        from .reservation import Reservation  # deferred: a cycle (it imports this module)
-
         return Reservation(self, objs, pre, where, pre_args)
 
 
@@ -664,3 +661,8 @@ def locked_lock() -> threading.Lock:
     lk = threading.Lock()
     lk.acquire()
     return lk
+
+
+# Last, as it imports this module (a cycle): the class `reserve` builds, looked up once here
+# rather than imported on every call.
+from .reservation import Reservation  # noqa: E402
