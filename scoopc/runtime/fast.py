@@ -27,7 +27,7 @@ from typing import TYPE_CHECKING
 from .errors import PASS_THROUGH, PreconditionViolation, sync_failure
 from .protocols import Args, Clause, Routine, Separate, Where
 from .sched import Block, dirty_text
-from .session import IDLE, SCHEDULED, Session, close_locked, enqueue
+from .session import IDLE, SCHEDULED, Session, apply, close_locked, enqueue, invoke
 
 if TYPE_CHECKING:
     from .processor import Processor
@@ -106,7 +106,7 @@ class FastPaths:
             s.__enter__()
             try:
                 for clause in pre:  # in order; the first false one decides
-                    if not clause[0](*pre_args):
+                    if not apply(clause[0], pre_args):
                         break
                 else:
                     return s
@@ -185,7 +185,7 @@ class FastPaths:
             self._command1_busy(p, x, routine, args, where)
             return
         try:
-            routine(x, *args)
+            invoke(routine, x, args)
         except BaseException as e:
             self._leaf_failed(p, e, where)  # releases p.lock; re-raises what passes through
             return
@@ -307,7 +307,7 @@ class FastPaths:
         s = self.held.get(p)
         if type(s) is Session and s.claimed and s.dirty is None and not self.rt.stopping:
             try:
-                return routine(target, *args)
+                return invoke(routine, target, args)
             except Exception as e:
                 if p.passive:
                     raise

@@ -22,14 +22,14 @@ from __future__ import annotations
 import os
 import sys
 from collections import deque
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Final
 
 from .errors import Shutdown
 
 if TYPE_CHECKING:
     from .sched import Exec, Runtime
 
-SLICE = 0.005  # seconds
+SLICE: Final = 0.005  # seconds
 
 
 def base_permits() -> int:

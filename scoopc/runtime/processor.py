@@ -16,7 +16,7 @@ from __future__ import annotations
 import threading
 from collections import deque
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, TypeVar
+from typing import TYPE_CHECKING, Final, TypeVar
 
 from .anchor import Anchor
 from .errors import CREATION, PASS_THROUGH, Shutdown, UncontrolledTarget, dirty_error, sync_failure
@@ -24,7 +24,7 @@ from .fast import FastPaths
 from .once import once_in
 from .protocols import Args, Call, Clause, OnceKey, OnceTable, Routine, Separate, Where
 from .sched import BUSY_CALLS, BUSY_QUANTUM_NS, Block, dirty_text
-from .session import IDLE, RUNNING, SCHEDULED, Session, close, drop_claim_locked  # noqa: F401
+from .session import IDLE, RUNNING, SCHEDULED, Session, close, drop_claim_locked, invoke  # noqa: F401
 
 if TYPE_CHECKING:
     from collections.abc import Callable
@@ -36,8 +36,8 @@ if TYPE_CHECKING:
 S = TypeVar("S", bound=Separate)
 # The sessions a server or a client running calls on a supplier's behalf takes at once.
 Batches = list[tuple[Session, list[Call]]]
-BATCH_SESSIONS = 64  # sessions a server takes under one lock hold
-HELP_LIMIT = 256  # leaf calls a releasing client serves for others before handing off
+BATCH_SESSIONS: Final = 64  # sessions a server takes under one lock hold
+HELP_LIMIT: Final = 256  # leaf calls a releasing client serves for others before handing off
 STATE_NAMES = ("idle", "scheduled", "running")
 # Argument types that are never references into a region (no lock passing): checked first,
 # since `getattr(a, "_region_", None)` on them costs an AttributeError inside getattr.
@@ -147,7 +147,7 @@ class Processor(FastPaths):
                     if self.rt.stopping:
                         raise Shutdown()
                     s.changed = True
-                    routine(target, *args)
+                    invoke(routine, target, args)
                     return
                 if getattr(routine, "_scoop_leaf_", False):
                     self._leaf_claimed(p, s, routine, target, args)
@@ -180,7 +180,7 @@ class Processor(FastPaths):
             lock.release()
         elif s is p:
             if p is self:
-                routine(target, *args)
+                invoke(routine, target, args)
             else:
                 self._borrowed(p, routine, target, args)
         else:
@@ -193,7 +193,7 @@ class Processor(FastPaths):
         if type(s) is Session:
             if s.claimed and s.dirty is None and not self.rt.stopping and (not args or not self._passes(args)):
                 try:
-                    return routine(target, *args)  # `p` is ours until we release it
+                    return invoke(routine, target, args)  # `p` is ours until we release it
                 except Exception as e:
                     if p.passive:
                         raise
@@ -201,7 +201,7 @@ class Processor(FastPaths):
             return self._sync(s, p, routine, target, args, where, False)
         if s is p:
             if p is self:
-                return routine(target, *args)
+                return invoke(routine, target, args)
             return self._borrowed(p, routine, target, args)
         raise UncontrolledTarget(f"{self} queries {routine.__qualname__} on {p}, not reserved")
 
@@ -290,7 +290,7 @@ class Processor(FastPaths):
         """[`p` claimed for `s`] A leaf command: its failure only makes `s` dirty."""
         s.changed = True
         try:
-            routine(target, *args)
+            invoke(routine, target, args)
         except PASS_THROUGH:
             raise
         except BaseException as e:
@@ -309,7 +309,7 @@ class Processor(FastPaths):
             s.changed = True
         kept = self._claim_locked(p, s)
         try:
-            return routine(target, *args)
+            return invoke(routine, target, args)
         except Exception as e:
             if p.passive:
                 raise
@@ -347,7 +347,7 @@ class Processor(FastPaths):
                 s.changed = True
                 if passer is None and not p.passive:  # a leaf command: failure dirties
                     try:
-                        return routine(target, *args)
+                        return invoke(routine, target, args)
                     except PASS_THROUGH:
                         raise
                     except BaseException as e:
@@ -357,7 +357,7 @@ class Processor(FastPaths):
                         return None
             try:
                 if passer is None:
-                    return routine(target, *args)
+                    return invoke(routine, target, args)
                 return p._invoke_passing(passer, routine, target, args)
             except Exception as e:
                 if p.passive:
@@ -372,7 +372,7 @@ class Processor(FastPaths):
         saved = p.exec
         p.exec = self.exec
         try:
-            return routine(target, *args)
+            return invoke(routine, target, args)
         except Exception as e:
             if p.passive:
                 raise
@@ -388,7 +388,7 @@ class Processor(FastPaths):
         held[self] = self
         self.held = held
         try:
-            return routine(target, *args)
+            return invoke(routine, target, args)
         finally:
             self.held = saved
 
@@ -472,7 +472,7 @@ class Processor(FastPaths):
                 continue
             try:
                 if passer is None:
-                    r = routine(target, *args)
+                    r = invoke(routine, target, args)
                 else:
                     r = self._invoke_passing(passer, routine, target, args)
             except PASS_THROUGH:

@@ -16,7 +16,7 @@ from .errors import PreconditionViolation
 from .processor import Processor, locked_lock
 from .protocols import Args, Clause, Separate, Where
 from .sched import Block
-from .session import Session, close, enqueue_claim
+from .session import Session, apply, close, enqueue_claim
 
 # What a reservation took: (region, its new private queue) pairs.
 Taken = Sequence[tuple[Processor, Session]]
@@ -75,7 +75,7 @@ class Reservation:
             args = self.pre_args
             try:
                 for clause in pre:  # in order; the first false one decides
-                    if not (clause[0]() if args is None else clause[0](*args)):
+                    if not (clause[0]() if args is None else apply(clause[0], args)):
                         break
                 else:
                     return self

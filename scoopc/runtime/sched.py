@@ -24,7 +24,7 @@ import time
 import weakref
 from collections import deque
 from collections.abc import Callable
-from typing import TYPE_CHECKING, TextIO
+from typing import TYPE_CHECKING, Final, TextIO
 
 from .errors import CREATION, Shutdown, fmt_where
 from .protocols import OnceTable, Where
@@ -38,15 +38,15 @@ if TYPE_CHECKING:
     from .processor import Processor
     from .session import Session
 
-STARVE_AFTER = 0.005  # seconds a runnable processor may wait for a permit before a worker comes
-MAX_PARKED = 16  # parked workers kept; more exit (joined by the runtime)
+STARVE_AFTER: Final = 0.005  # seconds a runnable processor may wait for a permit before a worker comes
+MAX_PARKED: Final = 16  # parked workers kept; more exit (joined by the runtime)
 # Virtual time never stalls on a busy processor (docs/RUNTIME.md section 4): a processor that
 # makes BUSY_CALLS separate calls (reservations: routines with separate arguments, separate
 # blocks) without sleeping in between sleeps BUSY_QUANTUM_NS on the virtual clock before the
 # next one. Counted per processor and reset by its sleeps only (not by waits, whose occurrence
 # can depend on thread timing), so the same program gives the same run.
-BUSY_CALLS = 20
-BUSY_QUANTUM_NS = 10_000_000  # 10 ms
+BUSY_CALLS: Final = 20
+BUSY_QUANTUM_NS: Final = 10_000_000  # 10 ms
 
 
 class RunEvent:

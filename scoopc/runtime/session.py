@@ -13,17 +13,46 @@ release.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from types import TracebackType
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Final
 
-from .protocols import Call, Where
+from .protocols import Args, Call, Routine, Where
 
 if TYPE_CHECKING:
     from .outside import OutsideClient
     from .processor import Processor
     from .sched import Block, Exec
 
-IDLE, SCHEDULED, RUNNING = 0, 1, 2
+# Final: the compiled runtime inlines them (docs/RUNTIME.md section 10).
+IDLE: Final = 0
+SCHEDULED: Final = 1
+RUNNING: Final = 2
+
+
+def invoke(routine: Routine, target: object, args: Args) -> object:
+    """`routine(target, *args)`. Compiled code builds a list and a tuple for a star call;
+    spelled out for the common arities, the call goes straight to the routine."""
+    n = len(args)
+    if n == 0:
+        return routine(target)
+    if n == 1:
+        return routine(target, args[0])
+    if n == 2:
+        return routine(target, args[0], args[1])
+    return routine(target, *args)
+
+
+def apply(f: Callable[..., object], args: Args) -> object:
+    """`f(*args)`, as `invoke` (a clause table's predicate takes two to four arguments)."""
+    n = len(args)
+    if n == 2:
+        return f(args[0], args[1])
+    if n == 3:
+        return f(args[0], args[1], args[2])
+    if n == 4:
+        return f(args[0], args[1], args[2], args[3])
+    return f(*args)
 
 
 class Session:
