@@ -265,7 +265,9 @@ class ClassGen:
             else:
                 body = checks + [ast.Return(call)]
             decorators = [P.name("property")] if property_ else []
-            fn = P.function(pyname, list(params), body, decorators + [P.dotted("_S.guard")])
+            if (host, fname) not in STANDING_FOR_EIFFEL:
+                decorators.append(P.dotted("_S.guard"))
+            fn = P.function(pyname, list(params), body, decorators)
             return [P.at(fn, feature.decl.span)]
         if property_:
             value = P.call("property", [value])
@@ -345,12 +347,19 @@ def user_external_imports(used: set, options) -> list:
     return found
 
 
+# Externals that stand for an Eiffel body (EiffelBase's ARRAY accessors): an Eiffel routine
+# for exception traces, which show the routine and its precondition's line.
+STANDING_FOR_EIFFEL = frozenset({("ARRAY", "item"), ("ARRAY", "at"), ("ARRAY", "put")})
+
 # Classes (or (class, feature) pairs) whose `external "Python"` functions (scoopc/kernel/ext/)
 # refuse, by raising, every input their Eiffel precondition excludes: their preconditions are
 # evaluated only then (the hot accessors under every array, list and string).
 REFUSING_HOSTS = frozenset(
     {
         "SPECIAL",
+        ("ARRAY", "item"),
+        ("ARRAY", "at"),
+        ("ARRAY", "put"),
         ("STRING_8", "item"),
         ("STRING_32", "item"),
         ("IMMUTABLE_STRING_8", "item"),

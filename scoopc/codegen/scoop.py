@@ -55,8 +55,11 @@ SAFE_EXTERNAL_CLASSES = frozenset(
         "PLATFORM",
     }
 ) | frozenset(BASIC)
-# Single external features of other classes that are as short: a read of the runtime's clock.
-SAFE_EXTERNAL_FEATURES = frozenset({("TIMER", "now")})
+# Single external features of other classes that are as short: a read of the runtime's clock,
+# ARRAY's accessors.
+SAFE_EXTERNAL_FEATURES = frozenset({("TIMER", "now"), ("ARRAY", "item"), ("ARRAY", "put")})
+# External features that call an Eiffel feature of Current (its versions are their callees).
+CALLING_EXTERNALS = {("ARRAY", "item"): "valid_index", ("ARRAY", "put"): "valid_index"}
 SAFE_ANY_EXTERNALS = frozenset(
     {
         "generator",
@@ -299,7 +302,7 @@ def local_facts(analysis: Analysis, info, feature):
     if isinstance(inner, syntax.DeferredBody):
         return True, []
     if isinstance(inner, syntax.ExternalBody):
-        return _external_ok(info, feature, inner), []
+        return _external_ok(info, feature, inner), _external_callees(info, feature, inner)
     if not isinstance(inner, syntax.InternalBody) or inner.once:
         return False, []
     signature = feature.signature
@@ -314,6 +317,16 @@ def _external_ok(info, feature, inner) -> bool:
         return True
     name = feature.decl.names[0].name.key
     return (info.name == "ANY" and name in SAFE_ANY_EXTERNALS) or (info.name, name) in SAFE_EXTERNAL_FEATURES
+
+
+def _external_callees(info, feature, inner) -> list:
+    """The Eiffel features an external may call back: ARRAY's accessors ask a descendant's
+    `valid_index` (scoopc/kernel/ext/array.py), so a redefinition counts as their callee."""
+    name = feature.decl.names[0].name.key
+    if inner.language.lower() != "python" or (info.name, name) not in CALLING_EXTERNALS:
+        return []
+    found = info.features.get(CALLING_EXTERNALS[info.name, name])
+    return [("d", info.name, frozenset(found.seeds()))] if found is not None else []
 
 
 def _walk_body(analysis: Analysis, info, body, arguments):

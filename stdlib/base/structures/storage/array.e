@@ -113,8 +113,9 @@ feature -- Access
 			-- Item at index `i'.
 		require
 			valid_key: valid_index (i)
-		do
-			Result := area.item (i - lower)
+		external
+			"Python"
+				-- `Result := area.item (i - lower)', without the calls (scoopc/kernel/ext/array.py)
 		end
 
 	has (v: G): BOOLEAN
@@ -235,8 +236,9 @@ feature -- Element change
 			-- Put `v' at index `i'.
 		require
 			valid_key: valid_index (i)
-		do
-			area.put (v, i - lower)
+		external
+			"Python"
+				-- `area.put (v, i - lower)', without the calls (scoopc/kernel/ext/array.py)
 		ensure
 			inserted: item (i) = v
 		end
