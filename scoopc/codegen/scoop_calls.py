@@ -10,7 +10,8 @@ Every fast form is emitted only where its facts hold statically; otherwise the g
   version is looked up on the target at run time (`_S.scall`, `_S.squery`).
 - a routine (or separate block) with one separate argument `x`, no precondition clause left to
   evaluate and a body that is exactly one command on `x` whose arguments cannot pass locks is
-  `command1`; one argument otherwise `reserve1`; several `reserve` (module-level clause tables).
+  `command1` (`leaf_command1` when it is a leaf); one argument otherwise `reserve1`; several
+  `reserve` (module-level clause tables).
 """
 
 from __future__ import annotations
@@ -92,7 +93,7 @@ def separate_call(gen, node, target, feature, args) -> ast.expr:
         call = P.call("_S.scall", [here, target, name, P.tup(args), passing])
         if attached and values and isinstance(target, ast.Name):
             routine = P.call("_S.routine_of", [P.name(target.id), name])
-            _commands(gen)[id(call)] = (target.id, routine, P.tup(args))
+            _commands(gen)[id(call)] = (target.id, routine, P.tup(args), False)
         return call
     routine = routine_ref(gen, version)
     leaf = values and facts.is_leaf(version)
@@ -101,7 +102,7 @@ def separate_call(gen, node, target, feature, args) -> ast.expr:
         return P.call(entry, [target, routine, P.tup(args), gen.where(node)])
     call = P.call("here.leaf_call" if leaf else "here.call", [target, routine, P.tup(args)])
     if values and isinstance(target, ast.Name):
-        _commands(gen)[id(call)] = (target.id, routine, P.tup(args))
+        _commands(gen)[id(call)] = (target.id, routine, P.tup(args), leaf)
     return call
 
 
@@ -131,8 +132,8 @@ def reserved(gen, objs, table, pre_args, body, where, names=None) -> list:
     ):
         command = _commands(gen).get(id(body[0].value))
         if command is not None and command[0] == objs[0].id:
-            _, routine, args = command
-            call = P.call("here.command1", [objs[0], routine, args, where])
+            _, routine, args, leaf = command
+            call = P.call("here.leaf_command1" if leaf else "here.command1", [objs[0], routine, args, where])
             return [ast.copy_location(ast.Expr(call), body[0])]
     if len(objs) == 1:
         call = P.call("here.reserve1", [objs[0], where] + ([table, pre_args] if table is not None else []))

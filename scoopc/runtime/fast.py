@@ -157,22 +157,37 @@ class FastPaths:
         """`with here.reserve1(x, where): here.call(x, routine, args)` in one step: a
         routine (or separate block) with one separate argument `x`, no precondition, whose
         body is the single command `x.routine (args)`, none of whose arguments can pass
-        locks (rules: docs/RUNTIME.md section 3). A leaf command on an idle supplier runs
-        here, claimed, with no `with` protocol and no `held` entry (a leaf makes no
-        separate call, so nothing consults it); a non-leaf one is logged in a closed
-        private queue for the supplier's thread with one lock round."""
+        locks (rules: docs/RUNTIME.md section 3). A leaf command is `leaf_command1`'s; a
+        non-leaf one is logged in a closed private queue for the supplier's thread with one
+        lock round."""
+        if getattr(routine, "_scoop_leaf_", False):
+            self.leaf_command1(x, routine, args, where)
+            return
+        p = x._region_
+        self.busy -= 1
+        if self.busy < 0:
+            self.busy_quantum()
+        if p.passive or self.rt.attention or p in self.held:
+            self._command1_reserved(x, routine, args, where)
+        else:
+            self._log1(p, x, routine, args, where)
+
+    def leaf_command1(  # type: ignore[misc]
+        self: Processor,
+        x: Separate,
+        routine: Routine,
+        args: Args = (),
+        where: Where | None = None,
+    ) -> None:
+        """`command1` of a routine codegen proved a leaf (`@leaf`). On an idle supplier it runs
+        here, claimed, with no `with` protocol and no `held` entry (a leaf makes no separate
+        call, so nothing consults it)."""
         p = x._region_
         self.busy -= 1
         if self.busy < 0:
             self.busy_quantum()
         if p.passive or self.rt.attention:
             self._command1_reserved(x, routine, args, where)
-            return
-        if not getattr(routine, "_scoop_leaf_", False):
-            if p in self.held:
-                self._command1_reserved(x, routine, args, where)
-            else:
-                self._log1(p, x, routine, args, where)
             return
         lock = p.lock
         lock.acquire()
@@ -221,7 +236,7 @@ class FastPaths:
         lock.release()  # idle again meanwhile: take the fast path once more
         self.spare = s
         self.busy += 1
-        self.command1(x, routine, args, where)
+        self.leaf_command1(x, routine, args, where)
 
     def _leaf_failed(self: Processor, p: Processor, e: BaseException, where: Where | None) -> None:  # type: ignore[misc]
         """[p.lock held; released] A leaf `command1` ran on the idle supplier `p` failed with

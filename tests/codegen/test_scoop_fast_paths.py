@@ -93,6 +93,7 @@ feature
 			guarded (c)
 			give (c, "x")
 			show (c)
+			loop_it (c)
 			create b.make
 			create l.make
 			step_it (b)
@@ -111,6 +112,7 @@ feature
 	guarded (c: separate COUNTER) require c.value > 0 do c.increment end
 	give (c: separate COUNTER; s: STRING) do c.register (s) end
 	show (c: separate COUNTER) do print (c.value.out + " " + c.factorial (4).out + "%N") end
+	loop_it (c: separate COUNTER) do c.looped (2) end
 	step_it (b: separate BASE_ITEM) do b.step end
 	show_items (b: separate BASE_ITEM; l: separate LOOPING_ITEM) do print (b.x.out + " " + l.x.out + "%N") end
 	fill (box: separate BOX; c: separate COUNTER) do box.put (7); box.keep (c) end
@@ -176,7 +178,8 @@ def test_short_library_routines_count_as_leaves_but_are_never_decorated(program)
 
 def test_one_separate_command_is_command1_statically_bound(program):
     text = program[1]["fast.py"]
-    assert "here.command1(c, _M_counter.COUNTER.increment, (), _W_" in routine(text, "inc")
+    assert "here.leaf_command1(c, _M_counter.COUNTER.increment, (), _W_" in routine(text, "inc")
+    assert "here.command1(c, _M_counter.COUNTER.looped, (2,), _W_" in routine(text, "loop_it")  # not a leaf
 
 
 def test_leaf_calls_and_queries_inside_a_reservation(program):

@@ -228,16 +228,23 @@ def _hold(here, c, gate, entered):
         assert gate.wait(10)
 
 
-def test_command1_runs_an_idle_leaf_here_and_queues_behind_a_holder(h):
+# A leaf command goes through `command1` (which reads the routine's mark) or, when codegen
+# proved it a leaf, `leaf_command1`: the same behaviour either way.
+LEAF_ENTRIES = pytest.mark.parametrize("leaf_entry", ["command1", "leaf_command1"])
+
+
+@LEAF_ENTRIES
+def test_command1_runs_an_idle_leaf_here_and_queues_behind_a_holder(h, leaf_entry):
     root = h.root
+    leaf_command1 = getattr(root, leaf_entry)
     c = root.new_separate(LCell, LCell.make)
-    root.command1(c, leaf_add, (1,), W)
+    leaf_command1(c, leaf_add, (1,), W)
     assert c.log == [1] and c._region_ not in root.held  # run here, released
     assert c._region_.head is None and c._region_.state == rt.session.IDLE  # no private queue left
     gate, entered = threading.Event(), threading.Event()
     spawn(root, lambda here: _hold(here, c, gate, entered))
     assert entered.wait(10)
-    root.command1(c, leaf_add, (2,), W)  # never blocks; queued behind "h"
+    leaf_command1(c, leaf_add, (2,), W)  # never blocks; queued behind "h"
     root.command1(c, Cell.add, (3,), W)  # non-leaf: for c's thread, in order
     assert c.log == [1, "h"]
     gate.set()
@@ -259,23 +266,26 @@ def test_command1_non_leaf_is_asynchronous_and_fifo(h):
         assert root.leaf_query(c, leaf_items) == ["a", "b"]
 
 
-def test_command1_on_a_held_or_passive_region_is_a_plain_synchronous_call(h):
+@LEAF_ENTRIES
+def test_command1_on_a_held_or_passive_region_is_a_plain_synchronous_call(h, leaf_entry):
     root = h.root
+    leaf_command1 = getattr(root, leaf_entry)
     c = root.new_separate(LCell, LCell.make)
     with root.reserve1(c, W) as outer:
-        root.command1(c, leaf_add, (1,), W)  # nested: the outer queue is kept
+        leaf_command1(c, leaf_add, (1,), W)  # nested: the outer queue is kept
         assert root.held[c._region_] is outer and c.log == [1]
     pc = root.new_passive(LCell, LCell.make)
     root.command1(pc, Cell.add, (2,), W)
     assert pc.log == [2]
     with pytest.raises(KeyError):  # a passive failure reaches the client
-        root.command1(pc, leaf_fail, ("passive",), W)
+        leaf_command1(pc, leaf_fail, ("passive",), W)
 
 
-def test_command1_leaf_failure_is_reported_lost(h):
+@LEAF_ENTRIES
+def test_command1_leaf_failure_is_reported_lost(h, leaf_entry):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
-    root.command1(c, leaf_fail, ("nobody looks",), ("APP", "run", "app.e", 9))
+    getattr(root, leaf_entry)(c, leaf_fail, ("nobody looks",), ("APP", "run", "app.e", 9))
     with root.reserve1(c, W):  # the region is clean again
         assert root.leaf_query(c, leaf_items) == []
     assert h.finish() == 0
@@ -283,7 +293,8 @@ def test_command1_leaf_failure_is_reported_lost(h):
     assert err.count("exception lost") == 1 and "app.e:9" in err
 
 
-def test_command1_wakes_a_waiter(h):
+@LEAF_ENTRIES
+def test_command1_wakes_a_waiter(h, leaf_entry):
     root = h.root
     c = root.new_separate(LCell, LCell.make)
     got = []
@@ -291,7 +302,7 @@ def test_command1_wakes_a_waiter(h):
     waiting = _waiting(h.rt)
     spawn(root, _consumer, c, got)
     assert waiting.wait(10)
-    root.command1(c, leaf_set, (7,), W)
+    getattr(root, leaf_entry)(c, leaf_set, (7,), W)
     assert h.finish() == 0
     assert got == [7] and len(EVALS) == 2
 

@@ -21,7 +21,7 @@ class PRODUCER(ANY):
 
     def put_into(self, a_buffer):  # producer.e:24
         here = self._region_
-        here.command1(a_buffer, _M_buffer.BUFFER.put, (), _W_2)  # producer.e:27
+        here.leaf_command1(a_buffer, _M_buffer.BUFFER.put, (), _W_2)  # producer.e:27
     buffer = None
 _S.register('PRODUCER', PRODUCER)
 import formal_wait_condition.buffer as _M_buffer

@@ -31,11 +31,11 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
 
     def fire_and_forget(self, f):  # scoop_exceptions.e:31
         here = self._region_
-        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)  # scoop_exceptions.e:33
+        here.leaf_command1(f, _M_fragile.FRAGILE.explode, (), _W_1)  # scoop_exceptions.e:33
 
     def set(self, f, v):  # scoop_exceptions.e:36
         here = self._region_
-        here.command1(f, _M_fragile.FRAGILE.set, (v,), _W_2)  # scoop_exceptions.e:38
+        here.leaf_command1(f, _M_fragile.FRAGILE.set, (v,), _W_2)  # scoop_exceptions.e:38
 
     def value(self, f):  # scoop_exceptions.e:41
         here = self._region_

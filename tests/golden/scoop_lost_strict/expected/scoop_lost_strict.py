@@ -18,6 +18,6 @@ class SCOOP_LOST_STRICT(ANY):
 
     def fire_and_forget(self, f):  # scoop_lost_strict.e:23
         here = self._region_
-        here.command1(f, _M_fragile.FRAGILE.explode, (), _W_1)  # scoop_lost_strict.e:25
+        here.leaf_command1(f, _M_fragile.FRAGILE.explode, (), _W_1)  # scoop_lost_strict.e:25
 _S.register('SCOOP_LOST_STRICT', SCOOP_LOST_STRICT)
 import scoop_lost_strict.fragile as _M_fragile

@@ -12,7 +12,7 @@ class WORKER(SHARED_BOARD):
     def work(self, n):  # worker.e:4
         here = self._region_
         b_ = self.board  # worker.e:6
-        here.command1(b_, _M_tally_board.TALLY_BOARD.add, (n,), _W_1)
+        here.leaf_command1(b_, _M_tally_board.TALLY_BOARD.add, (n,), _W_1)
 
     def own_board_once_(self, _once_):  # worker.e:8
         here = self._region_

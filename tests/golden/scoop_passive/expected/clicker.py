@@ -31,7 +31,7 @@ class CLICKER(ANY):
 
     def click(self, t_):  # clicker.e:38
         here = self._region_
-        here.command1(t_, _M_tally.TALLY.increment, (), _W_2)  # clicker.e:40
+        here.leaf_command1(t_, _M_tally.TALLY.increment, (), _W_2)  # clicker.e:40
 _S.register('CLICKER', CLICKER)
 import eiffel_base.string_8 as _L_string_8
 import scoop_passive.tally as _M_tally
