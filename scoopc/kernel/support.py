@@ -156,8 +156,9 @@ def missing_external(cls, name):
 
 # --- objects -------------------------------------------------------------------------------------
 def create(here, cls, gen, creator, args, invariant=False):
-    """`create x.make (args)` in the current region (non-separate)."""
-    obj = cls.__new__(cls)
+    """`create x.make (args)` in the current region (non-separate). `cls()` is the bare object:
+    generated classes define no `__init__` (Processor.new)."""
+    obj = cls()
     obj._region_ = here
     if gen is not None:
         obj._gen_ = gen

@@ -107,8 +107,10 @@ class Processor(FastPaths):
 
     # -- object creation ---------------------------------------------------------------
     def new(self, cls: type[S]) -> S:
-        """A new object of `cls` in this region (its creation procedure is not called)."""
-        obj = cls.__new__(cls)
+        """A new object of `cls` in this region (its creation procedure is not called). Generated
+        classes define no `__init__`, so calling the class makes the bare object, in half the
+        time of `cls.__new__(cls)` (whose wrapper checks its argument against the ancestors)."""
+        obj = cls()
         obj._region_ = self
         return obj
 
