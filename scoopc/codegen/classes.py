@@ -251,11 +251,17 @@ class ClassGen:
         else:
             value = P.call("_S.missing_external", [P.const(self.info.name), P.const(fname)])
         checks = self.external_precondition(feature, body)
+        host = self.info.name.split("@")[0]
+        if checks and (host, fname) in STANDING_FOR_EIFFEL and found and not property_:
+            # The host function is the routine itself (no Python call around it); when it
+            # refuses the call it asks `_<name>_refused_`, an Eiffel routine for traces, to
+            # evaluate the precondition and report its violation.
+            refused = P.function(f"_{pyname}_refused_", list(params), checks)
+            return [P.at(P.assign(P.name(pyname), value), feature.decl.span), P.at(refused, feature.decl.span)]
         if checks:
             # The precondition is the generated code's, as for any routine (EiffelBase's
             # SPECIAL and the strings guard their externals so): misuse is a violation.
             call = P.call(value, [P.name(p) for p in params])
-            host = self.info.name.split("@")[0]
             if host in REFUSING_HOSTS or (host, fname) in REFUSING_HOSTS:
                 # checked when the host refuses the call (the external raises): these host
                 # functions refuse every input their precondition excludes, and the common
@@ -265,9 +271,7 @@ class ClassGen:
             else:
                 body = checks + [ast.Return(call)]
             decorators = [P.name("property")] if property_ else []
-            if (host, fname) not in STANDING_FOR_EIFFEL:
-                decorators.append(P.dotted("_S.guard"))
-            fn = P.function(pyname, list(params), body, decorators)
+            fn = P.function(pyname, list(params), body, decorators + [P.dotted("_S.guard")])
             return [P.at(fn, feature.decl.span)]
         if property_:
             value = P.call("property", [value])
@@ -347,8 +351,9 @@ def user_external_imports(used: set, options) -> list:
     return found
 
 
-# Externals that stand for an Eiffel body (EiffelBase's ARRAY accessors): an Eiffel routine
-# for exception traces, which show the routine and its precondition's line.
+# Externals that stand for an Eiffel body (EiffelBase's ARRAY accessors): the host function is
+# bound as the routine, and calls `_<name>_refused_` (the precondition's checks, traced as the
+# routine at the clause's line) for an input it refuses (scoopc/kernel/ext/array.py).
 STANDING_FOR_EIFFEL = frozenset({("ARRAY", "item"), ("ARRAY", "at"), ("ARRAY", "put")})
 
 # Classes (or (class, feature) pairs) whose `external "Python"` functions (scoopc/kernel/ext/)
@@ -357,9 +362,6 @@ STANDING_FOR_EIFFEL = frozenset({("ARRAY", "item"), ("ARRAY", "at"), ("ARRAY", "
 REFUSING_HOSTS = frozenset(
     {
         "SPECIAL",
-        ("ARRAY", "item"),
-        ("ARRAY", "at"),
-        ("ARRAY", "put"),
         ("STRING_8", "item"),
         ("STRING_32", "item"),
         ("IMMUTABLE_STRING_8", "item"),

@@ -227,6 +227,8 @@ def _frames(walk) -> list:
         routine = frame.f_code.co_name
         for suffix in ("_once_", "_init_"):
             routine = routine[: -len(suffix)] if routine.endswith(suffix) else routine
+        if routine.startswith("_") and routine.endswith("_refused_"):
+            routine = routine[1 : -len("_refused_")]  # a host-bound routine's precondition (STANDING_FOR_EIFFEL)
         if routine == "_invariant_":
             routine = "invariant"
         elif routine.endswith("_") and (keyword.iskeyword(routine[:-1]) or routine[:-1] in _PYTHON_NAMES):

@@ -2,31 +2,39 @@
 its synonym `at`) and `put`, the accessors under every array a program indexes.
 
 Each does what the Eiffel body it stands for does (`area.item (i - lower)`,
-`area.put (v, i - lower)`) and refuses, with IndexError, every index that `valid_index`
-rejects; the generated code then evaluates the precondition `valid_key`, so the caller sees
-the precondition violation (codegen REFUSING_HOSTS). For an ARRAY, `valid_index` is
-`lower <= i <= upper`, checked here without a call; a descendant may redefine it, so for
-one the redefined query is asked and SPECIAL's own routines do the rest, as in Eiffel.
+`area.put (v, i - lower)`) and is bound as the routine itself (codegen STANDING_FOR_EIFFEL): no
+Python call stands around it. For an index that `valid_index` rejects it calls the generated
+`_item_refused_` (`_at_refused_`, `_put_refused_`), which evaluates the precondition `valid_key`
+and reports its violation as for an Eiffel routine. For an ARRAY, `valid_index` is
+`lower <= i <= upper`, checked here without a call; a descendant may redefine it, so for one
+the redefined query is asked and SPECIAL's own routines do the rest, as in Eiffel.
 """
 
 
-def _refuse(current, i):
-    raise IndexError(f"ARRAY index {i} not in {current.lower} .. {current.upper}")
+def _refuse(report, i, *before):
+    report(*before, i)  # raises the precondition violation
+    raise IndexError(f"ARRAY index {i} refused, but valid_index accepts it")
 
 
-def item(current, i):
-    """Item at index `i`."""
-    if type(current)._key_ == "ARRAY":
-        j = i - current.lower
-        if j < 0 or i > current.upper:
-            _refuse(current, i)
-        return current.area._items[j]
-    if not current.valid_index(i):
-        _refuse(current, i)
-    return current.area.item(i - current.lower)
+def _reader(refused: str):
+    """`item` and its synonym `at`, which differ in the name of the routine that reports."""
+
+    def read(current, i):
+        if type(current)._key_ == "ARRAY":
+            j = i - current.lower
+            if j < 0 or i > current.upper:
+                _refuse(getattr(current, refused), i)
+            return current.area._items[j]
+        if not current.valid_index(i):
+            _refuse(getattr(current, refused), i)
+        return current.area.item(i - current.lower)
+
+    read.__doc__ = "Item at index `i`."
+    return read
 
 
-at = item
+item = _reader("_item_refused_")
+at = _reader("_at_refused_")
 
 
 def put(current, v, i):
@@ -34,9 +42,9 @@ def put(current, v, i):
     if type(current)._key_ == "ARRAY":
         j = i - current.lower
         if j < 0 or i > current.upper:
-            _refuse(current, i)
+            _refuse(current._put_refused_, i, v)
         current.area._items[j] = v
         return
     if not current.valid_index(i):
-        _refuse(current, i)
+        _refuse(current._put_refused_, i, v)
     current.area.put(v, i - current.lower)
