@@ -411,6 +411,14 @@ class Calls:
         return self.module.constant("T", call, key=constant)
 
     def generics_desc(self, ty: Ty) -> ast.expr:
+        formals = self.info.formals
+        own = all(g.is_formal and g.formal == i for i, g in enumerate(ty.generics))
+        if formals and len(ty.generics) == len(formals) and own:
+            # Current's own actual generics, in order (LINKABLE [G] in LINKED_QUEUE [G]): shared,
+            # not rebuilt per object; an heir's object has them computed (kernel.types)
+            exact = P.compare(P.call("type", [P.name("self")]), ast.Is(), self.class_ref(self.info.name))
+            own = P.call("_T.own_generics", [P.name("self"), P.const(self.info.name)])
+            return ast.IfExp(exact, P.attr(P.name("self"), "_gen_"), own)
         return P.tup([self.type_desc(g) for g in ty.generics])
 
     def class_ref(self, key: str):

@@ -192,6 +192,15 @@ def formal(obj, written_in: str, index: int) -> TypeDesc:
     return cls._ancestor_gen_[written_in](getattr(obj, "_gen_", ()))[index]
 
 
+def own_generics(obj, written_in: str) -> tuple:
+    """The actual generics of class `written_in` (the class whose code asks) for the object `obj`
+    of a descendant class: all of them, in order (what `formal` gives one by one)."""
+    cls = type(obj)
+    if cls._key_ == written_in:
+        return obj._gen_
+    return tuple(cls._ancestor_gen_[written_in](getattr(obj, "_gen_", ())))
+
+
 def _name_all(top: TypeDesc) -> None:
     """Name `top` and the types inside it not named yet, innermost first: no recursion, for a type
     nested 2,000 deep (an ARRAY of ARRAYs ...)."""

@@ -36,7 +36,7 @@ class BOX(ANY):
         if not (i := self.item) is not None:  # box.e:39
             _S.assertion_failed('check', None, _W_1)
         Result = here.new(BOX)  # box.e:40
-        Result._gen_ = (_T.formal(self, 'BOX', 0),)
+        Result._gen_ = self._gen_ if type(self) is BOX else _T.own_generics(self, 'BOX')
         Result.make(f.item(_S.new_tuple(here, [i], ())))
         return Result  # box.e:37
 
