@@ -125,7 +125,8 @@ import sys
 class Refuse:
     def find_spec(self, name, path=None, target=None):
         top = name.partition(".")[0]
-        if top in sys.stdlib_module_names or top in ("lark", "scoopc", "_distutils_hack"):
+        # scoopc_runtime__mypyc: the shared library of a runtime compiled in place (ours)
+        if top in sys.stdlib_module_names or top in ("lark", "scoopc", "scoopc_runtime__mypyc", "_distutils_hack"):
             return None
         raise ModuleNotFoundError(f"No module named {name!r} (not a build requirement)")
 sys.meta_path.insert(0, Refuse())
