@@ -19,10 +19,12 @@ except ImportError:  # Python 3.10
 from harness import ROOT
 
 
-def test_every_python_package_is_listed_in_pyproject():
+def test_every_python_package_and_stdlib_folder_is_listed_in_pyproject():
+    """A folder setuptools is not told about is not shipped (it warns now, and will drop it)."""
     config = tomllib.loads((ROOT / "pyproject.toml").read_text())
     listed = set(config["tool"]["setuptools"]["packages"])
     found = {".".join(p.parent.relative_to(ROOT).parts) for p in (ROOT / "scoopc").rglob("__init__.py")}
+    found |= {".".join(("scoopc",) + p.parent.relative_to(ROOT).parts) for p in (ROOT / "stdlib").rglob("*.e")}
     assert found <= listed, f"add to [tool.setuptools] packages: {sorted(found - listed)}"
 
 
