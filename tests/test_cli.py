@@ -1,17 +1,25 @@
 """The command line: help, exit codes, diagnostics on stderr, .ecf projects (DESIGN section 8)."""
 
+import argparse
 import os
 import subprocess
 import sys
 
 import pytest
 
-from scoopc import cli
+from scoopc import cli, cli_args
 from scoopc.exits import Exit
 
 from harness import ROOT
 
 SAMPLE = ROOT / "samples" / "producer_consumer"
+
+
+def test_every_subcommand_has_a_handler_and_every_handler_a_subcommand():
+    """scoopc.cli_args builds the parser, scoopc.cli dispatches on the command's name."""
+    (subcommands,) = [a for a in cli_args.build_parser()._actions if isinstance(a, argparse._SubParsersAction)]
+    assert set(subcommands.choices) == set(cli.HANDLERS)
+
 
 BROKEN = """class
 	BROKEN

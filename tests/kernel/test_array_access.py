@@ -45,28 +45,32 @@ feature
 		end
 
 	read (a: ARRAY [INTEGER]; i: INTEGER)
-		local
-			failed: BOOLEAN
 		do
-			if failed then
-				print ("read " + i.out + ": " + tag_name_of_last + "%N")
-			else
-				print ("read " + i.out + ": " + a [i].out + "%N")
-			end
-		rescue
-			failed := True
-			retry
+			access (a, i, False)
 		end
 
 	write (a: ARRAY [INTEGER]; i: INTEGER)
+		do
+			access (a, i, True)
+		end
+
+	access (a: ARRAY [INTEGER]; i: INTEGER; writing: BOOLEAN)
+			-- Read `a [i]', or write 9 there and read it back; print it, or the failure's tag.
 		local
 			failed: BOOLEAN
+			what: STRING
 		do
+			what := "read "
+			if writing then
+				what := "write "
+			end
 			if failed then
-				print ("write " + i.out + ": " + tag_name_of_last + "%N")
+				print (what + i.out + ": " + tag_name_of_last + "%N")
 			else
-				a [i] := 9
-				print ("write " + i.out + ": " + a [i].out + "%N")
+				if writing then
+					a [i] := 9
+				end
+				print (what + i.out + ": " + a [i].out + "%N")
 			end
 		rescue
 			failed := True
