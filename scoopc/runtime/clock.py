@@ -91,23 +91,21 @@ class Clock:
     # -- sleeping ----------------------------------------------------------------------
     def sleep(self, proc: Processor, ns: int, where: Where | None = None) -> None:
         proc.busy = BUSY_CALLS  # its run of separate calls without sleeping starts again
-        lk = threading.Lock()
-        lk.acquire()
         rt = self.rt
         with rt.glock:
             deadline = (self.vnow if self.virtual else time.monotonic_ns()) + max(ns, 0)
-            blk = Block("sleep", proc, None, where, lk, deadline)
+            blk = Block("sleep", proc, None, where, deadline)
             if self.virtual:
                 heapq.heappush(self.heap, (deadline, 1, next(self.seq), blk))
         rt.block(proc.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
 
-    def real_wait(self, blk: Block) -> None:
-        """Wait on the real clock for a sleeper's deadline (or its wake-up)."""
+    def real_wait(self, blk: Block, lk: threading.Lock) -> None:
+        """Wait on the real clock for a sleeper's deadline (or its wake-up: `lk` released)."""
         deadline = blk.deadline
         assert deadline is not None, "a sleeper's Block has a deadline"
         while True:
             left = deadline - time.monotonic_ns()
-            if left <= 0 or blk.lock.acquire(timeout=left / 1e9):
+            if left <= 0 or lk.acquire(timeout=left / 1e9):
                 return
 
     # -- timers ------------------------------------------------------------------------

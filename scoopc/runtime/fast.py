@@ -19,7 +19,6 @@ not apply; the fast paths only skip checks whose answer codegen promised.
 
 from __future__ import annotations
 
-import threading
 from collections.abc import Sequence
 from types import TracebackType
 from typing import TYPE_CHECKING
@@ -122,9 +121,7 @@ class FastPaths:
     def _wait1(self: Processor, s: Session, p: Processor, clause: Clause) -> None:  # type: ignore[misc]
         """Register the wake-up and release `s` under one hold of `p.lock` (no change can
         slip in between), sleep until another client's session with a command ends."""
-        lk = threading.Lock()  # the one-shot wake-up, already held
-        lk.acquire()
-        blk = Block("wait", self, (p,), clause[3] or s.where, lk, None, clause[2])
+        blk = Block("wait", self, (p,), clause[3] or s.where, None, clause[2])
         del self.held[p]
         lock = p.lock
         lock.acquire()

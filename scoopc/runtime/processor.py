@@ -248,7 +248,7 @@ class Processor(FastPaths):
                 ahead = _ahead_locked(p, s)
                 if ahead is not None:
                     return self._inline(p, s, _take(p, s, ahead), routine, target, args, passer, is_cmd)
-            blk = Block("turn" if p.passive else "sync", self, s, where, locked_lock(), None, routine)
+            blk = Block("turn" if p.passive else "sync", self, s, where, None, routine)
             if p.passive:
                 s.turn = blk
             else:
@@ -656,13 +656,6 @@ def _take(p: Processor, s: Session, ahead: Sequence[Session]) -> Batches:
         batches.append((s, s.calls))
         s.calls = []
     return batches
-
-
-def locked_lock() -> threading.Lock:
-    """A new lock, already held: a one-shot wake-up for a blocked thread."""
-    lk = threading.Lock()
-    lk.acquire()
-    return lk
 
 
 # Last, as it imports this module (a cycle): the class `reserve` builds, looked up once here

@@ -13,7 +13,7 @@ from collections.abc import Sequence
 from types import TracebackType
 
 from .errors import PreconditionViolation
-from .processor import Processor, locked_lock
+from .processor import Processor
 from .protocols import Args, Clause, Separate, Where
 from .sched import Block
 from .session import Session, apply, close, enqueue_claim
@@ -117,7 +117,7 @@ class Reservation:
             self.exit()
             raise PreconditionViolation(clause[2], clause[3])
         here = self.here
-        blk = Block("wait", here, tuple(queried), clause[3] or self.where, locked_lock(), None, clause[2])
+        blk = Block("wait", here, tuple(queried), clause[3] or self.where, None, clause[2])
         _register(blk, queried)  # before releasing: no change can slip in between
         self.exit()
         try:

@@ -84,14 +84,19 @@ class Exec:
 
 
 class Block:
-    """What a blocked thread waits for; a new one per episode, so identity marks progress."""
+    """What a blocked thread waits for; a new one per episode, so identity marks progress.
 
-    __slots__ = ("kind", "proc", "on", "where", "lock", "deadline", "exec", "value", "error", "what", "since")
+    Its waker sets `woken` under glock. The thread's wake-up lock is made only when it really
+    goes to sleep (`Runtime.block`, under glock too): a Block whose waker came first (a query
+    answered before its client blocks, a wait condition changed meanwhile) costs no lock."""
+
+    __slots__ = ("kind", "proc", "on", "where", "lock", "woken", "deadline", "exec", "value", "error", "what", "since")
     kind: str
     proc: Processor
     on: Session | tuple[Processor, ...] | None
     where: Where | None
-    lock: threading.Lock
+    lock: threading.Lock | None
+    woken: bool
     deadline: int | None
     exec: Exec | None
     value: object
@@ -105,7 +110,6 @@ class Block:
         proc: Processor,
         on: Session | tuple[Processor, ...] | None,
         where: Where | None,
-        lock: threading.Lock,
         deadline: int | None = None,
         what: object = None,
     ) -> None:
@@ -113,7 +117,8 @@ class Block:
         self.proc = proc  # the processor that waits (innermost context)
         self.on = on  # sync/turn: the Session; wait: tuple of processors
         self.where = where
-        self.lock = lock  # released (once) to wake the thread
+        self.lock = None  # [glock] the wake-up lock, held, made by `block` when the thread sleeps
+        self.woken = False  # [glock] its waker ran (`unblock_locked`)
         self.deadline = deadline  # sleep only
         self.exec = None  # the blocked thread's Exec, set by `block`
         self.value = None  # sync: the result, written before `unblock`; wait: the
@@ -414,16 +419,19 @@ class Runtime:
 
     # -- blocking --------------------------------------------------------------------
     def block(self, ex: Exec, blk: Block) -> None:
-        """Block thread `ex` until `blk.lock` is released (by `unblock`); raise Shutdown
-        when the runtime stops. The re-check under glock pairs with `unblock`, so a thread
+        """Block thread `ex` until `blk`'s waker runs (`unblock`); raise Shutdown when the
+        runtime stops. The re-check of `woken` under glock pairs with `unblock`, so a thread
         is never counted blocked after its waker ran (the virtual clock relies on it)."""
-        if blk.lock.acquire(False):
+        if blk.woken:  # a plain read: if stale, the check under glock decides
             return
         blk.exec = ex
         blk.since = time.monotonic()  # for live views (snapshot.py): only a thread that really blocks pays it
+        lk = threading.Lock()
+        lk.acquire()
         with self.glock:
-            if blk.lock.acquire(False):
+            if blk.woken:
                 return
+            blk.lock = lk
             ex.blocked = blk
             self.blocked.add(ex)
             if blk.kind == "wait":
@@ -440,9 +448,9 @@ class Runtime:
         try:
             if not stopping:
                 if blk.deadline is not None and not self.clock.virtual:
-                    self.clock.real_wait(blk)
+                    self.clock.real_wait(blk, lk)
                 else:
-                    blk.lock.acquire()
+                    lk.acquire()
             woke = True
         finally:
             with self.glock:
@@ -481,11 +489,16 @@ class Runtime:
             self.unblock_locked(blk)
 
     def unblock_locked(self, blk: Block) -> None:
+        if blk.woken:
+            return
+        blk.woken = True
         ex = blk.exec
         if ex is not None and ex.blocked is blk:
             self.blocked.discard(ex)
             ex.blocked = None
-        wake(blk.lock)
+        lk = blk.lock
+        if lk is not None:  # the thread sleeps on it
+            lk.release()
 
     # -- failures and stopping -------------------------------------------------------
     def fail(self, message: str, exc: BaseException | None = None, kind: str = "failure") -> None:

@@ -16,11 +16,27 @@ def _refuse(report, i, *before):
     raise IndexError(f"ARRAY index {i} refused, but valid_index accepts it")
 
 
+# The class ARRAY itself, once met (a program has one; a process that loads several programs'
+# libraries keeps the last): `type(current) is _array` is a global load and an identity test,
+# where `type(current)._key_` is an attribute lookup on a class, which CPython 3.11 does not
+# specialize (docs/RUNTIME.md section 10).
+_array: type | None = None
+
+
+def _is_array(current) -> bool:
+    """Is `current` a plain ARRAY (not a descendant, which may redefine `valid_index`)?"""
+    global _array
+    if type(current)._key_ != "ARRAY":
+        return False
+    _array = type(current)
+    return True
+
+
 def _reader(refused: str):
     """`item` and its synonym `at`, which differ in the name of the routine that reports."""
 
     def read(current, i):
-        if type(current)._key_ == "ARRAY":
+        if type(current) is _array or _is_array(current):
             j = i - current.lower
             if j < 0 or i > current.upper:
                 _refuse(getattr(current, refused), i)
@@ -39,7 +55,7 @@ at = _reader("_at_refused_")
 
 def put(current, v, i):
     """Replace the item at index `i` by `v`."""
-    if type(current)._key_ == "ARRAY":
+    if type(current) is _array or _is_array(current):
         j = i - current.lower
         if j < 0 or i > current.upper:
             _refuse(current._put_refused_, i, v)
