@@ -54,8 +54,12 @@ class Permits:
 
     def acquire(self, ex: Exec) -> None:
         """Take a permit for thread `ex` (waiting for one if none is free)."""
-        with self.rt.glock:
+        glock = self.rt.glock  # no `with` on a hot path (docs/RUNTIME.md section 10)
+        glock.acquire()
+        try:
             queued = self.acquire_locked(ex)
+        finally:
+            glock.release()
         if queued:
             self._wait(ex)
 
@@ -85,8 +89,12 @@ class Permits:
             self.total -= 1  # an extra permit is given back
 
     def release(self, ex: Exec) -> None:
-        with self.rt.glock:
+        glock = self.rt.glock  # no `with` (as `acquire`)
+        glock.acquire()
+        try:
             self.release_locked(ex)
+        finally:
+            glock.release()
 
     def _want_yield(self, flag: bool) -> None:
         """[g] Set `want_yield` and the runtime's summary flag read at reservation entry."""

@@ -268,11 +268,15 @@ class Runtime:
     # -- the pool --------------------------------------------------------------------
     def schedule(self, p: Processor) -> None:
         """`p` was set SCHEDULED under its lock: make sure some thread will run it."""
-        with self.glock:
+        glock = self.glock  # no `with` (section 10)
+        glock.acquire()
+        try:
             if not self.runnable:
                 self.runnable_since = time.monotonic()
             self.runnable.append(p)
             spawn = self._wake_one_locked() if self._want_worker() else None
+        finally:
+            glock.release()
         if spawn is not None:
             spawn.thread.start()
 
@@ -317,7 +321,9 @@ class Runtime:
         A worker taking work while more is waiting wakes another one first: a processor
         that runs for long (or blocks outside the runtime) never holds up the others."""
         spawn = None
-        with self.glock:
+        glock = self.glock  # no `with` (section 10)
+        glock.acquire()
+        try:
             if fresh:
                 self.n_waking -= 1
             while True:
@@ -341,12 +347,14 @@ class Runtime:
                 self.parked.append(w)
                 self.n_running -= 1
                 self._check_quiet()
-                self.glock.release()
+                glock.release()
                 try:
                     w.lock.acquire()
                 finally:
-                    self.glock.acquire()
+                    glock.acquire()
                 self.n_waking -= 1
+        finally:
+            glock.release()
         if spawn is not None:
             spawn.thread.start()
         return p
@@ -386,10 +394,14 @@ class Runtime:
             self.leave_running(ex)
 
     def leave_running(self, ex: Exec) -> None:
-        with self.glock:
+        glock = self.glock  # no `with` (section 10)
+        glock.acquire()
+        try:
             spawn = self._release_permit_locked(ex)
             self.n_running -= 1
             self._check_quiet()
+        finally:
+            glock.release()
         if spawn is not None:
             spawn.thread.start()
 
@@ -428,7 +440,9 @@ class Runtime:
         blk.since = time.monotonic()  # for live views (snapshot.py): only a thread that really blocks pays it
         lk = threading.Lock()
         lk.acquire()
-        with self.glock:
+        glock = self.glock  # taken and released explicitly on this path (section 10: no `with`)
+        glock.acquire()
+        try:
             if blk.woken:
                 return
             blk.lock = lk
@@ -442,6 +456,8 @@ class Runtime:
             stopping = self.stopping
             had_permit = ex.permit
             spawn = self._release_permit_locked(ex)
+        finally:
+            glock.release()
         if spawn is not None:
             spawn.thread.start()
         woke = queued = False
@@ -453,7 +469,8 @@ class Runtime:
                     lk.acquire()
             woke = True
         finally:
-            with self.glock:
+            glock.acquire()
+            try:
                 if _blocked_of(ex) is blk:
                     self.blocked.discard(ex)
                     ex.blocked = None
@@ -462,6 +479,8 @@ class Runtime:
                 stopping = self.stopping
                 if woke and had_permit and not stopping:  # one glock round for both
                     queued = self.permits.acquire_locked(ex)
+            finally:
+                glock.release()
         if stopping:
             raise Shutdown()
         if queued:
@@ -485,8 +504,12 @@ class Runtime:
 
     def unblock(self, blk: Block) -> None:
         """Wake the thread blocked (or about to block) on `blk`; at most once matters."""
-        with self.glock:
+        glock = self.glock  # no `with` (section 10)
+        glock.acquire()
+        try:
             self.unblock_locked(blk)
+        finally:
+            glock.release()
 
     def unblock_locked(self, blk: Block) -> None:
         if blk.woken:
@@ -498,7 +521,7 @@ class Runtime:
             ex.blocked = None
         lk = blk.lock
         if lk is not None:  # the thread sleeps on it
-            lk.release()
+            wake(lk)
 
     # -- failures and stopping -------------------------------------------------------
     def fail(self, message: str, exc: BaseException | None = None, kind: str = "failure") -> None:
