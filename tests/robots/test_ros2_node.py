@@ -1,5 +1,5 @@
 """Issue 17, "a real node": a scoopc program's DdsBus is a node of the ROS graph. A graph reader built
-on rmw_dds_common's definitions (tests/robots/rmw_twin.py GraphReader, as graph_cache.cpp reads the
+on rmw_dds_common's definitions (tests/robots/rmw_twin_graph.py GraphReader, as graph_cache.cpp reads the
 graph) sees the node, names its endpoints, and decodes ros_discovery_info with the distribution's
 Gid (24 bytes in Humble, 16 from Jazzy on). The processes `scoopc run` and `scoopc sim` are checked
 in tests/robots/test_ros2_robots.py (slow)."""
@@ -20,6 +20,8 @@ from scoopc.robots import backends, dds, graph, ros_messages, runner  # noqa: E4
 
 sys.path.insert(0, str(Path(__file__).parent))
 import rmw_twin  # noqa: E402
+import rmw_twin_actions  # noqa: E402
+import rmw_twin_graph  # noqa: E402
 
 TIMEOUT = 30.0
 
@@ -42,7 +44,7 @@ def test_a_graph_reader_sees_the_node_and_names_its_endpoints(distro, size, monk
     ros_messages.use_distro(distro)
     bus = backends.open_ros2_bus(node=("explorer", "robot1"))
     twin = rmw_twin.Node(distro)
-    reader = rmw_twin.GraphReader(twin)
+    reader = rmw_twin_graph.GraphReader(twin)
     try:
         bus.subscribe("/robot1/odom", lambda msg: None)
         bus.publish("/robot1/cmd_vel", ros_messages.new("geometry_msgs/msg/Twist"))
@@ -73,7 +75,7 @@ def test_a_bare_dds_participant_is_not_a_node(monkeypatch):
     monkeypatch.setenv("ROS_DOMAIN_ID", str(domains.next_domain()))
     bus = dds.DdsBus()
     twin = rmw_twin.Node("jazzy")
-    reader = rmw_twin.GraphReader(twin)
+    reader = rmw_twin_graph.GraphReader(twin)
     try:
         bus.publish("/bare/cmd_vel", ros_messages.new("geometry_msgs/msg/Twist"))
         assert _until(lambda: reader.endpoints("/bare/cmd_vel")) == [
@@ -279,7 +281,7 @@ def test_an_action_of_a_stock_server_with_feedback_cancel_and_result(monkeypatch
         goal.finish(4, sequence=np.array(_fibonacci(int(goal.goal.order)), dtype=np.int32))
 
     try:
-        server = rmw_twin.TwinActionServer(twin, "example_interfaces/action/Fibonacci", "/fib", execute)
+        server = rmw_twin_actions.TwinActionServer(twin, "example_interfaces/action/Fibonacci", "/fib", execute)
         client = actions.ActionClient(bus, "/fib", "example_interfaces/action/Fibonacci")
         assert client.wait_for_server(TIMEOUT)
         statuses, feedback = [], []
@@ -341,7 +343,7 @@ def test_our_action_server_to_a_stock_client(monkeypatch):
 
     server = actions.ActionServer(bus, "/fib", "example_interfaces/action/Fibonacci", on_accepted=accepted)
     try:
-        client = rmw_twin.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
+        client = rmw_twin_actions.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
         first = client.send_goal(order=3)
         go.set()
         done = client.result(first)

@@ -25,6 +25,8 @@ from scoopc.robots import cdr, dds, eiffel_messages, ros_messages  # noqa: E402
 
 sys.path.insert(0, str(Path(__file__).parent))
 import rmw_twin  # noqa: E402
+import rmw_twin_actions  # noqa: E402
+import rmw_twin_graph  # noqa: E402
 
 ROOT = Path(__file__).resolve().parents[2]
 PROGRAMS = Path(__file__).parent / "programs"
@@ -144,7 +146,7 @@ def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported
         assert ground.messages[-1].range == 0.0  # floor
         assert scan.wait_for(lambda s: s.incompatible() > 0, TIMEOUT)
         # issue 17: the simulator is the node /scoopc_sim of the ROS graph
-        graph = rmw_twin.GraphReader(twin)
+        graph = rmw_twin_graph.GraphReader(twin)
         assert graph.wait_for(lambda g: "/scoopc_sim" in g.nodes(), TIMEOUT)
         assert ("writer", "nav_msgs/msg/Odometry", "/scoopc_sim") in graph.endpoints("/robot1/odom")
         assert ("reader", "geometry_msgs/msg/TwistStamped", "/scoopc_sim") in graph.endpoints("/tb3/cmd_vel")
@@ -166,7 +168,7 @@ def test_a_stock_node_hears_the_sim_node_and_a_reliable_laser_reader_is_reported
 @pytest.mark.slow
 def test_a_humble_thymio_gets_twist_and_its_missing_battery_is_reported(env, tmp_path):
     twin = rmw_twin.Node("humble")
-    graph = rmw_twin.GraphReader(twin)
+    graph = rmw_twin_graph.GraphReader(twin)
     try:
         # History depth plays no part in QoS matching; a keep-last depth of 1 (the driver's own) let a
         # loaded test process, taking samples late, lose commands it counts below (a CI rehearsal saw it)
@@ -447,7 +449,7 @@ def test_a_robot_profile_names_the_topics_the_type_the_qos_and_ctrl_c_says_what_
             time.sleep(0.05)
         assert qos and Policy.History.KeepLast(3) in qos[0]
         assert isinstance(qos[0][Policy.Reliability], Policy.Reliability.Reliable)
-        graph = rmw_twin.GraphReader(twin)  # issue 17: the node is named after the root class
+        graph = rmw_twin_graph.GraphReader(twin)  # issue 17: the node is named after the root class
         assert graph.wait_for(lambda g: g.nodes() == ["/profile_ros2"], TIMEOUT), graph.nodes()
         assert ("writer", "geometry_msgs/msg/TwistStamped", "/profile_ros2") in graph.endpoints("/wheels/cmd")
         graph.close()
@@ -591,7 +593,7 @@ def test_a_program_serves_an_action_to_a_stock_client(env, tmp_path):
     run = None
     try:
         run = scoopc(env, "run", str(PROGRAMS / "action_server_ros2"), "--robot", "ros2", cwd=tmp_path)
-        client = rmw_twin.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
+        client = rmw_twin_actions.TwinActionClient(twin, "example_interfaces/action/Fibonacci", "/fib")
         first = client.send_goal(timeout=120, order=5)
         done = client.result(first, TIMEOUT)
         assert (done.status, list(done.result.sequence)) == (4, [0, 1, 1, 2, 3, 5])
