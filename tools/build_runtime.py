@@ -21,7 +21,7 @@ import tempfile
 from setuptools import Extension
 from setuptools.command.build_ext import build_ext
 
-RUNTIME_MODULES = ("session", "fast", "processor", "reservation", "sched", "permits")
+RUNTIME_MODULES = ("session", "direct", "fast", "processor", "reservation", "sched", "permits")
 GROUP = "scoopc_runtime"  # the name of the compiled modules' shared library (mypyc's group)
 PLACEHOLDER = "scoopc.runtime._compiled"  # stands for the compiled modules until build_ext runs
 # The type check mypyc compiles from. It checks the compiled modules and what they import from the

@@ -10,8 +10,9 @@ Every fast form is emitted only where its facts hold statically; otherwise the g
   version is looked up on the target at run time (`_S.scall`, `_S.squery`).
 - a routine (or separate block) with one separate argument `x`, no precondition clause left to
   evaluate and a body that is exactly one command on `x` whose arguments cannot pass locks is
-  `command1` (`leaf_command1` when it is a leaf); one argument otherwise `reserve1`; several
-  `reserve` (module-level clause tables).
+  `command1` (`leaf_command1` when it is a leaf); one argument otherwise `claim1` when the body
+  is a direct block (direct.py), else `reserve1`; several `reserve` (module-level clause
+  tables).
 """
 
 from __future__ import annotations
@@ -20,7 +21,7 @@ import ast
 
 from .. import syntax
 from ..semantics.types import BASIC
-from . import pyast as P
+from . import direct, pyast as P
 from .scoop import analysis, only_stored
 
 
@@ -99,8 +100,14 @@ def separate_call(gen, node, target, feature, args) -> ast.expr:
     leaf = values and facts.is_leaf(version)
     if feature.is_query:
         entry = "here.leaf_query" if leaf else "here.query"
-        return P.call(entry, [target, routine, P.tup(args), gen.where(node)])
+        query_where = gen.where(node)
+        call = P.call(entry, [target, routine, P.tup(args), query_where])
+        if leaf:
+            direct.note(gen, call, target, routine, args, arg_nodes, query_where)
+        return call
     call = P.call("here.leaf_call" if leaf else "here.call", [target, routine, P.tup(args)])
+    if leaf:
+        direct.note(gen, call, target, routine, args, arg_nodes, None)
     if values and isinstance(target, ast.Name):
         _commands(gen)[id(call)] = (target.id, routine, P.tup(args), leaf)
     return call
@@ -136,6 +143,9 @@ def reserved(gen, objs, table, pre_args, body, where, names=None) -> list:
             call = P.call("here.leaf_command1" if leaf else "here.command1", [objs[0], routine, args, where])
             return [ast.copy_location(ast.Expr(call), body[0])]
     if len(objs) == 1:
+        claimed = direct.block(gen, objs[0], table, pre_args, body, where)
+        if claimed is not None:
+            return claimed
         call = P.call("here.reserve1", [objs[0], where] + ([table, pre_args] if table is not None else []))
     else:
         keywords = {"where": where}

@@ -202,7 +202,19 @@ def eiffel_frames(error) -> list:
     own helpers never show: a precondition clause (a module-level function of the generated
     code) is named after its routine, at the clause's line; any other helper function (an `old`
     or a loop's exit condition) is left out, as its routine's frame shows the line."""
-    return _frames(traceback.walk_tb(error.__traceback__))[::-1]
+    frames = _frames(traceback.walk_tb(error.__traceback__))[::-1]
+    noticed = getattr(error, "noticed", None)
+    if noticed is not None and frames:
+        # A direct block (runtime direct.py) raises where the general path would not: at a
+        # failed command, what the general path raises at the block's next query (`noticed`
+        # a where tuple); at the block's end, a failed query's failure (`noticed` the generated
+        # file and line of the query). The client's frame shows the general path's line.
+        cls, routine, _ = frames[0]
+        if len(noticed) == 4:
+            frames[0] = (cls, routine, f"{Path(noticed[2]).name}:{noticed[3]}")
+        else:
+            frames[0] = (cls, routine, eiffel_place(*noticed) or frames[0][2])
+    return frames
 
 
 def stack_frames(frame) -> list:

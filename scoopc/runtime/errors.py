@@ -22,6 +22,7 @@ class DirtyRegionError(ScoopError):
 
     asynchronous = False  # True: the failure was an earlier asynchronous call's
     proc: object = None  # the region whose call failed
+    noticed: object = None  # where the general path raises it, if not where it was (direct.py)
 
 
 DIRTY_TAG = "EVE/Qs dirty processor exception"

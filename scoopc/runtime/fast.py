@@ -23,6 +23,7 @@ from collections.abc import Sequence
 from types import TracebackType
 from typing import TYPE_CHECKING
 
+from .direct import DirectBlocks
 from .errors import PASS_THROUGH, PreconditionViolation, sync_failure
 from .protocols import Args, Clause, Routine, Separate, Where
 from .sched import Block, dirty_text
@@ -56,7 +57,7 @@ class _Nothing:
 NOTHING = _Nothing()
 
 
-class FastPaths:
+class FastPaths(DirectBlocks):
     """Mixin of `Processor` (fields documented there). Its methods take `self: Processor`, which
     mypy refuses for a subclass (error code misc, ignored on each `def`): a Protocol would not
     do, since they pass `self` on as the client of a Session or the waiter of a Block."""

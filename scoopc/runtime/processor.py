@@ -227,8 +227,11 @@ class Processor(FastPaths):
         args: Args,
         where: Where | None,
         is_cmd: bool,
+        what: object = None,
     ) -> object:
-        """A synchronous call: run it ourselves if `p` is free for us, else wait for it."""
+        """A synchronous call: run it ourselves if `p` is free for us, else wait for it.
+        `what`: set by `claim1` (direct.py), whose call is a no-op leaf: the block's first
+        query, which a report names while we wait."""
         if self.rt.stopping:
             raise Shutdown()
         passer = self if args and self._passes(args) else None
@@ -248,12 +251,12 @@ class Processor(FastPaths):
                 ahead = _ahead_locked(p, s)
                 if ahead is not None:
                     return self._inline(p, s, _take(p, s, ahead), routine, target, args, passer, is_cmd)
-            blk = Block("turn" if p.passive else "sync", self, s, where, None, routine)
+            blk = Block("turn" if p.passive else "sync", self, s, where, None, routine if what is None else what)
             if p.passive:
                 s.turn = blk
             else:
                 s.calls.append((routine, target, args, blk, passer))
-                if passer is not None or not getattr(routine, "_scoop_leaf_", False):
+                if passer is not None or not (what is not None or getattr(routine, "_scoop_leaf_", False)):
                     s.heavy = True
             lock.release()
             self.rt.block(self.exec, blk)  # type: ignore[arg-type]  # running: its exec is set

@@ -60,7 +60,20 @@ class Session:
     It is also the reservation object of the common one-supplier reservation without
     wait condition (`Processor.reserve`): `with` enters and releases it."""
 
-    __slots__ = ("client", "proc", "calls", "closed", "dirty", "changed", "turn", "where", "heavy", "claimed")
+    __slots__ = (
+        "client",
+        "proc",
+        "calls",
+        "closed",
+        "dirty",
+        "changed",
+        "turn",
+        "where",
+        "heavy",
+        "claimed",
+        "direct",
+        "failure",
+    )
     client: Processor | OutsideClient
     proc: Processor
     calls: list[Call]
@@ -72,6 +85,8 @@ class Session:
     where: Where | None
     heavy: bool
     claimed: bool
+    direct: int
+    failure: BaseException | None
 
     def __init__(self, client: Processor | OutsideClient, proc: Processor, where: Where | None = None) -> None:
         self.client = client  # Processor or OutsideClient (immutable)
@@ -91,6 +106,8 @@ class Session:
         #   is queued, so the user runs its calls directly, lock-free, until it drops the
         #   claim (close, a queued or lock-passing call). Only one thread uses a session at a
         #   time: its client, or the supplier it passed its locks to while it waits.
+        self.direct = 0  # [client] the mode of a direct block (direct.py), 0 otherwise
+        self.failure = None  # [client] the exception a direct block's failed command raised
 
     # -- the one-supplier reservation (Processor.reserve) ------------------------------
     def __enter__(self) -> Session:
@@ -126,6 +143,9 @@ class Session:
         self, et: type[BaseException] | None = None, ev: BaseException | None = None, tb: TracebackType | None = None
     ) -> None:
         client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
+        if self.direct:
+            client.end_direct(self, ev)  # comes back here with `direct` 0
+            return
         held = client.held
         p = self.proc
         if held.get(p) is self:
@@ -146,6 +166,12 @@ class Session:
                 client.spare = self
                 return
             close_locked(p, self)
+
+    def failed(self, e: BaseException, noticed: Where | None) -> BaseException:
+        """A command of the direct block this session reserves failed with `e`: the exception
+        to raise (direct.py); `noticed` the position of the block's next query."""
+        client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
+        return client.command_failed(self, e, noticed)
 
     # `enter`/`exit`: the same, for code that cannot use `with` (methods, not aliases: a
     # compiled runtime, docs/RUNTIME.md section 10, has no class-level aliases of methods).

@@ -46,18 +46,47 @@ def test_golden(case: Path, tmp_path: Path, request):
             assert text == (expected_dir / name).read_text(), f"{case.name}: generated {name} differs"
     outcome = run_program(compiled, config)
     assert_no_host_exception(outcome.out, outcome.err, case.name)
-    out_path, err_path = case / "expected.out", case / "expected.err"
     if update:
+        out_path, err_path = case / "expected.out", case / "expected.err"
         out_path.write_text(outcome.out)
         if outcome.err:
             kept = len(err_path.read_text().splitlines()) if err_path.exists() else 1
             err_path.write_text("\n".join(outcome.err.splitlines()[:kept]) + "\n")
         elif err_path.exists():
             err_path.unlink()
-    assert outcome.status == config.exit, f"{case.name}: exit status {outcome.status}\n{outcome.err}"
-    assert_output(config, out_path.read_text(), outcome.out, case.name)
+    check_outcome(case, config, outcome)
+
+
+def check_outcome(case: Path, config, outcome, label: str = "") -> None:
+    """The run's exit status, output and first lines of stderr are the case's expected ones."""
+    name = case.name + label
+    out_path, err_path = case / "expected.out", case / "expected.err"
+    assert outcome.status == config.exit, f"{name}: exit status {outcome.status}\n{outcome.err}"
+    assert_output(config, out_path.read_text(), outcome.out, name)
     if err_path.exists():
         expected = err_path.read_text().splitlines()
-        assert outcome.err.splitlines()[: len(expected)] == expected, f"{case.name}: stderr differs"
+        assert outcome.err.splitlines()[: len(expected)] == expected, f"{name}: stderr differs"
     else:
-        assert outcome.err == "", f"{case.name}: unexpected stderr:\n{outcome.err}"
+        assert outcome.err == "", f"{name}: unexpected stderr:\n{outcome.err}"
+
+
+# Cases whose generated code has a direct block (runtime direct.py): compiled without them, every
+# call goes through the general entry points, and the run must show exactly the same.
+DIRECT = [c for c in CASES if any("here.claim1(" in p.read_text() for p in (c / "expected").glob("*.py"))]
+
+
+def test_direct_blocks_are_covered():
+    assert {"scoop_direct_blocks", "scoop_dirty_uncaught", "scoop_passive", "scoop_wait"} <= {c.name for c in DIRECT}
+
+
+@pytest.mark.parametrize("case", DIRECT, ids=[c.name for c in DIRECT])
+def test_general_path_agrees(case: Path, tmp_path: Path, monkeypatch):
+    from scoopc.codegen import direct
+
+    monkeypatch.setattr(direct, "block", lambda *args: None)
+    config = read_config(case)
+    compiled, texts = compile_program(case, tmp_path, config.assertions)
+    assert not any("claim1" in text for text in texts.values())
+    outcome = run_program(compiled, config)
+    assert_no_host_exception(outcome.out, outcome.err, case.name)
+    check_outcome(case, config, outcome, " (without direct blocks)")

@@ -49,8 +49,8 @@ class SCOOP_AGENTS(ANY):
 
     def count(self, g):  # scoop_agents.e:40
         here = self._region_
-        with here.reserve1(g, _W_7):
-            Result = here.leaf_query(g, _G_5, (), _W_6)  # scoop_agents.e:42
+        with here.claim1(g, _W_7, _W_6, _G_5, False):
+            Result = _G_5(g)  # scoop_agents.e:42
         return Result  # scoop_agents.e:40
 
     def spawn(self, g):  # scoop_agents.e:45

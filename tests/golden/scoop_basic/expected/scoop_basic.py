@@ -48,8 +48,8 @@ class SCOOP_BASIC(ANY):
 
     def total(self, acc):  # scoop_basic.e:47
         here = self._region_
-        with here.reserve1(acc, _W_6):
-            Result = here.leaf_query(acc, _G_1, (), _W_5)  # scoop_basic.e:49
+        with here.claim1(acc, _W_6, _W_5, _G_1, False):
+            Result = _G_1(acc)  # scoop_basic.e:49
         return Result  # scoop_basic.e:47
 
     def name_of(self, acc):  # scoop_basic.e:52

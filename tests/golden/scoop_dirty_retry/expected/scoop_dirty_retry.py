@@ -44,8 +44,8 @@ class SCOOP_DIRTY_RETRY(ANY):
 
     def count_of(self, c):  # scoop_dirty_retry.e:43
         here = self._region_
-        with here.reserve1(c, _W_5):
-            Result = here.leaf_query(c, _G_3, (), _W_4)  # scoop_dirty_retry.e:45
+        with here.claim1(c, _W_5, _W_4, _G_3, False):
+            Result = _G_3(c)  # scoop_dirty_retry.e:45
         return Result  # scoop_dirty_retry.e:43
 _S.register('SCOOP_DIRTY_RETRY', SCOOP_DIRTY_RETRY)
 import scoop_dirty_retry.counter as _M_counter

@@ -21,9 +21,12 @@ class SCOOP_DIRTY_UNCAUGHT(ANY):
     def failing_then_query(self, c):  # scoop_dirty_uncaught.e:27
         here = self._region_
         Result = 0
-        with here.reserve1(c, _W_2):
-            here.leaf_call(c, _M_counter.COUNTER.explode, ())  # scoop_dirty_uncaught.e:29
-            Result = here.leaf_query(c, _M_counter.COUNTER.next.fget, (), _W_1)  # scoop_dirty_uncaught.e:30
+        with here.claim1(c, _W_2, _W_1, _M_counter.COUNTER.next.fget, True) as _block1:
+            try:  # scoop_dirty_uncaught.e:29
+                _M_counter.COUNTER.explode(c)
+            except BaseException as _failure2:
+                raise _block1.failed(_failure2, _W_1)
+            Result = _M_counter.COUNTER.next.fget(c)  # scoop_dirty_uncaught.e:30
         return Result  # scoop_dirty_uncaught.e:27
 _S.register('SCOOP_DIRTY_UNCAUGHT', SCOOP_DIRTY_UNCAUGHT)
 import scoop_dirty_uncaught.counter as _M_counter

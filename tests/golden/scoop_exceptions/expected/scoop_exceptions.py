@@ -39,8 +39,8 @@ class SCOOP_EXCEPTIONS(EXCEPTION_MANAGER_FACTORY):
 
     def value(self, f):  # scoop_exceptions.e:41
         here = self._region_
-        with here.reserve1(f, _W_5):
-            Result = here.leaf_query(f, _G_3, (), _W_4)  # scoop_exceptions.e:43
+        with here.claim1(f, _W_5, _W_4, _G_3, False):
+            Result = _G_3(f)  # scoop_exceptions.e:43
         return Result  # scoop_exceptions.e:41
 
     def guarded_query(self, f, v):  # scoop_exceptions.e:46

@@ -68,8 +68,8 @@ class SCOOP_ONCE_KEYS(SHARED_BOARD):
         here = self._region_
         Result = 0
         b_ = self.board  # scoop_once_keys.e:37
-        with here.reserve1(b_, _W_8):
-            Result = here.leaf_query(b_, _G_7, (), _W_8)
+        with here.claim1(b_, _W_8, _W_8, _G_7, False):
+            Result = _G_7(b_)
         return Result  # scoop_once_keys.e:35
 _S.register('SCOOP_ONCE_KEYS', SCOOP_ONCE_KEYS)
 import eiffel_base.string_8 as _L_string_8

@@ -32,8 +32,8 @@ class SCOOP_PASSIVE(ANY):
 
     def final_value(self, t_):  # scoop_passive.e:32
         here = self._region_
-        with here.reserve1(t_, _W_4, _PRE_6, (here, self, t_)):
-            Result = here.leaf_query(t_, _G_2, (), _W_3)  # scoop_passive.e:36
+        with here.claim1(t_, _W_4, _W_3, _G_2, False, _PRE_6, (here, self, t_)):
+            Result = _G_2(t_)  # scoop_passive.e:36
         return Result  # scoop_passive.e:32
 _S.register('SCOOP_PASSIVE', SCOOP_PASSIVE)
 import scoop_passive.clicker as _M_clicker

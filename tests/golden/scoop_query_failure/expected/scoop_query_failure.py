@@ -46,8 +46,8 @@ class SCOOP_QUERY_FAILURE(ANY):
 
     def read(self, g, limit):  # scoop_query_failure.e:47
         here = self._region_
-        with here.reserve1(g, _W_5):
-            Result = here.leaf_query(g, _M_gauge.GAUGE.checked_level, (limit,), _W_4)  # scoop_query_failure.e:49
+        with here.claim1(g, _W_5, _W_4, _M_gauge.GAUGE.checked_level, False):
+            Result = _M_gauge.GAUGE.checked_level(g, limit)  # scoop_query_failure.e:49
         return Result  # scoop_query_failure.e:47
 _S.register('SCOOP_QUERY_FAILURE', SCOOP_QUERY_FAILURE)
 import scoop_query_failure.gauge as _M_gauge

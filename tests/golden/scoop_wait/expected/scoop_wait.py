@@ -42,8 +42,8 @@ class SCOOP_WAIT(ANY):
 
     def total_of(self, c):  # scoop_wait.e:39
         here = self._region_
-        with here.reserve1(c, _W_5, _PRE_7, (here, self, c)):
-            Result = here.leaf_query(c, _G_3, (), _W_4)  # scoop_wait.e:44
+        with here.claim1(c, _W_5, _W_4, _G_3, False, _PRE_7, (here, self, c)):
+            Result = _G_3(c)  # scoop_wait.e:44
         return Result  # scoop_wait.e:39
 
     def respected(self, b_):  # scoop_wait.e:47
