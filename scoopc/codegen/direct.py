@@ -8,11 +8,10 @@ an attribute of Current) into
 
     with here.claim1(x, where, first_query_where, first_query, has_commands[, table, args]) as _block1:
         try:
-            C.command(x, a)                 # a command before the last query
+            C.command(x, a)
         except BaseException as _failure2:
-            raise _block1.failed(_failure2, where_of_the_next_query)
-        r = C.query(x, b)                   # queries, up to the last one
-        here.leaf_call(x, C.command, (c,))  # commands after the last query: as before
+            raise _block1.failed(_failure2, where_of_the_next_query)  # None after the last one
+        r = C.query(x, b)
 
 when the body has a query; otherwise nothing changes.
 """
@@ -101,25 +100,24 @@ def block(gen, obj, table, pre_args, body, where) -> list | None:
     queries = [i for i, shape in enumerate(shapes) if shape[1] is not None]
     if not queries:
         return None
-    last = queries[-1]
     first_query = shapes[queries[0]][0]
-    has_commands = any(shape[1] is None for shape in shapes[:last])
+    has_commands = len(queries) < len(shapes)
     name = gen.temp("block") if has_commands else None
     out = []
-    for index, (stmt, (noted, to)) in enumerate(zip(body[: last + 1], shapes[: last + 1])):
+    for index, (stmt, (noted, to)) in enumerate(zip(body, shapes)):
         direct = P.call(noted[1], [obj] + noted[2])
         if to is not None:
             out.append(ast.copy_location(ast.Assign([to], direct), stmt))
             continue
         failure = gen.temp("failure")
-        noticed = next(shape[0][3] for shape in shapes[index:] if shape[1] is not None)  # the next query
+        later = [shape[0][3] for shape in shapes[index:] if shape[1] is not None]
+        noticed = later[0] if later else P.const(None)  # where the next query would raise it
         handler = ast.ExceptHandler(
             P.dotted("BaseException"),
             failure,
             [ast.Raise(P.call(P.attr(P.name(name), "failed"), [P.name(failure), noticed]), None)],
         )
         out.append(ast.copy_location(ast.Try([ast.copy_location(ast.Expr(direct), stmt)], [handler], [], []), stmt))
-    out += body[last + 1 :]
     args = [obj, where, first_query[3], first_query[1], P.const(has_commands)]
     if table is not None:
         args += [table, pre_args]

@@ -4,8 +4,7 @@ as plain Python calls, with no runtime entry point per call (docs/RUNTIME.md sec
 Codegen (scoop_calls.direct_block) emits one where it can prove the general path means the
 same: the body is only calls of leaf routines on the reserved argument, none of whose actual
 arguments can pass locks or fail (constants, locals, formal arguments, attributes of
-Current), and assignments of leaf query results; it contains a query, and the direct part
-ends with the last query (commands after it keep `leaf_call`). For CREATURE.visit:
+Current), and assignments of leaf query results; it contains a query. For CREATURE.visit:
 
     with here.claim1(m, _W_3, _W_2, MALL.outcome_of, True) as _s:
         try:
@@ -25,6 +24,10 @@ Why it means what the general path means:
   is always a next query here. `failed` notes the dirty region and raises that exception at
   once, marked as noticed at that query (reports name its line); the statements it skips are
   the ones the general path would skip or not reach.
+- A failed command after the last query: the general path makes the region dirty and skips
+  the block's other commands; the failure is reported lost when the reservation ends unless a
+  query of an enclosing reservation delivers it. `failed` makes the region dirty the same way
+  and raises `SkipRest`, which the block's end swallows.
 - A failed query: the synchronous failure, raised when the block ends (`end_direct`).
 - Modes follow the general path's rules for the region the calls go to: an active region we
   have claimed (DIRECT, as above); a passive one, or our own region (RAW: failures reach the
@@ -46,17 +49,26 @@ from .session import RUNNING, Session
 if TYPE_CHECKING:
     from .processor import Processor
 
+# A block's mode, once entered (`Session.direct`)
 DIRECT: Final = 1
 RAW: Final = 2
 BORROWED: Final = 3
 MODE: Final = 3  # the mode's bits
-TEMP: Final = 4
+TEMP: Final = 4  # (Session.__exit__ tests this bit)
+# Its flags, from `claim1` until entered
+PENDING: Final = 8
+COMMANDS: Final = 16
 
 
 def _reach(target: object) -> None:
     """The call `claim1` waits on when its supplier is not free yet: it does nothing (a
     leaf: `_sync` knows it from its `what`)."""
     return None
+
+
+class SkipRest(BaseException):
+    """Raised by `failed` when a command after a direct block's last query fails: the block's
+    end swallows it (the general path would skip the block's remaining commands)."""
 
 
 class DirectBlocks:
@@ -75,40 +87,47 @@ class DirectBlocks:
         pre_args: Args = (),
     ) -> Session:
         """`with here.claim1(x, where, qwhere, query, commands[, pre, pre_args]) as _s:`
-        reserves `x` (as `reserve1`, `x` never Void) and returns once the client may call
-        `x`'s routines itself; `query`/`qwhere` are the block's first query and its position
-        (what a deadlock report names while the client waits), `commands` whether the block
-        has commands (they wake wait conditions when the reservation ends)."""
+        reserves `x` (as `reserve1`, `x` never Void); entering returns once the client may
+        call `x`'s routines itself (`begin_direct`). `query`/`qwhere`: the block's first
+        query and its position (what a deadlock report names while the client waits);
+        `commands`: whether the block has commands (they wake wait conditions when the
+        reservation ends)."""
         self.busy -= 1
         if self.busy < 0:
             self.busy_quantum()
-        p = x._region_
-        s = self._session1(p, where)
-        if pre is None:
-            s.__enter__()
-        else:
-            s = self._guarded1(s, pre, pre_args)
+        s = self._session1(x._region_, where)
+        if pre is not None:
+            s = self._guarded1(s, pre, pre_args)  # entered already: `with` finds it held
+        s.direct = PENDING | COMMANDS if commands else PENDING
+        s.qwhere = qwhere
+        s.query = query
+        return s
+
+    def begin_direct(self: Processor, s: Session) -> None:  # type: ignore[misc]
+        """[`s` entered, `s.direct` its flags] Set the block's mode, waiting as its first
+        query would; on a failure, release `s` (`with` will not) and raise."""
+        p = s.proc
+        flags = s.direct
         held = self.held.get(p)
         if type(held) is Session and held.claimed and held.dirty is None and not p.passive and not self.rt.stopping:
             mode = DIRECT
         else:
+            s.direct = 0
             try:
-                mode = self._claim_slow(held, p, x, qwhere, query)
+                mode = self._claim_slow(held, p, s.qwhere, s.query)
             except BaseException:
                 s.__exit__()
                 raise
-        if commands and type(held) is Session:
+        if flags & COMMANDS and type(held) is Session:
             held.changed = True
         s.direct = mode
-        return s
 
     def _claim_slow(  # type: ignore[misc]
         self: Processor,
         held: Session | Processor | None,
         p: Processor,
-        x: Separate,
         qwhere: Where | None,
-        query: Routine,
+        query: Routine | None,
     ) -> int:
         """The mode of a direct block whose supplier is not claimed and clean already: wait
         (as a query would) until it is free for us; raise what that query would raise (the
@@ -119,7 +138,7 @@ class DirectBlocks:
         while True:
             if held.claimed and held.dirty is None and not self.rt.stopping:
                 return RAW if p.passive else DIRECT
-            self._sync(held, p, _reach, x, (), qwhere, False, query)
+            self._sync(held, p, _reach, p, (), qwhere, False, query)  # type: ignore[arg-type]
             lock = p.lock
             lock.acquire()
             if not held.claimed and p.state != RUNNING and p.head is held and not held.calls:
@@ -133,7 +152,8 @@ class DirectBlocks:
     ) -> BaseException:
         """`_s.failed(e, noticed)`: a command of the direct block `s` failed with `e`; the
         exception its client gets now (see the module's docstring). The general path would
-        raise it at the next query, at `noticed`: a report names that position."""
+        raise it at the next query, at `noticed`, or (None) not at all: the region is dirty
+        and the rest of the block is skipped."""
         mode = s.direct & MODE
         p = s.proc
         _caught_here(e)
@@ -144,16 +164,24 @@ class DirectBlocks:
             error = sync_failure(p, e) if isinstance(e, Exception) else e
         else:
             held = self.held.get(p)
-            p.rt.note("dirty region", dirty_text(p, held if type(held) is Session else s, e))
-            dirty = dirty_error(p, e)
-            dirty.noticed = noticed
-            error = dirty
+            owner = held if type(held) is Session else s
+            p.rt.note("dirty region", dirty_text(p, owner, e))
+            if noticed is None:  # as `_leaf_claimed`: dirty until delivered or reported lost
+                lock = p.lock
+                lock.acquire()
+                owner.dirty = e
+                lock.release()
+                error = SkipRest()
+            else:
+                dirty = dirty_error(p, e)
+                dirty.noticed = noticed
+                error = dirty
         s.failure = error
         return error
 
-    def end_direct(self: Processor, s: Session, ev: BaseException | None) -> None:  # type: ignore[misc]
-        """The direct block `s` ends, normally or with `ev`: release, then raise the
-        synchronous failure of a query that failed."""
+    def end_direct(self: Processor, s: Session, ev: BaseException | None) -> bool:  # type: ignore[misc]
+        """The direct block `s` ends with `ev` (or its claim was its own): release, then
+        raise the synchronous failure of a query that failed. True: swallow `ev`."""
         mode = s.direct
         failure = s.failure
         s.direct = 0
@@ -162,8 +190,10 @@ class DirectBlocks:
         if mode & TEMP:
             p.release_claim()
         s.__exit__()
-        if ev is None or ev is failure or mode & MODE == RAW or not isinstance(ev, Exception):
-            return
+        if ev is None or mode & MODE == RAW or not isinstance(ev, Exception):
+            return ev is not None and ev is failure and isinstance(ev, SkipRest)
+        if ev is failure:
+            return False
         tb = ev.__traceback__
         _caught_here(ev)
         error = sync_failure(p, ev)

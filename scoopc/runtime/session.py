@@ -73,6 +73,8 @@ class Session:
         "claimed",
         "direct",
         "failure",
+        "qwhere",
+        "query",
     )
     client: Processor | OutsideClient
     proc: Processor
@@ -87,6 +89,8 @@ class Session:
     claimed: bool
     direct: int
     failure: BaseException | None
+    qwhere: Where | None
+    query: Routine | None
 
     def __init__(self, client: Processor | OutsideClient, proc: Processor, where: Where | None = None) -> None:
         self.client = client  # Processor or OutsideClient (immutable)
@@ -106,8 +110,10 @@ class Session:
         #   is queued, so the user runs its calls directly, lock-free, until it drops the
         #   claim (close, a queued or lock-passing call). Only one thread uses a session at a
         #   time: its client, or the supplier it passed its locks to while it waits.
-        self.direct = 0  # [client] the mode of a direct block (direct.py), 0 otherwise
+        self.direct = 0  # [client] a direct block's flags, then its mode (direct.py); 0 otherwise
         self.failure = None  # [client] the exception a direct block's failed command raised
+        self.qwhere = None  # [client] a direct block's first query and its position, named
+        self.query = None  #            by a deadlock report while `claim1` waits
 
     # -- the one-supplier reservation (Processor.reserve) ------------------------------
     def __enter__(self) -> Session:
@@ -137,15 +143,18 @@ class Session:
                 p.qoq.append(self)
             lock.release()
             held[p] = self
+        if self.direct:
+            here.begin_direct(self)  # `claim1`'s block (direct.py)
         return self
 
     def __exit__(
         self, et: type[BaseException] | None = None, ev: BaseException | None = None, tb: TracebackType | None = None
-    ) -> None:
+    ) -> bool:
         client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
         if self.direct:
-            client.end_direct(self, ev)  # comes back here with `direct` 0
-            return
+            if ev is not None or self.direct & 4:  # direct.TEMP
+                return client.end_direct(self, ev)  # comes back here with `direct` 0
+            self.direct = 0
         held = client.held
         p = self.proc
         if held.get(p) is self:
@@ -164,12 +173,14 @@ class Session:
                 # Nothing refers to us any more (not queued, no call, not held, not
                 # dirty): the client's next `reserve1` may reuse us.
                 client.spare = self
-                return
+                return False
             close_locked(p, self)
+        return False
 
     def failed(self, e: BaseException, noticed: Where | None) -> BaseException:
         """A command of the direct block this session reserves failed with `e`: the exception
-        to raise (direct.py); `noticed` the position of the block's next query."""
+        to raise (direct.py); `noticed` the position of the block's next query, None after
+        the last one."""
         client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
         return client.command_failed(self, e, noticed)
 

@@ -142,3 +142,40 @@ def test_commands_of_a_block_wake_a_wait_condition(h):
         assert leaf_items(c) == ["x"]
     assert h.finish() == 0
     assert got == [["x"]]
+
+
+def _trailing(block, routine, target, *args):
+    """A command after the block's last query, as codegen emits it."""
+    try:
+        routine(target, *args)
+    except BaseException as e:
+        raise block.failed(e, None)  # noqa: B904 (as generated)
+
+
+def test_a_command_failing_after_the_last_query_is_lost_and_skips_the_rest(h):
+    root = h.root
+    c = root.new_separate(LCell, LCell.make)
+    with root.claim1(c, ("APP", "run", "app.e", 7), W_QUERY, leaf_items, True) as s:
+        assert leaf_items(c) == []
+        _trailing(s, leaf_fail, c, "late")
+        _trailing(s, leaf_add, c, "skipped")
+    assert c.log == []
+    assert h.finish() == 0
+    err = h.err.getvalue()
+    assert err.count("exception lost") == 1 and "app.e:7" in err
+
+
+def test_a_trailing_failure_in_a_nested_block_is_delivered_by_the_outer_query(h):
+    root = h.root
+    c = root.new_separate(LCell, LCell.make)
+    with root.reserve1(c, W):
+        with root.claim1(c, W, W_QUERY, leaf_items, True) as s:
+            assert leaf_items(c) == []
+            _trailing(s, leaf_fail, c, "late")
+        root.leaf_call(c, leaf_add, ("skipped",))  # the outer reservation is dirty
+        with pytest.raises(rt.DirtyRegionError) as info:
+            root.leaf_query(c, leaf_items)
+        assert info.value.asynchronous and isinstance(info.value.__cause__, KeyError)
+    assert c.log == []
+    assert h.finish() == 0
+    assert "exception lost" not in h.err.getvalue()

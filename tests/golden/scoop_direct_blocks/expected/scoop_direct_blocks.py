@@ -132,9 +132,12 @@ class SCOOP_DIRECT_BLOCKS(ANY):
 
     def query_then_failing_command(self, a):  # scoop_direct_blocks.e:98
         here = self._region_
-        with here.claim1(a, _W_11, _W_10, _G_1, False):
+        with here.claim1(a, _W_11, _W_10, _G_1, True) as _block1:
             Result = _G_1(a)  # scoop_direct_blocks.e:101
-            here.leaf_call(a, _M_accumulator.ACCUMULATOR.add, (-1,))  # scoop_direct_blocks.e:102
+            try:  # scoop_direct_blocks.e:102
+                _M_accumulator.ACCUMULATOR.add(a, -1)
+            except BaseException as _failure2:
+                raise _block1.failed(_failure2, None)
         return Result  # scoop_direct_blocks.e:98
 
     def copy_total(self, a):  # scoop_direct_blocks.e:105
