@@ -132,7 +132,10 @@ class DirectBlocks:
         """The mode of a direct block whose supplier is not claimed and clean already: wait
         (as a query would) until it is free for us; raise what that query would raise (the
         dirty processor exception, Shutdown)."""
-        if held is p:  # our own region, or one whose locks were passed to us
+        if held is p:
+            # Our own region, or one whose locks were passed to us. (For the latter the general
+            # path names our thread as the region's executor during each call, for the monitor;
+            # a direct block's leaf calls never block, so no report could tell.)
             return RAW if p is self or p.passive else BORROWED
         assert type(held) is Session, "claim1 reserved the region"
         while True:

@@ -143,8 +143,8 @@ class Session:
                 p.qoq.append(self)
             lock.release()
             held[p] = self
-        if self.direct:
-            here.begin_direct(self)  # `claim1`'s block (direct.py)
+        if self.direct & 8:  # direct.PENDING: `claim1`'s block (direct.py)
+            here.begin_direct(self)
         return self
 
     def __exit__(

@@ -10,6 +10,7 @@ import pytest
 from test_claim import LCell, leaf_add, leaf_fail, leaf_items
 
 import scoopc.runtime as rt
+from scoopc.runtime.direct import BORROWED, MODE
 
 from rt_helpers import Cell, spawn
 
@@ -179,3 +180,37 @@ def test_a_trailing_failure_in_a_nested_block_is_delivered_by_the_outer_query(h)
     assert c.log == []
     assert h.finish() == 0
     assert "exception lost" not in h.err.getvalue()
+
+
+class _Server:
+    def make(self):
+        self.seen = []
+
+    def visit(self, cell):
+        """A routine run with its client's locks (`cell` is in the client's region): a
+        direct block on `cell` is a callback there; a failure in it is synchronous."""
+        here = self._region_
+        with here.claim1(cell, W, W_QUERY, leaf_items, True) as s:
+            assert s.direct & MODE == BORROWED
+            _command(s, leaf_add, cell, "visited")
+            self.seen.append(leaf_items(cell))
+        try:
+            with here.claim1(cell, W, W_QUERY, leaf_items, True) as s:
+                _command(s, leaf_fail, cell, "callback")
+        except rt.DirtyRegionError as e:
+            self.seen.append(("failed", e.asynchronous, type(e.__cause__).__name__))
+
+
+def test_a_block_on_a_region_whose_locks_were_passed_is_a_synchronous_callback(h):
+    root = h.root
+    server = root.new_separate(_Server, _Server.make)
+    mine = root.new(LCell)
+    mine.make()
+    with root.reserve1(server, W):
+        root.call(server, _Server.visit, (mine,))  # passes our lock: synchronous
+        assert mine.log == ["visited"]
+        assert root.query(server, _seen) == [["visited"], ("failed", False, "KeyError")]
+
+
+def _seen(server):
+    return server.seen
