@@ -214,3 +214,27 @@ def test_a_block_on_a_region_whose_locks_were_passed_is_a_synchronous_callback(h
 
 def _seen(server):
     return server.seen
+
+
+class _Node(Cell):
+    def ping(self, other, barrier):
+        here = self._region_
+        barrier.wait(10)  # both are inside their routines: neither is free for the other
+        with here.claim1(other, W, W_QUERY, Cell.get, False):
+            return Cell.get(other)
+
+
+def test_a_deadlock_while_claiming_names_the_first_query(harness):
+    """Waiting in `claim1` is waiting for the block's first query: the report says so."""
+    h = harness()
+    root = h.root
+    a = root.new_separate(_Node, _Node.make)
+    b = root.new_separate(_Node, _Node.make)
+    barrier = threading.Barrier(2)
+    root.command1(a, _Node.ping, (b, barrier), W)
+    root.command1(b, _Node.ping, (a, barrier), W)
+    assert h.finish() == 3
+    err = h.err.getvalue()
+    assert "deadlock: a cycle of synchronous calls" in err
+    for x, y in ((a, b), (b, a)):
+        assert f"{x._region_!r} in TEST.routine (test.e:3) waits for the result of Cell.get on {y._region_!r}" in err
