@@ -99,14 +99,17 @@ class Clock:
                 heapq.heappush(self.heap, (deadline, 1, next(self.seq), blk))
         rt.block(proc.exec, blk)  # type: ignore[arg-type]  # running: its exec is set
 
-    def real_wait(self, blk: Block, lk: threading.Lock) -> None:
-        """Wait on the real clock for a sleeper's deadline (or its wake-up: `lk` released)."""
+    def real_wait(self, blk: Block, lk: threading.Lock) -> bool:
+        """Wait on the real clock for a sleeper's deadline (False) or its wake-up (`lk`
+        released: True, and taken again)."""
         deadline = blk.deadline
         assert deadline is not None, "a sleeper's Block has a deadline"
         while True:
             left = deadline - time.monotonic_ns()
-            if left <= 0 or lk.acquire(timeout=left / 1e9):
-                return
+            if left <= 0:
+                return False
+            if lk.acquire(timeout=left / 1e9):
+                return True
 
     # -- timers ------------------------------------------------------------------------
     def add_timer(self, timer: Timer) -> Timer:

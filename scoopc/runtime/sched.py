@@ -70,25 +70,31 @@ def dirty_text(proc: Processor, s: Session, e: BaseException) -> str:
 class Exec:
     """One OS thread running processor code (a worker, the main thread, a client)."""
 
-    __slots__ = ("blocked", "name", "permit", "plock")
+    __slots__ = ("blocked", "name", "permit", "plock", "slock")
     blocked: Block | None
     name: str
     permit: bool
     plock: threading.Lock
+    slock: threading.Lock
 
     def __init__(self, name: str) -> None:
         self.blocked = None  # Block or None; written by the owner thread under rt.glock
         self.name = name
         self.permit = False  # [rt.glock] this thread holds a run permit (permits.py)
         self.plock = threading.Lock()  # locked while waiting for a permit
+        self.slock = threading.Lock()  # the thread's wake-up lock: held while it is awake;
+        self.slock.acquire()  #          `block` sleeps on it, a waker releases it once
 
 
 class Block:
     """What a blocked thread waits for; a new one per episode, so identity marks progress.
 
-    Its waker sets `woken` under glock. The thread's wake-up lock is made only when it really
-    goes to sleep (`Runtime.block`, under glock too): a Block whose waker came first (a query
-    answered before its client blocks, a wait condition changed meanwhile) costs no lock."""
+    Its waker sets `woken` under glock, and releases the thread's wake-up lock (`Exec.slock`,
+    held by its thread whenever it is awake) if the thread published it to sleep on it
+    (`Runtime.block`, under glock too): a Block whose waker came first (a query answered
+    before its client blocks, a wait condition changed meanwhile) touches no lock. The lock
+    is released at most once per Block, and `block` takes it back when its thread woke
+    otherwise (a deadline, a stop, an interrupt), so it is held again before the next sleep."""
 
     __slots__ = ("kind", "proc", "on", "where", "lock", "woken", "deadline", "exec", "value", "error", "what", "since")
     kind: str
@@ -117,7 +123,7 @@ class Block:
         self.proc = proc  # the processor that waits (innermost context)
         self.on = on  # sync/turn: the Session; wait: tuple of processors
         self.where = where
-        self.lock = None  # [glock] the wake-up lock, held, made by `block` when the thread sleeps
+        self.lock = None  # [glock] its thread's wake-up lock (Exec.slock) while the thread sleeps
         self.woken = False  # [glock] its waker ran (`unblock_locked`)
         self.deadline = deadline  # sleep only
         self.exec = None  # the blocked thread's Exec, set by `block`
@@ -139,7 +145,8 @@ def _blocked_of(ex: Exec) -> Block | None:
 
 
 def wake(lock: threading.Lock) -> None:
-    """Release a one-shot wake-up lock; a second release (shutdown racing a waker) is harmless."""
+    """Release a wake-up lock; releasing one already released (a worker's, by a stop racing
+    `schedule`) is harmless."""
     try:
         lock.release()
     except RuntimeError:
@@ -438,8 +445,7 @@ class Runtime:
             return
         blk.exec = ex
         blk.since = time.monotonic()  # for live views (snapshot.py): only a thread that really blocks pays it
-        lk = threading.Lock()
-        lk.acquire()
+        lk = ex.slock
         glock = self.glock  # taken and released explicitly on this path (section 10: no `with`)
         glock.acquire()
         try:
@@ -460,17 +466,23 @@ class Runtime:
             glock.release()
         if spawn is not None:
             spawn.thread.start()
-        woke = queued = False
+        woke = queued = got = False
         try:
             if not stopping:
                 if blk.deadline is not None and not self.clock.virtual:
-                    self.clock.real_wait(blk, lk)
+                    got = self.clock.real_wait(blk, lk)
                 else:
-                    lk.acquire()
+                    got = lk.acquire()
             woke = True
         finally:
             glock.acquire()
             try:
+                if not got:  # a sleeper's deadline, a stop, an interrupt: the lock must stay held
+                    if blk.woken:  # its waker released it (under glock, once): take it back
+                        lk.acquire(False)
+                    else:
+                        blk.woken = True  # and no waker will release it any more
+                blk.lock = None
                 if _blocked_of(ex) is blk:
                     self.blocked.discard(ex)
                     ex.blocked = None
