@@ -227,3 +227,38 @@ def test_virtual_clock_goes_on_under_a_busy_processor(harness):
     assert n == SECOND // BUSY_QUANTUM_NS * BUSY_CALLS // 2 + 1
     assert seen_at == SECOND // 2 and end == SECOND
     assert busy_run(harness) == ((n, seen_at), end)
+
+
+def test_a_thread_holds_its_wake_up_lock_whenever_it_is_awake(h, monkeypatch):
+    """`block` sleeps on the thread's own wake-up lock: however the sleep ends (a waker, a
+    deadline, a waker racing the deadline), the lock is held again afterwards, so the next
+    sleep really sleeps."""
+    from scoopc.runtime.sched import Block
+
+    root = h.root
+    ex = root.exec
+    assert ex.slock.locked()
+    c = root.new_separate(Cell, Cell.make)
+    with root.reserve((c,)):
+        root.call(c, Cell.set, (5,))
+        assert root.query(c, Cell.get) == 5  # may sleep until c's thread answers
+    assert ex.slock.locked()
+    root.sleep(1_000_000)  # the deadline ends it
+    assert ex.slock.locked()
+
+    def deadline_then_waker(blk, lk):  # the waker comes after the deadline, before `block` looks
+        h.rt.unblock(blk)
+        return False
+
+    monkeypatch.setattr(h.rt.clock, "real_wait", deadline_then_waker)
+    blk = Block("sleep", root, None, None, rt.now_ns() + 1_000_000)
+    h.rt.block(ex, blk)
+    assert ex.slock.locked()  # taken back
+    monkeypatch.undo()
+    late = Block("sleep", root, None, None, rt.now_ns() + 1_000_000)
+    h.rt.block(ex, late)
+    h.rt.unblock(late)  # a waker after the thread went on: ignored
+    assert ex.slock.locked()
+    t0 = rt.now_ns()
+    root.sleep(20_000_000)
+    assert rt.now_ns() - t0 >= 20_000_000
