@@ -256,8 +256,15 @@ class TwinActionClient:
         info = new_message(store, "action_msgs/msg/GoalInfo", goal_id=_uuid_msg(store, goal_id))
         return self.cancel_end.call(self.cancel_end.new_request(goal_info=info), timeout)
 
-    def feedback_of(self, goal_id: bytes) -> list:
-        return [m.feedback for m in list(self.feedback.messages) if bytes(m.goal_id.uuid) == goal_id]
+    def feedback_of(self, goal_id: bytes, count: int = 0, timeout: float = 30.0) -> list:
+        """The feedback of a goal received so far; with `count`, once that many came (or at
+        `timeout`): the result (a service) can overtake feedback (a topic) on the way."""
+        deadline = time.monotonic() + timeout
+        while True:
+            found = [m.feedback for m in list(self.feedback.messages) if bytes(m.goal_id.uuid) == goal_id]
+            if len(found) >= count or time.monotonic() >= deadline:
+                return found
+            time.sleep(0.005)
 
     def statuses_of(self, goal_id: bytes) -> list:
         """Each status the status topic said for the goal, in order, repeats left out."""

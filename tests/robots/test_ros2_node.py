@@ -348,7 +348,7 @@ def test_our_action_server_to_a_stock_client(monkeypatch):
         go.set()
         done = client.result(first)
         assert (done.status, list(done.result.sequence)) == (actions.SUCCEEDED, [0, 1, 1, 2])
-        assert [list(f.sequence) for f in client.feedback_of(first)] == [[0, 1], [0, 1, 1], [0, 1, 1, 2]]
+        assert [list(f.sequence) for f in client.feedback_of(first, 3)] == [[0, 1], [0, 1, 1], [0, 1, 1, 2]]
         assert _until(lambda: client.statuses_of(first)[-1:] == [actions.SUCCEEDED])
         go.clear()
         second = client.send_goal(order=4)

@@ -597,7 +597,7 @@ def test_a_program_serves_an_action_to_a_stock_client(env, tmp_path):
         first = client.send_goal(timeout=120, order=5)
         done = client.result(first, TIMEOUT)
         assert (done.status, list(done.result.sequence)) == (4, [0, 1, 1, 2, 3, 5])
-        assert [list(f.sequence) for f in client.feedback_of(first)] == [[0, 1, 1, 2, 3, 5][:n] for n in range(1, 7)]
+        assert [list(f.sequence) for f in client.feedback_of(first, 6)] == [[0, 1, 1, 2, 3, 5][:n] for n in range(1, 7)]
         second = client.send_goal(order=3)
         cancel = client.cancel(second)
         assert cancel.return_code == 0 and bytes(cancel.goals_canceling[0].goal_id.uuid) == second
