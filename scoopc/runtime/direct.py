@@ -39,25 +39,15 @@ Why it means what the general path means:
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING, Final
+from typing import TYPE_CHECKING
 
 from .errors import PASS_THROUGH, DirtyRegionError, dirty_error, sync_failure
 from .protocols import Args, Clause, Routine, Separate, Where
 from .sched import dirty_text
-from .session import RUNNING, Session
+from .session import BORROWED, COMMANDS, DIRECT, MODE, PENDING, RAW, RUNNING, TEMP, Session
 
 if TYPE_CHECKING:
     from .processor import Processor
-
-# A block's mode, once entered (`Session.direct`)
-DIRECT: Final = 1
-RAW: Final = 2
-BORROWED: Final = 3
-MODE: Final = 3  # the mode's bits
-TEMP: Final = 4  # (Session.__exit__ tests this bit)
-# Its flags, from `claim1` until entered
-PENDING: Final = 8
-COMMANDS: Final = 16
 
 
 def _reach(target: object) -> None:

@@ -28,6 +28,14 @@ if TYPE_CHECKING:
 IDLE: Final = 0
 SCHEDULED: Final = 1
 RUNNING: Final = 2
+# `Session.direct` (direct.py): a direct block's mode once entered, its flags until then.
+DIRECT: Final = 1  # an active region the client has claimed
+RAW: Final = 2  # a passive region, or the client's own: failures as they are
+BORROWED: Final = 3  # a region whose locks were passed to the client: synchronous failures
+MODE: Final = 3  # the mode's bits
+TEMP: Final = 4  # the claim is the block's own and ends with it
+PENDING: Final = 8  # `claim1` returned it: entering sets the mode
+COMMANDS: Final = 16  # the block has commands (they wake wait conditions)
 
 
 def invoke(routine: Routine, target: object, args: Args) -> object:
@@ -143,7 +151,7 @@ class Session:
                 p.qoq.append(self)
             lock.release()
             held[p] = self
-        if self.direct & 8:  # direct.PENDING: `claim1`'s block (direct.py)
+        if self.direct & PENDING:  # `claim1`'s block (direct.py)
             here.begin_direct(self)
         return self
 
@@ -152,7 +160,7 @@ class Session:
     ) -> bool:
         client: Processor = self.client  # type: ignore[assignment]  # as in `__enter__`
         if self.direct:
-            if ev is not None or self.direct & 4:  # direct.TEMP
+            if ev is not None or self.direct & TEMP:
                 return client.end_direct(self, ev)  # comes back here with `direct` 0
             self.direct = 0
         held = client.held

@@ -10,7 +10,7 @@ import pytest
 from test_claim import LCell, leaf_add, leaf_fail, leaf_items
 
 import scoopc.runtime as rt
-from scoopc.runtime.direct import BORROWED, MODE
+from scoopc.runtime.session import BORROWED, MODE
 
 from rt_helpers import Cell, spawn
 
